@@ -1,0 +1,29 @@
+#pragma once
+// Bad input is the user's to fix: a SceneError names the file, the element and the fix.
+// Broken invariants inside radmesh are not SceneErrors (they are bugs).
+#include <stdexcept>
+#include <string>
+
+namespace radmesh {
+
+class SceneError : public std::runtime_error {
+ public:
+  // file: the path (or built-in name); element: what in it, e.g. "line 12: f" or "mesh 'desk'
+  // primitive 0"; problem: what is wrong; fix: what the user can do about it.
+  SceneError(std::string file, std::string element, std::string problem, std::string fix);
+
+  const std::string& file() const { return file_; }
+  const std::string& element() const { return element_; }
+
+ private:
+  std::string file_;
+  std::string element_;
+};
+
+// Refused options (an impossible --cell, --resolution out of range, ...): named option and fix.
+class OptionError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace radmesh
