@@ -1,2 +1,30 @@
-#include <cstdio>
-int main() { std::puts("radmesh: skeleton"); return 0; }
+// radmesh: progressive radiosity on an emulated mesh computer. Subcommands live in cli/*_command.cpp.
+#include <fmt/core.h>
+
+#include <CLI/CLI.hpp>
+#include <exception>
+
+#include "cli/commands.h"
+#include "solver/scene_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"radmesh: view-independent diffuse global illumination (Varshney & Prins)"};
+  app.require_subcommand(1);
+  radmesh::cli::addInfoCommand(app);
+  radmesh::cli::addSolveCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const radmesh::SceneError& e) {
+    fmt::print(stderr, "radmesh: error: {}\n", e.what());
+    return 2;
+  } catch (const radmesh::OptionError& e) {
+    fmt::print(stderr, "radmesh: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "radmesh: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

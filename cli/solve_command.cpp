@@ -1,0 +1,80 @@
+// `radmesh solve SCENE`: progressive refinement until --until, with progress, stats and a bake.
+#include <fmt/core.h>
+
+#include <chrono>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/progress.h"
+#include "cli/solve_flags.h"
+#include "cli/stats_json.h"
+#include "solver/display_radiosity.h"
+#include "solver/gltf_export.h"
+#include "solver/meshing.h"
+#include "solver/scene_loader.h"
+
+namespace radmesh::cli {
+
+namespace {
+
+struct SolveArgs {
+  SolveFlags flags;
+  std::string statsPath;
+  std::string outPath;
+  bool quiet = false;
+};
+
+void printSummary(const ProgressiveSolver& solver, double seconds) {
+  const Ledger& l = solver.ledger();
+  const size_t n = solver.history().size();
+  fmt::print("solved: {} patches, {} iterations, convergence {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
+             solver.patches().size(), n, 100.0 * solver.convergence(), seconds, seconds > 0 ? n / seconds : 0.0);
+  fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
+             "  (imbalance {:.1e})\n",
+             l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
+}
+
+void run(const SolveArgs& args) {
+  const SolveOptions options = args.flags.resolved();
+  std::vector<std::string> warnings;
+  const Scene scene = loadScene(args.flags.scene, &warnings);
+  for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  fmt::print("solving {}: {} patches, {} {}x{}, k={}, until C={:.2f}\n", scene.source, solver.patches().size(),
+             toString(options.projection), options.resolution, options.resolution, options.shooters, options.until);
+
+  Progress progress(options.until);
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  while (!solver.done()) {
+    const IterationRecord& record = solver.step();
+    if (!args.quiet) progress.report(record, elapsed());
+  }
+  progress.finish();
+  const double seconds = elapsed();
+  printSummary(solver, seconds);
+
+  if (!args.statsPath.empty()) {
+    writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
+    fmt::print("wrote {}\n", args.statsPath);
+  }
+  if (!args.outPath.empty()) {
+    const DisplayMesh mesh = buildDisplayMesh(solver.patches());
+    writeBakeGlb(args.outPath, mesh, vertexRadiosity(mesh, solver.displayRadiosity()));
+    fmt::print("wrote {}\n", args.outPath);
+  }
+}
+
+}  // namespace
+
+void addSolveCommand(CLI::App& app) {
+  auto args = std::make_shared<SolveArgs>();
+  CLI::App* cmd = app.add_subcommand("solve", "Solve a scene by progressive refinement");
+  addSolveFlags(cmd, args->flags);
+  cmd->add_option("--stats", args->statsPath, "Write per-iteration figures and the energy ledger as JSON");
+  cmd->add_option("--out", args->outPath, "Write the bake as glTF 2.0 binary (.glb) with COLOR_0 radiosity");
+  cmd->add_flag("--quiet", args->quiet, "No per-iteration progress");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace radmesh::cli

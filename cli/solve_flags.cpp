@@ -1,0 +1,38 @@
+#include "cli/solve_flags.h"
+
+#include "solver/meshing.h"
+#include "solver/scene_error.h"
+#include "solver/scene_loader.h"
+
+namespace radmesh::cli {
+
+SolveOptions SolveFlags::resolved() const {
+  SolveOptions o = options;
+  o.backend = parseBackend(backend);
+  o.projection = parseProjection(projection);
+  validateOptions(o);
+  return o;
+}
+
+void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
+  cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
+      ->capture_default_str();
+  cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
+  cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (the paper: 15 in)")->capture_default_str();
+  cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")->capture_default_str();
+  cmd->add_option("--resolution", f.options.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
+  cmd->add_option("--ratio", f.options.ratio, "Half-side of the single plane at height 1")->capture_default_str();
+  cmd->add_option("--shooters", f.options.shooters, "k patches shot per iteration")->capture_default_str();
+  cmd->add_option("--until", f.options.until, "Stop at this convergence C (0..1]")->capture_default_str();
+  cmd->add_option("--max-iterations", f.options.maxIterations, "Stop after this many iterations")->capture_default_str();
+  cmd->add_option("--threads", f.options.threads, "Host threads; 0 uses every core")->capture_default_str();
+  cmd->add_option_function<double>(
+         "--cache-mb",
+         [&f](double mb) {
+           if (!(mb >= 0.0 && mb < 1e6)) throw OptionError("--cache-mb must be a size in MiB from 0 to 1e6");
+           f.options.formFactorCacheBytes = static_cast<std::size_t>(mb * 1024 * 1024);
+         },
+         "Form-factor row cache budget in MiB (0: none)");
+}
+
+}  // namespace radmesh::cli

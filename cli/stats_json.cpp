@@ -1,0 +1,53 @@
+#include "cli/stats_json.h"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace radmesh::cli {
+
+namespace {
+
+nlohmann::json ledgerJson(const Ledger& l) {
+  return {{"emitted", l.emitted},       {"absorbed", l.absorbed}, {"unshot", l.unshot},
+          {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"imbalance", l.imbalance()}};
+}
+
+nlohmann::json iterationJson(const IterationRecord& r) {
+  return {{"iteration", r.iteration},
+          {"shooter", r.shooters.empty() ? -1 : r.shooters.front()},
+          {"shooters", r.shooters},
+          {"shot_power", r.shotPowerW},
+          {"convergence", r.convergence},
+          {"seconds", r.seconds},
+          {"captured_fraction", r.capturedFraction}};
+}
+
+}  // namespace
+
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
+  const SolveOptions& o = solver.options();
+  nlohmann::json perIteration = nlohmann::json::array();
+  for (const IterationRecord& r : solver.history()) perIteration.push_back(iterationJson(r));
+  return {{"scene", scene},
+          {"patches", solver.patches().size()},
+          {"backend", toString(o.backend)},
+          {"projection", toString(o.projection)},
+          {"resolution", o.resolution},
+          {"ratio", o.ratio},
+          {"shooters", o.shooters},
+          {"threads", o.threads},
+          {"iterations", solver.history().size()},
+          {"convergence", solver.convergence()},
+          {"seconds", seconds},
+          {"per_iteration", std::move(perIteration)},
+          {"ledger", ledgerJson(solver.ledger())}};
+}
+
+void writeJson(const std::string& path, const nlohmann::json& document) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot open for writing (check the folder exists and is writable)");
+  out << document.dump(2) << '\n';
+  if (!out) throw std::runtime_error(path + ": write failed (disk full?)");
+}
+
+}  // namespace radmesh::cli

@@ -1,0 +1,13 @@
+#pragma once
+// The `--stats FILE.json` document of a solve: figures per iteration and the energy ledger.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "solver/progressive_solver.h"
+
+namespace radmesh::cli {
+
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
+void writeJson(const std::string& path, const nlohmann::json& document);  // throws on I/O failure
+
+}  // namespace radmesh::cli

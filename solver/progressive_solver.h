@@ -1,0 +1,56 @@
+#pragma once
+// Progressive refinement by shooting (the paper's sections 1.2 and 1.5): step() shoots the k
+// patches with the most unshot power. The CLI loops step(); the viewer interleaves it with frames.
+#include <memory>
+#include <vector>
+
+#include "solver/patch.h"
+#include "solver/scene.h"
+#include "solver/solve_options.h"
+
+namespace radmesh {
+
+// Where the emitted power went, in watts summed over RGB. Balances:
+// emitted = absorbed + unshot + notCaptured + escaped.
+struct Ledger {
+  double emitted = 0.0;
+  double absorbed = 0.0;     // absorbed by patches: (1 - rho) of what reached them
+  double unshot = 0.0;       // reflected but not yet shot on: sum of dB_j * A_j
+  double notCaptured = 0.0;  // left the shooter outside the projection surface (the plane's miss)
+  double escaped = 0.0;      // captured but hit no patch: light leaving an open scene
+  double imbalance() const;  // |emitted - (absorbed + unshot + notCaptured + escaped)| / emitted
+};
+
+struct IterationRecord {
+  int iteration = 0;               // 1-based
+  std::vector<int> shooters;       // patch indices shot this iteration
+  double shotPowerW = 0.0;         // summed over the shooters and RGB
+  double convergence = 0.0;        // C_i = 1 - s_i / s_1
+  double seconds = 0.0;            // wall time of this iteration
+  double capturedFraction = 0.0;   // sum of delta form factors of the projection surface
+};
+
+class ProgressiveSolver {
+ public:
+  ProgressiveSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options);
+  ~ProgressiveSolver();
+  ProgressiveSolver(const ProgressiveSolver&) = delete;
+  ProgressiveSolver& operator=(const ProgressiveSolver&) = delete;
+
+  const IterationRecord& step();  // one iteration: shoot k patches
+  bool done() const;              // convergence >= until, max iterations, or nothing left to shoot
+  double convergence() const;
+
+  const std::vector<Patch>& patches() const;
+  const std::vector<Rgb>& radiosity() const;  // B per patch, W/m^2
+  std::vector<Rgb> displayRadiosity() const;  // B plus the display-only ambient term
+  const Ledger& ledger() const;
+  const std::vector<IterationRecord>& history() const;
+  const SolveOptions& options() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace radmesh

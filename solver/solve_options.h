@@ -1,0 +1,32 @@
+#pragma once
+// What a user chooses for a solve; shared by the CLI, the viewer and the benchmarks.
+#include <cstddef>
+#include <string>
+
+namespace radmesh {
+
+enum class Projection { Plane, Hemicube, Analytic };
+enum class Backend { Native, Mesh };
+
+struct SolveOptions {
+  Backend backend = Backend::Native;
+  Projection projection = Projection::Plane;
+  int resolution = 128;    // N: the single plane (or each hemicube face) is N x N pixels, 16..2048
+  double ratio = 3.0;      // half-side of the single plane at height 1 (the paper's ratio 3)
+  int shooters = 1;        // k: shooters per iteration, all shot from the same state
+  double until = 0.95;     // stop when convergence C reaches this
+  int maxIterations = 1'000'000;
+  int threads = 0;         // 0: every core
+  std::size_t formFactorCacheBytes = 0;  // 0: no form-factor row cache
+  bool ambient = true;     // display-only ambient term (Cohen et al. 1988)
+};
+
+// Throws OptionError naming the option and the accepted range.
+void validateOptions(const SolveOptions& options);
+
+const char* toString(Projection projection);
+const char* toString(Backend backend);
+Projection parseProjection(const std::string& text);  // throws OptionError
+Backend parseBackend(const std::string& text);        // throws OptionError
+
+}  // namespace radmesh
