@@ -43,6 +43,12 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"ledger", ledgerJson(solver.ledger())}};
 }
 
+nlohmann::json effectsJson(const EffectsPlan& plan) {
+  nlohmann::json effects = nlohmann::json::object();
+  for (const Effect& e : plan.effects) effects[e.name] = {{"on", e.on}, {"reason", e.reason}};
+  return effects;
+}
+
 void writeJson(const std::string& path, const nlohmann::json& document) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot open for writing (check the folder exists and is writable)");

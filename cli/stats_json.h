@@ -3,11 +3,14 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "solver/effects_plan.h"
 #include "solver/progressive_solver.h"
 
 namespace radmesh::cli {
 
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
+// {"occlusion": {"on": false, "reason": "..."}, ...}
+nlohmann::json effectsJson(const EffectsPlan& plan);
 void writeJson(const std::string& path, const nlohmann::json& document);  // throws on I/O failure
 
 }  // namespace radmesh::cli

@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "solver/form_factor_backend.h"
 #include "solver/patch.h"
 #include "solver/scene.h"
 #include "solver/solve_options.h"
@@ -18,6 +19,7 @@ struct Ledger {
   double unshot = 0.0;       // reflected but not yet shot on: sum of dB_j * A_j
   double notCaptured = 0.0;  // left the shooter outside the projection surface (the plane's miss)
   double escaped = 0.0;      // captured but hit no patch: light leaving an open scene
+  double absorbedByBackFaces = 0.0;  // part of absorbed: reached the unlit back of a one-sided patch
   double imbalance() const;  // |emitted - (absorbed + unshot + notCaptured + escaped)| / emitted
 };
 
@@ -28,6 +30,10 @@ struct IterationRecord {
   double convergence = 0.0;        // C_i = 1 - s_i / s_1
   double seconds = 0.0;            // wall time of this iteration
   double capturedFraction = 0.0;   // sum of delta form factors of the projection surface
+  int reusedRows = 0;       // shooters this iteration that had shot before (the paper's Table 1.3)
+  int reusedRowsTotal = 0;  // the same, over all iterations so far
+  int cacheHits = 0;        // rows served by the form-factor cache this iteration
+  Ledger ledger;            // after this iteration
 };
 
 class ProgressiveSolver {
@@ -47,6 +53,11 @@ class ProgressiveSolver {
   const Ledger& ledger() const;
   const std::vector<IterationRecord>& history() const;
   const SolveOptions& options() const;
+
+  // What the projection surface catches (closed form and sum of delta form factors).
+  ProjectionSummary projectionSummary() const;
+  // The back end computing form factors (e.g. for its single plane's item buffer).
+  FormFactorBackend& backend();
 
  private:
   struct State;

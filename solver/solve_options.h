@@ -19,6 +19,9 @@ struct SolveOptions {
   int threads = 0;         // 0: every core
   std::size_t formFactorCacheBytes = 0;  // 0: no form-factor row cache
   bool ambient = true;     // display-only ambient term (Cohen et al. 1988)
+  // Patches projecting to less than a pixel get analytic form factors with item-buffer
+  // visibility (solver/sub_pixel_receivers.h); false: pixel centres only, as in the paper.
+  bool subPixelReceivers = true;
 };
 
 // Throws OptionError naming the option and the accepted range.

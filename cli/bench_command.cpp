@@ -1,0 +1,42 @@
+// `radmesh bench ...`: measured tables (and JSON) of what the solver's choices cost.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "cli/bench.h"
+#include "cli/commands.h"
+#include "cli/stats_json.h"
+
+namespace radmesh::cli {
+
+namespace {
+
+void addBenchSolve(CLI::App* bench) {
+  auto args = std::make_shared<BenchSolveArgs>();
+  auto json = std::make_shared<std::string>();
+  CLI::App* cmd = bench->add_subcommand("solve", "Time per iteration and to convergence by projection and resolution");
+  cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
+  cmd->add_option("--cell", args->cellM, "Grid cell size, metres")->capture_default_str();
+  cmd->add_option("--projections", args->projections, "Projections to time")->delimiter(',')->capture_default_str();
+  cmd->add_option("--resolutions", args->resolutions, "Resolutions N to time")->delimiter(',')->capture_default_str();
+  cmd->add_option("--until", args->until, "Convergence to time to")->capture_default_str();
+  cmd->add_option("--max-iterations", args->maxIterations, "Cap per run")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();
+  cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
+  cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
+  cmd->add_option("--json", *json, "Also write the figures as JSON");
+  cmd->callback([args, json] {
+    const nlohmann::json result = benchSolve(*args);
+    if (!json->empty()) writeJson(*json, result), fmt::print("wrote {}\n", *json);
+  });
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+  CLI::App* bench = app.add_subcommand("bench", "Measure what accuracy costs in time");
+  bench->require_subcommand(1);
+  addBenchSolve(bench);
+}
+
+}  // namespace radmesh::cli

@@ -1,0 +1,98 @@
+// `radmesh bench solve`: time per iteration and time to convergence, side by side in one run.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "cli/bench.h"
+#include "cli/stats_json.h"
+#include "solver/meshing.h"
+#include "solver/progressive_solver.h"
+#include "solver/scene_loader.h"
+
+namespace radmesh::cli {
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+struct Timing {
+  double msPerIteration = 0.0;  // median over the measured iterations
+  int iterationsToUntil = 0;
+  double secondsToUntil = 0.0;
+  bool reached = false;
+};
+
+// Solves until `until` (or the cap), timing every iteration; the median is robust to the noise of
+// a shared machine.
+Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOptions options, int maxIterations) {
+  options.maxIterations = maxIterations;
+  ProgressiveSolver solver(scene, patches, options);
+  std::vector<double> perIteration;
+  const auto start = std::chrono::steady_clock::now();
+  while (!solver.done()) perIteration.push_back(solver.step().seconds);
+  Timing t;
+  t.secondsToUntil = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  t.msPerIteration = 1e3 * median(perIteration);
+  t.iterationsToUntil = static_cast<int>(perIteration.size());
+  t.reached = solver.convergence() >= options.until;
+  return t;
+}
+
+}  // namespace
+
+nlohmann::json benchSolve(const BenchSolveArgs& args) {
+  const Scene scene = loadScene(args.scene);
+  const std::vector<Patch> patches = meshScene(scene, args.cellM);
+  nlohmann::json rows = nlohmann::json::array();
+  fmt::print("scene {}: {} patches, threads {}, until C={:.2f}\n", scene.source, patches.size(), args.threads,
+             args.until);
+  fmt::print("{:<10} {:>6} {:>14} {:>12} {:>12} {:>10}\n", "projection", "N", "ms/iteration", "iterations", "s to C",
+             "it/s");
+  for (const std::string& projection : args.projections) {
+    for (int n : args.resolutions) {
+      SolveOptions o;
+      o.projection = parseProjection(projection);
+      o.resolution = n;
+      o.until = args.until;
+      o.threads = args.threads;
+      validateOptions(o);
+      const Timing t = timeSolve(scene, patches, o, args.maxIterations);
+      fmt::print("{:<10} {:>6} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f}\n", projection, n, t.msPerIteration,
+                 t.iterationsToUntil, t.reached ? " " : "+", t.secondsToUntil,
+                 t.msPerIteration > 0 ? 1e3 / t.msPerIteration : 0.0);
+      rows.push_back({{"projection", projection},
+                      {"resolution", n},
+                      {"ms_per_iteration", t.msPerIteration},
+                      {"iterations_to_until", t.iterationsToUntil},
+                      {"seconds_to_until", t.secondsToUntil},
+                      {"reached_until", t.reached}});
+    }
+  }
+  nlohmann::json scaling = nlohmann::json::array();
+  if (!args.cells.empty()) {
+    fmt::print("\nscaling with patch count (plane {}x{}, {} iterations each)\n", args.scalingResolution,
+               args.scalingResolution, args.scalingIterations);
+    fmt::print("{:>8} {:>10} {:>14} {:>16}\n", "cell m", "patches", "ms/iteration", "us/(patch+pixel)");
+    for (double cell : args.cells) {
+      const std::vector<Patch> mesh = meshScene(scene, cell);
+      SolveOptions o;
+      o.resolution = args.scalingResolution;
+      o.until = 1.0;
+      o.threads = args.threads;
+      const Timing t = timeSolve(scene, mesh, o, args.scalingIterations);
+      const double work = static_cast<double>(mesh.size()) + double(o.resolution) * o.resolution;
+      fmt::print("{:>8.3f} {:>10} {:>14.3f} {:>16.5f}\n", cell, mesh.size(), t.msPerIteration,
+                 1e3 * t.msPerIteration / work);
+      scaling.push_back({{"cell", cell}, {"patches", mesh.size()}, {"ms_per_iteration", t.msPerIteration}});
+    }
+  }
+  return {{"scene", scene.source}, {"patches", patches.size()}, {"threads", args.threads},
+          {"until", args.until},   {"rows", rows},               {"scaling", scaling}};
+}
+
+}  // namespace radmesh::cli

@@ -1,0 +1,192 @@
+// `radmesh render SCENE|FILE.glb --out FILE.png`: solve (or read a bake) and draw one view through
+// OSMesa, with the window's renderer and no display.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cli/commands.h"
+#include "solver/scene_error.h"
+
+#if RADMESH_HAS_VIEWER
+#include "cli/progress.h"
+#include "cli/solve_flags.h"
+#include "solver/display_radiosity.h"
+#include "solver/meshing.h"
+#include "solver/scene_loader.h"
+#include "viewer/bake_reader.h"
+#include "viewer/camera.h"
+#include "viewer/offscreen_render.h"
+#endif
+
+namespace radmesh::cli {
+
+#if RADMESH_HAS_VIEWER
+
+namespace {
+
+struct RenderArgs {
+  SolveFlags flags;
+  std::string camera;  // "X,Y,Z"; empty: the walkthrough's start view
+  std::string look;    // "X,Y,Z"; empty: the start view's, or the scene centre with --camera
+  double fovDeg = 60.0;
+  std::string size = "1024x768";
+  int iterations = 0;  // 0: until --until
+  std::optional<double> exposureEv;
+  int frames = 1;
+  std::string outPath;
+};
+
+glm::dvec3 parsePoint(const std::string& text, const char* option) {
+  glm::dvec3 p;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &p.x, &p.y, &p.z, &tail) != 3 || !std::isfinite(p.x) ||
+      !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw OptionError(fmt::format("{} '{}' is not a point: give three numbers in metres as X,Y,Z", option, text));
+  return p;
+}
+
+glm::ivec2 parseSize(const std::string& text) {
+  glm::ivec2 s;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &s.x, &s.y, &tail) != 2 || s.x < 1 || s.y < 1 || s.x > 16384 ||
+      s.y > 16384)
+    throw OptionError(fmt::format("--size '{}' is not WxH with each side in 1..16384 (e.g. 1024x768)", text));
+  return s;
+}
+
+bool endsWithGlb(std::string path) {
+  std::transform(path.begin(), path.end(), path.begin(), [](unsigned char c) { return std::tolower(c); });
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
+}
+
+// The start view of the walkthrough, moved by --camera / --look / --fov.
+RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
+  WalkCamera walk(frame);
+  walk.fovYDeg = args.fovDeg;
+  RenderView view = walk.view();
+  if (!args.camera.empty()) {
+    view.eye = parsePoint(args.camera, "--camera");
+    view.look = 0.5 * (frame.boundsMin + frame.boundsMax);
+  }
+  if (!args.look.empty()) view.look = parsePoint(args.look, "--look");
+  try {
+    validateView(view);
+  } catch (const std::invalid_argument& e) {
+    throw OptionError(fmt::format("--camera/--look/--fov: {}", e.what()));
+  }
+  return view;
+}
+
+struct Solved {
+  DisplayMesh mesh;
+  std::vector<Rgb> vertexB;
+  SceneFrame frame;
+};
+
+Solved solveScene(const RenderArgs& args) {
+  SolveOptions options = args.flags.resolved();
+  if (args.iterations > 0) {
+    options.until = 1.0;  // C never passes 1: only the iteration count stops the solve
+    options.maxIterations = args.iterations;
+  }
+  std::vector<std::string> warnings;
+  const Scene scene = loadScene(args.flags.scene, &warnings);
+  for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  Progress progress(options.until);
+  const auto start = std::chrono::steady_clock::now();
+  while (!solver.done())
+    progress.report(solver.step(),
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  progress.finish();
+  fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}\n", scene.source, solver.patches().size(),
+             solver.history().size(), solver.convergence());
+  Solved solved{buildDisplayMesh(solver.patches()), {}, sceneFrame(scene)};
+  solved.vertexB = vertexRadiosity(solved.mesh, solver.displayRadiosity());
+  return solved;
+}
+
+std::optional<Solved> readBake(const RenderArgs& args) {
+  if (!endsWithGlb(args.flags.scene)) return std::nullopt;
+  std::optional<Bake> bake = readBakeGlb(args.flags.scene);
+  if (!bake) return std::nullopt;  // a glTF scene to solve, not a bake
+  if (args.iterations > 0)
+    throw OptionError(fmt::format("{} is a bake, already solved: --iterations applies to scenes", args.flags.scene));
+  fmt::print("read bake {}: {} vertices, {} triangles\n", args.flags.scene, bake->mesh.positions.size(),
+             bake->mesh.indices.size() / 3);
+  const SceneFrame frame = bakeFrame(*bake);
+  return Solved{std::move(bake->mesh), std::move(bake->vertexB), frame};
+}
+
+void run(const RenderArgs& args) {
+  const glm::ivec2 size = parseSize(args.size);
+  if (!(args.fovDeg > 0.0 && args.fovDeg < 180.0)) throw OptionError("--fov must lie strictly between 0 and 180");
+  std::optional<Solved> solved = readBake(args);
+  if (!solved) solved = solveScene(args);
+  const RenderView view = chooseView(args, solved->frame);
+
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  OffscreenRenderer renderer(solved->mesh, size);
+  OffscreenShading shading;
+  if (args.exposureEv) shading.exposure = std::exp2(*args.exposureEv);
+  Image image = renderer.render(solved->vertexB, view, shading);
+  const double firstMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  const auto warm = Clock::now();
+  for (int frame = 1; frame < args.frames; ++frame) image = renderer.render(solved->vertexB, view, shading);
+  writePng(image, args.outPath);
+  if (args.frames > 1)
+    fmt::print("rendered {}x{}: first frame {:.1f} ms (context, upload, shader compile), then {:.2f} ms per frame "
+               "(draw and read back) over {} frames\n",
+               size.x, size.y, firstMs,
+               std::chrono::duration<double, std::milli>(Clock::now() - warm).count() / (args.frames - 1),
+               args.frames - 1);
+  else
+    fmt::print("rendered {}x{} in {:.1f} ms (context, upload, shader compile and one frame)\n", size.x, size.y,
+               firstMs);
+  fmt::print("wrote {}\n", args.outPath);
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Solve a scene (or read a bake) and render a view offscreen to PNG");
+  addSolveFlags(cmd, args->flags);
+  cmd->add_option("--camera", args->camera, "Eye position X,Y,Z in metres (default: the walkthrough's start)");
+  cmd->add_option("--look", args->look, "Point looked at X,Y,Z (default: the scene centre with --camera)");
+  cmd->add_option("--fov", args->fovDeg, "Vertical field of view, degrees")->capture_default_str();
+  cmd->add_option("--size", args->size, "Image size WxH in pixels")->capture_default_str();
+  CLI::Option* iterations =
+      cmd->add_option("--iterations", args->iterations, "Solve exactly this many iterations (instead of --until)")
+          ->check(CLI::PositiveNumber);
+  cmd->get_option("--until")->excludes(iterations);
+  cmd->add_option_function<double>(
+      "--exposure", [args](double ev) { args->exposureEv = ev; },
+      "Exposure in stops: shown value = B x 2^EV, white at 1 (default: automatic)");
+  cmd->add_option("--frames", args->frames, "Draw this many frames and report ms per frame (timing)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--out", args->outPath, "PNG file to write")->required();
+  cmd->callback([args] { run(*args); });
+}
+
+#else
+
+void addRenderCommand(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("render", "Render offscreen (not built: configure with RADMESH_BUILD_VIEWER=ON)");
+  cmd->allow_extras();
+  cmd->callback([] {
+    throw OptionError("this radmesh was built without the viewer: reconfigure with -DRADMESH_BUILD_VIEWER=ON");
+  });
+}
+
+#endif
+
+}  // namespace radmesh::cli

@@ -1,0 +1,100 @@
+#pragma once
+// A mesh-connected SIMD machine: a toroidal grid of PEs with local memory, an active mask, host
+// threads that run the PEs' local work, and the counts of what its programs did. Communication
+// lives beside it (xnet.h, router.h, reduce.h, scan.h, mesh_sort.h); data in plural.h, pe_array.h.
+#include <atomic>
+#include <cstdint>
+#include <span>
+
+#include "emulator/active_mask.h"
+#include "emulator/cost_counts.h"
+#include "emulator/memory_ledger.h"
+#include "emulator/pe_grid.h"
+#include "emulator/thread_pool.h"
+
+namespace radmesh::emu {
+
+struct MachineConfig {
+  int rows = 64;  // the MP-1 of the paper: 64 x 64 = 4096 PEs (section 1.4)
+  int cols = 64;
+  std::int64_t memoryBudgetBytes = 16 * 1024;  // per PE, as the MP-1
+  int threads = 1;  // host threads running PE work; results do not depend on it
+};
+
+// Local work a program declares per PE (SIMD: every PE steps through it, active or not).
+struct AluCost {
+  double flops = 0.0;
+  double intOps = 0.0;
+};
+
+class MeshMachine {
+ public:
+  explicit MeshMachine(const MachineConfig& config = {});
+
+  const PeGrid& grid() const { return grid_; }
+  int size() const { return grid_.size(); }
+  int threads() const { return pool_.threads(); }
+
+  // SIMD `if`: narrow the active set, flip to the `else` branch, restore (see ActiveScope).
+  bool active(int pe) const { return mask_.active(pe); }
+  const ActiveMask& mask() const { return mask_; }
+  void pushActive(std::span<const bool> condition) { mask_.push(condition); }
+  void flipActive() { mask_.flip(); }
+  void popActive() { mask_.pop(); }
+
+  // Runs perPe(pe) on every active PE, over the host threads when the declared work is large
+  // enough to pay for them, and charges `cost` to the ALU class.
+  template <class PerPe>
+  void compute(AluCost cost, PerPe&& perPe);
+  void chargeAlu(AluCost cost);  // declares local work done outside compute()
+
+  MemoryLedger& memory() { return memory_; }
+  const MemoryLedger& memory() const { return memory_; }
+
+  CostCounts& counters() { return counts_; }  // for the operations that charge it
+  CostCounts costs() const;                   // a snapshot, with the memory high-water mark
+  void resetPeaks();  // restarts maxCollisions and the memory high-water mark from now
+
+  bool inParallelRegion() const { return inParallel_.load(std::memory_order_relaxed); }
+
+ private:
+  // Declared operations x active PEs below which a compute() runs on the calling thread alone:
+  // waking the pool costs about as much as this many simple host operations.
+  static constexpr double kParallelMinWork = 20000.0;
+
+  PeGrid grid_;
+  ActiveMask mask_;
+  MemoryLedger memory_;
+  ThreadPool pool_;
+  CostCounts counts_;
+  std::atomic<bool> inParallel_{false};
+};
+
+// Operations take plural data of one machine only; throws std::invalid_argument otherwise.
+void requireSameMachine(const MeshMachine& expected, const MeshMachine& got, const char* operation);
+
+template <class PerPe>
+void MeshMachine::compute(AluCost cost, PerPe&& perPe) {
+  chargeAlu(cost);
+  const std::uint8_t* flags = mask_.flags();
+  const bool all = mask_.allActive();
+  auto range = [&](int begin, int end) {
+    for (int pe = begin; pe < end; ++pe)
+      if (all || flags[pe]) perPe(pe);
+  };
+  const double work = (cost.flops + cost.intOps) * mask_.activeCount();
+  if (pool_.threads() == 1 || work < kParallelMinWork) {
+    range(0, size());
+    return;
+  }
+  inParallel_ = true;
+  try {
+    pool_.run(size(), range);
+  } catch (...) {
+    inParallel_ = false;
+    throw;
+  }
+  inParallel_ = false;
+}
+
+}  // namespace radmesh::emu

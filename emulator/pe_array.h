@@ -1,0 +1,103 @@
+#pragma once
+// A per-PE local array: each PE holds a list of T (an item buffer, a queue of descriptions). As a
+// plural array on a SIMD machine, every PE reserves room for the longest list any PE has had, so
+// the memory charged is that length x kWireBytes<T> on every PE; growing past the budget throws,
+// naming the PE whose list forced it.
+#include <algorithm>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "emulator/mesh_machine.h"
+#include "emulator/wire_size.h"
+
+namespace radmesh::emu {
+
+template <class T>
+class PeArray {
+ public:
+  // Empty lists on every PE.
+  explicit PeArray(MeshMachine& machine, std::string label = "local array")
+      : machine_(&machine), label_(std::move(label)), counts_(machine.size(), 0) {}
+  // `length` copies of init on every PE (a plural array of fixed length).
+  PeArray(MeshMachine& machine, int length, const T& init, std::string label = "local array")
+      : PeArray(machine, std::move(label)) {
+    reserve(length);
+    std::fill_n(data_.get(), stride_ * counts_.size(), init);
+    std::fill(counts_.begin(), counts_.end(), length);
+  }
+  PeArray(const PeArray&) = delete;
+  PeArray& operator=(const PeArray&) = delete;
+  ~PeArray() { machine_->memory().release(chargedBytes()); }
+
+  int count(int pe) const { return counts_[pe]; }
+  T& at(int pe, int i) { return data_[offset(pe) + i]; }
+  const T& at(int pe, int i) const { return data_[offset(pe) + i]; }
+  std::span<T> list(int pe) { return {data_.get() + offset(pe), listSize(pe)}; }
+  std::span<const T> list(int pe) const { return {data_.get() + offset(pe), listSize(pe)}; }
+  int maxCount() const { return *std::max_element(counts_.begin(), counts_.end()); }
+  int reservedLength() const { return charged_; }  // per PE, in elements
+  MeshMachine& machine() const { return *machine_; }
+  const std::string& label() const { return label_; }
+
+  // Makes room for `length` elements on every PE; `pe` names the PE that needs it. Serial only.
+  void reserve(int length, int pe = 0) {
+    if (length <= charged_) return;
+    requireSerial("reserve");
+    machine_->memory().reserve(static_cast<std::int64_t>(length - charged_) * kWireBytes<T>, label_, pe);
+    charged_ = length;
+    if (length > stride_) regrow(std::max(length, 2 * stride_));
+  }
+  // Appends to one PE's list (front-end or serial code: may grow every PE's reservation).
+  void push(int pe, const T& value) {
+    if (counts_[pe] == charged_) reserve(counts_[pe] + 1, pe);
+    at(pe, counts_[pe]++) = value;
+  }
+  // Appends within the reserved length only; safe inside MeshMachine::compute.
+  void pushReserved(int pe, const T& value) {
+    if (counts_[pe] == charged_)
+      throw std::logic_error("PeArray '" + label_ + "': " + machine_->grid().name(pe) +
+                             " exceeds its reserved length " + std::to_string(charged_) +
+                             "; reserve() before the parallel step");
+    at(pe, counts_[pe]++) = value;
+  }
+  void truncate(int pe, int count) { counts_[pe] = std::min(counts_[pe], count); }
+  void clear(int pe) { counts_[pe] = 0; }
+  void clearAll() { std::fill(counts_.begin(), counts_.end(), 0); }  // the reservation stays
+  // Empties every list and gives the reserved memory back (another phase reuses it). Serial only.
+  void releaseAll() {
+    requireSerial("releaseAll");
+    clearAll();
+    machine_->memory().release(chargedBytes());
+    charged_ = 0;
+  }
+
+ private:
+  std::size_t offset(int pe) const { return static_cast<std::size_t>(pe) * stride_; }
+  std::size_t listSize(int pe) const { return static_cast<std::size_t>(counts_[pe]); }
+  std::int64_t chargedBytes() const { return static_cast<std::int64_t>(charged_) * kWireBytes<T>; }
+  void requireSerial(const char* what) const {
+    if (machine_->inParallelRegion())
+      throw std::logic_error(std::string("PeArray::") + what + " of '" + label_ +
+                             "' inside a parallel compute(); reserve before it");
+  }
+  void regrow(int stride) {
+    // unique_ptr<T[]> rather than std::vector, so that PeArray<bool> holds real bools.
+    std::unique_ptr<T[]> grown(new T[static_cast<std::size_t>(stride) * counts_.size()]());
+    for (std::size_t pe = 0; pe < counts_.size(); ++pe)
+      std::copy_n(data_.get() + pe * stride_, counts_[pe], grown.get() + pe * stride);
+    data_ = std::move(grown);
+    stride_ = stride;
+  }
+
+  MeshMachine* machine_;
+  std::string label_;
+  std::vector<int> counts_;
+  std::unique_ptr<T[]> data_;
+  int stride_ = 0;   // host storage per PE (grows geometrically)
+  int charged_ = 0;  // emulated reservation per PE (grows to exactly the longest list)
+};
+
+}  // namespace radmesh::emu

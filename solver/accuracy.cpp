@@ -1,0 +1,22 @@
+#include "solver/accuracy.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace radmesh {
+
+double relativeRmsError(const std::vector<Patch>& patches, const std::vector<Rgb>& radiosity,
+                        const std::vector<Rgb>& reference) {
+  if (radiosity.size() != patches.size() || reference.size() != patches.size())
+    throw std::invalid_argument("relativeRmsError: solution and reference must be on the same mesh");
+  double error = 0.0, norm = 0.0;
+  for (size_t j = 0; j < patches.size(); ++j) {
+    const Rgb d = radiosity[j] - reference[j];
+    error += patches[j].areaM2 * glm::dot(d, d);
+    norm += patches[j].areaM2 * glm::dot(reference[j], reference[j]);
+  }
+  if (!(norm > 0.0)) throw std::invalid_argument("relativeRmsError: the reference is dark everywhere");
+  return std::sqrt(error / norm);
+}
+
+}  // namespace radmesh

@@ -1,0 +1,36 @@
+#include "solver/form_factor_backend.h"
+
+#include <algorithm>
+
+#include "solver/native_backend.h"
+#include "solver/scene_error.h"
+
+namespace radmesh {
+
+double FormFactorRow::hitFraction() const {
+  double sum = backFaces;
+  for (double f : formFactors) sum += f;
+  return sum;
+}
+
+double FormFactorRow::escapedFraction() const {
+  // Rounding may put the hits a few ulps above what was caught; that is not light created.
+  return std::max(0.0, capturedFraction - hitFraction());
+}
+
+std::size_t FormFactorRow::bytes() const {
+  return sizeof(FormFactorRow) + receivers.capacity() * sizeof(int) +
+         formFactors.capacity() * sizeof(double);
+}
+
+std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
+                                                         const std::vector<Patch>& patches,
+                                                         const SolveOptions& options) {
+  switch (options.backend) {
+    case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, options);
+    case Backend::Mesh: break;
+  }
+  throw OptionError("--backend mesh is not available in this build: use --backend native");
+}
+
+}  // namespace radmesh

@@ -1,0 +1,44 @@
+#pragma once
+// Form factors on the host CPU: the single plane or the hemicube with item buffers, or analytic
+// point-to-polygon form factors for convex enclosures. The oracle the mesh back end must match.
+#include <memory>
+
+#include "solver/environment_projection.h"
+#include "solver/form_factor_backend.h"
+#include "solver/thread_pool.h"
+
+namespace radmesh {
+
+class NativeBackend final : public FormFactorBackend {
+ public:
+  NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options);
+  ~NativeBackend() override;
+
+  void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
+  ProjectionSummary projectionSummary() const override;
+
+  ItemBuffer singlePlaneItemBuffer(int shooter) override;
+
+  double nearDepth() const { return nearDepth_; }
+
+ private:
+  FormFactorRow projectedRow(EnvironmentProjection& projection, int shooter);
+  FormFactorRow analyticRow(int shooter);
+  FormFactorRow assembleRow(int shooter, double capturedFraction) const;
+
+  const Scene& scene_;
+  const std::vector<Patch>& patches_;
+  SolveOptions options_;
+  double nearDepth_;
+  ThreadPool pool_;
+  std::unique_ptr<EnvironmentProjection> projection_;  // null for --projection analytic
+  std::unique_ptr<EnvironmentProjection> singlePlane_;  // made when first asked for
+  std::vector<double> formFactors_;                     // per patch, this shot
+  std::vector<char> seenFromFront_;                     // per patch, this shot
+};
+
+// The near plane for a scene: a length far below its features, far above rounding at its
+// coordinates (1e-9 of its bounding box's diagonal).
+double sceneNearDepth(const std::vector<Patch>& patches);
+
+}  // namespace radmesh

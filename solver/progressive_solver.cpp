@@ -1,0 +1,242 @@
+#include "solver/progressive_solver.h"
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <queue>
+#include <string>
+
+#include "solver/form_factor_cache.h"
+#include "solver/scan_conversion.h"
+#include "solver/scene_error.h"
+
+namespace radmesh {
+
+double Ledger::imbalance() const {
+  const double accounted = absorbed + unshot + notCaptured + escaped;
+  return emitted > 0.0 ? std::abs(emitted - accounted) / emitted : std::abs(accounted);
+}
+
+namespace {
+
+double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
+
+// Patches come from the mesher; a bad one would turn into NaN radiosity, so refuse it by name.
+void checkPatches(const Scene& scene, const std::vector<Patch>& patches) {
+  for (size_t i = 0; i < patches.size(); ++i) {
+    const Patch& p = patches[i];
+    const bool ok = (p.vertexCount == 3 || p.vertexCount == 4) && std::isfinite(p.areaM2) &&
+                    p.areaM2 > 0.0 && p.material >= 0 &&
+                    p.material < static_cast<int>(scene.materials.size());
+    if (!ok)
+      throw SceneError(scene.source, fmt::format("patch {} (of polygon {})", i, p.polygon),
+                       "has no area, a vertex count other than 3 or 4, or an unknown material",
+                       "fix the polygon it came from, or mesh with another --cell");
+  }
+  if (patches.empty())
+    throw SceneError(scene.source, "the scene", "meshed into no patches", "give it polygons");
+}
+
+}  // namespace
+
+struct ProgressiveSolver::State {
+  Scene scene;
+  std::vector<Patch> patches;
+  SolveOptions options;
+  std::vector<Rgb> rho;
+  std::vector<Rgb> radiosity;          // B
+  std::vector<Rgb> unshotRadiosity;    // dB: received, not yet shot
+  std::vector<double> unshotPowerW;    // dB * A summed over RGB, what shooter selection compares
+  std::vector<int> timesShot;
+  std::vector<int> tieRank;            // shooters of equal power go in geometric order
+  std::unique_ptr<FormFactorBackend> backend;
+  FormFactorCache cache;
+  Ledger ledger;
+  std::vector<IterationRecord> history;
+  std::vector<FormFactorRow> rows;
+  double firstShotPowerW = 0.0;
+  double convergence = 0.0;
+  bool exhausted = false;
+
+  State(const Scene& s, std::vector<Patch> p, const SolveOptions& o)
+      : scene(s), patches(std::move(p)), options(o), cache(o.formFactorCacheBytes) {}
+
+  std::vector<int> pickShooters() const;
+  void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
+  void shoot(const std::vector<int>& shooters, IterationRecord& record);
+};
+
+ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
+                                     const SolveOptions& options)
+    : state_(std::make_unique<State>(scene, std::move(patches), options)) {
+  validateOptions(options);
+  State& s = *state_;
+  checkPatches(s.scene, s.patches);
+  const size_t n = s.patches.size();
+  s.rho.resize(n);
+  s.radiosity.resize(n);
+  s.unshotRadiosity.resize(n);
+  s.unshotPowerW.resize(n);
+  s.timesShot.assign(n, 0);
+  for (size_t j = 0; j < n; ++j) {
+    const Material& m = s.scene.materials[s.patches[j].material];
+    s.rho[j] = m.rho;
+    s.radiosity[j] = s.unshotRadiosity[j] = m.emittance;
+    s.unshotPowerW[j] = channelSum(m.emittance) * s.patches[j].areaM2;
+    s.ledger.emitted += s.unshotPowerW[j];
+  }
+  s.ledger.unshot = s.ledger.emitted;
+  s.exhausted = !(s.ledger.emitted > 0.0);
+  s.tieRank = depthTieRanks(s.patches);
+  s.backend = makeFormFactorBackend(s.scene, s.patches, options);
+}
+
+ProgressiveSolver::~ProgressiveSolver() = default;
+
+// The k patches with the most unshot power (the paper's reduceMax, k at a time).
+std::vector<int> ProgressiveSolver::State::pickShooters() const {
+  auto before = [&](int a, int b) {  // a shoots before b
+    if (unshotPowerW[a] != unshotPowerW[b]) return unshotPowerW[a] > unshotPowerW[b];
+    return tieRank[a] < tieRank[b];
+  };
+  // A heap of the best k so far whose top is the weakest of them.
+  std::priority_queue<int, std::vector<int>, decltype(before)> best(before);
+  for (int j = 0; j < static_cast<int>(patches.size()); ++j) {
+    if (!(unshotPowerW[j] > 0.0)) continue;
+    if (static_cast<int>(best.size()) < options.shooters) {
+      best.push(j);
+    } else if (before(j, best.top())) {
+      best.pop();
+      best.push(j);
+    }
+  }
+  std::vector<int> shooters;
+  for (; !best.empty(); best.pop()) shooters.push_back(best.top());
+  std::reverse(shooters.begin(), shooters.end());  // strongest first
+  return shooters;
+}
+
+void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, IterationRecord& record) {
+  rows.resize(shooters.size());
+  std::vector<int> missing;
+  std::vector<size_t> missingSlot;
+  for (size_t s = 0; s < shooters.size(); ++s) {
+    if (timesShot[shooters[s]] > 0) ++record.reusedRows;
+    if (const FormFactorRow* row = cache.find(shooters[s])) {
+      rows[s] = *row;
+      rows[s].reused = true;
+      ++record.cacheHits;
+    } else {
+      missing.push_back(shooters[s]);
+      missingSlot.push_back(s);
+    }
+  }
+  if (missing.empty()) return;
+  std::vector<FormFactorRow> computed;
+  backend->computeRows(missing, computed);
+  for (size_t m = 0; m < missing.size(); ++m) {
+    if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
+    rows[missingSlot[m]] = std::move(computed[m]);
+  }
+}
+
+// Eq. 1.2 for every shooter, all from the same state: B_j += dB_i rho_j F_ij A_i / A_j.
+void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, IterationRecord& record) {
+  std::vector<Rgb> shotPower(shooters.size());
+  for (size_t s = 0; s < shooters.size(); ++s) {
+    const int i = shooters[s];
+    shotPower[s] = unshotRadiosity[i] * patches[i].areaM2;
+    unshotRadiosity[i] = Rgb(0.0);
+    unshotPowerW[i] = 0.0;
+    ++timesShot[i];
+    record.shotPowerW += channelSum(shotPower[s]);
+  }
+  for (size_t s = 0; s < shooters.size(); ++s) {
+    const FormFactorRow& row = rows[s];
+    const Rgb& power = shotPower[s];
+    const double powerW = channelSum(power);
+    ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
+    ledger.escaped += powerW * row.escapedFraction();
+    ledger.absorbed += powerW * row.backFaces;
+    ledger.absorbedByBackFaces += powerW * row.backFaces;
+    for (size_t r = 0; r < row.receivers.size(); ++r) {
+      const int j = row.receivers[r];
+      const Rgb incident = power * row.formFactors[r];
+      const Rgb reflected = rho[j] * incident;
+      ledger.absorbed += channelSum(incident - reflected);
+      const Rgb gain = reflected / patches[j].areaM2;
+      radiosity[j] += gain;
+      unshotRadiosity[j] += gain;
+      unshotPowerW[j] = channelSum(unshotRadiosity[j]) * patches[j].areaM2;
+    }
+  }
+  ledger.unshot = 0.0;
+  for (double p : unshotPowerW) ledger.unshot += p;
+  record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
+}
+
+const IterationRecord& ProgressiveSolver::step() {
+  State& s = *state_;
+  if (done() && !s.history.empty()) return s.history.back();
+  const auto start = std::chrono::steady_clock::now();
+
+  IterationRecord record;
+  record.iteration = static_cast<int>(s.history.size()) + 1;
+  record.shooters = s.pickShooters();
+  if (!record.shooters.empty()) {
+    // C_i = 1 - s_i / s_1 (the paper's section 1.6), s_i the strongest shooter's power.
+    const double strongestW = s.unshotPowerW[record.shooters.front()];
+    if (s.history.empty()) s.firstShotPowerW = strongestW;
+    s.fetchRows(record.shooters, record);
+    s.shoot(record.shooters, record);
+    s.convergence = 1.0 - strongestW / s.firstShotPowerW;
+  }
+  s.exhausted = std::none_of(s.unshotPowerW.begin(), s.unshotPowerW.end(), [](double p) { return p > 0.0; });
+  if (s.exhausted) s.convergence = 1.0;  // nothing is left to shoot: the solution is exact
+
+  record.reusedRowsTotal = record.reusedRows + (s.history.empty() ? 0 : s.history.back().reusedRowsTotal);
+  record.convergence = s.convergence;
+  record.ledger = s.ledger;
+  assert(s.ledger.imbalance() <= 1e-9);
+  record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  s.history.push_back(std::move(record));
+  return s.history.back();
+}
+
+bool ProgressiveSolver::done() const {
+  const State& s = *state_;
+  return s.exhausted || s.convergence >= s.options.until ||
+         static_cast<int>(s.history.size()) >= s.options.maxIterations;
+}
+
+double ProgressiveSolver::convergence() const { return state_->convergence; }
+const std::vector<Patch>& ProgressiveSolver::patches() const { return state_->patches; }
+const std::vector<Rgb>& ProgressiveSolver::radiosity() const { return state_->radiosity; }
+const Ledger& ProgressiveSolver::ledger() const { return state_->ledger; }
+const std::vector<IterationRecord>& ProgressiveSolver::history() const { return state_->history; }
+const SolveOptions& ProgressiveSolver::options() const { return state_->options; }
+ProjectionSummary ProgressiveSolver::projectionSummary() const { return state_->backend->projectionSummary(); }
+FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
+
+// The ambient term of Cohen et al. 1988: the unshot power, spread evenly and interreflected with
+// the area-averaged reflectance, added for display only (it is not in the ledger).
+std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
+  const State& s = *state_;
+  if (!s.options.ambient) return s.radiosity;
+  Rgb unshotPower(0.0), rhoArea(0.0);
+  double area = 0.0;
+  for (size_t j = 0; j < s.patches.size(); ++j) {
+    unshotPower += s.unshotRadiosity[j] * s.patches[j].areaM2;
+    rhoArea += s.rho[j] * s.patches[j].areaM2;
+    area += s.patches[j].areaM2;
+  }
+  const Rgb averageRho = rhoArea / area;
+  const Rgb ambient = unshotPower / area / (Rgb(1.0) - averageRho);
+  std::vector<Rgb> shown(s.radiosity);
+  for (size_t j = 0; j < shown.size(); ++j) shown[j] += s.rho[j] * ambient;
+  return shown;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,246 @@
+// The mesh back end against the native one: the same item buffers pixel for pixel, the same form
+// factors up to summation order, and load-balance depths that are counts of what arrived.
+#include "solver/mesh_backend.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <random>
+
+#include "emulator/memory_ledger.h"
+#include "solver/builtin_scenes.h"
+#include "solver/meshing.h"
+#include "solver/native_backend.h"
+#include "solver/progressive_solver.h"
+#include "solver/scene_error.h"
+
+namespace radmesh {
+namespace {
+
+struct Meshed {
+  Scene scene;
+  std::vector<Patch> patches;
+};
+
+const Meshed& builtin(const std::string& name) {
+  static std::map<std::string, Meshed> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    Meshed m{builtinScene(name), {}};
+    m.patches = meshScene(m.scene);
+    it = cache.emplace(name, std::move(m)).first;
+  }
+  return it->second;
+}
+
+SolveOptions planeOptions(int resolution, int threads = 1) {
+  SolveOptions o;
+  o.backend = Backend::Mesh;
+  o.projection = Projection::Plane;
+  o.resolution = resolution;
+  o.threads = threads;
+  return o;
+}
+
+// The strongest emitter patch and a few others spread over the scene: varied viewpoints.
+std::vector<int> someShooters(const Meshed& m, int count) {
+  std::vector<int> shooters;
+  int brightest = 0;
+  for (int j = 0; j < static_cast<int>(m.patches.size()); ++j) {
+    const Rgb e = m.scene.materials[m.patches[j].material].emittance;
+    const Rgb b = m.scene.materials[m.patches[brightest].material].emittance;
+    if (e.r + e.g + e.b > b.r + b.g + b.b) brightest = j;
+  }
+  shooters.push_back(brightest);
+  for (int k = 1; k < count; ++k) shooters.push_back(static_cast<int>(m.patches.size() * k / count + 7) % static_cast<int>(m.patches.size()));
+  return shooters;
+}
+
+::testing::AssertionResult sameItemBuffer(const ItemBuffer& mesh, const ItemBuffer& native) {
+  if (mesh.width != native.width || mesh.height != native.height)
+    return ::testing::AssertionFailure() << "sizes differ";
+  for (int row = 0; row < native.height; ++row)
+    for (int column = 0; column < native.width; ++column) {
+      const int q = native.index(column, row);
+      if (mesh.items[q] != native.items[q] || mesh.inverseDepth[q] != native.inverseDepth[q])
+        return ::testing::AssertionFailure()
+               << "first difference at pixel (column " << column << ", row " << row << "): mesh item "
+               << mesh.items[q] << " at 1/depth " << mesh.inverseDepth[q] << ", native item " << native.items[q]
+               << " at 1/depth " << native.inverseDepth[q];
+    }
+  return ::testing::AssertionSuccess();
+}
+
+// Same receivers, form factors to `relative`, same back-face and captured fractions.
+void expectSameRow(const FormFactorRow& mesh, const FormFactorRow& native, double relative) {
+  ASSERT_EQ(mesh.shooter, native.shooter);
+  ASSERT_EQ(mesh.receivers, native.receivers) << "shooter " << native.shooter;
+  for (std::size_t k = 0; k < native.receivers.size(); ++k)
+    ASSERT_NEAR(mesh.formFactors[k], native.formFactors[k], relative * native.formFactors[k])
+        << "shooter " << native.shooter << " receiver " << native.receivers[k];
+  EXPECT_NEAR(mesh.backFaces, native.backFaces, relative * std::max(native.backFaces, 1e-300));
+  EXPECT_EQ(mesh.capturedFraction, native.capturedFraction);
+}
+
+class MeshAgreement : public ::testing::TestWithParam<std::tuple<std::string, int, MappingKind>> {};
+
+TEST_P(MeshAgreement, ItemBuffersAreTheNativeOnesAndRowsAgree) {
+  const auto& [name, resolution, mapping] = GetParam();
+  const Meshed& m = builtin(name);
+  const SolveOptions o = planeOptions(resolution);
+  NativeBackend native(m.scene, m.patches, o);
+  MeshBackend mesh(m.scene, m.patches, o, {mapping});
+  for (int shooter : someShooters(m, 2)) {
+    EXPECT_TRUE(sameItemBuffer(mesh.singlePlaneItemBuffer(shooter), native.singlePlaneItemBuffer(shooter)))
+        << name << " at " << resolution << ", " << toString(mapping) << ", shooter " << shooter;
+    std::vector<FormFactorRow> meshRows, nativeRows;
+    const int one[] = {shooter};
+    mesh.computeRows(one, meshRows);
+    native.computeRows(one, nativeRows);
+    expectSameRow(meshRows[0], nativeRows[0], 1e-9);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BuiltinScenes, MeshAgreement,
+    ::testing::Combine(::testing::Values("office", "cornell", "two-rooms", "furnace"), ::testing::Values(64, 128),
+                       ::testing::Values(MappingKind::Hierarchical, MappingKind::CutAndStack, MappingKind::Adaptive)),
+    [](const auto& info) {
+      std::string s = std::get<0>(info.param) + "_" + std::to_string(std::get<1>(info.param)) + "_" +
+                      toString(std::get<2>(info.param));
+      std::replace(s.begin(), s.end(), '-', '_');
+      return s;
+    });
+
+TEST(MeshBackend, SeveralPlanesAtOnceGiveTheRowsOfOneAtATime) {
+  const Meshed& m = builtin("cornell");
+  const SolveOptions o = planeOptions(64);
+  MeshBackend mesh(m.scene, m.patches, o);
+  const std::vector<int> shooters = someShooters(m, 3);
+  std::vector<FormFactorRow> together;
+  mesh.computeRows(shooters, together);
+  ASSERT_EQ(together.size(), 3u);
+  for (int s = 0; s < 3; ++s) {
+    std::vector<FormFactorRow> alone;
+    mesh.computeRows(std::span<const int>(&shooters[s], 1), alone);
+    expectSameRow(together[s], alone[0], 1e-12);
+  }
+}
+
+TEST(MeshBackend, DepthsCountWhatArrivedAtEachPe) {
+  const Meshed& m = builtin("office");
+  const SolveOptions o = planeOptions(128);
+  MeshBackend mesh(m.scene, m.patches, o);
+  NativeBackend native(m.scene, m.patches, o);
+  const int shooter = someShooters(m, 1)[0];
+  std::vector<FormFactorRow> rows;
+  const int one[] = {shooter};
+  mesh.computeRows(one, rows);
+  const MeshShotStats& s = mesh.lastShot();
+  // Recount from the native item buffer's patches: every projected patch arrives once at (a),
+  // and at (b) once per PE row its strip covers (128 pixel rows in blocks of 2 per PE row).
+  ASSERT_EQ(s.depthA.size(), 4096u);
+  long long arrivedA = 0, arrivedB = 0;
+  for (int d : s.depthA) arrivedA += d;
+  for (int d : s.depthB) arrivedB += d;
+  EXPECT_GT(arrivedA, 100);
+  EXPECT_GT(arrivedB, arrivedA);
+  EXPECT_EQ(s.depthAMax, *std::max_element(s.depthA.begin(), s.depthA.end()));
+  EXPECT_EQ(static_cast<int>(s.depthAHist.size()), s.depthAMax + 1);
+  int pes = 0;
+  for (int h : s.depthBHist) pes += h;
+  EXPECT_EQ(pes, 4096);
+  // The same projected patches the native back end rasterised, counted from the form factors of
+  // the phases: a patch that shows anywhere was projected, so arrived at (a).
+  EXPECT_GE(arrivedA, static_cast<long long>(rows[0].receivers.size()));
+  EXPECT_GT(s.emulatedSeconds, 0.0);
+  double phaseSum = 0.0;
+  for (const MeshPhaseCost& p : s.phases) phaseSum += p.emulatedSeconds;
+  EXPECT_NEAR(phaseSum, s.emulatedSeconds, 1e-9 * s.emulatedSeconds);
+  EXPECT_GT(s.counts.router.messages, 0);
+  EXPECT_GT(s.counts.sort.ops, 0);
+}
+
+TEST(MeshBackend, ThreadCountDoesNotChangeABit) {
+  const Meshed& m = builtin("two-rooms");
+  MeshBackend one(m.scene, m.patches, planeOptions(64, 1));
+  MeshBackend two(m.scene, m.patches, planeOptions(64, 2));
+  const std::vector<int> shooters = someShooters(m, 2);
+  std::vector<FormFactorRow> a, b;
+  one.computeRows(shooters, a);
+  two.computeRows(shooters, b);
+  for (std::size_t s = 0; s < a.size(); ++s) {
+    EXPECT_EQ(a[s].receivers, b[s].receivers);
+    EXPECT_EQ(a[s].formFactors, b[s].formFactors);
+  }
+  EXPECT_EQ(one.lastShot().counts.summary(), two.lastShot().counts.summary());
+}
+
+TEST(MeshBackend, SelectsShootersAsTheSolverDoesWithReduceMax) {
+  const Meshed& m = builtin("cornell");
+  MeshBackend mesh(m.scene, m.patches, planeOptions(64));
+  const int n = static_cast<int>(m.patches.size());
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> level(0, 5);  // few levels: many ties
+  std::vector<double> power(n);
+  for (double& p : power) p = level(rng) * 0.25;
+  const std::vector<int> rank = depthTieRanks(m.patches);
+  std::vector<int> expected(n);
+  std::iota(expected.begin(), expected.end(), 0);
+  std::erase_if(expected, [&](int j) { return !(power[j] > 0.0); });
+  std::sort(expected.begin(), expected.end(), [&](int a, int b) {
+    return power[a] != power[b] ? power[a] > power[b] : rank[a] < rank[b];
+  });
+  expected.resize(5);
+  EXPECT_EQ(mesh.selectShooters(power, rank, 5), expected);
+  EXPECT_GT(mesh.machine().costs().reduce.ops, 0);
+}
+
+TEST(MeshBackend, RefusesProjectionsOtherThanTheSinglePlane) {
+  const Meshed& m = builtin("cornell");
+  SolveOptions o = planeOptions(64);
+  o.projection = Projection::Hemicube;
+  EXPECT_THROW(MeshBackend(m.scene, m.patches, o), OptionError);
+}
+
+TEST(MeshBackend, ATooSmallPeMemoryIsAClearError) {
+  const Meshed& m = builtin("office");
+  MeshBackendOptions tiny;
+  tiny.memoryBudgetBytes = 600;
+  MeshBackend mesh(m.scene, m.patches, planeOptions(64), tiny);
+  std::vector<FormFactorRow> rows;
+  const int one[] = {someShooters(m, 1)[0]};
+  try {
+    mesh.computeRows(one, rows);
+    FAIL() << "expected a MemoryBudgetError";
+  } catch (const emu::MemoryBudgetError& e) {
+    EXPECT_NE(std::string(e.what()).find("PE (row "), std::string::npos) << e.what();
+    EXPECT_EQ(e.budgetBytes(), 600);
+  }
+}
+
+// B through the progressive solver, once the solver's factory builds the mesh back end.
+TEST(MeshBackend, RadiosityAgreesWithNativeTo1e6) {
+  const Meshed& m = builtin("cornell");
+  SolveOptions o = planeOptions(64);
+  o.maxIterations = 40;
+  try {
+    makeFormFactorBackend(m.scene, m.patches, o);
+  } catch (const OptionError& e) {
+    GTEST_SKIP() << "the solver's makeFormFactorBackend does not build the mesh back end yet: " << e.what();
+  }
+  ProgressiveSolver mesh(m.scene, m.patches, o);
+  o.backend = Backend::Native;
+  ProgressiveSolver native(m.scene, m.patches, o);
+  while (!native.done()) native.step(), mesh.step();
+  ASSERT_TRUE(mesh.done());
+  for (std::size_t j = 0; j < m.patches.size(); ++j)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(mesh.radiosity()[j][c], native.radiosity()[j][c], 1e-6 * std::max(1e-12, native.radiosity()[j][c]))
+          << "patch " << j;
+}
+
+}  // namespace
+}  // namespace radmesh

@@ -1,0 +1,103 @@
+// The walkthrough camera: where it starts in closed and open scenes, and how it walks and turns.
+#include "viewer/camera.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace radmesh {
+namespace {
+
+SceneFrame room(Vec3 size, int upAxis = 2, int openSide = -1) {
+  SceneFrame frame;
+  frame.boundsMax = size;
+  frame.upAxis = upAxis;
+  frame.openSide = openSide;
+  return frame;
+}
+
+bool inside(const Vec3& p, const SceneFrame& f) {
+  return glm::all(glm::greaterThan(p, f.boundsMin)) && glm::all(glm::lessThan(p, f.boundsMax));
+}
+
+TEST(WalkCamera, StartsInsideAClosedRoomAtEyeHeightLookingLevelAtTheCentre) {
+  const SceneFrame office = room({7.0, 5.0, 2.7});
+  const RenderView view = WalkCamera(office).view();
+  EXPECT_TRUE(inside(view.eye, office));
+  EXPECT_DOUBLE_EQ(view.eye.z, 1.6);
+  EXPECT_DOUBLE_EQ(view.look.z, view.eye.z);  // level
+  const Vec3 toCentre = Vec3(3.5, 2.5, 1.6) - view.eye;
+  EXPECT_NEAR(glm::dot(glm::normalize(view.look - view.eye), glm::normalize(toCentre)), 1.0, 1e-12);
+  EXPECT_NO_THROW(validateView(view));
+}
+
+TEST(WalkCamera, LowersTheEyeInALowRoom) {
+  const RenderView view = WalkCamera(room({1.0, 1.0, 0.5})).view();
+  EXPECT_DOUBLE_EQ(view.eye.z, 0.3);  // 60% of the height, under 1.6 m
+}
+
+TEST(WalkCamera, LooksIntoAnOpenSideFromOutsideSeeingAllOfIt) {
+  // A y-up unit box open at z = 0 (side 2 * 2 + 0), like the Cornell box.
+  WalkCamera camera(room({1.0, 1.0, 1.0}, 1, 4));
+  const RenderView view = camera.view();
+  EXPECT_LT(view.eye.z, 0.0);
+  EXPECT_DOUBLE_EQ(view.eye.x, 0.5);
+  EXPECT_DOUBLE_EQ(view.eye.y, 0.5);
+  EXPECT_EQ(view.up, Vec3(0, 1, 0));
+  // The opening's edges (0.5 m off its centre) lie within the vertical field of view.
+  const double halfAngle = std::atan(0.5 / -view.eye.z);
+  EXPECT_LT(halfAngle, glm::radians(0.5 * camera.fovYDeg));
+  EXPECT_GT(view.look.z, view.eye.z);
+}
+
+TEST(WalkCamera, WalksAtItsSpeedOnTheFloorPlane) {
+  WalkCamera camera(room({10.0, 10.0, 3.0}));
+  camera.speedMps = 2.0;
+  const RenderView before = camera.view();
+  const Vec3 forward = glm::normalize(before.look - before.eye);
+  camera.update(WalkInput{.forward = 1.0}, 0.5);
+  const RenderView after = camera.view();
+  EXPECT_NEAR(glm::length(after.eye - before.eye), 1.0, 1e-12);
+  EXPECT_NEAR(glm::dot(after.eye - before.eye, forward), 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(after.eye.z, before.eye.z);
+
+  camera.update(WalkInput{.right = 1.0}, 0.25);  // half a metre to the right
+  const Vec3 right = glm::cross(forward, Vec3(0, 0, 1));
+  EXPECT_NEAR(glm::dot(camera.view().eye - after.eye, right), 0.5, 1e-12);
+}
+
+TEST(WalkCamera, RisingChangesTheEyeHeightAboveTheFloor) {
+  WalkCamera camera(room({10.0, 10.0, 3.0}));
+  camera.speedMps = 1.0;
+  camera.update(WalkInput{.rise = 1.0}, 0.2);
+  EXPECT_NEAR(camera.eyeHeightM, 1.8, 1e-12);
+  EXPECT_NEAR(camera.view().eye.z, 1.8, 1e-12);
+  camera.update(WalkInput{.rise = -1.0}, 100.0);  // never under the floor
+  EXPECT_GT(camera.view().eye.z, 0.0);
+}
+
+TEST(WalkCamera, YawTurnsLeftAndPitchStopsShortOfStraightUp) {
+  WalkCamera camera(room({10.0, 10.0, 3.0}));
+  const Vec3 before = glm::normalize(camera.view().look - camera.view().eye);
+  camera.update(WalkInput{.yawRad = glm::radians(90.0)}, 0.0);
+  const Vec3 after = glm::normalize(camera.view().look - camera.view().eye);
+  EXPECT_NEAR(glm::dot(before, after), 0.0, 1e-12);
+  EXPECT_NEAR(glm::cross(before, after).z, 1.0, 1e-12);  // counter-clockwise seen from above: left
+
+  camera.update(WalkInput{.pitchRad = 10.0}, 0.0);
+  const Vec3 up = glm::normalize(camera.view().look - camera.view().eye);
+  EXPECT_GT(up.z, 0.99);
+  EXPECT_LT(up.z, 1.0);
+  EXPECT_NO_THROW(validateView(camera.view()));
+}
+
+TEST(WalkCamera, YUpScenesWalkInTheXzPlane) {
+  WalkCamera camera(room({10.0, 3.0, 10.0}, 1));
+  const double height = camera.view().eye.y;
+  EXPECT_DOUBLE_EQ(height, 1.6);
+  camera.update(WalkInput{.forward = 1.0, .right = 1.0}, 1.0);
+  EXPECT_DOUBLE_EQ(camera.view().eye.y, height);
+}
+
+}  // namespace
+}  // namespace radmesh

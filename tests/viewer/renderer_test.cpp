@@ -1,0 +1,120 @@
+// The renderer on hand-built meshes through OSMesa: sRGB encoding, exposure, Gouraud interpolation,
+// one-sided polygons, the shooter highlight and resizing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "viewer/exposure.h"
+#include "viewer/gl_context.h"
+#include "viewer/offscreen_render.h"
+#include "viewer/osmesa_context.h"
+#include "viewer/renderer.h"
+
+namespace radmesh {
+namespace {
+
+// The square x, z in [-1, 1] on the plane y = 0, facing -y, as two triangles of patches 0 and 1
+// (the left one holds x < z... split along the diagonal from (-1,-1) to (1,1)).
+DisplayMesh facingSquare() {
+  DisplayMesh mesh;
+  mesh.positions = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+  mesh.normals.assign(4, Vec3{0, -1, 0});
+  mesh.indices = {0, 2, 1, 0, 3, 2};
+  mesh.patchOfTriangle = {0, 1};
+  return mesh;
+}
+
+// Looks at the square from y = -2 with a 90 degree field: the square fills the middle half.
+RenderView frontView() { return RenderView{{0, -2, 0}, {0, 0, 0}, {0, 0, 1}, 90.0, 0.1, 10.0}; }
+
+std::array<int, 3> pixel(const Image& image, int x, int y) {
+  const size_t at = (static_cast<size_t>(y) * image.width + x) * 4;
+  return {image.rgba[at], image.rgba[at + 1], image.rgba[at + 2]};
+}
+
+int srgbByte(double linear) {
+  const double c = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+  return static_cast<int>(std::lround(255.0 * std::clamp(c, 0.0, 1.0)));
+}
+
+TEST(Renderer, UniformRadiosityShowsAsExposedSrgb) {
+  OffscreenRenderer renderer(facingSquare(), {64, 64});
+  const Rgb b{0.8, 0.4, 0.1};
+  const Image image = renderer.render(std::vector<Rgb>(4, b), frontView(), {.exposure = 0.5, .highlightedPatches = {}});
+  ASSERT_EQ(image.width, 64);
+  ASSERT_EQ(image.height, 64);
+  const auto centre = pixel(image, 32, 32);
+  EXPECT_NEAR(centre[0], srgbByte(0.4), 1);
+  EXPECT_NEAR(centre[1], srgbByte(0.2), 1);
+  EXPECT_NEAR(centre[2], srgbByte(0.05), 1);
+  // Outside the square: the clear colour, near black.
+  const auto corner = pixel(image, 2, 2);
+  EXPECT_LT(corner[0] + corner[1] + corner[2], 30);
+}
+
+TEST(Renderer, GouraudInterpolatesLinearRadiosityAcrossTheSquare) {
+  OffscreenRenderer renderer(facingSquare(), {128, 128});
+  // Radiosity 0 on the left edge, 1 on the right: linear in x.
+  const std::vector<Rgb> b = {Rgb{0.0}, Rgb{1.0}, Rgb{1.0}, Rgb{0.0}};
+  const Image image = renderer.render(b, frontView(), {.exposure = 1.0, .highlightedPatches = {}});
+  // The square spans pixels 32..95; pixel x sits at square x = (x + 0.5 - 64) / 32.
+  for (int x : {36, 48, 64, 80, 92}) {
+    const double linear = ((x + 0.5 - 64.0) / 32.0 + 1.0) / 2.0;
+    EXPECT_NEAR(pixel(image, x, 64)[1], srgbByte(linear), 2) << "at column " << x;
+  }
+}
+
+TEST(Renderer, BackOfAOneSidedPolygonIsDarkNotLit) {
+  OffscreenRenderer renderer(facingSquare(), {64, 64});
+  const RenderView behind{{0, 2, 0}, {0, 0, 0}, {0, 0, 1}, 90.0, 0.1, 10.0};
+  const Image image = renderer.render(std::vector<Rgb>(4, Rgb{1.0}), behind, {.exposure = 1.0, .highlightedPatches = {}});
+  const auto centre = pixel(image, 32, 32);
+  EXPECT_LT(centre[0], 40);
+  EXPECT_GT(centre[2], centre[0]);  // the blue-grey of a back face, not the clear colour
+}
+
+TEST(Renderer, HighlightTintsOnlyTheShootingPatch) {
+  OffscreenRenderer renderer(facingSquare(), {64, 64});
+  const std::vector<Rgb> grey(4, Rgb{0.2});
+  OffscreenShading shading{.exposure = 1.0, .highlightedPatches = {1}};
+  const Image image = renderer.render(grey, frontView(), shading);
+  // Patch 1 is the triangle (0, 3, 2): upper left in the image. Patch 0 is lower right.
+  const auto inShooter = pixel(image, 24, 20);
+  const auto outside = pixel(image, 44, 44);
+  EXPECT_EQ(outside[0], srgbByte(0.2));
+  EXPECT_EQ(outside[1], srgbByte(0.2));
+  EXPECT_GT(inShooter[0], inShooter[1] + 40);  // magenta: red and blue over green
+  EXPECT_GT(inShooter[2], inShooter[1] + 40);
+}
+
+TEST(Renderer, ResizedContextDrawsAtTheNewSize) {
+  OsMesaContext context({32, 32});
+  {
+    Renderer renderer;
+    renderer.setMesh(facingSquare());
+    renderer.setVertexRadiosity(std::vector<Rgb>(4, Rgb{0.5}));
+    context.resize({96, 48});
+    renderer.draw(frontView(), context.framebufferSize(), Shading{1.0, false});
+    const Image image = captureFramebuffer(context.framebufferSize());
+    ASSERT_EQ(image.width, 96);
+    ASSERT_EQ(image.height, 48);
+    // Wider than tall: the square stays square, 24 pixels high and wide around the centre.
+    EXPECT_EQ(pixel(image, 48, 24)[0], srgbByte(0.5));
+    EXPECT_EQ(pixel(image, 48 - 30, 24)[0], pixel(image, 2, 2)[0]);
+  }
+}
+
+TEST(Renderer, RefusesRadiosityOfTheWrongLength) {
+  OffscreenRenderer renderer(facingSquare(), {16, 16});
+  EXPECT_THROW(renderer.render(std::vector<Rgb>(3, Rgb{1.0}), frontView()), std::invalid_argument);
+}
+
+TEST(Renderer, RefusesADegenerateView) {
+  OffscreenRenderer renderer(facingSquare(), {16, 16});
+  RenderView view = frontView();
+  view.look = view.eye;
+  EXPECT_THROW(renderer.render(std::vector<Rgb>(4, Rgb{1.0}), view), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace radmesh

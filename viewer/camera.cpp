@@ -1,0 +1,72 @@
+#include "viewer/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radmesh {
+
+namespace {
+
+constexpr double kMaxPitchRad = 1.48;  // about 85 degrees: never quite along the up axis
+
+glm::dvec3 horizontal(const glm::dvec3& v, const glm::dvec3& up) { return v - up * glm::dot(v, up); }
+
+glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& axis, double angle) {
+  // Rodrigues' rotation formula.
+  return v * std::cos(angle) + glm::cross(axis, v) * std::sin(angle) +
+         axis * glm::dot(axis, v) * (1.0 - std::cos(angle));
+}
+
+}  // namespace
+
+WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
+  up_[frame.upAxis] = 1.0;
+  const glm::dvec3 extent = frame.boundsMax - frame.boundsMin;
+  const glm::dvec3 centre = frame.boundsMin + 0.5 * horizontal(extent, up_);  // on the floor
+  if (frame.openSide >= 0) {
+    // Look in through the open side from outside, half-way up, far enough to see all of it.
+    const int axis = frame.openSide / 2;
+    glm::dvec3 outward(0.0);
+    outward[axis] = frame.openSide % 2 == 0 ? -1.0 : 1.0;
+    eyeHeightM = 0.5 * frame.heightM();
+    const int across = 3 - axis - frame.upAxis;  // the open side spans this axis and up
+    const double halfSpan = 0.5 * std::max(frame.heightM(), extent[across]);
+    const double distanceM = 1.05 * halfSpan / std::tan(glm::radians(0.5 * fovYDeg));
+    ground_ = centre + outward * (0.5 * extent[axis] + distanceM);
+  } else {
+    // Stand near the corner of the lowest bounds, looking at the centre.
+    eyeHeightM = std::min(1.6, 0.6 * frame.heightM());
+    ground_ = frame.boundsMin + 0.15 * horizontal(extent, up_);
+  }
+  forward_ = horizontal(centre - ground_, up_);
+  // A point-sized or degenerate scene: look along any horizontal axis.
+  forward_ = glm::length(forward_) > 1e-9 ? glm::normalize(forward_) : glm::dvec3(up_.z, up_.x, up_.y);
+}
+
+void WalkCamera::update(const WalkInput& input, double dtSeconds) {
+  const glm::dvec3 right = glm::cross(forward_, up_);
+  forward_ = rotate(forward_, up_, input.yawRad);
+  const double pitch = std::asin(std::clamp(glm::dot(forward_, up_), -1.0, 1.0));
+  const double newPitch = std::clamp(pitch + input.pitchRad, -kMaxPitchRad, kMaxPitchRad);
+  forward_ = glm::normalize(rotate(forward_, glm::normalize(right), newPitch - pitch));
+
+  const glm::dvec3 walkForward = glm::normalize(horizontal(forward_, up_));
+  const glm::dvec3 walkRight = glm::cross(walkForward, up_);
+  const double step = speedMps * dtSeconds;
+  ground_ += step * (input.forward * walkForward + input.right * walkRight);
+  eyeHeightM = std::max(0.01, eyeHeightM + step * input.rise);
+}
+
+RenderView WalkCamera::view() const {
+  RenderView view;
+  view.eye = ground_ + up_ * (frame_.floorLevel() - glm::dot(ground_, up_) + eyeHeightM);
+  view.look = view.eye + forward_;
+  view.up = up_;
+  view.fovYDeg = fovYDeg;
+  const double diagonalM = glm::length(frame_.boundsMax - frame_.boundsMin);
+  view.nearM = std::clamp(0.002 * diagonalM, 0.005, 0.05);
+  view.farM = std::max(10.0, 4.0 * diagonalM);
+  return view;
+}
+
+}  // namespace radmesh

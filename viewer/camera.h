@@ -1,0 +1,39 @@
+#pragma once
+// The walkthrough camera: walks on the scene's floor at an eye height, turns with the mouse.
+// Knows nothing of GLFW; the window turns keys and mouse motion into a WalkInput.
+#include "viewer/render_view.h"
+#include "viewer/scene_frame.h"
+
+namespace radmesh {
+
+struct WalkInput {
+  // In multiples of the walking speed: -1..1, more when running.
+  double forward = 0.0;  // back / forward
+  double right = 0.0;    // left / right
+  double rise = 0.0;     // lowers / raises the eye height
+  double yawRad = 0.0;   // turn left (positive) about the up axis
+  double pitchRad = 0.0; // look up (positive)
+};
+
+class WalkCamera {
+ public:
+  // Starts inside the scene, near the corner of the lowest bounds, the eye 1.6 m above the lowest
+  // floor (lower in a room under 2.7 m), looking level at the centre. A scene open on one side
+  // (a Cornell box) is looked into through that side from outside instead.
+  explicit WalkCamera(const SceneFrame& frame);
+
+  void update(const WalkInput& input, double dtSeconds);
+  RenderView view() const;
+
+  double speedMps = 1.4;  // a walking pace
+  double eyeHeightM = 1.6;
+  double fovYDeg = 60.0;
+
+ private:
+  SceneFrame frame_;
+  glm::dvec3 up_{0.0};
+  glm::dvec3 ground_{0.0};   // the point on the floor plane below the eye
+  glm::dvec3 forward_{0.0};  // unit view direction
+};
+
+}  // namespace radmesh

@@ -1,0 +1,271 @@
+#include "viewer/panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "solver/scene_error.h"
+#include "viewer/item_buffer_image.h"
+#include "viewer/panel_plot.h"
+
+namespace radmesh {
+
+namespace {
+
+// True while the value changes.
+bool sliderDouble(const char* label, double* value, double min, double max, const char* format,
+                  ImGuiSliderFlags flags = ImGuiSliderFlags_None) {
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &min, &max, format, flags);
+}
+
+// A solve parameter restarts the solve once the user lets go of it, not at every pixel dragged.
+bool released() { return ImGui::IsItemDeactivatedAfterEdit(); }
+
+template <class Enum, size_t N>
+bool comboOf(const char* label, Enum* value, const Enum (&choices)[N]) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, toString(*value))) {
+    for (Enum choice : choices)
+      if (ImGui::Selectable(toString(choice), choice == *value)) {
+        changed = choice != *value;
+        *value = choice;
+      }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+// A greyed remark that wraps at the panel's edge.
+void note(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
+}
+
+void row(const char* name, const char* format, double value) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(name);
+  ImGui::TableNextColumn();
+  ImGui::Text(format, value);
+}
+
+}  // namespace
+
+PanelTab parsePanelTab(const std::string& name) {
+  if (name == "progress") return PanelTab::Progress;
+  if (name == "item-buffer") return PanelTab::ItemBuffer;
+  if (name == "parameters") return PanelTab::Parameters;
+  if (name == "scene") return PanelTab::Scene;
+  if (name == "view") return PanelTab::View;
+  throw OptionError("--panel '" + name + "' is not a tab: use progress, item-buffer, parameters, scene or view");
+}
+
+void Panel::draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamera& camera, ViewSettings& view) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - kWidthPx, viewport->WorkPos.y));
+  ImGui::SetNextWindowSize(ImVec2(kWidthPx, viewport->WorkSize.y));
+  ImGui::Begin("radmesh", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  drawStateAndCommands(snapshot, solver);
+  bool itemBufferShown = false;
+  if (ImGui::BeginTabBar("tabs")) {
+    if (beginTab("Progress", PanelTab::Progress)) {
+      drawProgress(snapshot);
+      ImGui::EndTabItem();
+    }
+    if (beginTab("Item buffer", PanelTab::ItemBuffer)) {
+      itemBufferShown = true;
+      drawItemBuffer(snapshot);
+      ImGui::EndTabItem();
+    }
+    if (beginTab("Parameters", PanelTab::Parameters)) {
+      drawParameters(solver);
+      ImGui::EndTabItem();
+    }
+    if (beginTab("Scene", PanelTab::Scene)) {
+      drawScene(snapshot);
+      ImGui::EndTabItem();
+    }
+    if (beginTab("View", PanelTab::View)) {
+      drawView(camera, view);
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  // The item buffer costs the solver thread a projection: only while its tab is shown.
+  if (itemBufferShown != itemBufferWanted_) solver.setItemBufferWanted(itemBufferShown);
+  itemBufferWanted_ = itemBufferShown;
+  firstFrame_ = false;
+  ImGui::End();
+}
+
+bool Panel::beginTab(const char* label, PanelTab tab) {
+  const bool select = firstFrame_ && tab == firstTab_;
+  return ImGui::BeginTabItem(label, nullptr, select ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None);
+}
+
+void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver) {
+  if (!snapshot.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("solve failed: %s", snapshot.error.c_str());
+    ImGui::PopStyleColor();
+  }
+  const char* state = snapshot.done ? "converged" : snapshot.playing ? "playing" : "paused";
+  if (!snapshot.mesh && snapshot.error.empty()) state = "meshing";
+  ImGui::Text("%s: iteration %d, C = %.4f (until %.3f)", state, snapshot.iteration(), snapshot.convergence(),
+              snapshot.setup.options.until);
+  ImGui::Text("%s back end, %s %dx%d, k = %d, %zu patches", toString(snapshot.setup.options.backend),
+              toString(snapshot.setup.options.projection), snapshot.setup.options.resolution,
+              snapshot.setup.options.resolution, snapshot.setup.options.shooters, snapshot.summary.patches);
+  if (ImGui::Button(snapshot.playing ? "Pause" : "Play")) snapshot.playing ? solver.pause() : solver.play();
+  ImGui::SameLine();
+  if (ImGui::Button("Step 1")) solver.step(1);
+  ImGui::SameLine();
+  if (ImGui::Button("Step N")) solver.step(stepCount_);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(70.0f);
+  ImGui::InputInt("N", &stepCount_, 0);
+  stepCount_ = std::max(1, stepCount_);
+  ImGui::SameLine();
+  if (ImGui::Button("Restart")) solver.restart(edited_);
+  const float fps = ImGui::GetIO().Framerate;
+  ImGui::TextDisabled("%.1f fps (%.1f ms per frame)", fps, 1e3f / std::max(fps, 1e-3f));
+}
+
+void Panel::drawProgress(const SolverSnapshot& snapshot) {
+  std::vector<double> iterations, seconds, c;
+  for (const ConvergencePoint& p : snapshot.curve) {
+    iterations.push_back(p.iteration);
+    seconds.push_back(p.hostSeconds);
+    c.push_back(p.convergence);
+  }
+  ImGui::TextUnformatted("convergence C over iterations");
+  plotXY("c-iterations", iterations, c, {"iteration", 0.0, 1.0}, 90.0f);
+  ImGui::TextUnformatted("convergence C over host seconds");
+  plotXY("c-seconds", seconds, c, {"host s", 0.0, 1.0}, 90.0f);
+  const double lastSeconds = snapshot.curve.size() >= 2
+                                 ? snapshot.curve.back().hostSeconds - snapshot.curve.end()[-2].hostSeconds
+                                 : snapshot.hostSeconds();
+  ImGui::Text("host: %.3f s in all, %.2f ms for the last iteration", snapshot.hostSeconds(), 1e3 * lastSeconds);
+  note("emulated MP-1 s: shown once the mesh back end reports it");
+  ImGui::Text("last shooters: %zu, captured fraction %.4f", snapshot.lastShooters.size(),
+              snapshot.lastCapturedFraction);
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("energy ledger");
+  const Ledger& l = snapshot.ledger;
+  const double share = l.emitted > 0.0 ? 100.0 / l.emitted : 0.0;
+  if (ImGui::BeginTable("ledger", 3)) {
+    auto line = [&](const char* name, double watts) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.5g W", watts);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f %%", watts * share);
+    };
+    line("emitted", l.emitted);
+    line("absorbed", l.absorbed);
+    line("  by back faces", l.absorbedByBackFaces);
+    line("unshot", l.unshot);
+    line("not captured", l.notCaptured);
+    line("escaped", l.escaped);
+    ImGui::EndTable();
+  }
+  if (l.emitted > 0.0) ImGui::Text("imbalance %.1e", l.imbalance());
+}
+
+void Panel::drawItemBuffer(const SolverSnapshot& snapshot) {
+  if (!snapshot.itemBuffer) {
+    note(snapshot.itemBufferShooter >= 0 ? "the back end could not give it" : "shown after the next shot");
+    return;
+  }
+  if (snapshot.itemBuffer != uploadedItemBuffer_) {
+    itemBufferTexture_.upload(falseColourImage(*snapshot.itemBuffer));
+    uploadedItemBuffer_ = snapshot.itemBuffer;
+  }
+  const ItemBuffer& buffer = *snapshot.itemBuffer;
+  const size_t seen = buffer.items.size() - std::count(buffer.items.begin(), buffer.items.end(), ItemBuffer::kNone);
+  ImGui::TextWrapped("the single plane (%dx%d) above patch %d: %.1f%% of its pixels see a patch", buffer.width,
+                     buffer.height, snapshot.itemBufferShooter,
+                     100.0 * double(seen) / double(std::max<size_t>(1, buffer.items.size())));
+  const float side = std::min(ImGui::GetContentRegionAvail().x, 340.0f);
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(itemBufferTexture_.id())), ImVec2(side, side));
+  note("false colour by patch id");
+  note("depth histograms (a), (b): shown once the mesh back end reports them");
+}
+
+void Panel::drawParameters(SolverThread& solver) {
+  SolveOptions& o = edited_.options;
+  bool changed = false;
+  ImGui::PushItemWidth(200.0f);
+  changed |= comboOf("back end", &o.backend, {Backend::Native, Backend::Mesh});
+  changed |= comboOf("projection", &o.projection, {Projection::Plane, Projection::Hemicube, Projection::Analytic});
+  ImGui::SliderInt("resolution N", &o.resolution, 16, 2048, "%d", ImGuiSliderFlags_Logarithmic);
+  changed |= released();
+  sliderDouble("ratio", &o.ratio, 0.5, 10.0, "%.2f");
+  changed |= released();
+  ImGui::SliderInt("shooters k", &o.shooters, 1, 64);
+  changed |= released();
+  sliderDouble("cell m", &edited_.cellM, 0.02, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic);
+  changed |= released();
+  sliderDouble("until C", &o.until, 0.1, 1.0, "%.3f");
+  changed |= released();
+  ImGui::SliderInt("host threads", &o.threads, 0, 64);
+  changed |= released();
+  changed |= ImGui::Checkbox("ambient term (display only)", &o.ambient);
+  ImGui::PopItemWidth();
+  note("mapping: hierarchical (choices come with the mesh back end)");
+  note("a change restarts the solve");
+  if (changed) {
+    try {
+      validateOptions(o);
+      parameterError_.clear();
+      solver.restart(edited_);
+    } catch (const OptionError& e) {
+      parameterError_ = e.what();
+    }
+  }
+  if (!parameterError_.empty()) ImGui::TextWrapped("not applied: %s", parameterError_.c_str());
+}
+
+void Panel::drawScene(const SolverSnapshot& snapshot) {
+  const SceneSummary& s = snapshot.summary;
+  if (ImGui::BeginTable("scene", 2)) {
+    row("polygons", "%.0f", double(s.polygons));
+    row("patches", "%.0f", double(s.patches));
+    row("materials", "%.0f", double(s.materials));
+    row("emitting polygons", "%.0f", double(s.emitterPolygons));
+    row("emitting patches", "%.0f", double(s.emitterPatches));
+    row("area m^2", "%.2f", s.totalAreaM2);
+    row("emitted W", "%.4g", s.emittedPowerW);
+    row("grid cell m", "%.3f", s.cellM);
+    ImGui::EndTable();
+  }
+  const Vec3 size = s.boundsMax - s.boundsMin;
+  ImGui::Text("extent %.2f x %.2f x %.2f m", size.x, size.y, size.z);
+  if (snapshot.mesh)
+    ImGui::Text("display mesh: %zu vertices, %zu triangles", snapshot.mesh->positions.size(),
+                snapshot.mesh->indices.size() / 3);
+}
+
+void Panel::drawView(WalkCamera& camera, ViewSettings& view) {
+  ImGui::PushItemWidth(200.0f);
+  if (sliderDouble("exposure EV", &view.exposureStops, -20.0, 20.0, "%.2f")) view.autoExposure = false;
+  ImGui::SameLine();
+  if (ImGui::Button("Auto")) view.autoExposure = true;
+  ImGui::Checkbox("follow auto exposure", &view.autoExposure);
+  ImGui::Checkbox("highlight last shooters", &view.highlightShooters);
+  sliderDouble("speed m/s", &camera.speedMps, 0.05, 10.0, "%.2f", ImGuiSliderFlags_Logarithmic);
+  sliderDouble("eye height m", &camera.eyeHeightM, 0.02, 3.0, "%.2f");
+  sliderDouble("field of view", &camera.fovYDeg, 20.0, 110.0, "%.0f deg");
+  ImGui::PopItemWidth();
+  note("WASD/arrows walk, Q/E lower/raise, Shift runs");
+  note("drag to look around, Esc quits");
+}
+
+}  // namespace radmesh

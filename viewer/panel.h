@@ -1,0 +1,54 @@
+#pragma once
+// The ImGui panel: the solve's state and commands on top, then tabs for its progress
+// (convergence curves, timing, energy ledger), the last shot's item buffer, the solve parameters,
+// the scene's figures and the view. Commands go to the solver thread; everything shown comes from
+// its latest snapshot.
+#include <memory>
+#include <string>
+
+#include "viewer/camera.h"
+#include "viewer/gl_texture.h"
+#include "viewer/solver_snapshot.h"
+#include "viewer/solver_thread.h"
+
+namespace radmesh {
+
+struct ViewSettings {
+  double exposureStops = 0.0;  // log2 of the linear exposure factor
+  bool autoExposure = true;    // follow autoExposure() as the light streams in
+  bool highlightShooters = true;
+};
+
+enum class PanelTab { Progress, ItemBuffer, Parameters, Scene, View };
+// "progress", "item-buffer", "parameters", "scene", "view"; throws OptionError otherwise.
+PanelTab parsePanelTab(const std::string& name);
+
+class Panel {
+ public:
+  static constexpr float kWidthPx = 380.0f;  // docked at the window's right edge
+
+  // Needs the window's GL context current (the item buffer is shown from a texture).
+  Panel(const SolveSetup& setup, PanelTab firstTab) : edited_(setup), firstTab_(firstTab) {}
+
+  void draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamera& camera, ViewSettings& view);
+
+ private:
+  void drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver);
+  void drawProgress(const SolverSnapshot& snapshot);
+  void drawItemBuffer(const SolverSnapshot& snapshot);
+  void drawParameters(SolverThread& solver);
+  void drawScene(const SolverSnapshot& snapshot);
+  void drawView(WalkCamera& camera, ViewSettings& view);
+  bool beginTab(const char* label, PanelTab tab);
+
+  SolveSetup edited_;
+  PanelTab firstTab_;
+  bool firstFrame_ = true;
+  std::string parameterError_;
+  int stepCount_ = 10;
+  bool itemBufferWanted_ = false;
+  GlTexture itemBufferTexture_;
+  std::shared_ptr<const ItemBuffer> uploadedItemBuffer_;
+};
+
+}  // namespace radmesh

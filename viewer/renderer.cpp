@@ -1,0 +1,226 @@
+#include "viewer/renderer.h"
+
+#include <glad/gl.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace radmesh {
+
+namespace {
+
+const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 radiosity;
+uniform mat4 viewProjection;
+uniform vec3 eye;
+out vec3 vertexRadiosity;
+out float facing;  // > 0 on the lit (front) side; linear across a flat triangle, so exact
+void main() {
+  gl_Position = viewProjection * vec4(position, 1.0);
+  vertexRadiosity = radiosity;
+  facing = dot(normal, eye - position);
+}
+)";
+
+const char* kFragmentShader = R"(#version 330 core
+in vec3 vertexRadiosity;
+in float facing;
+uniform float exposure;
+uniform vec3 tint;
+uniform float tintAmount;
+out vec4 colour;
+vec3 srgbFromLinear(vec3 c) {  // IEC 61966-2-1
+  c = clamp(c, 0.0, 1.0);
+  return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+}
+void main() {
+  // Polygons are one-sided: their back shows a dark blue-grey so that it is not taken for light.
+  vec3 linear = facing > 0.0 ? vertexRadiosity * exposure : vec3(0.010, 0.012, 0.020);
+  colour = vec4(srgbFromLinear(mix(linear, tint, tintAmount)), 1.0);
+}
+)";
+
+unsigned compileShader(GLenum type, const char* source) {
+  const unsigned shader = glCreateShader(type);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    glDeleteShader(shader);
+    throw std::runtime_error(std::string("renderer shader does not compile: ") + log);
+  }
+  return shader;
+}
+
+unsigned linkProgram() {
+  const unsigned vertex = compileShader(GL_VERTEX_SHADER, kVertexShader);
+  const unsigned fragment = compileShader(GL_FRAGMENT_SHADER, kFragmentShader);
+  const unsigned program = glCreateProgram();
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  glLinkProgram(program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    glDeleteProgram(program);
+    throw std::runtime_error(std::string("renderer program does not link: ") + log);
+  }
+  return program;
+}
+
+std::vector<float> toFloats(const std::vector<Vec3>& values) {
+  std::vector<float> floats;
+  floats.reserve(values.size() * 3);
+  for (const Vec3& v : values) floats.insert(floats.end(), {float(v.x), float(v.y), float(v.z)});
+  return floats;
+}
+
+void fillAttribute(unsigned buffer, unsigned location, const std::vector<float>& data, GLenum usage) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), usage);
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+}
+
+}  // namespace
+
+Renderer::Renderer() : program_(linkProgram()) {
+  viewProjectionLocation_ = glGetUniformLocation(program_, "viewProjection");
+  eyeLocation_ = glGetUniformLocation(program_, "eye");
+  exposureLocation_ = glGetUniformLocation(program_, "exposure");
+  tintLocation_ = glGetUniformLocation(program_, "tint");
+  tintAmountLocation_ = glGetUniformLocation(program_, "tintAmount");
+  glGenVertexArrays(1, &vertexArray_);
+  unsigned buffers[5];
+  glGenBuffers(5, buffers);
+  positionBuffer_ = buffers[0];
+  normalBuffer_ = buffers[1];
+  radiosityBuffer_ = buffers[2];
+  indexBuffer_ = buffers[3];
+  highlightIndexBuffer_ = buffers[4];
+}
+
+Renderer::~Renderer() {
+  const unsigned buffers[5] = {positionBuffer_, normalBuffer_, radiosityBuffer_, indexBuffer_,
+                               highlightIndexBuffer_};
+  glDeleteBuffers(5, buffers);
+  glDeleteVertexArrays(1, &vertexArray_);
+  glDeleteProgram(program_);
+}
+
+void Renderer::setMesh(const DisplayMesh& mesh) {
+  if (mesh.normals.size() != mesh.positions.size() || mesh.indices.size() % 3 != 0 ||
+      mesh.patchOfTriangle.size() != mesh.indices.size() / 3)
+    throw std::invalid_argument("display mesh is inconsistent: positions, normals, indices and "
+                                "patchOfTriangle sizes disagree");
+  for (unsigned i : mesh.indices)
+    if (i >= mesh.positions.size())
+      throw std::invalid_argument("display mesh index " + std::to_string(i) + " is past its " +
+                                  std::to_string(mesh.positions.size()) + " vertices");
+  for (int p : mesh.patchOfTriangle)
+    if (p < 0) throw std::invalid_argument("display mesh has a triangle with a negative patch index");
+  vertexCount_ = mesh.positions.size();
+  indexCount_ = mesh.indices.size();
+  indices_ = mesh.indices;
+  glBindVertexArray(vertexArray_);
+  fillAttribute(positionBuffer_, 0, toFloats(mesh.positions), GL_STATIC_DRAW);
+  fillAttribute(normalBuffer_, 1, toFloats(mesh.normals), GL_STATIC_DRAW);
+  fillAttribute(radiosityBuffer_, 2, std::vector<float>(vertexCount_ * 3, 0.0f), GL_DYNAMIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indexCount_ * sizeof(unsigned)),
+               mesh.indices.data(), GL_STATIC_DRAW);
+  glBindVertexArray(0);
+
+  // Triangles grouped by patch (a counting sort), so a highlight costs only its own triangles.
+  int patchCount = 0;
+  for (int p : mesh.patchOfTriangle) patchCount = std::max(patchCount, p + 1);
+  firstTriangleOfPatch_.assign(static_cast<size_t>(patchCount) + 1, 0);
+  for (int p : mesh.patchOfTriangle) ++firstTriangleOfPatch_[static_cast<size_t>(p) + 1];
+  for (size_t p = 1; p < firstTriangleOfPatch_.size(); ++p)
+    firstTriangleOfPatch_[p] += firstTriangleOfPatch_[p - 1];
+  trianglesByPatch_.assign(mesh.patchOfTriangle.size(), 0);
+  std::vector<size_t> next(firstTriangleOfPatch_.begin(), firstTriangleOfPatch_.end() - 1);
+  for (size_t t = 0; t < mesh.patchOfTriangle.size(); ++t)
+    trianglesByPatch_[next[static_cast<size_t>(mesh.patchOfTriangle[t])]++] = static_cast<unsigned>(t);
+  highlightIndexCount_ = 0;
+}
+
+void Renderer::setVertexRadiosity(const std::vector<Rgb>& vertexB) {
+  if (vertexB.size() != vertexCount_)
+    throw std::invalid_argument("vertex radiosity has " + std::to_string(vertexB.size()) +
+                                " values for a mesh of " + std::to_string(vertexCount_) + " vertices");
+  const std::vector<float> floats = toFloats(vertexB);
+  glBindBuffer(GL_ARRAY_BUFFER, radiosityBuffer_);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(floats.size() * sizeof(float)), floats.data());
+}
+
+void Renderer::setHighlightedPatches(const std::vector<int>& patches) {
+  std::vector<unsigned> highlight;
+  for (int p : patches) {
+    if (p < 0 || static_cast<size_t>(p) + 1 >= firstTriangleOfPatch_.size()) continue;
+    for (size_t i = firstTriangleOfPatch_[p]; i < firstTriangleOfPatch_[p + 1]; ++i) {
+      const size_t t = trianglesByPatch_[i];
+      highlight.insert(highlight.end(), indices_.begin() + 3 * t, indices_.begin() + 3 * t + 3);
+    }
+  }
+  highlightIndexCount_ = highlight.size();
+  glBindVertexArray(vertexArray_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, highlightIndexBuffer_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(highlight.size() * sizeof(unsigned)),
+               highlight.data(), GL_DYNAMIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  glBindVertexArray(0);
+}
+
+void Renderer::draw(const RenderView& view, glm::ivec2 framebufferSize, const Shading& shading) {
+  glViewport(0, 0, framebufferSize.x, framebufferSize.y);
+  glClearColor(0.02f, 0.02f, 0.03f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (indexCount_ == 0 || framebufferSize.x <= 0 || framebufferSize.y <= 0) return;
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);  // the highlight pass redraws the same triangles at the same depth
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glUseProgram(program_);
+  const glm::mat4 viewProjection =
+      viewProjectionMatrix(view, double(framebufferSize.x) / double(framebufferSize.y));
+  glUniformMatrix4fv(viewProjectionLocation_, 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniform3f(eyeLocation_, float(view.eye.x), float(view.eye.y), float(view.eye.z));
+  glUniform1f(exposureLocation_, float(shading.exposure));
+  glUniform3f(tintLocation_, 1.0f, 0.25f, 0.9f);
+  glUniform1f(tintAmountLocation_, 0.0f);
+  glBindVertexArray(vertexArray_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
+
+  if (shading.highlightShooters && highlightIndexCount_ > 0) {
+    // Shooters: a translucent magenta fill and a solid outline, pulled towards the eye.
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, highlightIndexBuffer_);
+    glUniform1f(tintAmountLocation_, 0.45f);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(highlightIndexCount_), GL_UNSIGNED_INT, nullptr);
+    glEnable(GL_POLYGON_OFFSET_LINE);
+    glPolygonOffset(-1.0f, -1.0f);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glUniform1f(tintAmountLocation_, 1.0f);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(highlightIndexCount_), GL_UNSIGNED_INT, nullptr);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisable(GL_POLYGON_OFFSET_LINE);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+}  // namespace radmesh

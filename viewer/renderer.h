@@ -1,0 +1,51 @@
+#pragma once
+// The one renderer of both contexts: Gouraud shading of per-vertex display radiosity, linear to
+// sRGB with an exposure factor, and the last shooters highlighted. Needs a current GL context
+// (see gl_context.h) for its whole life.
+#include <glm/vec2.hpp>
+
+#include <vector>
+
+#include "solver/display_radiosity.h"
+#include "viewer/render_view.h"
+
+namespace radmesh {
+
+struct Shading {
+  double exposure = 1.0;        // linear factor applied to radiosity (W/m^2) before sRGB encoding
+  bool highlightShooters = true;
+};
+
+class Renderer {
+ public:
+  Renderer();  // compiles the shaders; throws std::runtime_error with the GL log on failure
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // New geometry; radiosity starts at zero and nothing is highlighted.
+  void setMesh(const DisplayMesh& mesh);
+  // One value per mesh vertex (vertexRadiosity in solver/display_radiosity.h).
+  void setVertexRadiosity(const std::vector<Rgb>& vertexB);
+  // Patches (indices into the solver's patches) drawn tinted, e.g. the last iteration's shooters.
+  void setHighlightedPatches(const std::vector<int>& patches);
+
+  // Clears and draws into the current context's framebuffer.
+  void draw(const RenderView& view, glm::ivec2 framebufferSize, const Shading& shading);
+
+ private:
+  unsigned program_ = 0;
+  unsigned vertexArray_ = 0;
+  unsigned positionBuffer_ = 0, normalBuffer_ = 0, radiosityBuffer_ = 0;
+  unsigned indexBuffer_ = 0, highlightIndexBuffer_ = 0;
+  int viewProjectionLocation_ = -1, eyeLocation_ = -1, exposureLocation_ = -1;
+  int tintLocation_ = -1, tintAmountLocation_ = -1;
+  size_t vertexCount_ = 0;
+  size_t indexCount_ = 0;
+  size_t highlightIndexCount_ = 0;
+  std::vector<unsigned> indices_;          // kept to build the highlight's index list
+  std::vector<size_t> firstTriangleOfPatch_;  // triangles sorted by patch: CSR offsets
+  std::vector<unsigned> trianglesByPatch_;
+};
+
+}  // namespace radmesh

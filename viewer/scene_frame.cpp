@@ -1,0 +1,78 @@
+#include "viewer/scene_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace radmesh {
+
+namespace {
+
+int upAxisFromLights(const std::vector<FrameFace>& faces) {
+  Vec3 downward{0.0};  // per axis: light-giving area facing that axis' negative direction
+  for (const FrameFace& face : faces)
+    if (face.givesLight) downward += glm::max(-0.5 * newellNormal(face.vertices), Vec3(0.0));
+  int up = 2;  // ties keep z, then y
+  for (int axis : {1, 0})
+    if (downward[axis] > downward[up] * (1.0 + 1e-9)) up = axis;
+  return up;
+}
+
+// The vertical side of the bounds least covered by walls along it, if under half. A wall is a
+// face turned inward along the side's axis within 10% of the extent of the side's plane: real
+// walls are a little off square (the Cornell box's) or stand back from recessed doors and
+// windows (the office's, by 0.3 m).
+int openSide(const std::vector<FrameFace>& faces, const SceneFrame& frame) {
+  const Vec3 extent = frame.boundsMax - frame.boundsMin;
+  int best = -1;
+  double bestCoverage = 0.5;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (axis == frame.upAxis) continue;
+    const double sideArea = extent[(axis + 1) % 3] * extent[(axis + 2) % 3];
+    const double toleranceM = 0.1 * extent[axis];
+    for (int end = 0; end < 2; ++end) {
+      const double plane = end == 0 ? frame.boundsMin[axis] : frame.boundsMax[axis];
+      const double inward = end == 0 ? 1.0 : -1.0;
+      double covered = 0.0;
+      for (const FrameFace& face : faces) {
+        const Vec3 area = 0.5 * newellNormal(face.vertices);
+        bool wall = inward * area[axis] >= 0.9 * glm::length(area);
+        for (const Vec3& v : face.vertices) wall = wall && std::abs(v[axis] - plane) <= toleranceM;
+        if (wall) covered += std::abs(area[axis]);
+      }
+      const double coverage = sideArea > 0.0 ? covered / sideArea : 1.0;
+      if (coverage < bestCoverage) {
+        bestCoverage = coverage;
+        best = 2 * axis + end;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+SceneFrame frameOf(const std::vector<FrameFace>& faces) {
+  SceneFrame frame;
+  frame.upAxis = upAxisFromLights(faces);
+  if (faces.empty()) return frame;
+  frame.boundsMin = Vec3(std::numeric_limits<double>::infinity());
+  frame.boundsMax = -frame.boundsMin;
+  for (const FrameFace& face : faces)
+    for (const Vec3& p : face.vertices) {
+      frame.boundsMin = glm::min(frame.boundsMin, p);
+      frame.boundsMax = glm::max(frame.boundsMax, p);
+    }
+  frame.openSide = openSide(faces, frame);
+  return frame;
+}
+
+SceneFrame sceneFrame(const Scene& scene) {
+  std::vector<FrameFace> faces;
+  faces.reserve(scene.polygons.size());
+  for (const Polygon& polygon : scene.polygons)
+    faces.push_back({polygon.vertices, scene.materials.at(static_cast<size_t>(polygon.material)).emits()});
+  return frameOf(faces);
+}
+
+}  // namespace radmesh

@@ -1,0 +1,52 @@
+#pragma once
+// What the solver thread publishes for the UI: an immutable picture of the solve after some
+// iteration. The UI keeps a shared_ptr to the newest one; nothing in it changes after publication.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solver/display_radiosity.h"
+#include "solver/item_buffer.h"
+#include "solver/progressive_solver.h"
+#include "solver/scene_summary.h"
+#include "solver/solve_options.h"
+
+namespace radmesh {
+
+// What a (re)start of the solve is made from: the options, and the grid for meshing.
+struct SolveSetup {
+  SolveOptions options;
+  double cellM = 0.381;  // the paper's 15-inch grid (solver/meshing.h)
+};
+
+struct ConvergencePoint {
+  int iteration = 0;
+  double convergence = 0.0;  // C after this iteration
+  double hostSeconds = 0.0;  // solve time up to and including this iteration
+};
+
+struct SolverSnapshot {
+  std::uint64_t generation = 0;              // counts restarts: a new mesh when it changes
+  SolveSetup setup;
+  std::shared_ptr<const DisplayMesh> mesh;   // null while meshing, or when setup failed
+  SceneSummary summary;
+  std::vector<Rgb> vertexB;                  // display radiosity per mesh vertex
+  std::vector<int> lastShooters;             // patches shot by the last iteration
+  std::vector<ConvergencePoint> curve;       // one point per iteration so far
+  Ledger ledger;
+  double lastCapturedFraction = 0.0;         // of the last iteration's shooters
+  // The single plane's item buffer of the last iteration's first shooter, when the UI asked for
+  // it (SolverThread::setItemBufferWanted); may lag a few iterations behind while playing.
+  std::shared_ptr<const ItemBuffer> itemBuffer;
+  int itemBufferShooter = -1;
+  bool playing = false;
+  bool done = false;
+  std::string error;                         // why the last restart failed, else empty
+
+  int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }
+  double convergence() const { return curve.empty() ? 0.0 : curve.back().convergence; }
+  double hostSeconds() const { return curve.empty() ? 0.0 : curve.back().hostSeconds; }
+};
+
+}  // namespace radmesh

@@ -1,0 +1,54 @@
+#pragma once
+// The progressive solver on its own thread. The UI sends commands (play, pause, step, restart)
+// and reads the newest published snapshot; neither ever waits for an iteration to finish.
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "solver/scene.h"
+#include "viewer/solver_snapshot.h"
+
+namespace radmesh {
+
+class SolverThread {
+ public:
+  // Meshes and starts solving at once (playing) or waits for a command (paused).
+  SolverThread(Scene scene, const SolveSetup& setup, bool playing);
+  ~SolverThread();  // stops after the iteration under way and joins
+  SolverThread(const SolverThread&) = delete;
+  SolverThread& operator=(const SolverThread&) = delete;
+
+  void play();
+  void pause();               // also cancels pending steps
+  void step(int iterations);  // this many more iterations, then pause
+  void restart(const SolveSetup& setup);  // remesh and solve from scratch, keeping play/pause
+  // Whether snapshots should carry the last shooter's item buffer (it costs a projection).
+  void setItemBufferWanted(bool wanted);
+
+  // The newest snapshot; never null (the first one has no mesh yet).
+  std::shared_ptr<const SolverSnapshot> latest() const;
+
+ private:
+  struct Run;  // the solver and what the thread accumulates across its iterations
+  void loop();
+  std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation);  // null: failed
+  void refreshItemBuffer(Run& run, bool finished);
+  void publish(const Run& run);
+  void publishFailure(const SolveSetup& setup, const std::string& error);
+
+  const Scene scene_;
+  mutable std::mutex mutex_;  // guards everything below, up to thread_
+  std::condition_variable wake_;
+  bool stop_ = false;
+  bool playing_ = false;
+  int pendingSteps_ = 0;
+  bool restartPending_ = true;
+  bool itemBufferWanted_ = false;
+  SolveSetup pendingSetup_;
+  std::uint64_t generation_ = 0;
+  std::shared_ptr<const SolverSnapshot> latest_;
+  std::thread thread_;  // last: starts once everything above exists
+};
+
+}  // namespace radmesh

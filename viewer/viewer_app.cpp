@@ -1,0 +1,119 @@
+#include "viewer/viewer_app.h"
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "solver/scene_loader.h"
+#include "viewer/camera.h"
+#include "viewer/exposure.h"
+#include "viewer/imgui_layer.h"
+#include "viewer/panel.h"
+#include "viewer/renderer.h"
+#include "viewer/solver_thread.h"
+#include "viewer/walk_input.h"
+#include "viewer/window_context.h"
+
+namespace radmesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Hands the renderer what changed since the last snapshot it drew.
+class SnapshotFeed {
+ public:
+  void show(const std::shared_ptr<const SolverSnapshot>& snapshot, Renderer& renderer, ViewSettings& view) {
+    if (snapshot == shown_) return;
+    if (!shown_ || snapshot->generation != shown_->generation || snapshot->mesh != shown_->mesh)
+      renderer.setMesh(snapshot->mesh ? *snapshot->mesh : DisplayMesh{});
+    if (snapshot->mesh) {
+      renderer.setVertexRadiosity(snapshot->vertexB);
+      renderer.setHighlightedPatches(snapshot->lastShooters);
+      if (view.autoExposure) view.exposureStops = std::log2(autoExposure(snapshot->vertexB));
+    }
+    shown_ = snapshot;
+  }
+  const SolverSnapshot& shown() const { return *shown_; }
+
+ private:
+  std::shared_ptr<const SolverSnapshot> shown_;
+};
+
+bool smokeTestReady(const ViewerArgs& args, const SolverSnapshot& snapshot) {
+  return snapshot.iteration() >= args.steps || snapshot.done || !snapshot.error.empty();
+}
+
+}  // namespace
+
+int runViewer(const ViewerArgs& args) {
+  std::vector<std::string> warnings;
+  Scene scene = loadScene(args.scene, &warnings);
+  for (const std::string& warning : warnings) std::fprintf(stderr, "radmesh-view: warning: %s\n", warning.c_str());
+  const std::string title = "radmesh-view: " + scene.source;
+  WalkCamera camera(sceneFrame(scene));
+
+  WindowContext window(title, args.windowSize);
+  ImGuiLayer imgui(window.window());
+  Renderer renderer;
+  const bool smokeTest = args.steps > 0;
+  SolverThread solver(std::move(scene), args.setup, !smokeTest);
+  if (smokeTest) solver.step(args.steps);
+  Panel panel(args.setup, args.firstTab);
+  ViewSettings view;
+  SnapshotFeed feed;
+  WalkInputReader input;
+
+  const auto start = Clock::now();
+  auto lastFrame = start;
+  long frames = 0;
+  int framesSinceReady = 0;
+  int exitCode = 0;
+  while (!window.shouldClose()) {
+    glfwPollEvents();
+    if (glfwGetKey(window.window(), GLFW_KEY_ESCAPE) == GLFW_PRESS && !imgui.wantsKeyboard()) window.requestClose();
+    const auto now = Clock::now();
+    const double dt = std::chrono::duration<double>(now - lastFrame).count();
+    lastFrame = now;
+
+    feed.show(solver.latest(), renderer, view);
+    camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
+    const glm::ivec2 size = window.framebufferSize();
+    const glm::ivec2 sceneSize{std::max(1, size.x - int(Panel::kWidthPx)), size.y};
+    renderer.draw(camera.view(), sceneSize, Shading{std::exp2(view.exposureStops), view.highlightShooters});
+    imgui.beginFrame();
+    panel.draw(feed.shown(), solver, camera, view);
+    imgui.endFrame();
+    ++frames;
+
+    // The panel lays itself out over a couple of frames: wait for them before the screenshot.
+    if (smokeTest && smokeTestReady(args, feed.shown()) && ++framesSinceReady >= 3) {
+      if (!feed.shown().error.empty()) {
+        std::fprintf(stderr, "radmesh-view: the solve failed: %s\n", feed.shown().error.c_str());
+        exitCode = 1;
+      } else if (!args.screenshot.empty()) {
+        writePng(captureFramebuffer(size), args.screenshot);
+        std::printf("wrote %s\n", args.screenshot.c_str());
+      }
+      window.requestClose();
+    }
+    window.swapBuffers();
+  }
+
+  const double seconds = secondsSince(start);
+  std::printf("radmesh-view: %ld frames in %.2f s (%.1f fps, %.2f ms per frame) at %dx%d; solver at iteration "
+              "%d, C = %.4f\n",
+              frames, seconds, frames / std::max(seconds, 1e-9), 1e3 * seconds / std::max(frames, 1L),
+              window.framebufferSize().x, window.framebufferSize().y, feed.shown().iteration(),
+              feed.shown().convergence());
+  return exitCode;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,27 @@
+#pragma once
+// `radmesh-view`: the walkthrough window while the solver converges on its own thread.
+#include <glm/vec2.hpp>
+
+#include <string>
+
+#include "viewer/panel.h"
+#include "viewer/solver_snapshot.h"
+
+namespace radmesh {
+
+struct ViewerArgs {
+  std::string scene = "office";
+  SolveSetup setup;
+  glm::ivec2 windowSize{1280, 720};
+  PanelTab firstTab = PanelTab::Progress;
+  // Smoke-test mode when steps > 0: solve this many iterations (paused after), save a screenshot
+  // of the whole window with its panel, print frame statistics, and exit.
+  int steps = 0;
+  std::string screenshot;
+};
+
+// Returns the process exit code; throws SceneError, OptionError or std::runtime_error (no
+// display, no OpenGL 3.3) with a message for the user.
+int runViewer(const ViewerArgs& args);
+
+}  // namespace radmesh
