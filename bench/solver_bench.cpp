@@ -44,8 +44,6 @@ void BM_Iteration(benchmark::State& state) {
   ProgressiveSolver solver(m.scene, m.patches, options(state));
   for (auto _ : state) benchmark::DoNotOptimize(solver.step());
   state.counters["patches"] = static_cast<double>(m.patches.size());
-  state.counters["ms_per_iteration"] = benchmark::Counter(
-      static_cast<double>(state.iterations()) * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_Iteration)
     ->ArgNames({"hemicube", "N", "threads"})

@@ -21,4 +21,20 @@ struct BenchSolveArgs {
 
 nlohmann::json benchSolve(const BenchSolveArgs& args);
 
+struct AccuracyArgs {
+  std::string scene = "office";
+  std::string name = "office";   // file stem of the outputs
+  std::string outDir;            // CSV, JSON and plots go here; empty: table only
+  std::vector<double> cells{0.5, 0.381, 0.25};
+  std::vector<int> resolutions{32, 64, 128, 256, 512, 1024};
+  int referenceResolution = 1024;
+  double referenceUntil = 0.999;
+  int maxIterations = 20000;
+  int threads = 0;
+};
+
+// --quick: the CI-sized sweep (well under a minute), same code and outputs.
+AccuracyArgs quickAccuracyArgs(AccuracyArgs args);
+nlohmann::json benchAccuracy(const AccuracyArgs& args);
+
 }  // namespace radmesh::cli

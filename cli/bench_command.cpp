@@ -1,6 +1,7 @@
 // `radmesh bench ...`: measured tables (and JSON) of what the solver's choices cost.
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <memory>
 
 #include "cli/bench.h"
@@ -31,12 +32,33 @@ void addBenchSolve(CLI::App* bench) {
   });
 }
 
+void addBenchAccuracy(CLI::App* bench) {
+  auto args = std::make_shared<AccuracyArgs>();
+  auto quick = std::make_shared<bool>(false);
+  CLI::App* cmd = bench->add_subcommand("accuracy", "Error against a reference by projection, resolution and cell size");
+  cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
+  cmd->add_option("--name", args->name, "File stem of the outputs (default: the scene's)");
+  cmd->add_option("--out-dir", args->outDir, "Write CSV, JSON and PNG plots here");
+  cmd->add_option("--cells", args->cells, "Cell sizes, metres")->delimiter(',')->capture_default_str();
+  cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
+  cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();
+  cmd->add_option("--reference-until", args->referenceUntil, "Convergence of the reference")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();
+  cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
+  cmd->callback([args, quick, cmd] {
+    AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
+    if (cmd->count("--name") == 0) a.name = std::filesystem::path(a.scene).stem().string();
+    benchAccuracy(a);
+  });
+}
+
 }  // namespace
 
 void addBenchCommand(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "Measure what accuracy costs in time");
   bench->require_subcommand(1);
   addBenchSolve(bench);
+  addBenchAccuracy(bench);
 }
 
 }  // namespace radmesh::cli

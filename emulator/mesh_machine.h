@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <span>
+#include <utility>
 
 #include "emulator/active_mask.h"
 #include "emulator/cost_counts.h"
@@ -45,8 +46,15 @@ class MeshMachine {
   // Runs perPe(pe) on every active PE, over the host threads when the declared work is large
   // enough to pay for them, and charges `cost` to the ALU class.
   template <class PerPe>
-  void compute(AluCost cost, PerPe&& perPe);
-  void chargeAlu(AluCost cost);  // declares local work done outside compute()
+  void compute(AluCost cost, PerPe&& perPe) {
+    chargeAlu(cost);
+    forEachActive(cost.flops + cost.intOps, std::forward<PerPe>(perPe));
+  }
+  // The same without charging, for a program that counts its SIMD steps as it goes (the most any
+  // PE took) and charges them with chargeAlu afterwards; workPerPe guides the threading only.
+  template <class PerPe>
+  void forEachActive(double workPerPe, PerPe&& perPe);
+  void chargeAlu(AluCost cost);  // declares local work
 
   MemoryLedger& memory() { return memory_; }
   const MemoryLedger& memory() const { return memory_; }
@@ -74,15 +82,14 @@ class MeshMachine {
 void requireSameMachine(const MeshMachine& expected, const MeshMachine& got, const char* operation);
 
 template <class PerPe>
-void MeshMachine::compute(AluCost cost, PerPe&& perPe) {
-  chargeAlu(cost);
+void MeshMachine::forEachActive(double workPerPe, PerPe&& perPe) {
   const std::uint8_t* flags = mask_.flags();
   const bool all = mask_.allActive();
   auto range = [&](int begin, int end) {
     for (int pe = begin; pe < end; ++pe)
       if (all || flags[pe]) perPe(pe);
   };
-  const double work = (cost.flops + cost.intOps) * mask_.activeCount();
+  const double work = workPerPe * mask_.activeCount();
   if (pool_.threads() == 1 || work < kParallelMinWork) {
     range(0, size());
     return;

@@ -10,12 +10,13 @@ void requireDistance(int distance, const char* operation) {
                                 " is negative; shift the opposite direction instead");
 }
 
-std::vector<int> xnetSources(const PeGrid& grid, Direction direction, int distance) {
+const std::vector<int>& xnetSources(const PeGrid& grid, Direction direction, int distance) {
   const Step s = stepOf(direction);
   const auto wrap = [](long long v, int m) { return static_cast<int>(((v % m) + m) % m); };
-  std::vector<int> sourceColumn(grid.cols);
+  thread_local std::vector<int> sourceColumn, from;
+  sourceColumn.resize(grid.cols);
   for (int c = 0; c < grid.cols; ++c) sourceColumn[c] = wrap(c - static_cast<long long>(s.dCol) * distance, grid.cols);
-  std::vector<int> from(grid.size());
+  from.resize(grid.size());
   for (int r = 0; r < grid.rows; ++r) {
     const int base = wrap(r - static_cast<long long>(s.dRow) * distance, grid.rows) * grid.cols;
     for (int c = 0; c < grid.cols; ++c) from[r * grid.cols + c] = base + sourceColumn[c];

@@ -14,8 +14,24 @@ namespace radmesh::emu {
 
 namespace detail {
 void requireDistance(int distance, const char* operation);
-// For every PE, the PE `distance` hops against `direction` (where a shift reads from).
-std::vector<int> xnetSources(const PeGrid& grid, Direction direction, int distance);
+// For every PE, the PE `distance` hops against `direction` (where a shift reads from). The
+// table is the calling thread's scratch, valid until its next call.
+const std::vector<int>& xnetSources(const PeGrid& grid, Direction direction, int distance);
+
+// What every PE sends in a list shift, gathered PE by PE (host scratch: registers on the MP-1).
+template <class T>
+struct SentLists {
+  std::vector<T> items;
+  std::vector<int> begin;  // PE pe's items are items[begin[pe] .. begin[pe + 1])
+  void reset(int pes) {
+    items.clear();
+    begin.assign(pes + 1, 0);
+  }
+  static SentLists& scratch() {
+    thread_local SentLists lists;
+    return lists;
+  }
+};
 void chargeXnet(MeshMachine& machine, std::int64_t items, int distance, std::int64_t itemBytes);
 }  // namespace detail
 
@@ -36,7 +52,7 @@ void xnetShift(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src, Direc
   T* to = dst.data();
   const ActiveMask& mask = machine.mask();
   if (!mask.allActive()) {
-    const std::vector<int> source = detail::xnetSources(g, direction, distance);
+    const std::vector<int>& source = detail::xnetSources(g, direction, distance);
     for (int pe = 0; pe < g.size(); ++pe)
       if (mask.active(pe)) to[pe] = from[source[pe]];
     return;
@@ -63,24 +79,24 @@ void xnetShift(MeshMachine& machine, PeArray<T>& dst, const PeArray<T>& src, Dir
   requireSameMachine(machine, dst.machine(), "xnetShift");
   requireSameMachine(machine, src.machine(), "xnetShift");
   detail::requireDistance(distance, "xnetShift");
-  const std::vector<int> from = detail::xnetSources(machine.grid(), direction, distance);
+  const std::vector<int>& from = detail::xnetSources(machine.grid(), direction, distance);
   int longest = 0;
   int longestAt = 0;
   for (int pe = 0; pe < machine.size(); ++pe)
     if (machine.active(pe) && src.count(from[pe]) > longest) longest = src.count(from[pe]), longestAt = pe;
   dst.reserve(longest, longestAt);
   detail::chargeXnet(machine, longest, distance, kWireBytes<T>);
-  std::vector<T> sent;  // what every PE sends (the list it held before the shift)
-  std::vector<int> begin(machine.size() + 1, 0);
+  auto& sent = detail::SentLists<T>::scratch();  // the lists as they were before the shift
+  sent.reset(machine.size());
   for (int pe = 0; pe < machine.size(); ++pe) {
     const auto list = src.list(pe);
-    sent.insert(sent.end(), list.begin(), list.end());
-    begin[pe + 1] = static_cast<int>(sent.size());
+    sent.items.insert(sent.items.end(), list.begin(), list.end());
+    sent.begin[pe + 1] = static_cast<int>(sent.items.size());
   }
   for (int pe = 0; pe < machine.size(); ++pe) {
     if (!machine.active(pe)) continue;
     dst.clear(pe);
-    for (int i = begin[from[pe]]; i < begin[from[pe] + 1]; ++i) dst.pushReserved(pe, sent[i]);
+    for (int i = sent.begin[from[pe]]; i < sent.begin[from[pe] + 1]; ++i) dst.pushReserved(pe, sent.items[i]);
   }
 }
 
@@ -96,7 +112,7 @@ void xnetForward(MeshMachine& machine, PeArray<T>& records, PeArray<int>& forwar
   requireSameMachine(machine, records.machine(), "xnetForward");
   requireSameMachine(machine, forward.machine(), "xnetForward");
   detail::requireDistance(distance, "xnetForward");
-  const std::vector<int> from = detail::xnetSources(machine.grid(), direction, distance);
+  const std::vector<int>& from = detail::xnetSources(machine.grid(), direction, distance);
   int longest = 0, need = 0, needAt = 0, sending = 0;
   for (int pe = 0; pe < machine.size(); ++pe) {
     sending = std::max(sending, forward.count(pe));
@@ -108,18 +124,18 @@ void xnetForward(MeshMachine& machine, PeArray<T>& records, PeArray<int>& forwar
   records.reserve(need, needAt);
   forward.reserve(longest, needAt);
   detail::chargeXnet(machine, sending, distance, kWireBytes<T>);
-  std::vector<T> sent;
-  std::vector<int> begin(machine.size() + 1, 0);
+  auto& sent = detail::SentLists<T>::scratch();
+  sent.reset(machine.size());
   for (int pe = 0; pe < machine.size(); ++pe) {
-    for (int index : forward.list(pe)) sent.push_back(records.at(pe, index));
-    begin[pe + 1] = static_cast<int>(sent.size());
+    for (int index : forward.list(pe)) sent.items.push_back(records.at(pe, index));
+    sent.begin[pe + 1] = static_cast<int>(sent.items.size());
   }
   for (int pe = 0; pe < machine.size(); ++pe) {
     if (!machine.active(pe)) continue;
     forward.clear(pe);
-    for (int i = begin[from[pe]]; i < begin[from[pe] + 1]; ++i) {
+    for (int i = sent.begin[from[pe]]; i < sent.begin[from[pe] + 1]; ++i) {
       forward.pushReserved(pe, records.count(pe));
-      records.pushReserved(pe, sent[i]);
+      records.pushReserved(pe, sent.items[i]);
     }
   }
 }

@@ -20,7 +20,8 @@ using emu::Plural;
 // Transform 4 vertices, normal and centroid into the shooter's frame (~80), clip against the
 // near plane and divide (~40), edge functions, depth plane and bounding box (~80).
 constexpr double kProjectFlopsPerPatch = 200.0;
-// Up to 5 edge functions at 4 flops, the 1/depth plane (4) and the depth compare (4).
+// One (description, pixel) pair: up to 5 edge functions at 4 flops, the 1/depth plane (4) and
+// the depth compare (4).
 constexpr double kPixelTestFlops = 28.0;
 // Decrement, test and keep-or-drop of one description in a spread step.
 constexpr double kSpreadIntOpsPerItem = 4.0;
@@ -80,7 +81,10 @@ ScanDepths MeshScanConversion::scanConvert(const MeshShot& shot, MeshShotStats& 
   const int patches = static_cast<int>(patches_.size());
   for (int passes = 1;; passes *= 2) {
     ScanDepths depths{std::vector<int>(machine_.size(), 0), std::vector<int>(machine_.size(), 0), passes};
-    resetItemBuffers(shot);
+    {
+      PhaseClock clock(machine_, stats, "spread right, z-buffer");
+      resetItemBuffers(shot);
+    }
     try {
       for (int pass = 0; pass < passes; ++pass) {
         {
@@ -169,17 +173,20 @@ void MeshScanConversion::resetItemBuffers(const MeshShot& shot) {
   machine_.chargeAlu({0.0, static_cast<double>(length)});
 }
 
-void MeshScanConversion::zBuffer(const MeshShot& shot, int pe, const Description& d) {
+int MeshScanConversion::zBuffer(const MeshShot& shot, int pe, const Description& d) {
   const int n = static_cast<int>(patches_.size());
   const PolygonSetup& s = shot.setups[d.setup];
   const int base = d.setup / n * pixelsPerPlane();
   const auto rows = shot.mapping.rows.pixelsOf(machine_.grid().row(pe));
   const auto columns = shot.mapping.columns.pixelsOf(machine_.grid().col(pe));
+  int tests = 0;
   for (std::size_t a = 0; a < rows.size(); ++a) {
     const int row = rows[a];
     if (row < s.rowBegin || row >= s.rowEnd) continue;
     for (std::size_t b = 0; b < columns.size(); ++b) {
       const int column = columns[b];
+      if (column < s.columnBegin || column >= s.columnEnd) continue;
+      ++tests;
       if (!covers(s, column, row)) continue;  // inside the bounding box, outside the patch
       const double inverseDepth = inverseDepthAt(s, column, row);
       ZEntry& z = zBuffer_.at(pe, base + static_cast<int>(a) * columnsPerPe_ + static_cast<int>(b));
@@ -187,40 +194,52 @@ void MeshScanConversion::zBuffer(const MeshShot& shot, int pe, const Description
         z = {s.id, inverseDepth};
     }
   }
+  return tests;
 }
 
 template <class Steps>
-void MeshScanConversion::zBufferAndKeep(const MeshShot& shot, int pe, Steps steps) {
+int MeshScanConversion::zBufferAndKeep(const MeshShot& shot, int pe, Steps steps) {
   const auto list = descriptions_.list(pe);
   int kept = 0;
+  int tests = 0;
   for (const Description& d : list) {
-    zBuffer(shot, pe, d);
+    tests += zBuffer(shot, pe, d);
     const int left = steps(d);
     if (left > 0) list[kept++] = {d.setup, left};
   }
   descriptions_.truncate(pe, kept);
+  return tests;
+}
+
+void MeshScanConversion::zBufferStep(const MeshShot& shot, bool first) {
+  // Each PE runs through its own (description, pixel) pairs, the loop flattened, so the SIMD time
+  // is the most pairs any PE has, not descriptions times pixels.
+  const int most = descriptions_.maxCount();
+  pixelTests_.assign(machine_.size(), 0);
+  machine_.forEachActive(kPixelTestFlops * most, [&](int pe) {
+    if (first) {
+      pixelTests_[pe] = zBufferAndKeep(shot, pe, [&](const Description& d) {
+        const PolygonSetup& s = shot.setups[d.setup];
+        return shot.mapping.columns.stepsToCover(s.columnBegin, s.columnEnd);
+      });
+    } else {
+      pixelTests_[pe] = zBufferAndKeep(shot, pe, [](const Description& d) { return d.stepsLeft - 1; });
+    }
+  });
+  const int pairs = *std::max_element(pixelTests_.begin(), pixelTests_.end());
+  machine_.chargeAlu({kPixelTestFlops * pairs, kSpreadIntOpsPerItem * most});
 }
 
 void MeshScanConversion::spreadRight(const MeshShot& shot) {
-  const double pixelWork = kPixelTestFlops * pixelsPerPlane();
   // Every PE z-buffers the strip pieces it holds; they then travel east one PE per step, each PE
   // z-buffering what passes through it without keeping it (section 1.5).
-  int most = descriptions_.maxCount();
-  machine_.compute({pixelWork * most, kSpreadIntOpsPerItem * most}, [&](int pe) {
-    zBufferAndKeep(shot, pe, [&](const Description& d) {
-      const PolygonSetup& s = shot.setups[d.setup];
-      return shot.mapping.columns.stepsToCover(s.columnBegin, s.columnEnd);
-    });
-  });
+  zBufferStep(shot, true);
   emu::Plural<bool> busy(machine_, false, "has arrivals");
   while (descriptions_.maxCount() > 0) {
     emu::xnetShift(machine_, descriptions_, descriptions_, Direction::E, 1);
     for (int pe = 0; pe < machine_.size(); ++pe) busy[pe] = descriptions_.count(pe) > 0;
-    most = descriptions_.maxCount();
     emu::ActiveScope scope(machine_, busy);
-    machine_.compute({pixelWork * most, kSpreadIntOpsPerItem * most}, [&](int pe) {
-      zBufferAndKeep(shot, pe, [](const Description& d) { return d.stepsLeft - 1; });
-    });
+    zBufferStep(shot, false);
   }
 }
 

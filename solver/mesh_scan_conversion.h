@@ -111,12 +111,15 @@ class MeshScanConversion {
   void routeToUpperLeft(const MeshShot& shot, int pass, int passes, ScanDepths& depths);
   void spreadDown(ScanDepths& depths);
   void spreadRight(const MeshShot& shot);
-  // z-buffers one description against PE pe's pixels of its plane.
-  void zBuffer(const MeshShot& shot, int pe, const Description& description);
+  // z-buffers one description against PE pe's pixels of its plane; returns the pixels tested
+  // (those of the PE inside the description's bounding box).
+  int zBuffer(const MeshShot& shot, int pe, const Description& description);
   // z-buffers PE pe's descriptions, then keeps (in place) those that must travel further east,
-  // each with its remaining steps from `steps`.
+  // each with its remaining steps from `steps`; returns the pixels tested.
   template <class Steps>
-  void zBufferAndKeep(const MeshShot& shot, int pe, Steps steps);
+  int zBufferAndKeep(const MeshShot& shot, int pe, Steps steps);
+  // One step of the rightward spread's z-buffering on every active PE (the first: the strips).
+  void zBufferStep(const MeshShot& shot, bool first);
 
   emu::MeshMachine& machine_;
   const std::vector<Patch>& patches_;
@@ -129,6 +132,7 @@ class MeshScanConversion {
   emu::PeArray<ZEntry> zBuffer_;
   int rowsPerPe_ = 0;
   int columnsPerPe_ = 0;
+  std::vector<int> pixelTests_;  // per PE, this step
 };
 
 }  // namespace radmesh

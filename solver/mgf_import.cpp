@@ -179,7 +179,8 @@ void MgfInterpreter::include(const MgfEntity& e) {
 }
 
 void MgfInterpreter::transform(const MgfEntity& e) {
-  if (e.words.size() > 1) return pushTransform(std::vector<std::string>(e.words.begin() + 1, e.words.end()), e.line);
+  if (e.words.size() > 1)
+    return pushTransform(std::vector<std::string>(e.words.begin() + 1, e.words.end()), e.line);
   if (transforms_.size() <= files_.back().transformDepth)
     throw MgfError("xf ends a transform, but none is open in this file",
                    "remove this line or add the 'xf arguments...' line it should close");

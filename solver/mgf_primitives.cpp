@@ -88,7 +88,8 @@ MgfPolygons tessellateCone(const Vec3& end1, double radius1, const Vec3& end2, d
 
 MgfPolygons tessellateRing(const Vec3& centre, const Vec3& normal, double rMin, double rMax) {
   if (rMin < 0.0 || !(rMax > rMin))
-    throw MgfError("ring radii need 0 <= rmin < rmax", "give the inner radius first, then a larger outer one");
+    throw MgfError("ring radii need 0 <= rmin < rmax",
+                   "give the inner radius first, then a larger outer one");
   const CircleFrame f = frameAround(requireNormal(normal, "ring"));
   MgfPolygons out;
   if (rMin == 0.0) {

@@ -46,6 +46,9 @@ AxisMapping AxisMapping::cyclic(int pixels, int pes) {
 
 AxisMapping AxisMapping::fromLoads(std::span<const double> loadPerPixel, int pes) {
   const int n = static_cast<int>(loadPerPixel.size());
+  // SIMD time grows with the most pixels any PE holds: with no more pixels than PEs, one pixel
+  // per PE is already the best balance.
+  if (n <= pes) return blocks(n, pes);
   double total = 0.0;
   for (double l : loadPerPixel) total += l;
   const double floor = total > 0.0 ? kAdaptiveLoadFloor * total / n : 1.0;

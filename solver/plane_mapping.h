@@ -25,7 +25,8 @@ class AxisMapping {
   static AxisMapping blocks(int pixels, int pes);
   static AxisMapping cyclic(int pixels, int pes);
   // Monotone blocks with about equal summed load per PE; every pixel also carries a floor of
-  // kAdaptiveLoadFloor times the mean load, so empty stretches cannot pile onto one PE.
+  // kAdaptiveLoadFloor times the mean load, so empty stretches cannot pile onto one PE. With no
+  // more pixels than PEs, blocks (one pixel per PE).
   static AxisMapping fromLoads(std::span<const double> loadPerPixel, int pes);
 
   int pixels() const { return static_cast<int>(peOf_.size()); }

@@ -103,9 +103,18 @@ bool covers(const PolygonSetup& setup, int column, int row) {
   return true;
 }
 
+namespace {
+
+// 1/depth = X (column + 0.5) + [Y (row + 0.5) + C], the bracket once per row: spans and single
+// pixels group the sum the same way, so they agree bit for bit.
+double rowInverseDepth(const PolygonSetup& setup, int row) {
+  return setup.inverseDepthY * (row + 0.5) + setup.inverseDepthC;
+}
+
+}  // namespace
+
 double inverseDepthAt(const PolygonSetup& setup, int column, int row) {
-  return setup.inverseDepthX * (column + 0.5) + setup.inverseDepthY * (row + 0.5) +
-         setup.inverseDepthC;
+  return setup.inverseDepthX * (column + 0.5) + rowInverseDepth(setup, row);
 }
 
 std::vector<int> depthTieRanks(const std::vector<Patch>& patches) {
@@ -157,8 +166,9 @@ void rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int 
     }
     int* items = buffer.items.data() + static_cast<std::ptrdiff_t>(row) * buffer.width;
     double* depths = buffer.inverseDepth.data() + static_cast<std::ptrdiff_t>(row) * buffer.width;
+    const double rowPart = rowInverseDepth(setup, row);
     for (int column = left; column < right; ++column) {
-      const double inverseDepth = inverseDepthAt(setup, column, row);
+      const double inverseDepth = setup.inverseDepthX * (column + 0.5) + rowPart;
       const int there = items[column];
       if (there == ItemBuffer::kNone || closer(inverseDepth, setup.rank, depths[column], rankOf[there])) {
         items[column] = setup.id;

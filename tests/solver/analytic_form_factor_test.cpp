@@ -80,7 +80,7 @@ TEST(AnalyticFormFactor, ReciprocityOfAreaFormFactors) {
   TestScene t;
   t.scene.source = "two rectangles";
   t.scene.materials = {test::grey(0.5, 1.0)};
-  const int m = 24;
+  const int m = 16;
   addGrid(t.patches, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, m, m);
   addGrid(t.patches, {-0.5, 0.3, 1.2}, {0, 0.5, 0.2}, {2, 0, 0}, m, m);
   const SolveOptions analytic = test::optionsFor(Projection::Analytic);

@@ -205,19 +205,35 @@ TEST(MeshBackend, RefusesProjectionsOtherThanTheSinglePlane) {
   EXPECT_THROW(MeshBackend(m.scene, m.patches, o), OptionError);
 }
 
-TEST(MeshBackend, ATooSmallPeMemoryIsAClearError) {
+TEST(MeshBackend, ScanConvertsInPassesWhenDescriptionsOverflowPeMemory) {
+  const Meshed& m = builtin("office");
+  const int one[] = {someShooters(m, 1)[0]};
+  std::vector<FormFactorRow> roomy, tight;
+  MeshBackend big(m.scene, m.patches, planeOptions(64));
+  big.computeRows(one, roomy);
+  ASSERT_EQ(big.lastShot().passes, 1);
+  MeshBackendOptions small;
+  small.memoryBudgetBytes = 1024;  // room for a dozen descriptions per PE
+  MeshBackend mesh(m.scene, m.patches, planeOptions(64), small);
+  mesh.computeRows(one, tight);
+  EXPECT_GT(mesh.lastShot().passes, 1);
+  EXPECT_LE(mesh.lastShot().counts.memoryHighWaterBytes, 1024);
+  EXPECT_EQ(mesh.lastShot().depthA, big.lastShot().depthA);  // the same arrivals, over the passes
+  EXPECT_EQ(mesh.lastShot().depthB, big.lastShot().depthB);
+  expectSameRow(tight[0], roomy[0], 1e-12);
+}
+
+TEST(MeshBackend, PatchesThatDoNotFitAreAClearError) {
   const Meshed& m = builtin("office");
   MeshBackendOptions tiny;
-  tiny.memoryBudgetBytes = 600;
-  MeshBackend mesh(m.scene, m.patches, planeOptions(64), tiny);
-  std::vector<FormFactorRow> rows;
-  const int one[] = {someShooters(m, 1)[0]};
+  tiny.memoryBudgetBytes = 100;  // less than one patch record
   try {
-    mesh.computeRows(one, rows);
+    MeshBackend mesh(m.scene, m.patches, planeOptions(64), tiny);
     FAIL() << "expected a MemoryBudgetError";
   } catch (const emu::MemoryBudgetError& e) {
-    EXPECT_NE(std::string(e.what()).find("PE (row "), std::string::npos) << e.what();
-    EXPECT_EQ(e.budgetBytes(), 600);
+    EXPECT_NE(std::string(e.what()).find("PE (row 0, col 0)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'patches'"), std::string::npos) << e.what();
+    EXPECT_EQ(e.budgetBytes(), 100);
   }
 }
 

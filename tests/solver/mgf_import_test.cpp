@@ -137,7 +137,8 @@ TEST(MgfImport, MirrorKeepsTheMirroredFaceFacingItsMirroredSide) {
   EXPECT_NEAR(n.z, -1.0, 1e-12);
   // The wall facing -y before still faces -y: mirrors in z do not turn it.
   EXPECT_NEAR(glm::normalize(newellNormal(s.polygons[1].vertices)).y, -1.0, 1e-12);
-  EXPECT_NEAR(s.polygons[1].vertices[0].z + s.polygons[1].vertices[1].z + s.polygons[1].vertices[2].z, -1.0, 1e-12);
+  const std::vector<Vec3>& wall = s.polygons[1].vertices;
+  EXPECT_NEAR(wall[0].z + wall[1].z + wall[2].z, -1.0, 1e-12);
 }
 
 TEST(MgfImport, VerticesTakeTheTransformWhereTheyAreUsed) {

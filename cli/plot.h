@@ -1,0 +1,28 @@
+#pragma once
+// Figures people would rather look at than read, drawn to PNG by gnuplot (Debian's gnuplot-nox).
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace radmesh::cli {
+
+struct Series {
+  std::string title;
+  std::vector<std::pair<double, double>> points;
+  std::string style = "linespoints";  // any gnuplot `with` style: lines, points, linespoints, steps
+};
+
+struct Plot {
+  std::string title;
+  std::string xLabel;
+  std::string yLabel;
+  bool logX = false;
+  bool logY = false;
+  std::vector<Series> series;
+};
+
+// Writes `png` (1000x650). Throws std::runtime_error naming gnuplot's failure; returns false,
+// saying why on stderr, when gnuplot is not installed.
+bool drawPlot(const Plot& plot, const std::string& png);
+
+}  // namespace radmesh::cli
