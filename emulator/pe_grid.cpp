@@ -32,11 +32,6 @@ int wrap(long long value, int modulus) {
 
 int PeGrid::index(int r, int c) const { return wrap(r, rows) * cols + wrap(c, cols); }
 
-int PeGrid::neighbour(int pe, Direction direction, long long distance) const {
-  const Step s = stepOf(direction);
-  return wrap(row(pe) + s.dRow * distance, rows) * cols + wrap(col(pe) + s.dCol * distance, cols);
-}
-
 std::string PeGrid::name(int pe) const {
   return "PE (row " + std::to_string(row(pe)) + ", col " + std::to_string(col(pe)) + ")";
 }

@@ -1,17 +1,12 @@
 #pragma once
 // Shape of a toroidal P x Q grid of processing elements (the MasPar MP-1's PE array, section 1.4)
 // and its index arithmetic. PEs are numbered row-major: pe = row * cols + col.
-#include <array>
 #include <string>
 
 namespace radmesh::emu {
 
 // The eight xnet directions. North is row - 1, east is col + 1.
 enum class Direction { N, NE, E, SE, S, SW, W, NW };
-
-inline constexpr std::array<Direction, 8> kAllDirections = {
-    Direction::N, Direction::NE, Direction::E, Direction::SE,
-    Direction::S, Direction::SW, Direction::W, Direction::NW};
 
 struct Step {
   int dRow = 0;
@@ -28,13 +23,11 @@ struct PeGrid {
   int row(int pe) const { return pe / cols; }
   int col(int pe) const { return pe % cols; }
   int index(int row, int col) const;  // wraps row and col around the torus
-  // The PE reached from pe after `distance` hops in `direction` (with wrap-around).
-  int neighbour(int pe, Direction direction, long long distance) const;
   // "PE (row 3, col 7)": how messages name a PE.
   std::string name(int pe) const;
 };
 
-// The MP-1 groups PEs into 4 x 4 clusters that share one router port (section 1.4; see
+// The MP-1 groups PEs into 4 x 4 clusters that share one router port (see
 // docs/emulator-cost-model.md). Grids not divisible by 4 get partial clusters at the far edges.
 inline constexpr int kClusterSide = 4;
 int clusterOf(const PeGrid& grid, int pe);

@@ -48,7 +48,9 @@ class Welder {
   };
   struct KeyHash {
     size_t operator()(const Key& k) const {
-      return std::hash<std::int64_t>()(k.x * 73856093 ^ k.y * 19349663 ^ k.z * 83492791);
+      // Unsigned: the mixing is meant to wrap around.
+      const auto u = [](std::int64_t x) { return static_cast<std::uint64_t>(x); };
+      return std::hash<std::uint64_t>()(u(k.x) * 73856093u ^ u(k.y) * 19349663u ^ u(k.z) * 83492791u);
     }
   };
   Key keyOf(const Vec3& p) const {

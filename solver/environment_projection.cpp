@@ -54,12 +54,12 @@ void EnvironmentProjection::setUpPatches(int shooter) {
       for (size_t f = 0; f < out.size(); ++f) {
         const ProjectionFace& face = surface_.faces[f];
         ScreenPolygon screen;
-        PolygonSetup setup;
-        if (projectOntoFace(local, face, nearDepth_, screen) &&
-            setupPolygon(screen, face.width, face.height, j, rank_[j], setup)) {
+        if (!projectOntoFace(local, face, nearDepth_, screen)) continue;
+        PolygonSetup& setup = out[f].emplace_back();  // set up in place: it is a few hundred bytes
+        if (setupPolygon(screen, face.width, face.height, j, rank_[j], setup))
           projectedArea_[j] += setup.areaPixels;
-          out[f].push_back(setup);
-        }
+        else
+          out[f].pop_back();
       }
     }
   });

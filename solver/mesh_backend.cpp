@@ -15,10 +15,19 @@ namespace radmesh {
 
 namespace {
 
-emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendOptions& mesh) {
+const SolveOptions& checked(const SolveOptions& options, const MeshBackendOptions& mesh) {
+  validateOptions(options);
   if (options.projection != Projection::Plane)
     throw OptionError(std::string("--backend mesh runs the paper's single plane; --projection ") +
                       toString(options.projection) + " is native only: use --projection plane or --backend native");
+  auto powerOfTwo = [](int x) { return x > 0 && (x & (x - 1)) == 0; };
+  if (!powerOfTwo(mesh.peRows) || !powerOfTwo(mesh.peCols))
+    throw OptionError("a mesh of " + std::to_string(mesh.peRows) + " x " + std::to_string(mesh.peCols) +
+                      " PEs cannot sort on its torus: give it power-of-two sides (the MP-1's 64 x 64)");
+  return options;
+}
+
+emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendOptions& mesh) {
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware};
 }
@@ -35,17 +44,15 @@ struct ShooterClaim {
 
 }  // namespace
 
-MeshBackend::MeshBackend(const Scene& scene, const std::vector<Patch>& patches,
+MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches,
                          const SolveOptions& options, const MeshBackendOptions& mesh)
-    : scene_(scene),
-      patches_(patches),
-      options_(options),
+    : patches_(patches),
+      options_(checked(options, mesh)),
       mesh_(mesh),
       surface_(makeSinglePlane(options.resolution, options.ratio)),
       machine_(machineConfig(options, mesh)),
       patchesOnPe_(machine_, "patches"),
       hostPool_(options.threads) {
-  validateOptions(options);
   layout_ = {static_cast<int>(patches.size()), machine_.size()};
   // The patches spread out equally over the PE array (section 1.5).
   for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
@@ -109,8 +116,7 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
   const std::size_t base = static_cast<std::size_t>(plane) * n;
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
-    const std::vector<int> rank = depthTieRanks(patches_);
-    const ProjectedShot projected{patches_, shot.shooters[plane], surface_, {&buffer, 1}, rank,
+    const ProjectedShot projected{patches_, shot.shooters[plane], surface_, {&buffer, 1}, scan_->depthTieRank(),
                                   {shot.projectedAreaPixels.data() + base, static_cast<std::size_t>(n)}};
     refineSubPixelReceivers(projected, hostPool_, formFactors);
   }

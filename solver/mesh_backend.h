@@ -26,7 +26,9 @@ struct MeshBackendOptions {
 
 class MeshBackend final : public FormFactorBackend {
  public:
-  // Throws OptionError for a projection other than the single plane (the paper's).
+  // Throws OptionError for invalid options, a projection other than the single plane (the
+  // paper's) or a mesh whose sides are not powers of two. The scene is not needed beyond its
+  // patches (kept for the factory's common signature).
   MeshBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options,
               const MeshBackendOptions& mesh = {});
   ~MeshBackend() override;
@@ -50,7 +52,6 @@ class MeshBackend final : public FormFactorBackend {
                    std::vector<std::vector<double>>* pixelFormFactors);
   FormFactorRow assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors);
 
-  const Scene& scene_;
   const std::vector<Patch>& patches_;
   SolveOptions options_;
   MeshBackendOptions mesh_;

@@ -112,7 +112,7 @@ ScanDepths MeshScanConversion::scanConvert(const MeshShot& shot, MeshShotStats& 
 void MeshScanConversion::routeToUpperLeft(const MeshShot& shot, int pass, int passes, ScanDepths& depths) {
   const int n = static_cast<int>(patches_.size());
   const emu::PeGrid& grid = machine_.grid();
-  descriptions_.clearAll();
+  descriptions_.releaseAll();  // each pass starts with the PEs' memory as the last one found it
   Plural<Description> message(machine_, {}, "outgoing description");
   Plural<int> destination(machine_, 0, "upper-left PE");
   Plural<bool> sends(machine_, false, "has a description");
@@ -140,7 +140,6 @@ void MeshScanConversion::routeToUpperLeft(const MeshShot& shot, int pass, int pa
 
 void MeshScanConversion::spreadDown(ScanDepths& depths) {
   const int size = machine_.size();
-  forward_.clearAll();
   for (int pe = 0; pe < size; ++pe)
     for (int i = 0; i < descriptions_.count(pe); ++i)
       if (descriptions_.at(pe, i).stepsLeft > 0) forward_.push(pe, i);
@@ -158,6 +157,7 @@ void MeshScanConversion::spreadDown(ScanDepths& depths) {
       forward_.truncate(pe, kept);
     }
   }
+  forward_.releaseAll();
   for (int pe = 0; pe < size; ++pe) depths.b[pe] += descriptions_.count(pe);
 }
 
@@ -165,6 +165,7 @@ void MeshScanConversion::resetItemBuffers(const MeshShot& shot) {
   rowsPerPe_ = shot.mapping.rows.maxPixelsPerPe();
   columnsPerPe_ = shot.mapping.columns.maxPixelsPerPe();
   const int length = static_cast<int>(shot.shooters.size()) * pixelsPerPlane();
+  zBuffer_.releaseAll();  // an adaptive mapping sizes it anew each shot
   zBuffer_.reserve(length);
   for (int pe = 0; pe < machine_.size(); ++pe) {
     zBuffer_.clear(pe);

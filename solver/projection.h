@@ -44,7 +44,7 @@ Vec3 toShooterFrame(const Patch& shooter, const Vec3& point);
 // (i, j) spans [i, i+1] x [j, j+1], its centre at (i + 0.5, j + 0.5)).
 struct ScreenPolygon {
   static constexpr int kMaxVertices = 5;  // a quad clipped by one plane
-  std::array<glm::dvec2, kMaxVertices> vertices{};
+  std::array<glm::dvec2, kMaxVertices> vertices;  // the first vertexCount are set
   int vertexCount = 0;
   // 1/depth is affine in pixel coordinates under a perspective projection: true perspective
   // depth anywhere on the patch, from its plane (robust for slivers, unlike vertex interpolation).

@@ -146,18 +146,27 @@ void rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int 
         continue;
       }
       // The first column whose centre lies past the edge (on the inside for a left edge, the
-      // outside for a right one). When the crossing is clear of every pixel centre this is exact;
-      // near a centre the edge function decides, column by column.
+      // outside for a right one): ceil(t). When the crossing is clear of every pixel centre by
+      // more than rounding can move it, that is exact; otherwise the edge function decides,
+      // column by column. (Integer ceil: std::ceil is a library call on baseline x86-64.)
       const double t = e.startX + (cy - e.startY) * e.inverseSlope - 0.5;
-      const double g = std::ceil(t);
-      const bool clear = g - t > e.crossingSlack && t - (g - 1.0) > e.crossingSlack;
+      const double slack = e.crossingSlack;
       int first;
-      if (clear) {
-        first = !(g > left) ? left : !(g < right) ? right : static_cast<int>(g);
-      } else if (e.dirY > 0.0) {
-        first = firstPassing(g, left, right, pass);
-      } else {
-        first = firstPassing(g, left, right, [&](int column) { return !pass(column); });
+      if (t >= left - 2.0 && t <= right + 2.0) {
+        int g = static_cast<int>(t);  // truncation: ceil for negative t ...
+        g += g < t;                   // ... and for positive t after this (no branch to mispredict)
+        if (g - t > slack && t - (g - 1) > slack)
+          first = std::clamp(g, left, right);
+        else
+          first = e.dirY > 0.0 ? firstPassing(g, left, right, pass)
+                               : firstPassing(g, left, right, [&](int column) { return !pass(column); });
+      } else if (slack < 1.0 && t < left) {
+        first = left;  // crossing well left of the span
+      } else if (slack < 1.0 && t > right) {
+        first = right;  // well right of it
+      } else {  // not a number, or magnitudes rounding can move by pixels
+        first = e.dirY > 0.0 ? firstPassing(left, left, right, pass)
+                             : firstPassing(left, left, right, [&](int column) { return !pass(column); });
       }
       if (e.dirY > 0.0)
         left = first;

@@ -32,7 +32,7 @@ struct PolygonSetup {
   int id = -1;    // patch index, written into the item buffer
   int rank = 0;   // depth-tie order (see depthTieRanks)
   int edgeCount = 0;
-  std::array<EdgeFunction, ScreenPolygon::kMaxVertices> edges{};
+  std::array<EdgeFunction, ScreenPolygon::kMaxVertices> edges;  // the first edgeCount are set
   double inverseDepthX = 0.0, inverseDepthY = 0.0, inverseDepthC = 0.0;
   int columnBegin = 0, columnEnd = 0;  // pixels [columnBegin, columnEnd) x [rowBegin, rowEnd)
   int rowBegin = 0, rowEnd = 0;        // hold every pixel centre the polygon may cover

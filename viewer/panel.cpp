@@ -149,7 +149,7 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
   const double lastSeconds = snapshot.curve.size() >= 2
                                  ? snapshot.curve.back().hostSeconds - snapshot.curve.end()[-2].hostSeconds
                                  : snapshot.hostSeconds();
-  ImGui::Text("host: %.3f s in all, %.2f ms for the last iteration", snapshot.hostSeconds(), 1e3 * lastSeconds);
+  ImGui::Text("host: %.3f s in all, last iteration %.2f ms", snapshot.hostSeconds(), 1e3 * lastSeconds);
   note("emulated MP-1 s: shown once the mesh back end reports it");
   ImGui::Text("last shooters: %zu, captured fraction %.4f", snapshot.lastShooters.size(),
               snapshot.lastCapturedFraction);

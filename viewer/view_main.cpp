@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--steps", args.steps, "Smoke test: run N iterations, save --screenshot, exit")
       ->check(CLI::PositiveNumber);
+  app.add_option("--min-frames", args.minFrames, "With --steps: draw at least this many frames (timing)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps)");
   CLI11_PARSE(app, argc, argv);
 

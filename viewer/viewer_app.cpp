@@ -23,10 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 // Hands the renderer what changed since the last snapshot it drew.
 class SnapshotFeed {
  public:
@@ -51,6 +47,35 @@ bool smokeTestReady(const ViewerArgs& args, const SolverSnapshot& snapshot) {
   return snapshot.iteration() >= args.steps || snapshot.done || !snapshot.error.empty();
 }
 
+// Frame times, apart while the solver thread iterates and while it is idle: the cost of drawing
+// alone, and of drawing beside a busy solver.
+class FrameStats {
+ public:
+  void add(double seconds, bool solving) {
+    Phase& p = solving ? solving_ : idle_;
+    ++p.frames;
+    p.seconds += seconds;
+  }
+  void print(glm::ivec2 size, const SolverSnapshot& snapshot) const {
+    std::printf("radmesh-view: %dx%d; solver at iteration %d, C = %.4f\n", size.x, size.y, snapshot.iteration(),
+                snapshot.convergence());
+    print("while solving", solving_);
+    print("solver idle", idle_);
+  }
+
+ private:
+  struct Phase {
+    long frames = 0;
+    double seconds = 0.0;
+  };
+  static void print(const char* name, const Phase& p) {
+    if (p.frames == 0) return;
+    std::printf("radmesh-view: %s: %ld frames in %.2f s, %.1f fps (%.2f ms per frame)\n", name, p.frames, p.seconds,
+                p.frames / std::max(p.seconds, 1e-9), 1e3 * p.seconds / p.frames);
+  }
+  Phase solving_, idle_;
+};
+
 }  // namespace
 
 int runViewer(const ViewerArgs& args) {
@@ -71,8 +96,8 @@ int runViewer(const ViewerArgs& args) {
   SnapshotFeed feed;
   WalkInputReader input;
 
-  const auto start = Clock::now();
-  auto lastFrame = start;
+  auto lastFrame = Clock::now();
+  FrameStats stats;
   long frames = 0;
   int framesSinceReady = 0;
   int exitCode = 0;
@@ -82,6 +107,8 @@ int runViewer(const ViewerArgs& args) {
     const auto now = Clock::now();
     const double dt = std::chrono::duration<double>(now - lastFrame).count();
     lastFrame = now;
+    // dt is the previous frame's time; it counts where that frame's snapshot stood.
+    if (frames > 0) stats.add(dt, smokeTest ? !smokeTestReady(args, feed.shown()) : feed.shown().playing && !feed.shown().done);
 
     feed.show(solver.latest(), renderer, view);
     camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
@@ -94,7 +121,7 @@ int runViewer(const ViewerArgs& args) {
     ++frames;
 
     // The panel lays itself out over a couple of frames: wait for them before the screenshot.
-    if (smokeTest && smokeTestReady(args, feed.shown()) && ++framesSinceReady >= 3) {
+    if (smokeTest && smokeTestReady(args, feed.shown()) && ++framesSinceReady >= 3 && frames >= args.minFrames) {
       if (!feed.shown().error.empty()) {
         std::fprintf(stderr, "radmesh-view: the solve failed: %s\n", feed.shown().error.c_str());
         exitCode = 1;
@@ -107,12 +134,7 @@ int runViewer(const ViewerArgs& args) {
     window.swapBuffers();
   }
 
-  const double seconds = secondsSince(start);
-  std::printf("radmesh-view: %ld frames in %.2f s (%.1f fps, %.2f ms per frame) at %dx%d; solver at iteration "
-              "%d, C = %.4f\n",
-              frames, seconds, frames / std::max(seconds, 1e-9), 1e3 * seconds / std::max(frames, 1L),
-              window.framebufferSize().x, window.framebufferSize().y, feed.shown().iteration(),
-              feed.shown().convergence());
+  stats.print(window.framebufferSize(), feed.shown());
   return exitCode;
 }
 

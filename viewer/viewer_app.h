@@ -15,8 +15,9 @@ struct ViewerArgs {
   glm::ivec2 windowSize{1280, 720};
   PanelTab firstTab = PanelTab::Progress;
   // Smoke-test mode when steps > 0: solve this many iterations (paused after), save a screenshot
-  // of the whole window with its panel, print frame statistics, and exit.
+  // of the whole window with its panel, and exit. Frame statistics are printed on exit.
   int steps = 0;
+  long minFrames = 0;  // and draw at least this many frames first (for timing)
   std::string screenshot;
 };
 

@@ -181,3 +181,25 @@ TEST(XnetForward, AnOverflowNamesThePeAndChangesNothing) {
 
 }  // namespace
 }  // namespace radmesh::emu
+
+namespace radmesh::emu {
+namespace {
+
+TEST(XnetShift, ListsReachOnlyActivePes) {
+  MeshMachine m({4, 4});
+  PeArray<int> lists(m, "lists");
+  for (int pe = 0; pe < 16; ++pe) lists.push(pe, pe);
+  const Plural<bool> cond = test::randomCondition(m, 0.5, 17);
+  {
+    ActiveScope scope(m, cond);
+    xnetShift(m, lists, lists, Direction::E, 1);
+  }
+  for (int pe = 0; pe < 16; ++pe) {
+    const int from = m.grid().index(m.grid().row(pe), m.grid().col(pe) - 1);
+    ASSERT_EQ(lists.count(pe), 1);
+    EXPECT_EQ(lists.at(pe, 0), cond[pe] ? from : pe) << m.grid().name(pe);
+  }
+}
+
+}  // namespace
+}  // namespace radmesh::emu

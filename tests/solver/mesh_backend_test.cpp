@@ -198,11 +198,14 @@ TEST(MeshBackend, SelectsShootersAsTheSolverDoesWithReduceMax) {
   EXPECT_GT(mesh.machine().costs().reduce.ops, 0);
 }
 
-TEST(MeshBackend, RefusesProjectionsOtherThanTheSinglePlane) {
+TEST(MeshBackend, RefusesOtherProjectionsAndMeshesThatCannotSort) {
   const Meshed& m = builtin("cornell");
   SolveOptions o = planeOptions(64);
   o.projection = Projection::Hemicube;
   EXPECT_THROW(MeshBackend(m.scene, m.patches, o), OptionError);
+  MeshBackendOptions oddMesh;
+  oddMesh.peRows = 48;
+  EXPECT_THROW(MeshBackend(m.scene, m.patches, planeOptions(64), oddMesh), OptionError);
 }
 
 TEST(MeshBackend, ScanConvertsInPassesWhenDescriptionsOverflowPeMemory) {

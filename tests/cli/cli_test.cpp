@@ -1,0 +1,133 @@
+// The `radmesh` command as a user runs it: exit codes, messages, and the JSON others depend on.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/test_paths.h"
+
+namespace radmesh {
+namespace {
+
+struct CommandRun {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+CommandRun radmesh(const std::string& arguments) {
+  const std::string command = (test::binaryDir() / "cli" / "radmesh").string() + " " + arguments + " 2>&1";
+  CommandRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer{};
+  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) run.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::string tempPath(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("radmesh-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+TEST(Cli, InfoJsonGivesTheFurnaceFigures) {
+  const CommandRun run = radmesh("info furnace --json");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto j = nlohmann::json::parse(run.output);
+  EXPECT_EQ(j["polygons"], 6);
+  EXPECT_EQ(j["emitters"], 6);
+  EXPECT_GT(j["patches"].get<int>(), 6);
+  EXPECT_FALSE(j["effects"]["occlusion"]["on"].get<bool>()) << j["effects"].dump();
+  EXPECT_FALSE(j["effects"]["colour"]["on"].get<bool>());
+  EXPECT_FALSE(j["effects"]["escape"]["on"].get<bool>());
+  EXPECT_NEAR(j["total_area"].get<double>(), 6.0 * std::pow(j["bounds_max"][0].get<double>() - j["bounds_min"][0].get<double>(), 2), 1e-9);
+}
+
+TEST(Cli, SolveWritesStatsWithTheDocumentedKeysAndABalancedLedger) {
+  const std::string stats = tempPath("stats.json");
+  const CommandRun run = radmesh("solve cornell --cell 0.1 --resolution 64 --until 0.9 --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(stats);
+  const auto j = nlohmann::json::parse(in);
+  for (const char* key : {"patches", "iterations", "convergence", "seconds", "per_iteration", "ledger"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_GE(j["convergence"].get<double>(), 0.9);
+  ASSERT_EQ(j["per_iteration"].size(), j["iterations"].get<size_t>());
+  for (const char* key : {"iteration", "shooter", "shot_power", "convergence", "seconds"})
+    EXPECT_TRUE(j["per_iteration"][0].contains(key)) << key;
+  const auto& l = j["ledger"];
+  const double accounted = l["absorbed"].get<double>() + l["unshot"].get<double>() +
+                           l["not_captured"].get<double>() + l["escaped"].get<double>();
+  EXPECT_NEAR(accounted, l["emitted"].get<double>(), 1e-9 * l["emitted"].get<double>());
+  EXPECT_NEAR(l["emitted"].get<double>(), 1.41513, 1e-4);  // the Cornell light: area x E
+}
+
+TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
+  CommandRun run = radmesh("solve furnace --resolution 8");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--resolution"), std::string::npos) << run.output;
+  run = radmesh("info furnace --cell 0");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--cell"), std::string::npos) << run.output;
+  run = radmesh("solve furnace --projection sphere");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("sphere"), std::string::npos) << run.output;
+}
+
+TEST(Cli, EveryBadFileIsRefusedWithItsNameAndNoCrash) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::dataPath("bad"))) {
+    const std::string path = entry.path().string();
+    if (path.find("_b.mgf") != std::string::npos) continue;  // the partner of an include cycle
+    const CommandRun run = radmesh("info " + path);
+    EXPECT_EQ(run.exitCode, 2) << path << "\n" << run.output;
+    EXPECT_NE(run.output.find(entry.path().filename().string()), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("fix:"), std::string::npos) << run.output;
+    ++files;
+  }
+  EXPECT_GE(files, 20);
+}
+
+TEST(Cli, MissingFileAndUnknownSceneNameSayWhatIsAccepted) {
+  CommandRun run = radmesh("info does-not-exist.gltf");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("does-not-exist.gltf"), std::string::npos) << run.output;
+  run = radmesh("info nowhere");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("office"), std::string::npos) << run.output;
+}
+
+TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
+  const std::string dir = tempPath("accuracy");
+  const CommandRun run = radmesh("bench accuracy furnace --quick --out-dir " + dir);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(dir + "/furnace.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["points"].size(), 9u);  // 3 settings x 3 resolutions at one cell
+  EXPECT_NE(j["references"][0]["how"].get<std::string>().find("analytic"), std::string::npos);
+  // The furnace's answer is B = E/(1-rho) everywhere. The hemicube catches the whole hemisphere;
+  // the single plane loses 8.3 % of each shot at ratio 3 and 3.8 % at ratio 5, and it shows.
+  std::map<std::string, double> worst;
+  for (const auto& p : j["points"]) {
+    const std::string key = p["projection"].get<std::string>() + std::to_string(p["ratio"].get<double>());
+    worst[key] = std::max(worst[key], p["error_at_99"].get<double>());
+  }
+  EXPECT_LT(worst["hemicube3.000000"], 0.03);
+  EXPECT_GT(worst["plane3.000000"], 0.05);
+  EXPECT_LT(worst["plane3.000000"], 0.12);
+  EXPECT_LT(worst["plane5.000000"], worst["plane3.000000"]);
+}
+
+}  // namespace
+}  // namespace radmesh
