@@ -1,6 +1,7 @@
 // `radmesh solve SCENE`: progressive refinement until --until, with progress, stats and a bake.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -9,6 +10,7 @@
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
 #include "solver/display_radiosity.h"
+#include "solver/effects_plan.h"
 #include "solver/gltf_export.h"
 #include "solver/meshing.h"
 #include "solver/scene_loader.h"
@@ -21,6 +23,7 @@ struct SolveArgs {
   SolveFlags flags;
   std::string statsPath;
   std::string outPath;
+  std::string effects = "auto";
   bool quiet = false;
 };
 
@@ -29,16 +32,29 @@ void printSummary(const ProgressiveSolver& solver, double seconds) {
   const size_t n = solver.history().size();
   fmt::print("solved: {} patches, {} iterations, convergence {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
              solver.patches().size(), n, 100.0 * solver.convergence(), seconds, seconds > 0 ? n / seconds : 0.0);
+  double emulated = 0.0;
+  for (const IterationRecord& r : solver.history()) emulated += r.meshShot ? r.meshShot->emulatedSeconds : 0.0;
+  if (emulated > 0.0)
+    fmt::print("mesh: {:.3f} emulated MP-1 seconds ({:.3f} s per iteration) beside {:.3f} host seconds\n", emulated,
+               emulated / std::max<size_t>(n, 1), seconds);
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
              "  (imbalance {:.1e})\n",
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
 }
 
 void run(const SolveArgs& args) {
-  const SolveOptions options = args.flags.resolved();
+  SolveOptions options = args.flags.resolved();
   std::vector<std::string> warnings;
   const Scene scene = loadScene(args.flags.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  const EffectsPlan plan = planEffects(scene, parseEffectsFlag(args.effects));
+  fmt::print("effects:\n");
+  for (const Effect& e : plan.effects) fmt::print("  {:<16}{:<4} {}\n", e.name, e.on ? "on" : "off", e.reason);
+  // No occlusion: exact analytic form factors replace the item buffer (the mesh backend keeps its plane).
+  if (!plan.occlusion && options.backend == Backend::Native && options.projection != Projection::Analytic) {
+    fmt::print("  occlusion is off, so --projection {} becomes analytic\n", toString(options.projection));
+    options.projection = Projection::Analytic;
+  }
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
   fmt::print("solving {}: {} patches, {} {}x{}, k={}, until C={:.2f}\n", scene.source, solver.patches().size(),
              toString(options.projection), options.resolution, options.resolution, options.shooters, options.until);
@@ -55,7 +71,7 @@ void run(const SolveArgs& args) {
   printSummary(solver, seconds);
 
   if (!args.statsPath.empty()) {
-    writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
+    writeJson(args.statsPath, solveStats(solver, scene.source, seconds, plan));
     fmt::print("wrote {}\n", args.statsPath);
   }
   if (!args.outPath.empty()) {
@@ -73,6 +89,8 @@ void addSolveCommand(CLI::App& app) {
   addSolveFlags(cmd, args->flags);
   cmd->add_option("--stats", args->statsPath, "Write per-iteration figures and the energy ledger as JSON");
   cmd->add_option("--out", args->outPath, "Write the bake as glTF 2.0 binary (.glb) with COLOR_0 radiosity");
+  cmd->add_option("--effects", args->effects, "auto: simulate only what the scene calls for; all: everything")
+      ->capture_default_str();
   cmd->add_flag("--quiet", args->quiet, "No per-iteration progress");
   cmd->callback([args] { run(*args); });
 }

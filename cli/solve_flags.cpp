@@ -10,6 +10,7 @@ SolveOptions SolveFlags::resolved() const {
   SolveOptions o = options;
   o.backend = parseBackend(backend);
   o.projection = parseProjection(projection);
+  o.mapping = parseMapping(mapping);
   validateOptions(o);
   return o;
 }
@@ -19,6 +20,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
       ->capture_default_str();
   cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
   cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (the paper: 15 in)")->capture_default_str();
+  cmd->add_option("--mapping", f.mapping, "Mesh backend: hierarchical, cut-and-stack or adaptive")->capture_default_str();
   cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")->capture_default_str();
   cmd->add_option("--resolution", f.options.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   cmd->add_option("--ratio", f.options.ratio, "Half-side of the single plane at height 1")->capture_default_str();

@@ -12,6 +12,7 @@ struct SolveFlags {
   double cellM = 0.381;
   std::string backend = "native";
   std::string projection = "plane";
+  std::string mapping = "hierarchical";
   SolveOptions options;
 
   // Parses the text flags into options and validates them (throws OptionError).

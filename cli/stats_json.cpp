@@ -12,19 +12,50 @@ nlohmann::json ledgerJson(const Ledger& l) {
           {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"imbalance", l.imbalance()}};
 }
 
+nlohmann::json countsJson(const emu::CostCounts& c) {
+  auto cls = [](const emu::ClassCounts& k) {
+    return nlohmann::json{{"ops", k.ops},           {"hops", k.hops},         {"byte_hops", k.byteHops},
+                          {"messages", k.messages}, {"rounds", k.rounds},     {"byte_rounds", k.byteRounds},
+                          {"flops", k.flops},       {"int_ops", k.intOps}};
+  };
+  return {{"xnet", cls(c.xnet)},     {"router", cls(c.router)}, {"alu", cls(c.alu)},
+          {"reduce", cls(c.reduce)}, {"scan", cls(c.scan)},     {"sort", cls(c.sort)},
+          {"max_collisions", c.maxCollisions}, {"memory_high_water_bytes", c.memoryHighWaterBytes}};
+}
+
+void addMeshShot(nlohmann::json& j, const MeshShotStats& m) {
+  j["depth_a_max"] = m.depthAMax;
+  j["depth_b_max"] = m.depthBMax;
+  j["depth_a_hist"] = m.depthAHist;
+  j["depth_b_hist"] = m.depthBHist;
+  j["emulated_seconds"] = m.emulatedSeconds;
+  j["passes"] = m.passes;
+  j["op_counts"] = countsJson(m.counts);
+  nlohmann::json phases = nlohmann::json::array();
+  for (const MeshPhaseCost& p : m.phases)
+    phases.push_back({{"name", p.name}, {"emulated_seconds", p.emulatedSeconds}, {"host_seconds", p.hostSeconds}});
+  j["phases"] = phases;
+}
+
 nlohmann::json iterationJson(const IterationRecord& r) {
-  return {{"iteration", r.iteration},
+  nlohmann::json j = {{"iteration", r.iteration},
           {"shooter", r.shooters.empty() ? -1 : r.shooters.front()},
           {"shooters", r.shooters},
           {"shot_power", r.shotPowerW},
           {"convergence", r.convergence},
           {"seconds", r.seconds},
-          {"captured_fraction", r.capturedFraction}};
+          {"captured_fraction", r.capturedFraction},
+          {"reused_rows", r.reusedRows},
+          {"reused_rows_total", r.reusedRowsTotal},
+          {"cache_hits", r.cacheHits}};
+  if (r.meshShot) addMeshShot(j, *r.meshShot);
+  return j;
 }
 
 }  // namespace
 
-nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds,
+                          const EffectsPlan& effects) {
   const SolveOptions& o = solver.options();
   nlohmann::json perIteration = nlohmann::json::array();
   for (const IterationRecord& r : solver.history()) perIteration.push_back(iterationJson(r));
@@ -32,6 +63,7 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"patches", solver.patches().size()},
           {"backend", toString(o.backend)},
           {"projection", toString(o.projection)},
+          {"mapping", toString(o.mapping)},
           {"resolution", o.resolution},
           {"ratio", o.ratio},
           {"shooters", o.shooters},
@@ -40,7 +72,8 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"convergence", solver.convergence()},
           {"seconds", seconds},
           {"per_iteration", std::move(perIteration)},
-          {"ledger", ledgerJson(solver.ledger())}};
+          {"ledger", ledgerJson(solver.ledger())},
+          {"effects", effectsJson(effects)}};
 }
 
 nlohmann::json effectsJson(const EffectsPlan& plan) {

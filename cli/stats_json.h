@@ -8,7 +8,8 @@
 
 namespace radmesh::cli {
 
-nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds,
+                          const EffectsPlan& effects);
 // {"occlusion": {"on": false, "reason": "..."}, ...}
 nlohmann::json effectsJson(const EffectsPlan& plan);
 void writeJson(const std::string& path, const nlohmann::json& document);  // throws on I/O failure

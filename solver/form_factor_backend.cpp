@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "solver/mesh_backend.h"
 #include "solver/native_backend.h"
 #include "solver/scene_error.h"
 
@@ -28,9 +29,9 @@ std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
                                                          const SolveOptions& options) {
   switch (options.backend) {
     case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, options);
-    case Backend::Mesh: break;
+    case Backend::Mesh: return std::make_unique<MeshBackend>(scene, patches, options, MeshBackendOptions{options.mapping});
   }
-  throw OptionError("--backend mesh is not available in this build: use --backend native");
+  throw OptionError("--backend must be native or mesh");
 }
 
 }  // namespace radmesh

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "solver/item_buffer.h"
+#include "solver/mesh_shot_stats.h"
 #include "solver/patch.h"
 #include "solver/scene.h"
 #include "solver/solve_options.h"
@@ -43,6 +44,8 @@ class FormFactorBackend {
   // The single plane's item buffer for a shooter, at the options' resolution and ratio, whatever
   // the projection in use: what the viewer shows, and where the back ends must agree pixel for pixel.
   virtual ItemBuffer singlePlaneItemBuffer(int shooter) = 0;
+  // Load balance and emulated cost of the last computeRows, on a back end that has them.
+  virtual const MeshShotStats* lastMeshShot() const { return nullptr; }
 };
 
 // The back end options.backend names. Throws OptionError for one that is not available.

@@ -37,6 +37,7 @@ class MeshBackend final : public FormFactorBackend {
   void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
   ProjectionSummary projectionSummary() const override;
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
+  const MeshShotStats* lastMeshShot() const override { return &lastShot_; }
 
   // The shooting-patch selection phase on the mesh: k reduceMax over the patches' unshot power,
   // ties to the lower tie rank; patches without unshot power are never chosen. Strongest first.

@@ -11,12 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "solver/solve_options.h"
+
 namespace radmesh {
 
-enum class MappingKind { Hierarchical, CutAndStack, Adaptive };
-
-const char* toString(MappingKind kind);
-MappingKind parseMapping(const std::string& text);  // throws OptionError
 
 // One axis of the plane (pixels) over one axis of the mesh (PEs).
 class AxisMapping {

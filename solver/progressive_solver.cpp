@@ -136,6 +136,12 @@ void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, Itera
   if (missing.empty()) return;
   std::vector<FormFactorRow> computed;
   backend->computeRows(missing, computed);
+  if (const MeshShotStats* shot = backend->lastMeshShot()) {
+    auto kept = std::make_shared<MeshShotStats>(*shot);
+    kept->depthA.clear();  // 4096 ints a shot: the histograms say the same in far less
+    kept->depthB.clear();
+    record.meshShot = std::move(kept);
+  }
   for (size_t m = 0; m < missing.size(); ++m) {
     if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
     rows[missingSlot[m]] = std::move(computed[m]);

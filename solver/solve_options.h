@@ -7,10 +7,13 @@ namespace radmesh {
 
 enum class Projection { Plane, Hemicube, Analytic };
 enum class Backend { Native, Mesh };
+// How the mesh backend lays the single plane over the PEs (solver/plane_mapping.h).
+enum class MappingKind { Hierarchical, CutAndStack, Adaptive };
 
 struct SolveOptions {
   Backend backend = Backend::Native;
   Projection projection = Projection::Plane;
+  MappingKind mapping = MappingKind::Hierarchical;  // mesh backend only
   int resolution = 128;    // N: the single plane (or each hemicube face) is N x N pixels, 16..2048
   double ratio = 3.0;      // half-side of the single plane at height 1 (the paper's ratio 3)
   int shooters = 1;        // k: shooters per iteration, all shot from the same state
@@ -31,5 +34,7 @@ const char* toString(Projection projection);
 const char* toString(Backend backend);
 Projection parseProjection(const std::string& text);  // throws OptionError
 Backend parseBackend(const std::string& text);        // throws OptionError
+const char* toString(MappingKind kind);
+MappingKind parseMapping(const std::string& text);    // throws OptionError
 
 }  // namespace radmesh

@@ -131,3 +131,33 @@ TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
 
 }  // namespace
 }  // namespace radmesh
+
+namespace radmesh {
+namespace {
+
+TEST(Cli, MeshBackendStatsCarryDepthsEmulatedTimeAndOpCountsForEveryMapping) {
+  for (const std::string mapping : {"hierarchical", "cut-and-stack", "adaptive"}) {
+    const std::string stats = tempPath("mesh-" + mapping + ".json");
+    const CommandRun run = radmesh("solve cornell --cell 0.1 --backend mesh --mapping " + mapping +
+                                   " --resolution 64 --max-iterations 5 --until 1 --stats " + stats);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(stats);
+    const auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["mapping"], mapping);
+    ASSERT_EQ(j["per_iteration"].size(), 5u);
+    for (const auto& it : j["per_iteration"]) {
+      for (const char* key : {"depth_a_max", "depth_b_max", "depth_a_hist", "depth_b_hist", "emulated_seconds", "op_counts"})
+        ASSERT_TRUE(it.contains(key)) << key;
+      // The histograms count every one of the 4096 PEs, and their top bin is the max depth.
+      int pes = 0;
+      for (int count : it["depth_a_hist"]) pes += count;
+      EXPECT_EQ(pes, 4096);
+      EXPECT_EQ(it["depth_a_hist"].size(), it["depth_a_max"].get<size_t>() + 1);
+      EXPECT_GE(it["depth_b_max"].get<int>(), 1);
+      EXPECT_GT(it["emulated_seconds"].get<double>(), 0.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace radmesh
