@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -150,10 +151,9 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
                                  ? snapshot.curve.back().hostSeconds - snapshot.curve.end()[-2].hostSeconds
                                  : snapshot.hostSeconds();
   ImGui::Text("host: %.3f s in all, last iteration %.2f ms", snapshot.hostSeconds(), 1e3 * lastSeconds);
-  note("emulated MP-1 s: shown once the mesh back end reports it");
   ImGui::Text("last shooters: %zu, captured fraction %.4f", snapshot.lastShooters.size(),
               snapshot.lastCapturedFraction);
-
+  drawEmulatedCost(snapshot);
   ImGui::Separator();
   ImGui::TextUnformatted("energy ledger");
   const Ledger& l = snapshot.ledger;
@@ -179,9 +179,76 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
   if (l.emitted > 0.0) ImGui::Text("imbalance %.1e", l.imbalance());
 }
 
+void Panel::drawEmulatedCost(const SolverSnapshot& snapshot) {
+  if (!snapshot.lastMeshShot) {
+    note("emulated MP-1 seconds: with the mesh back end (Parameters)");
+    return;
+  }
+  const MeshShotStats& shot = *snapshot.lastMeshShot;
+  const double emulated = snapshot.curve.empty() ? 0.0 : snapshot.curve.back().emulatedSeconds;
+  ImGui::Text("emulated MP-1: %.3f s, last shot %.1f ms", emulated, 1e3 * shot.emulatedSeconds);
+  std::vector<double> emulatedSeconds, c;
+  for (const ConvergencePoint& p : snapshot.curve) {
+    emulatedSeconds.push_back(p.emulatedSeconds);
+    c.push_back(p.convergence);
+  }
+  ImGui::TextUnformatted("convergence C over emulated MP-1 seconds");
+  plotXY("c-emulated", emulatedSeconds, c, {"MP-1 s", 0.0, 1.0}, 70.0f);
+  if (ImGui::BeginTable("phases", 3, ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("last shot's phase", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("MP-1 ms");
+    ImGui::TableSetupColumn("host ms");
+    ImGui::TableHeadersRow();
+    for (const MeshPhaseCost& phase : shot.phases) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(phase.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", 1e3 * phase.emulatedSeconds);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", 1e3 * phase.hostSeconds);
+    }
+    ImGui::EndTable();
+  }
+}
+
+void Panel::drawDepths(const SolverSnapshot& snapshot) {
+  if (!snapshot.lastMeshShot) {
+    note("item-buffer depths at stages (a) and (b): with the mesh back end (Parameters)");
+    return;
+  }
+  const MeshShotStats& shot = *snapshot.lastMeshShot;
+  ImGui::Text("last shot: max depth (a) %d, (b) %d, %d pass%s", shot.depthAMax, shot.depthBMax, shot.passes,
+              shot.passes == 1 ? "" : "es");
+  auto histogram = [](const char* title, const std::vector<int>& counts) {
+    ImGui::Text("%s, depth 0 .. %zu", title, counts.empty() ? size_t{0} : counts.size() - 1);
+    const std::vector<float> values(counts.begin(), counts.end());
+    ImGui::PushID(title);
+    ImGui::PlotHistogram("##histogram", values.data(), int(values.size()), 0, nullptr, 0.0f, FLT_MAX,
+                         ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
+    ImGui::PopID();
+  };
+  histogram("PEs by item-buffer depth at (a)", shot.depthAHist);
+  histogram("PEs by item-buffer depth at (b)", shot.depthBHist);
+  std::vector<double> iterations, depthA, depthB;
+  double highest = 1.0;
+  for (const ConvergencePoint& p : snapshot.curve) {
+    if (p.depthAMax < 0) continue;  // a cache hit shot nothing
+    iterations.push_back(p.iteration);
+    depthA.push_back(p.depthAMax);
+    depthB.push_back(p.depthBMax);
+    highest = std::max({highest, double(p.depthAMax), double(p.depthBMax)});
+  }
+  ImGui::TextUnformatted("max depth (a) over iterations");
+  plotXY("depth-a", iterations, depthA, {"iteration", 0.0, highest}, 55.0f);
+  ImGui::TextUnformatted("max depth (b) over iterations");
+  plotXY("depth-b", iterations, depthB, {"iteration", 0.0, highest}, 55.0f);
+}
+
 void Panel::drawItemBuffer(const SolverSnapshot& snapshot) {
   if (!snapshot.itemBuffer) {
     note(snapshot.itemBufferShooter >= 0 ? "the back end could not give it" : "shown after the next shot");
+    drawDepths(snapshot);
     return;
   }
   if (snapshot.itemBuffer != uploadedItemBuffer_) {
@@ -193,10 +260,10 @@ void Panel::drawItemBuffer(const SolverSnapshot& snapshot) {
   ImGui::TextWrapped("the single plane (%dx%d) above patch %d: %.1f%% of its pixels see a patch", buffer.width,
                      buffer.height, snapshot.itemBufferShooter,
                      100.0 * double(seen) / double(std::max<size_t>(1, buffer.items.size())));
-  const float side = std::min(ImGui::GetContentRegionAvail().x, 340.0f);
+  const float side = std::min(ImGui::GetContentRegionAvail().x, 250.0f);
   ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(itemBufferTexture_.id())), ImVec2(side, side));
   note("false colour by patch id");
-  note("depth histograms (a), (b): shown once the mesh back end reports them");
+  drawDepths(snapshot);
 }
 
 void Panel::drawParameters(SolverThread& solver) {
@@ -205,6 +272,8 @@ void Panel::drawParameters(SolverThread& solver) {
   ImGui::PushItemWidth(200.0f);
   changed |= comboOf("back end", &o.backend, {Backend::Native, Backend::Mesh});
   changed |= comboOf("projection", &o.projection, {Projection::Plane, Projection::Hemicube, Projection::Analytic});
+  changed |= comboOf("mapping (mesh)", &o.mapping,
+                     {MappingKind::Hierarchical, MappingKind::CutAndStack, MappingKind::Adaptive});
   ImGui::SliderInt("resolution N", &o.resolution, 16, 2048, "%d", ImGuiSliderFlags_Logarithmic);
   changed |= released();
   sliderDouble("ratio", &o.ratio, 0.5, 10.0, "%.2f");
@@ -219,7 +288,6 @@ void Panel::drawParameters(SolverThread& solver) {
   changed |= released();
   changed |= ImGui::Checkbox("ambient term (display only)", &o.ambient);
   ImGui::PopItemWidth();
-  note("mapping: hierarchical (choices come with the mesh back end)");
   note("a change restarts the solve");
   if (changed) {
     try {

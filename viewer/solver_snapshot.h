@@ -8,6 +8,7 @@
 
 #include "solver/display_radiosity.h"
 #include "solver/item_buffer.h"
+#include "solver/mesh_shot_stats.h"
 #include "solver/progressive_solver.h"
 #include "solver/scene_summary.h"
 #include "solver/solve_options.h"
@@ -20,10 +21,14 @@ struct SolveSetup {
   double cellM = 0.381;  // the paper's 15-inch grid (solver/meshing.h)
 };
 
+// One point per iteration of the curves the panel draws.
 struct ConvergencePoint {
   int iteration = 0;
-  double convergence = 0.0;  // C after this iteration
-  double hostSeconds = 0.0;  // solve time up to and including this iteration
+  double convergence = 0.0;      // C after this iteration
+  double hostSeconds = 0.0;      // solve time up to and including this iteration
+  double emulatedSeconds = 0.0;  // emulated MP-1 time so far (mesh back end; else 0)
+  int depthAMax = -1;            // max item-buffer depth at stage (a) of this shot; -1: not known
+  int depthBMax = -1;            // and at stage (b) (mesh back end only)
 };
 
 struct SolverSnapshot {
@@ -40,6 +45,8 @@ struct SolverSnapshot {
   // it (SolverThread::setItemBufferWanted); may lag a few iterations behind while playing.
   std::shared_ptr<const ItemBuffer> itemBuffer;
   int itemBufferShooter = -1;
+  // The mesh back end's last shot: depth histograms at stages (a), (b) and emulated phase costs.
+  std::shared_ptr<const MeshShotStats> lastMeshShot;
   bool playing = false;
   bool done = false;
   std::string error;                         // why the last restart failed, else empty

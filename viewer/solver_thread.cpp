@@ -31,6 +31,7 @@ struct SolverThread::Run {
   std::shared_ptr<const DisplayMesh> mesh;
   SceneSummary summary;
   std::vector<ConvergencePoint> curve;
+  std::shared_ptr<const MeshShotStats> lastMeshShot;  // the last one there was (cache hits have none)
   std::shared_ptr<const ItemBuffer> itemBuffer;
   int itemBufferShooter = -1;
   Clock::time_point itemBufferTime{};
@@ -142,8 +143,18 @@ void SolverThread::loop() {
     }
     try {
       const IterationRecord& record = run->solver->step();
-      const double before = run->curve.empty() ? 0.0 : run->curve.back().hostSeconds;
-      run->curve.push_back({record.iteration, record.convergence, before + record.seconds});
+      ConvergencePoint point = run->curve.empty() ? ConvergencePoint{} : run->curve.back();
+      point.iteration = record.iteration;
+      point.convergence = record.convergence;
+      point.hostSeconds += record.seconds;
+      point.depthAMax = point.depthBMax = -1;
+      if (record.meshShot) {
+        point.emulatedSeconds += record.meshShot->emulatedSeconds;
+        point.depthAMax = record.meshShot->depthAMax;
+        point.depthBMax = record.meshShot->depthBMax;
+        run->lastMeshShot = record.meshShot;
+      }
+      run->curve.push_back(point);
     } catch (const std::exception& e) {
       publishFailure(run->setup, e.what());
       run.reset();
@@ -210,6 +221,7 @@ void SolverThread::publish(const Run& run) {
     snapshot->lastShooters = history.back().shooters;
     snapshot->lastCapturedFraction = history.back().capturedFraction;
   }
+  snapshot->lastMeshShot = run.lastMeshShot;
   snapshot->itemBuffer = run.itemBuffer;
   snapshot->itemBufferShooter = run.itemBufferShooter;
   snapshot->curve = run.curve;

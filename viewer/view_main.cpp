@@ -11,13 +11,16 @@
 
 int main(int argc, char** argv) {
   radmesh::ViewerArgs args;
-  std::string backend = "native", projection = "plane", size = "1280x720", panel = "progress";
+  std::string backend = "mesh", projection = "plane", mapping = "hierarchical", size = "1280x720", panel = "progress";
   radmesh::SolveOptions& o = args.setup.options;
   CLI::App app{"radmesh-view: walk through a scene while its radiosity converges"};
   app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
-  app.add_option("--backend", backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
+  app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here) or native (host CPU)")
+      ->capture_default_str();
   app.add_option("--projection", projection, "plane, hemicube or analytic")->capture_default_str();
+  app.add_option("--mapping", mapping, "Single plane over the PEs (mesh back end): hierarchical, cut-and-stack, adaptive")
+      ->capture_default_str();
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
     args.firstTab = radmesh::parsePanelTab(panel);
     o.backend = radmesh::parseBackend(backend);
     o.projection = radmesh::parseProjection(projection);
+    o.mapping = radmesh::parseMapping(mapping);
     // Drawing needs a core too (llvmpipe renders on the CPU).
     if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     radmesh::validateOptions(o);

@@ -74,6 +74,40 @@ TEST(SolverThread, SnapshotHoldsWhatADirectSolveComputes) {
   EXPECT_DOUBLE_EQ(s->convergence(), direct.convergence());
 }
 
+TEST(SolverThread, MeshBackEndSnapshotsCarryEmulatedSecondsAndDepths) {
+  SolveSetup setup = cornellSetup();
+  setup.options.backend = Backend::Mesh;
+  SolverThread thread(loadScene("cornell"), setup, false);
+  thread.setItemBufferWanted(true);
+  thread.step(3);
+  const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.iteration() >= 3 && s.itemBuffer; });
+  ASSERT_NE(s->lastMeshShot, nullptr);
+  ASSERT_EQ(s->curve.size(), 3u);
+  double emulated = 0.0;
+  for (const ConvergencePoint& p : s->curve) {
+    EXPECT_GT(p.emulatedSeconds, emulated);  // every shot costs emulated time
+    emulated = p.emulatedSeconds;
+    EXPECT_GE(p.depthAMax, 1);
+    EXPECT_GE(p.depthBMax, 1);
+  }
+  EXPECT_EQ(s->curve.back().depthAMax, s->lastMeshShot->depthAMax);
+  // The item buffer is the single plane above the last shooter, at the options' resolution.
+  EXPECT_EQ(s->itemBufferShooter, s->lastShooters.front());
+  EXPECT_EQ(s->itemBuffer->width, setup.options.resolution);
+  EXPECT_EQ(s->itemBuffer->items.size(), size_t(setup.options.resolution) * setup.options.resolution);
+}
+
+TEST(SolverThread, ItemBufferComesOnlyWhenAskedForEvenWhilePaused) {
+  SolverThread thread(loadScene("cornell"), cornellSetup(), false);
+  thread.step(2);
+  const Snapshot stepped = waitFor(thread, [](const SolverSnapshot& s) { return s.iteration() >= 2; });
+  EXPECT_EQ(stepped->itemBuffer, nullptr);
+  thread.setItemBufferWanted(true);  // paused: the thread wakes for it alone
+  const Snapshot shown = waitFor(thread, [](const SolverSnapshot& s) { return s.itemBuffer != nullptr; });
+  EXPECT_EQ(shown->iteration(), 2);
+  EXPECT_EQ(shown->itemBufferShooter, shown->lastShooters.front());
+}
+
 TEST(SolverThread, PlayRunsToConvergenceAndStops) {
   SolveSetup setup = cornellSetup();
   setup.options.until = 0.9;
