@@ -5,16 +5,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "cli/bench.h"
+#include "cli/image_error.h"
 #include "cli/plot.h"
 #include "cli/stats_json.h"
 #include "solver/accuracy.h"
 #include "solver/effects_plan.h"
 #include "solver/meshing.h"
 #include "solver/progressive_solver.h"
+#include "solver/scene_error.h"
 #include "solver/scene_loader.h"
 
 namespace radmesh::cli {
@@ -35,6 +39,7 @@ struct Point {
   double msPerIteration = 0.0;
   double secondsTo95 = -1.0, secondsTo99 = -1.0;  // -1: not reached within the cap
   double error95 = -1.0, error99 = -1.0;
+  double imageError95 = -1.0, imageError99 = -1.0;  // 8-bit RMSE against the finest mesh's pictures
   double memoryMiB = 0.0;
 };
 
@@ -42,6 +47,12 @@ struct Point {
 double projectionMiB(Projection p, int n) {
   const double pixels = p == Projection::Hemicube ? 3.0 * n * n : p == Projection::Plane ? double(n) * n : 0.0;
   return pixels * 20.0 / (1024.0 * 1024.0);
+}
+
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 double median(std::vector<double> v) {
@@ -52,6 +63,7 @@ double median(std::vector<double> v) {
 struct Reference {
   std::string how;
   std::vector<Rgb> radiosity;
+  std::vector<Rgb> displayRadiosity;
   double seconds = 0.0;
 };
 
@@ -70,6 +82,7 @@ Reference solveReference(const Scene& scene, const std::vector<Patch>& patches, 
   Reference ref;
   ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ref.radiosity = solver.radiosity();
+  ref.displayRadiosity = solver.displayRadiosity();
   ref.how = convex ? fmt::format("analytic form factors to C={}", o.until)
                    : fmt::format("hemicube {}x{} to C={} ({} iterations)", o.resolution, o.resolution, o.until,
                                  solver.history().size());
@@ -77,13 +90,14 @@ Reference solveReference(const Scene& scene, const std::vector<Patch>& patches, 
 }
 
 Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setting& setting, int n, double cellM,
-              const Reference& ref, const AccuracyArgs& args, std::vector<std::pair<double, double>>* trace) {
+              const Reference& ref, const AccuracyArgs& args, ImageErrorProbe& pictures,
+              std::vector<std::pair<double, double>>* trace) {
   SolveOptions o;
   o.projection = setting.projection;
   o.ratio = setting.ratio;
   o.resolution = n;
   o.until = 0.99;
-  o.threads = args.threads;
+  o.threads = 1;  // timed on one core, by its CPU time (below)
   o.maxIterations = args.maxIterations;
   ProgressiveSolver solver(scene, patches, o);
   Point p{setting, n, cellM, patches.size()};
@@ -91,18 +105,24 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
   std::vector<double> perIteration;
   double elapsed = 0.0;
   while (!solver.done()) {
+    // CPU time of this thread, which runs the whole solve: other work on a shared machine
+    // stretches wall time by whatever the scheduler gives it, but not this.
+    const double before = threadCpuSeconds();
     const IterationRecord& r = solver.step();
-    perIteration.push_back(r.seconds);
-    elapsed += r.seconds;
+    const double seconds = threadCpuSeconds() - before;
+    perIteration.push_back(seconds);
+    elapsed += seconds;
     if (trace) trace->emplace_back(r.convergence, relativeRmsError(patches, solver.radiosity(), ref.radiosity));
     if (p.secondsTo95 < 0 && r.convergence >= 0.95) {
       p.secondsTo95 = elapsed;
       p.error95 = relativeRmsError(patches, solver.radiosity(), ref.radiosity);
+      p.imageError95 = pictures.error(patches, solver.displayRadiosity());
     }
   }
   if (solver.convergence() >= 0.99) {
     p.secondsTo99 = elapsed;
     p.error99 = relativeRmsError(patches, solver.radiosity(), ref.radiosity);
+    p.imageError99 = pictures.error(patches, solver.displayRadiosity());
   }
   p.msPerIteration = 1e3 * median(perIteration);
   return p;
@@ -121,29 +141,40 @@ void writeCsv(const std::string& path, const std::vector<Point>& points) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot write");
   fmt::print(out, "projection,ratio,resolution,cell_m,patches,ms_per_iteration,seconds_to_95,seconds_to_99,"
-                  "error_at_95,error_at_99,memory_mib\n");
+                  "error_at_95,error_at_99,image_rmse_at_95,image_rmse_at_99,memory_mib\n");
   for (const Point& p : points)
-    fmt::print(out, "{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}\n", toString(p.setting.projection),
-               p.setting.ratio, p.resolution, p.cellM, p.patches, p.msPerIteration, p.secondsTo95, p.secondsTo99,
-               p.error95, p.error99, p.memoryMiB);
+    fmt::print(out, "{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g}\n",
+               toString(p.setting.projection), p.setting.ratio, p.resolution, p.cellM, p.patches, p.msPerIteration,
+               p.secondsTo95, p.secondsTo99, p.error95, p.error99, p.imageError95, p.imageError99, p.memoryMiB);
+}
+
+// Error at C = 0.99 against the time to reach it, a series per setting and cell, Pareto front in black.
+Plot errorVersusTime(const std::string& title, const std::string& errorLabel, const std::vector<Point>& points,
+                     double Point::*error) {
+  Plot plot{title, "seconds to C = 0.99", errorLabel, true, true, {}};
+  std::vector<std::pair<double, double>> all;
+  for (const Point& p : points) {
+    if (p.secondsTo99 <= 0 || p.*error < 0) continue;
+    const std::string name = fmt::format("{} cell {}", p.setting.label, p.cellM);
+    auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const Series& s) { return s.title == name; });
+    if (it == plot.series.end()) it = plot.series.insert(plot.series.end(), Series{name, {}, "linespoints"});
+    // Log axes: an exact zero is drawn at the floor.
+    it->points.emplace_back(p.secondsTo99, std::max(p.*error, 1e-9));
+    all.push_back(it->points.back());
+  }
+  plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
+  return plot;
 }
 
 void drawFigures(const std::string& stem, const std::string& sceneName, const std::vector<Point>& points,
                  const std::vector<std::pair<double, double>>& trace, const std::string& traceLabel) {
-  Plot cost{"Error against time to C=0.99: " + sceneName, "seconds to C = 0.99", "relative RMS error of B", true,
-            true, {}};
-  std::vector<std::pair<double, double>> all;
-  for (const Point& p : points) {
-    if (p.secondsTo99 <= 0) continue;
-    const std::string title = fmt::format("{} cell {}", p.setting.label, p.cellM);
-    auto it = std::find_if(cost.series.begin(), cost.series.end(), [&](const Series& s) { return s.title == title; });
-    if (it == cost.series.end()) it = cost.series.insert(cost.series.end(), Series{title, {}, "linespoints"});
-    it->points.emplace_back(p.secondsTo99, std::max(p.error99, 1e-9));
-    all.emplace_back(p.secondsTo99, std::max(p.error99, 1e-9));
-  }
-  cost.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
-  drawPlot(cost, stem + "-error-vs-time.png");
-
+  drawPlot(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName, "relative RMS error of B",
+                           points, &Point::error99),
+           stem + "-error-vs-time.png");
+  if (ImageErrorProbe::available())
+    drawPlot(errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
+                             "RMSE of the pictures, 8-bit levels", points, &Point::imageError99),
+             stem + "-image-error-vs-time.png");
   Plot conv{"Convergence C against true error (" + traceLabel + "): " + sceneName, "convergence C",
             "relative RMS error of B", false, true, {{traceLabel, trace, "lines"}}};
   drawPlot(conv, stem + "-error-vs-convergence.png");
@@ -152,7 +183,8 @@ void drawFigures(const std::string& stem, const std::string& sceneName, const st
 }  // namespace
 
 AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
-  args.cells = {args.cells.front()};
+  // Two cells, so that the pictures compare across meshes too.
+  if (args.cells.size() > 2) args.cells.resize(2);
   args.resolutions = {32, 64, 128};
   args.referenceResolution = 256;
   args.referenceUntil = 0.995;
@@ -163,27 +195,49 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
   const Scene scene = loadScene(args.scene);
   const std::vector<Setting> settings = {
       {"plane r3", Projection::Plane, 3.0}, {"plane r5", Projection::Plane, 5.0}, {"hemicube", Projection::Hemicube, 3.0}};
-  std::vector<Point> points;
+  if (args.cells.empty() || args.resolutions.empty())
+    throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
+  // The finest mesh's reference is solved first: its pictures are the reference across meshes.
+  std::vector<double> cells = args.cells;
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  std::map<double, std::vector<Patch>> meshes;
+  std::map<double, Reference> refs;
+  ImageErrorProbe pictures(scene);
   nlohmann::json references = nlohmann::json::array();
+  for (double cell : cells) {
+    const std::vector<Patch>& patches = meshes[cell] = meshScene(scene, cell);
+    const Reference& ref = refs[cell] = solveReference(scene, patches, args);
+    if (cell == cells.front()) pictures.setReference(patches, ref.displayRadiosity);
+    const double imageError = pictures.error(patches, ref.displayRadiosity);
+    fmt::print("cell {} m, {} patches: reference {} in {:.2f} s; its pictures differ from the finest mesh's by "
+               "{:.2f} levels RMS\n",
+               cell, patches.size(), ref.how, ref.seconds, imageError);
+    references.push_back({{"cell", cell},
+                          {"patches", patches.size()},
+                          {"how", ref.how},
+                          {"seconds", ref.seconds},
+                          {"image_rmse", imageError}});
+  }
+  std::vector<Point> points;
   std::vector<std::pair<double, double>> trace;
   std::string traceLabel;
-  fmt::print("{:<9} {:>5} {:>7} {:>8} {:>10} {:>9} {:>9} {:>10} {:>10} {:>8}\n", "setting", "N", "cell m", "patches",
-             "ms/iter", "s to .95", "s to .99", "err @.95", "err @.99", "MiB");
-  for (double cell : args.cells) {
-    const std::vector<Patch> patches = meshScene(scene, cell);
-    const Reference ref = solveReference(scene, patches, args);
-    fmt::print("cell {} m, {} patches: reference {} in {:.2f} s\n", cell, patches.size(), ref.how, ref.seconds);
-    references.push_back({{"cell", cell}, {"patches", patches.size()}, {"how", ref.how}, {"seconds", ref.seconds}});
+  fmt::print("{:<9} {:>5} {:>7} {:>8} {:>10} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8}\n", "setting", "N", "cell m",
+             "patches", "ms/iter", "s to .95", "s to .99", "err @.95", "err @.99", "img @.99", "MiB");
+  // Coarse to fine, as a user would try them.
+  for (auto cell = cells.rbegin(); cell != cells.rend(); ++cell) {
+    const std::vector<Patch>& patches = meshes[*cell];
     for (const Setting& setting : settings) {
       for (int n : args.resolutions) {
         // One error-against-convergence trace: the paper's setting at the middle resolution.
         const bool traced = trace.empty() && setting.projection == Projection::Plane && setting.ratio == 3.0 &&
                             n == args.resolutions[args.resolutions.size() / 2];
-        if (traced) traceLabel = fmt::format("plane r3 {}x{}, cell {}", n, n, cell);
-        const Point p = measure(scene, patches, setting, n, cell, ref, args, traced ? &trace : nullptr);
-        fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9.3f} {:>9.3f} {:>10.4f} {:>10.4f} {:>8.2f}\n",
-                   setting.label, n, cell, p.patches, p.msPerIteration, p.secondsTo95, p.secondsTo99, p.error95,
-                   p.error99, p.memoryMiB);
+        if (traced) traceLabel = fmt::format("plane r3 {}x{}, cell {}", n, n, *cell);
+        const Point p = measure(scene, patches, setting, n, *cell, refs[*cell], args, pictures,
+                                traced ? &trace : nullptr);
+        fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9.3f} {:>9.3f} {:>10.4f} {:>10.4f} {:>8.2f} {:>8.2f}\n",
+                   setting.label, n, *cell, p.patches, p.msPerIteration, p.secondsTo95, p.secondsTo99, p.error95,
+                   p.error99, p.imageError99, p.memoryMiB);
         points.push_back(p);
       }
     }
@@ -194,18 +248,20 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                     {"resolution", p.resolution}, {"cell", p.cellM}, {"patches", p.patches},
                     {"ms_per_iteration", p.msPerIteration}, {"seconds_to_95", p.secondsTo95},
                     {"seconds_to_99", p.secondsTo99}, {"error_at_95", p.error95}, {"error_at_99", p.error99},
+                    {"image_rmse_at_95", p.imageError95}, {"image_rmse_at_99", p.imageError99},
                     {"memory_mib", p.memoryMiB}});
   nlohmann::json traceJson = nlohmann::json::array();
   for (const auto& [c, e] : trace) traceJson.push_back({{"convergence", c}, {"error", e}});
   nlohmann::json result = {{"scene", scene.source}, {"references", references}, {"points", rows},
-                           {"trace_label", traceLabel}, {"trace", traceJson}};
+                           {"trace_label", traceLabel}, {"trace", traceJson},
+                           {"image_cameras", pictures.cameraCount()}};
   if (!args.outDir.empty()) {
     std::filesystem::create_directories(args.outDir);
     const std::string stem = (std::filesystem::path(args.outDir) / args.name).string();
     writeCsv(stem + ".csv", points);
     writeJson(stem + ".json", result);
     drawFigures(stem, scene.source, points, trace, traceLabel);
-    fmt::print("wrote {0}.csv, {0}.json, {0}-error-vs-time.png, {0}-error-vs-convergence.png\n", stem);
+    fmt::print("wrote {0}.csv, {0}.json and the plots {0}-*.png\n", stem);
   }
   return result;
 }

@@ -43,7 +43,7 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
   cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();
   cmd->add_option("--reference-until", args->referenceUntil, "Convergence of the reference")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")->capture_default_str();
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, cmd] {
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;

@@ -3,6 +3,8 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -24,6 +26,18 @@ Image readPng(const std::string& path) {
   std::memcpy(image.rgba.data(), pixels, image.rgba.size());
   stbi_image_free(pixels);
   return image;
+}
+
+double imageRmse(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size())
+    throw std::invalid_argument("images of different sizes cannot be compared");
+  double sum = 0.0;
+  for (size_t i = 0; i < a.rgba.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const double delta = double(a.rgba[i]) - double(b.rgba[i]);
+    sum += delta * delta;
+  }
+  return std::sqrt(sum / std::max(1.0, 3.0 * a.width * a.height));
 }
 
 }  // namespace radmesh

@@ -16,4 +16,8 @@ struct Image {
 void writePng(const Image& image, const std::string& path);
 Image readPng(const std::string& path);
 
+// Root-mean-square difference over the RGB channels, in 8-bit levels (alpha ignored). Throws
+// std::invalid_argument when the sizes differ.
+double imageRmse(const Image& a, const Image& b);
+
 }  // namespace radmesh

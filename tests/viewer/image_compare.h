@@ -20,14 +20,9 @@ struct ImageDifference {
 inline ImageDifference compareImages(const Image& actual, const Image& expected) {
   ImageDifference d;
   d.diff = Image{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgba.size(), 255)};
-  double sum = 0.0;
-  for (size_t i = 0; i < actual.rgba.size(); ++i) {
-    if (i % 4 == 3) continue;
-    const int delta = std::abs(int(actual.rgba[i]) - int(expected.rgba[i]));
-    sum += double(delta) * delta;
-    d.diff.rgba[i] = std::uint8_t(std::min(255, 8 * delta));
-  }
-  d.rmse = std::sqrt(sum / std::max<double>(1.0, 3.0 * actual.width * actual.height));
+  for (size_t i = 0; i < actual.rgba.size(); ++i)
+    if (i % 4 != 3) d.diff.rgba[i] = std::uint8_t(std::min(255, 8 * std::abs(int(actual.rgba[i]) - int(expected.rgba[i]))));
+  d.rmse = imageRmse(actual, expected);
   d.psnrDb = d.rmse > 0.0 ? 20.0 * std::log10(255.0 / d.rmse) : INFINITY;
   return d;
 }
