@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
 
 #include "cli/bench.h"
+#include "cli/cpu_clock.h"
 #include "cli/image_error.h"
 #include "cli/plot.h"
 #include "cli/stats_json.h"
@@ -47,12 +47,6 @@ struct Point {
 double projectionMiB(Projection p, int n) {
   const double pixels = p == Projection::Hemicube ? 3.0 * n * n : p == Projection::Plane ? double(n) * n : 0.0;
   return pixels * 20.0 / (1024.0 * 1024.0);
-}
-
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 double median(std::vector<double> v) {
@@ -105,8 +99,6 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
   std::vector<double> perIteration;
   double elapsed = 0.0;
   while (!solver.done()) {
-    // CPU time of this thread, which runs the whole solve: other work on a shared machine
-    // stretches wall time by whatever the scheduler gives it, but not this.
     const double before = threadCpuSeconds();
     const IterationRecord& r = solver.step();
     const double seconds = threadCpuSeconds() - before;

@@ -1,22 +1,33 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the whole test suite twice: the Release build, then
-# the same tests under AddressSanitizer + UndefinedBehaviorSanitizer.
+# Installs what is missing, builds, and runs the whole test suite: the Release build; the viewer's
+# threaded tests (the solver thread against the UI's reads) under ThreadSanitizer; then every test
+# again under AddressSanitizer + UndefinedBehaviorSanitizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc)
 
-build_and_test() {  # folder, then extra CMake options
-  local dir=$1; shift
+configure_and_build() {  # folder, target ("all" for everything), then extra CMake options
+  local dir=$1 target=$2; shift 2
   echo "== $dir: configure and build"
   cmake -S . -B "$dir" "$@" > "$dir.log" 2>&1 || { cat "$dir.log"; exit 1; }
-  cmake --build "$dir" -j"$jobs" >> "$dir.log" 2>&1 || { tail -80 "$dir.log"; exit 1; }
-  echo "== $dir: tests"
-  ctest --test-dir "$dir" -j"$jobs" --output-on-failure --timeout 600
+  cmake --build "$dir" -j"$jobs" --target "$target" >> "$dir.log" 2>&1 || { tail -80 "$dir.log"; exit 1; }
 }
 
-mkdir -p build
-build_and_test build -DCMAKE_BUILD_TYPE=Release
-# Sanitizers: leak checks off because Mesa's llvmpipe keeps its JIT caches until exit.
+run_ctest() {
+  echo "== $1: tests"
+  ctest --test-dir "$1" -j"$jobs" --output-on-failure --timeout 600
+}
+
+configure_and_build build all -DCMAKE_BUILD_TYPE=Release
+run_ctest build
+
+# ThreadSanitizer: only the program whose tests run threads against each other.
+configure_and_build build-tsan viewer_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRADMESH_TSAN=ON -DRADMESH_BUILD_BENCHMARKS=OFF
+echo "== build-tsan: threaded viewer tests"
+TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/viewer_tests --gtest_filter='SolverThread.*:Streaming.*'
+
+# Leak checks off because Mesa's llvmpipe keeps its JIT caches until exit.
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-build_and_test build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRADMESH_SANITIZE=ON -DRADMESH_BUILD_BENCHMARKS=OFF
+configure_and_build build-asan all -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRADMESH_SANITIZE=ON -DRADMESH_BUILD_BENCHMARKS=OFF
+run_ctest build-asan
