@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   radmesh::cli::addInfoCommand(app);
   radmesh::cli::addSolveCommand(app);
+  radmesh::cli::addRenderCommand(app);
   radmesh::cli::addBenchCommand(app);
   try {
     app.parse(argc, argv);

@@ -171,3 +171,54 @@ TEST(Cli, MeshBackendStatsCarryDepthsEmulatedTimeAndOpCountsForEveryMapping) {
 
 }  // namespace
 }  // namespace radmesh
+
+namespace radmesh {
+namespace {
+
+// Width and height from a PNG's IHDR chunk (big-endian, bytes 16..23).
+std::pair<int, int> pngSize(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::array<unsigned char, 24> head{};
+  in.read(reinterpret_cast<char*>(head.data()), head.size());
+  if (!in || head[1] != 'P' || head[2] != 'N' || head[3] != 'G') return {-1, -1};
+  auto be = [&](int at) { return (head[at] << 24) | (head[at + 1] << 16) | (head[at + 2] << 8) | head[at + 3]; };
+  return {be(16), be(20)};
+}
+
+TEST(Cli, RenderSolvesOrReadsABakeAndWritesThePictureOfTheAskedSize) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  const std::string solved = tempPath("solved.png"), bake = tempPath("bake.glb"), fromBake = tempPath("bake.png");
+  const CommandRun run = radmesh("render cornell --cell 0.1 --resolution 64 --iterations 5 --size 160x120 --out " + solved);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("5 iterations"), std::string::npos) << run.output;
+  EXPECT_EQ(pngSize(solved), std::make_pair(160, 120));
+
+  ASSERT_EQ(radmesh("solve cornell --cell 0.1 --resolution 64 --until 0.9 --quiet --out " + bake).exitCode, 0);
+  const CommandRun read = radmesh("render " + bake + " --size 96x64 --out " + fromBake);
+  ASSERT_EQ(read.exitCode, 0) << read.output;
+  EXPECT_NE(read.output.find("read bake"), std::string::npos) << read.output;
+  EXPECT_EQ(pngSize(fromBake), std::make_pair(96, 64));
+}
+
+TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  const std::string out = tempPath("never.png");
+  const std::map<std::string, std::string> cases = {
+      {"--size 0x10", "--size"},
+      {"--size 640", "--size"},
+      {"--fov 180", "--fov"},
+      {"--camera 1,2", "--camera"},
+      {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2", "--camera/--look/--fov"},
+  };
+  for (const auto& [options, named] : cases) {
+    const CommandRun run = radmesh("render cornell --cell 0.2 --iterations 1 " + options + " --out " + out);
+    EXPECT_EQ(run.exitCode, 2) << options << ": " << run.output;
+    EXPECT_NE(run.output.find(named), std::string::npos) << options << ": " << run.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace radmesh
