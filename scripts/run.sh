@@ -12,8 +12,8 @@ if [ -n "${DISPLAY:-}" ] && [ -x build/viewer/radmesh-view ]; then
   exec build/viewer/radmesh-view "$scene"
 fi
 mkdir -p out
+name=$(basename "${scene%.*}")  # a built-in name, or a file's stem
 echo "radmesh: no display, so solving $scene here; the bake and a picture go to out/"
-build/cli/radmesh solve "$scene" --stats "out/$scene-stats.json" --out "out/$scene.glb"
-if build/cli/radmesh render --help > /dev/null 2>&1; then
-  build/cli/radmesh render "$scene" --out "out/$scene.png"
-fi
+build/cli/radmesh solve "$scene" --stats "out/$name-stats.json" --out "out/$name.glb"
+# The picture is drawn from the bake just written (through OSMesa: no display needed).
+build/cli/radmesh render "out/$name.glb" --out "out/$name.png"
