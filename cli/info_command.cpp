@@ -5,6 +5,7 @@
 
 #include "cli/commands.h"
 #include "cli/stats_json.h"
+#include "cli/effects_text.h"
 #include "solver/effects_plan.h"
 #include "solver/meshing.h"
 #include "solver/scene_loader.h"
@@ -18,7 +19,7 @@ struct InfoArgs {
   std::string scene = kDefaultScene;
   double cellM = kDefaultCellM;
   bool json = false;
-  bool allEffects = false;
+  EffectsMode effects = EffectsMode::Auto;
 };
 
 nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
@@ -39,11 +40,6 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"bounds_max", {s.boundsMax.x, s.boundsMax.y, s.boundsMax.z}},
           {"total_area", s.totalAreaM2},
           {"emitted_power", s.emittedPowerW}};
-}
-
-void printEffects(const EffectsPlan& plan) {
-  fmt::print("effects\n");
-  for (const Effect& e : plan.effects) fmt::print("  {:<16}{:<4} {}\n", e.name, e.on ? "on" : "off", e.reason);
 }
 
 void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings) {
@@ -71,14 +67,14 @@ void addInfoCommand(CLI::App& app) {
   cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres")->capture_default_str();
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
   cmd->add_option_function<std::string>(
-      "--effects", [args](const std::string& v) { args->allEffects = parseEffectsFlag(v); },
+      "--effects", [args](const std::string& v) { args->effects = parseEffects(v); },
       "auto (simulate only what the scene calls for) or all");
   cmd->callback([args] {
     std::vector<std::string> warnings;
     const Scene scene = loadScene(args->scene, &warnings);
     const std::vector<Patch> patches = meshScene(scene, args->cellM);
     const SceneSummary summary = summarizeScene(scene, patches, args->cellM);
-    const EffectsPlan plan = planEffects(scene, args->allEffects);
+    const EffectsPlan plan = planEffects(scene, patches, args->effects);
     if (args->json) {
       nlohmann::json j = toJson(summary, scene);
       j["effects"] = effectsJson(plan);

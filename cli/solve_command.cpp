@@ -6,11 +6,11 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/effects_text.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
 #include "solver/display_radiosity.h"
-#include "solver/effects_plan.h"
 #include "solver/gltf_export.h"
 #include "solver/meshing.h"
 #include "solver/scene_loader.h"
@@ -47,15 +47,13 @@ void run(const SolveArgs& args) {
   std::vector<std::string> warnings;
   const Scene scene = loadScene(args.flags.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
-  const EffectsPlan plan = planEffects(scene, parseEffectsFlag(args.effects));
-  fmt::print("effects:\n");
-  for (const Effect& e : plan.effects) fmt::print("  {:<16}{:<4} {}\n", e.name, e.on ? "on" : "off", e.reason);
-  // No occlusion: exact analytic form factors replace the item buffer (the mesh backend keeps its plane).
-  if (!plan.occlusion && options.backend == Backend::Native && options.projection != Projection::Analytic) {
-    fmt::print("  occlusion is off, so --projection {} becomes analytic\n", toString(options.projection));
-    options.projection = Projection::Analytic;
-  }
+  options.effects = parseEffects(args.effects);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  printEffects(solver.effectsPlan());
+  if (solver.options().projection != options.projection)
+    fmt::print("  occlusion is off, so --projection {} becomes {}\n", toString(options.projection),
+               toString(solver.options().projection));
+  options = solver.options();
   fmt::print("solving {}: {} patches, {} {}x{}, k={}, until C={:.2f}\n", scene.source, solver.patches().size(),
              toString(options.projection), options.resolution, options.resolution, options.shooters, options.until);
 
@@ -71,7 +69,7 @@ void run(const SolveArgs& args) {
   printSummary(solver, seconds);
 
   if (!args.statsPath.empty()) {
-    writeJson(args.statsPath, solveStats(solver, scene.source, seconds, plan));
+    writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
     fmt::print("wrote {}\n", args.statsPath);
   }
   if (!args.outPath.empty()) {

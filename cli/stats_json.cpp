@@ -54,8 +54,7 @@ nlohmann::json iterationJson(const IterationRecord& r) {
 
 }  // namespace
 
-nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds,
-                          const EffectsPlan& effects) {
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
   const SolveOptions& o = solver.options();
   nlohmann::json perIteration = nlohmann::json::array();
   for (const IterationRecord& r : solver.history()) perIteration.push_back(iterationJson(r));
@@ -73,7 +72,7 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"seconds", seconds},
           {"per_iteration", std::move(perIteration)},
           {"ledger", ledgerJson(solver.ledger())},
-          {"effects", effectsJson(effects)}};
+          {"effects", effectsJson(solver.effectsPlan())}};
 }
 
 nlohmann::json effectsJson(const EffectsPlan& plan) {

@@ -8,8 +8,8 @@
 
 namespace radmesh::cli {
 
-nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds,
-                          const EffectsPlan& effects);
+// With "effects": the solver's plan.
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
 // {"occlusion": {"on": false, "reason": "..."}, ...}
 nlohmann::json effectsJson(const EffectsPlan& plan);
 void writeJson(const std::string& path, const nlohmann::json& document);  // throws on I/O failure

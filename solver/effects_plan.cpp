@@ -1,12 +1,13 @@
 #include "solver/effects_plan.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
 
-#include "solver/scene_error.h"
+#include <fmt/format.h>
+
+#include "solver/near_field.h"
 
 namespace radmesh {
 
@@ -85,13 +86,8 @@ bool isClosed(const Scene& scene) {
   return true;
 }
 
-bool parseEffectsFlag(const std::string& text) {
-  if (text == "auto") return false;
-  if (text == "all") return true;
-  throw OptionError("--effects must be 'auto' (simulate only what the scene calls for) or 'all', not '" + text + "'");
-}
-
-EffectsPlan planEffects(const Scene& scene, bool forceAll) {
+EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, EffectsMode mode) {
+  const bool forceAll = mode == EffectsMode::All;
   EffectsPlan plan;
   const bool convex = isConvexEnclosure(scene);
   plan.occlusion = !convex;
@@ -116,8 +112,15 @@ EffectsPlan planEffects(const Scene& scene, bool forceAll) {
   const std::string escapeWhy = closed ? "the surface is closed: no light can leave the scene"
                                        : "the surface has open edges: light leaving through openings is accounted";
 
-  plan.nearField = true;
-  const std::string nearWhy = "patches meet at shared edges, closer to a shooter than its size";
+  plan.nearReceivers = findNearFieldReceivers(patches);
+  size_t pairs = 0, shooters = 0;
+  for (const auto& near : plan.nearReceivers) pairs += near.size(), shooters += !near.empty();
+  plan.nearField = pairs > 0;
+  const std::string nearWhy =
+      pairs > 0 ? fmt::format("{} shooter-receiver pairs, from {} of the {} patches, are closer than the shooter's "
+                              "size: area-to-area form factors for those pairs only",
+                              pairs, shooters, patches.size())
+                : "no receiver is closer to a shooter than the shooter's size: point-source form factors hold";
 
   if (forceAll) plan.occlusion = plan.colour = plan.interreflection = plan.escape = plan.nearField = true;
   auto reason = [&](bool skippable, const std::string& why) {
@@ -126,7 +129,7 @@ EffectsPlan planEffects(const Scene& scene, bool forceAll) {
   plan.effects = {{"occlusion", plan.occlusion, reason(convex, occlusionWhy)},
                   {"colour", plan.colour, reason(allGrey, colourWhy)},
                   {"interreflection", plan.interreflection, reason(black, interreflectionWhy)},
-                  {"near field", plan.nearField, nearWhy},
+                  {"near field", plan.nearField, reason(pairs == 0, nearWhy)},
                   {"escape", plan.escape, reason(closed, escapeWhy)}};
   return plan;
 }

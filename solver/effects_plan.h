@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "solver/patch.h"
 #include "solver/scene.h"
+#include "solver/solve_options.h"
 
 namespace radmesh {
 
@@ -21,13 +23,13 @@ struct EffectsPlan {
   bool nearField = true;        // off: no receiver closer to a shooter than the shooter's size
   bool escape = true;           // off: the scene is closed, no light can leave it
   std::vector<Effect> effects;  // the five above with their reasons, in that order
+  // Per shooter patch, the receivers in its near field (solver/near_field.h), whatever the mode.
+  std::vector<std::vector<int>> nearReceivers;
 };
 
-// `forceAll` (--effects all) turns every effect on, keeping the analysis in the reasons.
-EffectsPlan planEffects(const Scene& scene, bool forceAll = false);
-
-// The --effects flag: "auto" gives false, "all" true; anything else throws OptionError.
-bool parseEffectsFlag(const std::string& text);
+// EffectsMode::All (--effects all) turns every effect on, keeping the analysis in the reasons.
+// ProgressiveSolver plans and applies this itself; `radmesh info` only prints it.
+EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, EffectsMode mode);
 
 // True when every polygon has the whole scene on or in front of its plane: the polygons bound a
 // convex region from inside, so no patch can hide another from any point of the surface.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "solver/form_factor_cache.h"
+#include "solver/near_field.h"
 #include "solver/scan_conversion.h"
 #include "solver/scene_error.h"
 
@@ -22,6 +23,13 @@ double Ledger::imbalance() const {
 namespace {
 
 double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
+
+// With colour off (a grey scene) one channel stands for three: `double` holds it, and these give
+// bitwise what the three equal channels of an Rgb would (a + a + a rounds as 3a does).
+double channelSum(double c) { return 3.0 * c; }
+template <typename Value> Value channels(const Rgb& c);
+template <> Rgb channels<Rgb>(const Rgb& c) { return c; }
+template <> double channels<double>(const Rgb& c) { return c.r; }
 
 // Patches come from the mesher; a bad one would turn into NaN radiosity, so refuse it by name.
 void checkPatches(const Scene& scene, const std::vector<Patch>& patches) {
@@ -45,6 +53,7 @@ struct ProgressiveSolver::State {
   Scene scene;
   std::vector<Patch> patches;
   SolveOptions options;
+  EffectsPlan plan;
   std::vector<Rgb> rho;
   std::vector<Rgb> radiosity;          // B
   std::vector<Rgb> unshotRadiosity;    // dB: received, not yet shot
@@ -66,6 +75,7 @@ struct ProgressiveSolver::State {
   std::vector<int> pickShooters() const;
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
+  template <typename Value> void receive(const FormFactorRow& row, const Value& power);
 };
 
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
@@ -74,6 +84,10 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   validateOptions(options);
   State& s = *state_;
   checkPatches(s.scene, s.patches);
+  s.plan = planEffects(s.scene, s.patches, options.effects);
+  // No occlusion: exact analytic form factors replace the item buffer (the mesh back end keeps its
+  // plane, being the machine under study).
+  if (!s.plan.occlusion && s.options.backend == Backend::Native) s.options.projection = Projection::Analytic;
   const size_t n = s.patches.size();
   s.rho.resize(n);
   s.radiosity.resize(n);
@@ -90,13 +104,16 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   s.ledger.unshot = s.ledger.emitted;
   s.exhausted = !(s.ledger.emitted > 0.0);
   s.tieRank = depthTieRanks(s.patches);
-  s.backend = makeFormFactorBackend(s.scene, s.patches, options);
+  s.backend = makeFormFactorBackend(s.scene, s.patches, s.options);
 }
 
 ProgressiveSolver::~ProgressiveSolver() = default;
 
-// The k patches with the most unshot power (the paper's reduceMax, k at a time).
+// The k patches with the most unshot power (the paper's reduceMax, k at a time). Without
+// interreflection, every emitter at once: nothing comes back, so one shot each from the first
+// state is the whole solution.
 std::vector<int> ProgressiveSolver::State::pickShooters() const {
+  const int k = plan.interreflection ? options.shooters : static_cast<int>(patches.size());
   auto before = [&](int a, int b) {  // a shoots before b
     if (unshotPowerW[a] != unshotPowerW[b]) return unshotPowerW[a] > unshotPowerW[b];
     return tieRank[a] < tieRank[b];
@@ -105,7 +122,7 @@ std::vector<int> ProgressiveSolver::State::pickShooters() const {
   std::priority_queue<int, std::vector<int>, decltype(before)> best(before);
   for (int j = 0; j < static_cast<int>(patches.size()); ++j) {
     if (!(unshotPowerW[j] > 0.0)) continue;
-    if (static_cast<int>(best.size()) < options.shooters) {
+    if (static_cast<int>(best.size()) < k) {
       best.push(j);
     } else if (before(j, best.top())) {
       best.pop();
@@ -136,6 +153,8 @@ void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, Itera
   if (missing.empty()) return;
   std::vector<FormFactorRow> computed;
   backend->computeRows(missing, computed);
+  if (plan.nearField)
+    for (FormFactorRow& row : computed) correctNearField(row, patches, plan.nearReceivers[row.shooter]);
   if (const MeshShotStats* shot = backend->lastMeshShot()) {
     auto kept = std::make_shared<MeshShotStats>(*shot);
     kept->depthA.clear();  // 4096 ints a shot: the histograms say the same in far less
@@ -161,26 +180,39 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
   }
   for (size_t s = 0; s < shooters.size(); ++s) {
     const FormFactorRow& row = rows[s];
-    const Rgb& power = shotPower[s];
-    const double powerW = channelSum(power);
+    const double powerW = channelSum(shotPower[s]);
     ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
-    ledger.escaped += powerW * row.escapedFraction();
+    if (plan.escape) ledger.escaped += powerW * row.escapedFraction();
     ledger.absorbed += powerW * row.backFaces;
     ledger.absorbedByBackFaces += powerW * row.backFaces;
-    for (size_t r = 0; r < row.receivers.size(); ++r) {
-      const int j = row.receivers[r];
-      const Rgb incident = power * row.formFactors[r];
-      const Rgb reflected = rho[j] * incident;
-      ledger.absorbed += channelSum(incident - reflected);
-      const Rgb gain = reflected / patches[j].areaM2;
-      radiosity[j] += gain;
-      unshotRadiosity[j] += gain;
-      unshotPowerW[j] = channelSum(unshotRadiosity[j]) * patches[j].areaM2;
+    if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
+      double received = 0.0;
+      for (double f : row.formFactors) received += f;
+      ledger.absorbed += powerW * received;
+    } else if (plan.colour) {
+      receive(row, shotPower[s]);
+    } else {
+      receive(row, shotPower[s].r);
     }
   }
   ledger.unshot = 0.0;
   for (double p : unshotPowerW) ledger.unshot += p;
   record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
+}
+
+// Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double).
+template <typename Value>
+void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& power) {
+  for (size_t r = 0; r < row.receivers.size(); ++r) {
+    const int j = row.receivers[r];
+    const Value incident = power * row.formFactors[r];
+    const Value reflected = channels<Value>(rho[j]) * incident;
+    ledger.absorbed += channelSum(incident - reflected);
+    const Value gain = reflected / patches[j].areaM2;
+    radiosity[j] += Rgb(gain);
+    unshotRadiosity[j] += Rgb(gain);
+    unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
+  }
 }
 
 const IterationRecord& ProgressiveSolver::step() {
@@ -223,6 +255,7 @@ const std::vector<Rgb>& ProgressiveSolver::radiosity() const { return state_->ra
 const Ledger& ProgressiveSolver::ledger() const { return state_->ledger; }
 const std::vector<IterationRecord>& ProgressiveSolver::history() const { return state_->history; }
 const SolveOptions& ProgressiveSolver::options() const { return state_->options; }
+const EffectsPlan& ProgressiveSolver::effectsPlan() const { return state_->plan; }
 ProjectionSummary ProgressiveSolver::projectionSummary() const { return state_->backend->projectionSummary(); }
 FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
 

@@ -1,9 +1,11 @@
 #pragma once
 // Progressive refinement by shooting (the paper's sections 1.2 and 1.5): step() shoots the k
 // patches with the most unshot power. The CLI loops step(); the viewer interleaves it with frames.
+// It plans the effects the scene calls for (options.effects) and skips the rest, exactly.
 #include <memory>
 #include <vector>
 
+#include "solver/effects_plan.h"
 #include "solver/form_factor_backend.h"
 #include "solver/patch.h"
 #include "solver/scene.h"
@@ -55,7 +57,9 @@ class ProgressiveSolver {
   std::vector<Rgb> displayRadiosity() const;  // B plus the display-only ambient term
   const Ledger& ledger() const;
   const std::vector<IterationRecord>& history() const;
+  // The options in force: as given, but with an analytic projection where occlusion is off.
   const SolveOptions& options() const;
+  const EffectsPlan& effectsPlan() const;  // what is simulated and why
 
   // What the projection surface catches (closed form and sum of delta form factors).
   ProjectionSummary projectionSummary() const;

@@ -66,4 +66,12 @@ Backend parseBackend(const std::string& text) {
   throw OptionError("--backend '" + text + "' is unknown: give native or mesh");
 }
 
+const char* toString(EffectsMode mode) { return mode == EffectsMode::All ? "all" : "auto"; }
+
+EffectsMode parseEffects(const std::string& text) {
+  for (EffectsMode m : {EffectsMode::Auto, EffectsMode::All})
+    if (text == toString(m)) return m;
+  throw OptionError("--effects must be 'auto' (simulate only what the scene calls for) or 'all', not '" + text + "'");
+}
+
 }  // namespace radmesh

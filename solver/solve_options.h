@@ -9,6 +9,8 @@ enum class Projection { Plane, Hemicube, Analytic };
 enum class Backend { Native, Mesh };
 // How the mesh backend lays the single plane over the PEs (solver/plane_mapping.h).
 enum class MappingKind { Hierarchical, CutAndStack, Adaptive };
+// Which effects the solver simulates (solver/effects_plan.h).
+enum class EffectsMode { Auto, All };
 
 struct SolveOptions {
   Backend backend = Backend::Native;
@@ -25,6 +27,10 @@ struct SolveOptions {
   // Patches projecting to less than a pixel get analytic form factors with item-buffer
   // visibility (solver/sub_pixel_receivers.h); false: pixel centres only, as in the paper.
   bool subPixelReceivers = true;
+  // Auto: only the effects the scene calls for, each skip exact; All: every effect. The library
+  // defaults to All, so a caller gets the full simulation unless it asks; the CLI and the viewer
+  // default to auto.
+  EffectsMode effects = EffectsMode::All;
 };
 
 // Throws OptionError naming the option and the accepted range.
@@ -36,5 +42,7 @@ Projection parseProjection(const std::string& text);  // throws OptionError
 Backend parseBackend(const std::string& text);        // throws OptionError
 const char* toString(MappingKind kind);
 MappingKind parseMapping(const std::string& text);    // throws OptionError
+const char* toString(EffectsMode mode);
+EffectsMode parseEffects(const std::string& text);    // throws OptionError
 
 }  // namespace radmesh

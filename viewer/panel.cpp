@@ -319,6 +319,11 @@ void Panel::drawScene(const SolverSnapshot& snapshot) {
   if (snapshot.mesh)
     ImGui::Text("display mesh: %zu vertices, %zu triangles", snapshot.mesh->positions.size(),
                 snapshot.mesh->indices.size() / 3);
+  if (snapshot.effects.empty()) return;
+  ImGui::Separator();
+  ImGui::Text("effects simulated (--effects %s)", toString(snapshot.setup.options.effects));
+  for (const Effect& e : snapshot.effects)
+    ImGui::TextWrapped("%s %s: %s", e.name.c_str(), e.on ? "on" : "off", e.reason.c_str());
 }
 
 void Panel::drawView(WalkCamera& camera, ViewSettings& view) {

@@ -36,6 +36,7 @@ struct SolverSnapshot {
   SolveSetup setup;
   std::shared_ptr<const DisplayMesh> mesh;   // null while meshing, or when setup failed
   SceneSummary summary;
+  std::vector<Effect> effects;               // the solver's effects plan: each on or off, and why
   std::vector<Rgb> vertexB;                  // display radiosity per mesh vertex
   std::vector<int> lastShooters;             // patches shot by the last iteration
   std::vector<ConvergencePoint> curve;       // one point per iteration so far

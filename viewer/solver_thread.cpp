@@ -215,6 +215,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->setup = run.setup;
   snapshot->mesh = run.mesh;
   snapshot->summary = run.summary;
+  snapshot->effects = run.solver->effectsPlan().effects;
   snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayRadiosity());
   const auto& history = run.solver->history();
   if (!history.empty()) {

@@ -11,7 +11,7 @@
 
 int main(int argc, char** argv) {
   radmesh::ViewerArgs args;
-  std::string backend = "mesh", projection = "plane", mapping = "hierarchical", size = "1280x720", panel = "progress";
+  std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress";
   radmesh::SolveOptions& o = args.setup.options;
   CLI::App app{"radmesh-view: walk through a scene while its radiosity converges"};
   app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--projection", projection, "plane, hemicube or analytic")->capture_default_str();
   app.add_option("--mapping", mapping, "Single plane over the PEs (mesh back end): hierarchical, cut-and-stack, adaptive")
+      ->capture_default_str();
+  app.add_option("--effects", effects, "auto: simulate only what the scene calls for; all: everything")
       ->capture_default_str();
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
@@ -47,6 +49,7 @@ int main(int argc, char** argv) {
     o.backend = radmesh::parseBackend(backend);
     o.projection = radmesh::parseProjection(projection);
     o.mapping = radmesh::parseMapping(mapping);
+    o.effects = radmesh::parseEffects(effects);
     // Drawing needs a core too (llvmpipe renders on the CPU).
     if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     radmesh::validateOptions(o);

@@ -169,6 +169,35 @@ TEST(Cli, MeshBackendStatsCarryDepthsEmulatedTimeAndOpCountsForEveryMapping) {
   }
 }
 
+TEST(Cli, SolveStatsCarryTheEffectsPlanTheSolverApplied) {
+  const std::string stats = tempPath("stats.json");
+  for (const char* mode : {"auto", "all"}) {
+    const CommandRun run = radmesh(std::string("solve furnace --quiet --until 0.5 --effects ") + mode + " --stats " + stats);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(stats);
+    const auto j = nlohmann::json::parse(in);
+    const auto& e = j["effects"];
+    for (const char* name : {"occlusion", "colour", "interreflection", "near field", "escape"}) {
+      ASSERT_TRUE(e.contains(name)) << name << " in " << e.dump();
+      EXPECT_FALSE(e[name]["reason"].get<std::string>().empty()) << name;
+    }
+    const bool all = std::string(mode) == "all";
+    // The grey, closed, convex furnace: three skips, and the projection the solver really used.
+    EXPECT_EQ(e["occlusion"]["on"].get<bool>(), all) << e.dump();
+    EXPECT_EQ(e["colour"]["on"].get<bool>(), all);
+    EXPECT_EQ(e["escape"]["on"].get<bool>(), all);
+    EXPECT_TRUE(e["interreflection"]["on"].get<bool>());
+    EXPECT_TRUE(e["near field"]["on"].get<bool>());  // walls meet at the box's edges
+    EXPECT_NE(e["near field"]["reason"].get<std::string>().find("shooter-receiver pairs"), std::string::npos);
+    EXPECT_EQ(j["projection"], all ? "plane" : "analytic");
+    EXPECT_EQ(e["colour"]["reason"].get<std::string>().find("forced by --effects all") == 0, all);
+    EXPECT_EQ(j["ledger"]["escaped"].get<double>(), 0.0);
+  }
+  const CommandRun bad = radmesh("solve furnace --effects some");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("--effects must be 'auto'"), std::string::npos) << bad.output;
+}
+
 }  // namespace
 }  // namespace radmesh
 

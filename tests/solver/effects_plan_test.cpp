@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "solver/meshing.h"
+
 namespace radmesh {
 namespace {
 
@@ -18,6 +20,10 @@ void addBox(Scene& scene, Vec3 o, double s, bool inward, int material, bool with
     for (int k = 0; k < 4; ++k) p.vertices.push_back(c[faces[f][inward ? 3 - k : k]]);
     scene.polygons.push_back(p);
   }
+}
+
+EffectsPlan planEffects(const Scene& scene, EffectsMode mode = EffectsMode::Auto) {
+  return radmesh::planEffects(scene, meshScene(scene, 0.5), mode);
 }
 
 Scene greyFurnace() {
@@ -74,7 +80,7 @@ TEST(EffectsPlan, ColourAndBlackMaterialsAreDetectedAndAllForcesEverything) {
   EffectsPlan plan = planEffects(s);
   EXPECT_TRUE(plan.colour);
   EXPECT_FALSE(plan.interreflection);
-  plan = planEffects(s, /*forceAll=*/true);
+  plan = planEffects(s, EffectsMode::All);
   EXPECT_TRUE(plan.occlusion && plan.colour && plan.interreflection && plan.escape && plan.nearField);
   EXPECT_NE(plan.effects[2].reason.find("forced"), std::string::npos);
 }
