@@ -72,6 +72,14 @@ TEST(GltfBadInput, NegativeEmissionNamesTheMaterial) {
   EXPECT_NE(r.what.find("negative"), std::string::npos) << r.what;
 }
 
+// glTF's default white (1, 1, 1) is lowered to the largest reflectance with a warning; a factor
+// outside [0, 1] breaks the format itself.
+TEST(GltfBadInput, BaseColorAboveOneNamesTheMaterial) {
+  const Refusal r = refusal("gltf_rho_above_one.gltf");
+  EXPECT_EQ(r.element, "material 0 'too_bright'");
+  EXPECT_NE(r.what.find("baseColorFactor 1.500000 is outside [0, 1]"), std::string::npos) << r.what;
+}
+
 TEST(GltfBadInput, NodeCycleNamesTheNode) {
   const Refusal r = refusal("gltf_node_cycle.gltf");
   EXPECT_EQ(r.element, "node 0 'a'");

@@ -4,6 +4,7 @@
 
 #include "solver/mgf_import.h"
 #include "solver/scene_error.h"
+#include "solver/scene_loader.h"
 #include "tests/solver/mgf_test_scene.h"
 #include "tests/test_paths.h"
 
@@ -161,6 +162,40 @@ TEST(MgfBadInput, HugeArraysAreRefusedBeforeTheyAreBuilt) {
       EXPECT_NE(std::string(e.what()).find("more than"), std::string::npos) << e.what();
     }
   }
+}
+
+}  // namespace
+}  // namespace radmesh
+
+namespace radmesh {
+namespace {
+
+// Zero area and no emitter are the scene's faults, found when loading validates it.
+std::string loadRefusal(const std::string& name) {
+  const std::string path = test::dataPath("bad/" + name).string();
+  try {
+    loadScene(path);
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_NE(std::string(e.what()).find("(fix: "), std::string::npos) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << name << " was accepted";
+  return {};
+}
+
+TEST(MgfBadInput, FaceWithCollinearVerticesHasZeroArea) {
+  const std::string what = loadRefusal("mgf_zero_area.mgf");
+  EXPECT_NE(what.find("polygon 0 (line 10: f): has zero area"), std::string::npos) << what;
+}
+
+TEST(MgfBadInput, FaceFarFromPlanarIsRefusedNotSplit) {
+  expectRefused("mgf_non_planar.mgf", "line 12: f", "the face is not planar: a vertex lies 0.147 off its plane");
+}
+
+TEST(MgfBadInput, SceneWithoutEmitterIsRefused) {
+  const std::string what = loadRefusal("mgf_no_emitter.mgf");
+  EXPECT_NE(what.find("has no emitter"), std::string::npos) << what;
 }
 
 }  // namespace
