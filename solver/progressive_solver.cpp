@@ -260,7 +260,10 @@ ProjectionSummary ProgressiveSolver::projectionSummary() const { return state_->
 FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
 
 // The ambient term of Cohen et al. 1988: the unshot power, spread evenly and interreflected with
-// the area-averaged reflectance, added for display only (it is not in the ledger).
+// the area-averaged reflectance, added for display only (it is not in the ledger). Cohen's scenes
+// were closed; here the fraction of shot power lost so far (escaped through openings, or missed
+// by the single plane) is lost from the unshot power too, at every bounce, as it will be when it
+// is shot. Without that, an open room shows brighter than it will converge to.
 std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
   const State& s = *state_;
   if (!s.options.ambient) return s.radiosity;
@@ -271,8 +274,11 @@ std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
     rhoArea += s.rho[j] * s.patches[j].areaM2;
     area += s.patches[j].areaM2;
   }
+  const Ledger& l = s.ledger;
+  const double shot = l.emitted - l.unshot;  // = absorbed + not captured + escaped
+  const double kept = shot > 0.0 ? std::clamp(1.0 - (l.escaped + l.notCaptured) / shot, 0.0, 1.0) : 1.0;
   const Rgb averageRho = rhoArea / area;
-  const Rgb ambient = unshotPower / area / (Rgb(1.0) - averageRho);
+  const Rgb ambient = unshotPower * kept / area / (Rgb(1.0) - averageRho * kept);
   std::vector<Rgb> shown(s.radiosity);
   for (size_t j = 0; j < shown.size(); ++j) shown[j] += s.rho[j] * ambient;
   return shown;

@@ -221,6 +221,35 @@ TEST(ProgressiveSolver, AmbientTermIsForDisplayOnly) {
   EXPECT_TRUE(sameBits(plain.displayRadiosity(), plain.radiosity()));
 }
 
+// An open box (the furnace without its lid) loses light through the top: the ambient estimate
+// loses the same fraction, so the early picture is about as bright as the converged one will be,
+// where Cohen's closed-room estimate is far too bright.
+TEST(ProgressiveSolver, AmbientTermInAnOpenBoxLosesWhatEscapes) {
+  TestScene box = furnace();
+  std::vector<Patch> open;
+  for (const Patch& p : box.patches)
+    if (p.polygon != 1) open.push_back(p);  // polygon 1: the ceiling
+  box.patches = open;
+  SolveOptions o = test::fixedIterations(optionsFor(Projection::Hemicube, 64), 40);
+  ProgressiveSolver early(box.scene, box.patches, o);
+  solveChecked(early);
+  o = test::fixedIterations(o, 3000);
+  o.until = 0.99999;
+  ProgressiveSolver converged(box.scene, box.patches, o);
+  solveChecked(converged);
+  const double truth = areaMean(box.patches, converged.radiosity());
+  ASSERT_GT(early.ledger().escaped, 0.03 * early.ledger().emitted);
+  // Half the patches have shot: the loss of those shots stands for the loss of the rest, to 5 %.
+  const double shown = areaMean(box.patches, early.displayRadiosity());
+  EXPECT_NEAR(shown, truth, 0.05 * truth);
+  // The closed-room estimate: unshot power over the area, times 1 / (1 - rho), reflected with rho.
+  double area = 0.0;
+  for (const Patch& p : box.patches) area += p.areaM2;
+  const double closedRoom = areaMean(box.patches, early.radiosity()) + 0.5 * (early.ledger().unshot / 3.0) / area / 0.5;
+  EXPECT_GT(closedRoom, 1.1 * truth);
+  EXPECT_LT(std::abs(shown - truth), std::abs(closedRoom - truth) / 3.0);
+}
+
 TEST(ProgressiveSolver, RefusesBadPatchesByName) {
   TestScene box = furnace(2);
   box.patches[3].areaM2 = 0.0;
