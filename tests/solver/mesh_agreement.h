@@ -10,10 +10,24 @@
 
 #include "solver/form_factor_backend.h"
 #include "solver/item_buffer.h"
+#include "solver/meshing.h"
 #include "solver/patch.h"
 #include "solver/scene.h"
+#include "solver/scene_loader.h"
 
 namespace radmesh::test {
+
+struct MeshedScene {
+  Scene scene;
+  std::vector<Patch> patches;
+};
+
+// A built-in name or a scene file, meshed at the default cell.
+inline MeshedScene meshedScene(const std::string& pathOrName) {
+  MeshedScene m{loadScene(pathOrName), {}};
+  m.patches = meshScene(m.scene);
+  return m;
+}
 
 // The strongest emitter patch and a few others spread over the scene: varied viewpoints.
 inline std::vector<int> someShooters(const Scene& scene, const std::vector<Patch>& patches, int count) {

@@ -10,8 +10,6 @@
 #include <random>
 
 #include "emulator/memory_ledger.h"
-#include "solver/builtin_scenes.h"
-#include "solver/meshing.h"
 #include "solver/native_backend.h"
 #include "solver/progressive_solver.h"
 #include "solver/scene_error.h"
@@ -23,19 +21,12 @@ namespace {
 using test::expectSameRow;
 using test::sameItemBuffer;
 
-struct Meshed {
-  Scene scene;
-  std::vector<Patch> patches;
-};
+using Meshed = test::MeshedScene;
 
 const Meshed& builtin(const std::string& name) {
   static std::map<std::string, Meshed> cache;
   auto it = cache.find(name);
-  if (it == cache.end()) {
-    Meshed m{builtinScene(name), {}};
-    m.patches = meshScene(m.scene);
-    it = cache.emplace(name, std::move(m)).first;
-  }
+  if (it == cache.end()) it = cache.emplace(name, test::meshedScene(name)).first;
   return it->second;
 }
 

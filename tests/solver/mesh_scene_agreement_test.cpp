@@ -9,10 +9,8 @@
 #include <vector>
 
 #include "solver/mesh_backend.h"
-#include "solver/meshing.h"
 #include "solver/native_backend.h"
 #include "solver/progressive_solver.h"
-#include "solver/scene_loader.h"
 #include "tests/solver/mesh_agreement.h"
 #include "tests/solver/solver_test_helpers.h"
 #include "tests/test_paths.h"
@@ -36,16 +34,7 @@ const SceneCase kShared[] = {{"cube", "scenes/mgf/cube.mgf", 30},
                              {"office2", "scenes/mgf/office2/office2.mgf", 12},
                              {"office3", "scenes/mgf/office3/office.mgf", 9}};
 
-struct Meshed {
-  Scene scene;
-  std::vector<Patch> patches;
-};
-
-Meshed meshed(const std::string& pathOrName) {
-  Meshed m{loadScene(pathOrName), {}};
-  m.patches = meshScene(m.scene);
-  return m;
-}
+using Meshed = test::MeshedScene;
 
 SolveOptions planeOptions(Backend backend, int resolution, int iterations) {
   SolveOptions o = test::fixedIterations(test::optionsFor(Projection::Plane, resolution, 2), iterations);
@@ -69,11 +58,11 @@ class MeshSceneAgreement : public ::testing::TestWithParam<SceneCase> {};
     RADMESH_REQUIRE_SHARED(path, (c).shared);            \
     where = path.string();                               \
   }                                                      \
-  const Meshed m = meshed(where)
+  const Meshed m = test::meshedScene(where)
 
 TEST_P(MeshSceneAgreement, ItemBuffersAreTheNativeOnes) {
   RADMESH_LOAD_CASE(m, GetParam());
-  for (int resolution : {64, 128}) {
+  for (int resolution : {64, 128, 256}) {  // the paper's resolutions
     const SolveOptions o = planeOptions(Backend::Mesh, resolution, 1);
     NativeBackend native(m.scene, m.patches, o);
     MeshBackend mesh(m.scene, m.patches, o);
