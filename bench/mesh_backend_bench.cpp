@@ -1,13 +1,17 @@
 // One shot of the paper's algorithm on the built-in office, native and emulated mesh side by side
 // in one run, at 64^2 and 128^2 (the viewer's rates) and 256^2; for the mesh: the emulated MP-1
-// seconds per iteration, the depths at (a) and (b), and where the emulator's host time goes, by
-// phase. Run: build-*/bench/mesh_backend_bench --benchmark_counters_tabular=true
+// seconds per iteration, the depths at (a) and (b), and where the emulator's host time goes: by
+// phase ("ms phase ...") and by operation class ("ms op ...", with "ms op between" the host work
+// between the machine's operations). Run: build/bench/mesh_backend_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <numeric>
+#include <string>
+#include <utility>
 
 #include "solver/builtin_scenes.h"
 #include "solver/mesh_backend.h"
@@ -49,16 +53,28 @@ void shoot(benchmark::State& state, FormFactorBackend& backend, const MeshBacken
   std::vector<FormFactorRow> rows;
   std::size_t next = 0;
   double emulated = 0.0, depthA = 0.0, depthB = 0.0;
-  std::map<std::string, double> phaseHost;
+  std::map<std::string, double> host;  // counter name -> host seconds over the shots
   for (auto _ : state) {
     const int shooter[] = {o.shooters[next++ % o.shooters.size()]};
+    const auto start = std::chrono::steady_clock::now();
     backend.computeRows(shooter, rows);
     if (!mesh) continue;
     const MeshShotStats& s = mesh->lastShot();
+    // After the shot the host assembles the rows (and refines sub-pixel receivers).
+    host["ms rows on host"] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - s.hostSeconds;
     emulated += s.emulatedSeconds;
     depthA += s.depthAMax;
     depthB += s.depthBMax;
-    for (const MeshPhaseCost& p : s.phases) phaseHost[p.name] += p.hostSeconds;
+    for (const MeshPhaseCost& p : s.phases) host["ms phase " + p.name] += p.hostSeconds;
+    const std::pair<const char*, const emu::ClassCounts&> classes[] = {
+        {"xnet", s.counts.xnet},     {"router", s.counts.router}, {"alu", s.counts.alu},
+        {"reduce", s.counts.reduce}, {"scan", s.counts.scan},     {"sort", s.counts.sort}};
+    double inOperations = 0.0;
+    for (const auto& [name, counts] : classes) {
+      host[std::string("ms op ") + name] += counts.hostSeconds;
+      inOperations += counts.hostSeconds;
+    }
+    host["ms op between"] += s.hostSeconds - inOperations;
   }
   state.counters["iterations_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   if (!mesh) return;
@@ -66,7 +82,7 @@ void shoot(benchmark::State& state, FormFactorBackend& backend, const MeshBacken
   state.counters["mp1_s_per_it"] = emulated / n;
   state.counters["depth_a_max"] = depthA / n;
   state.counters["depth_b_max"] = depthB / n;
-  for (const auto& [name, seconds] : phaseHost) state.counters["ms " + name] = seconds / n * 1e3;
+  for (const auto& [name, seconds] : host) state.counters[name] = seconds / n * 1e3;
 }
 
 SolveOptions optionsOf(int resolution, int threads) {

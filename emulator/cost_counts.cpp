@@ -14,6 +14,7 @@ ClassCounts& ClassCounts::operator+=(const ClassCounts& o) {
   byteRounds += o.byteRounds;
   flops += o.flops;
   intOps += o.intOps;
+  hostSeconds += o.hostSeconds;
   return *this;
 }
 
@@ -26,6 +27,7 @@ ClassCounts& ClassCounts::operator-=(const ClassCounts& o) {
   byteRounds -= o.byteRounds;
   flops -= o.flops;
   intOps -= o.intOps;
+  hostSeconds -= o.hostSeconds;
   return *this;
 }
 

@@ -17,6 +17,9 @@ struct ClassCounts {
   std::int64_t byteRounds = 0;  // router: sum of rounds x payload bytes per message
   double flops = 0.0;           // floating-point operations per PE (SIMD: every PE steps them)
   double intOps = 0.0;          // integer/logical operations per PE (compares, adds, moves)
+  // Not a fact about the program but about this host: the wall time spent emulating the class's
+  // operations (emulator/host_timer.h). The cost model and summary() leave it out.
+  double hostSeconds = 0.0;
 
   ClassCounts& operator+=(const ClassCounts& other);
   ClassCounts& operator-=(const ClassCounts& other);

@@ -9,6 +9,7 @@
 
 #include "emulator/active_mask.h"
 #include "emulator/cost_counts.h"
+#include "emulator/host_timer.h"
 #include "emulator/memory_ledger.h"
 #include "emulator/pe_grid.h"
 #include "emulator/thread_pool.h"
@@ -65,6 +66,10 @@ class MeshMachine {
 
   bool inParallelRegion() const { return inParallel_.load(std::memory_order_relaxed); }
 
+  // For an operation of class `c`: charges its host wall time to c.hostSeconds unless it runs
+  // inside another timed operation.
+  [[nodiscard]] HostTimer timeHost(ClassCounts& c) { return HostTimer(hostTimed_, c.hostSeconds); }
+
  private:
   // Declared operations x active PEs below which a compute() runs on the calling thread alone:
   // waking the pool costs about as much as this many simple host operations.
@@ -76,6 +81,7 @@ class MeshMachine {
   ThreadPool pool_;
   CostCounts counts_;
   std::atomic<bool> inParallel_{false};
+  bool hostTimed_ = false;  // a timeHost() timer is charging
 };
 
 // Operations take plural data of one machine only; throws std::invalid_argument otherwise.
@@ -83,6 +89,7 @@ void requireSameMachine(const MeshMachine& expected, const MeshMachine& got, con
 
 template <class PerPe>
 void MeshMachine::forEachActive(double workPerPe, PerPe&& perPe) {
+  const HostTimer timer = timeHost(counts_.alu);
   const std::uint8_t* flags = mask_.flags();
   const bool all = mask_.allActive();
   auto range = [&](int begin, int end) {

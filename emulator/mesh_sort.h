@@ -75,6 +75,7 @@ void sortOnMesh(MeshMachine& machine, int perPe, Get get, Put put) {
 // One pair per PE. The grid's sides must be powers of two (as the MP-1's are).
 template <class K, class V>
 void sortPairs(MeshMachine& machine, Plural<K>& keys, Plural<V>& values) {
+  const HostTimer timer = machine.timeHost(machine.counters().sort);
   requireSameMachine(machine, keys.machine(), "sortPairs");
   requireSameMachine(machine, values.machine(), "sortPairs");
   detail::sortOnMesh<K, V>(
@@ -85,6 +86,7 @@ void sortPairs(MeshMachine& machine, Plural<K>& keys, Plural<V>& values) {
 // k pairs per PE: every active PE's key and value lists must hold the same k, a power of two.
 template <class K, class V>
 void sortPairs(MeshMachine& machine, PeArray<K>& keys, PeArray<V>& values) {
+  const HostTimer timer = machine.timeHost(machine.counters().sort);
   requireSameMachine(machine, keys.machine(), "sortPairs");
   requireSameMachine(machine, values.machine(), "sortPairs");
   int perPe = -1;

@@ -29,6 +29,7 @@ void refuseNaN(const MeshMachine& machine, const T& value, int pe, const char* o
 // The largest value over the active PEs and where it is; ties go to the lowest PE index.
 template <class T>
 Located<T> reduceMax(MeshMachine& machine, const Plural<T>& values) {
+  const HostTimer timer = machine.timeHost(machine.counters().reduce);
   requireSameMachine(machine, values.machine(), "reduceMax");
   detail::chargeTree(machine.counters().reduce, machine.grid(), 1, kWireBytes<T> + kWireBytes<int>,
                      std::is_floating_point_v<T>);
@@ -44,6 +45,7 @@ Located<T> reduceMax(MeshMachine& machine, const Plural<T>& values) {
 // The sum over the active PEs, added in row-major order from T{} (so the same bits every run).
 template <class T>
 T reduceAdd(MeshMachine& machine, const Plural<T>& values) {
+  const HostTimer timer = machine.timeHost(machine.counters().reduce);
   requireSameMachine(machine, values.machine(), "reduceAdd");
   detail::chargeTree(machine.counters().reduce, machine.grid(), 1, kWireBytes<T>,
                      std::is_floating_point_v<T>);

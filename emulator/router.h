@@ -57,6 +57,7 @@ void combineInto(T& to, const T& message, Combine combine) {
 template <class T>
 RouterStats routerSend(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src,
                        const Plural<int>& destinationPe, Combine combine) {
+  const HostTimer timer = machine.timeHost(machine.counters().router);
   requireSameMachine(machine, dst.machine(), "routerSend");
   requireSameMachine(machine, src.machine(), "routerSend");
   RouterStats stats = detail::routeTraffic(machine.grid(), detail::activeFlags(machine), destinationPe.values());
@@ -72,6 +73,7 @@ template <class T>
 RouterStats routerSend(MeshMachine& machine, PeArray<T>& dst, const Plural<T>& src,
                        const Plural<int>& destinationPe, const Plural<int>& destinationSlot,
                        Combine combine) {
+  const HostTimer timer = machine.timeHost(machine.counters().router);
   requireSameMachine(machine, dst.machine(), "routerSend");
   requireSameMachine(machine, src.machine(), "routerSend");
   RouterStats stats = detail::routeTraffic(machine.grid(), detail::activeFlags(machine), destinationPe.values());
@@ -94,6 +96,7 @@ RouterStats routerSend(MeshMachine& machine, PeArray<T>& dst, const Plural<T>& s
 template <class T>
 RouterStats routerSendAppend(MeshMachine& machine, PeArray<T>& dst, const Plural<T>& src,
                              const Plural<int>& destinationPe) {
+  const HostTimer timer = machine.timeHost(machine.counters().router);
   requireSameMachine(machine, dst.machine(), "routerSendAppend");
   requireSameMachine(machine, src.machine(), "routerSendAppend");
   RouterStats stats = detail::routeTraffic(machine.grid(), detail::activeFlags(machine), destinationPe.values());
@@ -112,6 +115,7 @@ RouterStats routerSendAppend(MeshMachine& machine, PeArray<T>& dst, const Plural
 template <class T>
 RouterStats routerFetch(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src,
                         const Plural<int>& sourcePe) {
+  const HostTimer timer = machine.timeHost(machine.counters().router);
   requireSameMachine(machine, dst.machine(), "routerFetch");
   requireSameMachine(machine, src.machine(), "routerFetch");
   RouterStats stats = detail::routeTraffic(machine.grid(), detail::activeFlags(machine), sourcePe.values());

@@ -46,6 +46,7 @@ void chargeScan(MeshMachine& machine, std::int64_t perPe) {
 template <class T>
 void segmentedScan(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src,
                    const Plural<bool>& segmentStart, ScanKind kind) {
+  const HostTimer timer = machine.timeHost(machine.counters().scan);
   requireSameMachine(machine, dst.machine(), "segmentedScan");
   requireSameMachine(machine, src.machine(), "segmentedScan");
   requireSameMachine(machine, segmentStart.machine(), "segmentedScan");
@@ -59,6 +60,7 @@ void segmentedScan(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src,
 template <class T>
 void segmentedScan(MeshMachine& machine, PeArray<T>& dst, const PeArray<T>& src,
                    const PeArray<bool>& segmentStart, ScanKind kind) {
+  const HostTimer timer = machine.timeHost(machine.counters().scan);
   requireSameMachine(machine, dst.machine(), "segmentedScan");
   requireSameMachine(machine, src.machine(), "segmentedScan");
   requireSameMachine(machine, segmentStart.machine(), "segmentedScan");

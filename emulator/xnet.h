@@ -38,6 +38,7 @@ void chargeXnet(MeshMachine& machine, std::int64_t items, int distance, std::int
 template <class T>
 void xnetShift(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src, Direction direction,
                int distance) {
+  const HostTimer timer = machine.timeHost(machine.counters().xnet);
   requireSameMachine(machine, dst.machine(), "xnetShift");
   requireSameMachine(machine, src.machine(), "xnetShift");
   detail::requireDistance(distance, "xnetShift");
@@ -76,6 +77,7 @@ void xnetShift(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src, Direc
 template <class T>
 void xnetShift(MeshMachine& machine, PeArray<T>& dst, const PeArray<T>& src, Direction direction,
                int distance) {
+  const HostTimer timer = machine.timeHost(machine.counters().xnet);
   requireSameMachine(machine, dst.machine(), "xnetShift");
   requireSameMachine(machine, src.machine(), "xnetShift");
   detail::requireDistance(distance, "xnetShift");
@@ -109,6 +111,7 @@ void xnetShift(MeshMachine& machine, PeArray<T>& dst, const PeArray<T>& src, Dir
 template <class T>
 void xnetForward(MeshMachine& machine, PeArray<T>& records, PeArray<int>& forward, Direction direction,
                  int distance) {
+  const HostTimer timer = machine.timeHost(machine.counters().xnet);
   requireSameMachine(machine, records.machine(), "xnetForward");
   requireSameMachine(machine, forward.machine(), "xnetForward");
   detail::requireDistance(distance, "xnetForward");

@@ -10,28 +10,23 @@
 #include <random>
 
 #include "emulator/memory_ledger.h"
-#include "solver/builtin_scenes.h"
-#include "solver/meshing.h"
 #include "solver/native_backend.h"
 #include "solver/progressive_solver.h"
 #include "solver/scene_error.h"
+#include "tests/solver/mesh_agreement.h"
 
 namespace radmesh {
 namespace {
 
-struct Meshed {
-  Scene scene;
-  std::vector<Patch> patches;
-};
+using test::expectSameRow;
+using test::sameItemBuffer;
+
+using Meshed = test::MeshedScene;
 
 const Meshed& builtin(const std::string& name) {
   static std::map<std::string, Meshed> cache;
   auto it = cache.find(name);
-  if (it == cache.end()) {
-    Meshed m{builtinScene(name), {}};
-    m.patches = meshScene(m.scene);
-    it = cache.emplace(name, std::move(m)).first;
-  }
+  if (it == cache.end()) it = cache.emplace(name, test::meshedScene(name)).first;
   return it->second;
 }
 
@@ -44,45 +39,7 @@ SolveOptions planeOptions(int resolution, int threads = 1) {
   return o;
 }
 
-// The strongest emitter patch and a few others spread over the scene: varied viewpoints.
-std::vector<int> someShooters(const Meshed& m, int count) {
-  std::vector<int> shooters;
-  int brightest = 0;
-  for (int j = 0; j < static_cast<int>(m.patches.size()); ++j) {
-    const Rgb e = m.scene.materials[m.patches[j].material].emittance;
-    const Rgb b = m.scene.materials[m.patches[brightest].material].emittance;
-    if (e.r + e.g + e.b > b.r + b.g + b.b) brightest = j;
-  }
-  shooters.push_back(brightest);
-  for (int k = 1; k < count; ++k) shooters.push_back(static_cast<int>(m.patches.size() * k / count + 7) % static_cast<int>(m.patches.size()));
-  return shooters;
-}
-
-::testing::AssertionResult sameItemBuffer(const ItemBuffer& mesh, const ItemBuffer& native) {
-  if (mesh.width != native.width || mesh.height != native.height)
-    return ::testing::AssertionFailure() << "sizes differ";
-  for (int row = 0; row < native.height; ++row)
-    for (int column = 0; column < native.width; ++column) {
-      const int q = native.index(column, row);
-      if (mesh.items[q] != native.items[q] || mesh.inverseDepth[q] != native.inverseDepth[q])
-        return ::testing::AssertionFailure()
-               << "first difference at pixel (column " << column << ", row " << row << "): mesh item "
-               << mesh.items[q] << " at 1/depth " << mesh.inverseDepth[q] << ", native item " << native.items[q]
-               << " at 1/depth " << native.inverseDepth[q];
-    }
-  return ::testing::AssertionSuccess();
-}
-
-// Same receivers, form factors to `relative`, same back-face and captured fractions.
-void expectSameRow(const FormFactorRow& mesh, const FormFactorRow& native, double relative) {
-  ASSERT_EQ(mesh.shooter, native.shooter);
-  ASSERT_EQ(mesh.receivers, native.receivers) << "shooter " << native.shooter;
-  for (std::size_t k = 0; k < native.receivers.size(); ++k)
-    ASSERT_NEAR(mesh.formFactors[k], native.formFactors[k], relative * native.formFactors[k])
-        << "shooter " << native.shooter << " receiver " << native.receivers[k];
-  EXPECT_NEAR(mesh.backFaces, native.backFaces, relative * std::max(native.backFaces, 1e-300));
-  EXPECT_EQ(mesh.capturedFraction, native.capturedFraction);
-}
+std::vector<int> someShooters(const Meshed& m, int count) { return test::someShooters(m.scene, m.patches, count); }
 
 class MeshAgreement : public ::testing::TestWithParam<std::tuple<std::string, int, MappingKind>> {};
 
@@ -280,27 +237,6 @@ TEST(MeshBackend, ShootingWithItsRowsGivesTheNativeRadiosity) {
   for (int j = 0; j < n; ++j)
     for (int c = 0; c < 3; ++c)
       ASSERT_NEAR(runs[0].b[j][c], runs[1].b[j][c], 1e-6 * runs[1].b[j][c]) << "patch " << j;
-}
-
-// B through the progressive solver, once the solver's factory builds the mesh back end.
-TEST(MeshBackend, RadiosityAgreesWithNativeTo1e6) {
-  const Meshed& m = builtin("cornell");
-  SolveOptions o = planeOptions(64);
-  o.maxIterations = 40;
-  try {
-    makeFormFactorBackend(m.scene, m.patches, o);
-  } catch (const OptionError& e) {
-    GTEST_SKIP() << "the solver's makeFormFactorBackend does not build the mesh back end yet: " << e.what();
-  }
-  ProgressiveSolver mesh(m.scene, m.patches, o);
-  o.backend = Backend::Native;
-  ProgressiveSolver native(m.scene, m.patches, o);
-  while (!native.done()) native.step(), mesh.step();
-  ASSERT_TRUE(mesh.done());
-  for (std::size_t j = 0; j < m.patches.size(); ++j)
-    for (int c = 0; c < 3; ++c)
-      ASSERT_NEAR(mesh.radiosity()[j][c], native.radiosity()[j][c], 1e-6 * std::max(1e-12, native.radiosity()[j][c]))
-          << "patch " << j;
 }
 
 }  // namespace
