@@ -54,6 +54,14 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+// One iteration of the traced solve: what C says beside the true error and the power still unshot.
+struct TracePoint {
+  int iteration = 0;
+  double convergence = 0.0;
+  double error = 0.0;           // relative RMS error of B - E against the reference
+  double unshotFraction = 0.0;  // unshot power over emitted power
+};
+
 struct Reference {
   std::string how;
   std::vector<Rgb> radiosity;
@@ -85,18 +93,19 @@ Reference solveReference(const Scene& scene, const std::vector<Patch>& patches, 
 
 Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setting& setting, int n, double cellM,
               const Reference& ref, const AccuracyArgs& args, ImageErrorProbe& pictures,
-              std::vector<std::pair<double, double>>* trace) {
+              std::vector<TracePoint>* trace) {
   SolveOptions o;
   o.projection = setting.projection;
   o.ratio = setting.ratio;
   o.resolution = n;
-  o.until = 0.99;
+  o.until = trace ? args.referenceUntil : 0.99;  // the trace follows C as far as the reference
   o.threads = 1;  // timed on one core, by its CPU time (below)
   o.maxIterations = args.maxIterations;
   ProgressiveSolver solver(scene, patches, o);
   Point p{setting, n, cellM, patches.size()};
   p.memoryMiB = projectionMiB(setting.projection, n);
   std::vector<double> perIteration;
+  size_t iterationsTo99 = 0;
   double elapsed = 0.0;
   while (!solver.done()) {
     const double before = threadCpuSeconds();
@@ -104,18 +113,23 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
     const double seconds = threadCpuSeconds() - before;
     perIteration.push_back(seconds);
     elapsed += seconds;
-    if (trace) trace->emplace_back(r.convergence, relativeRmsError(patches, solver.radiosity(), ref.radiosity));
+    if (trace)
+      trace->push_back({r.iteration, r.convergence, relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity),
+                        r.ledger.unshot / r.ledger.emitted});
     if (p.secondsTo95 < 0 && r.convergence >= 0.95) {
       p.secondsTo95 = elapsed;
-      p.error95 = relativeRmsError(patches, solver.radiosity(), ref.radiosity);
+      p.error95 = relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity);
       p.imageError95 = pictures.error(patches, solver.displayRadiosity());
     }
+    if (p.secondsTo99 < 0 && r.convergence >= 0.99) {
+      p.secondsTo99 = elapsed;
+      p.error99 = relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity);
+      p.imageError99 = pictures.error(patches, solver.displayRadiosity());
+      iterationsTo99 = perIteration.size();
+    }
   }
-  if (solver.convergence() >= 0.99) {
-    p.secondsTo99 = elapsed;
-    p.error99 = relativeRmsError(patches, solver.radiosity(), ref.radiosity);
-    p.imageError99 = pictures.error(patches, solver.displayRadiosity());
-  }
+  // The cost per iteration of the range every point covers, not of the trace's long tail.
+  if (iterationsTo99 > 0) perIteration.resize(iterationsTo99);
   p.msPerIteration = 1e3 * median(perIteration);
   return p;
 }
@@ -159,16 +173,23 @@ Plot errorVersusTime(const std::string& title, const std::string& errorLabel, co
 }
 
 void drawFigures(const std::string& stem, const std::string& sceneName, const std::vector<Point>& points,
-                 const std::vector<std::pair<double, double>>& trace, const std::string& traceLabel) {
-  drawPlot(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName, "relative RMS error of B",
+                 const std::vector<TracePoint>& trace, const std::string& traceLabel) {
+  drawPlot(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName, "relative RMS error of B - E",
                            points, &Point::error99),
            stem + "-error-vs-time.png");
   if (ImageErrorProbe::available())
     drawPlot(errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
                              "RMSE of the pictures, 8-bit levels", points, &Point::imageError99),
              stem + "-image-error-vs-time.png");
-  Plot conv{"Convergence C against true error (" + traceLabel + "): " + sceneName, "convergence C",
-            "relative RMS error of B", false, true, {{traceLabel, trace, "lines"}}};
+  Series error{"relative RMS error of B - E", {}, "lines lw 2"}, unshot{"unshot power / emitted", {}, "lines"},
+      remaining{"1 - C (what the paper's convergence says is left)", {}, "lines"};
+  for (const TracePoint& t : trace) {
+    error.points.emplace_back(t.iteration, std::max(t.error, 1e-9));
+    unshot.points.emplace_back(t.iteration, std::max(t.unshotFraction, 1e-9));
+    remaining.points.emplace_back(t.iteration, std::max(1.0 - t.convergence, 1e-9));
+  }
+  Plot conv{"What convergence C says against the true error (" + traceLabel + "): " + sceneName, "iteration",
+            "fraction", false, true, {error, unshot, remaining}};
   drawPlot(conv, stem + "-error-vs-convergence.png");
 }
 
@@ -212,7 +233,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                           {"image_rmse", imageError}});
   }
   std::vector<Point> points;
-  std::vector<std::pair<double, double>> trace;
+  std::vector<TracePoint> trace;
   std::string traceLabel;
   fmt::print("{:<9} {:>5} {:>7} {:>8} {:>10} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8}\n", "setting", "N", "cell m",
              "patches", "ms/iter", "s to .95", "s to .99", "err @.95", "err @.99", "img @.99", "MiB");
@@ -243,7 +264,11 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                     {"image_rmse_at_95", p.imageError95}, {"image_rmse_at_99", p.imageError99},
                     {"memory_mib", p.memoryMiB}});
   nlohmann::json traceJson = nlohmann::json::array();
-  for (const auto& [c, e] : trace) traceJson.push_back({{"convergence", c}, {"error", e}});
+  for (const TracePoint& t : trace)
+    traceJson.push_back({{"iteration", t.iteration},
+                         {"convergence", t.convergence},
+                         {"error", t.error},
+                         {"unshot_fraction", t.unshotFraction}});
   nlohmann::json result = {{"scene", scene.source}, {"references", references}, {"points", rows},
                            {"trace_label", traceLabel}, {"trace", traceJson},
                            {"image_cameras", pictures.cameraCount()}};

@@ -5,7 +5,7 @@
 
 namespace radmesh {
 
-double relativeRmsError(const std::vector<Patch>& patches, const std::vector<Rgb>& radiosity,
+double relativeRmsError(const Scene& scene, const std::vector<Patch>& patches, const std::vector<Rgb>& radiosity,
                         const std::vector<Rgb>& reference) {
   if (radiosity.size() != patches.size() || reference.size() != patches.size())
     throw std::invalid_argument("relativeRmsError: solution and reference must be on the same mesh");
@@ -13,9 +13,10 @@ double relativeRmsError(const std::vector<Patch>& patches, const std::vector<Rgb
   for (size_t j = 0; j < patches.size(); ++j) {
     const Rgb d = radiosity[j] - reference[j];
     error += patches[j].areaM2 * glm::dot(d, d);
-    norm += patches[j].areaM2 * glm::dot(reference[j], reference[j]);
+    const Rgb reflected = reference[j] - scene.materials[patches[j].material].emittance;
+    norm += patches[j].areaM2 * glm::dot(reflected, reflected);
   }
-  if (!(norm > 0.0)) throw std::invalid_argument("relativeRmsError: the reference is dark everywhere");
+  if (!(norm > 0.0)) throw std::invalid_argument("relativeRmsError: the reference reflects no light anywhere");
   return std::sqrt(error / norm);
 }
 

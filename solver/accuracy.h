@@ -3,12 +3,15 @@
 #include <vector>
 
 #include "solver/patch.h"
+#include "solver/scene.h"
 
 namespace radmesh {
 
-// Area-weighted relative RMS of B over patches: sqrt(sum A|B - Bref|^2 / sum A|Bref|^2), with |.|
-// the Euclidean norm over RGB. Throws std::invalid_argument if the sizes differ or Bref is all zero.
-double relativeRmsError(const std::vector<Patch>& patches, const std::vector<Rgb>& radiosity,
+// Area-weighted relative RMS of the reflected radiosity B - E over patches:
+// sqrt(sum A|B - Bref|^2 / sum A|Bref - E|^2), with |.| the Euclidean norm over RGB. Emission is
+// given, not computed: left in the norm, a bright lamp would make every error look small. Throws
+// std::invalid_argument if the sizes differ or the reference reflects nothing.
+double relativeRmsError(const Scene& scene, const std::vector<Patch>& patches, const std::vector<Rgb>& radiosity,
                         const std::vector<Rgb>& reference);
 
 }  // namespace radmesh

@@ -122,21 +122,32 @@ TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
   // convergence that the ambient term only approximates.
   EXPECT_EQ(j["references"][0]["image_rmse"].get<double>(), 0.0);
   EXPECT_LT(j["references"][1]["image_rmse"].get<double>(), 2.0);
-  // The furnace's answer is B = E/(1-rho) everywhere. The hemicube catches the whole hemisphere;
-  // the single plane loses 8.3 % of each shot at ratio 3 and 3.8 % at ratio 5, and it shows.
-  std::map<std::string, double> worst, worstPicture;
+  // The furnace's answer is B = E/(1-rho) everywhere, so B - E = E rho/(1-rho). The hemicube
+  // catches the whole hemisphere; a single plane catching c of each shot converges to
+  // B - E = E rho c/(1 - rho c): with rho = 0.5, 15.3 % low at ratio 3 (c = 0.9169) and 7.4 % at
+  // ratio 5 (c = 0.9615). At 128x128 the pixels resolve the patches, and that is what shows (to
+  // 1.5 %: near-field rows for neighbouring patches, area to area, catch a little of the miss).
+  auto expectedError = [](double c) { return 1.0 - (0.5 * c / (1.0 - 0.5 * c)) / (0.5 / 0.5); };
+  std::map<std::string, double> worstPicture;
+  int checked = 0;
   for (const auto& p : j["points"]) {
     const std::string key = p["projection"].get<std::string>() + std::to_string(p["ratio"].get<double>());
-    worst[key] = std::max(worst[key], p["error_at_99"].get<double>());
     worstPicture[key] = std::max(worstPicture[key], p["image_rmse_at_99"].get<double>());
+    if (p["resolution"] != 128) continue;
+    const double error = p["error_at_99"].get<double>();
+    if (key == "plane3.000000") {
+      EXPECT_NEAR(error, expectedError(0.9169), 0.015) << p.dump();
+    } else if (key == "plane5.000000") {
+      EXPECT_NEAR(error, expectedError(0.9615), 0.015) << p.dump();
+    } else {
+      EXPECT_LT(error, 0.01) << p.dump();
+    }
+    ++checked;
   }
+  EXPECT_EQ(checked, 6);
   // The plane's lost 8.3 % darkens the picture by levels; the hemicube's does not.
   EXPECT_LT(worstPicture["hemicube3.000000"], 2.0);
   EXPECT_GT(worstPicture["plane3.000000"], 3.0);
-  EXPECT_LT(worst["hemicube3.000000"], 0.03);
-  EXPECT_GT(worst["plane3.000000"], 0.05);
-  EXPECT_LT(worst["plane3.000000"], 0.12);
-  EXPECT_LT(worst["plane5.000000"], worst["plane3.000000"]);
 }
 
 }  // namespace
