@@ -28,10 +28,10 @@ bool drawPlot(const Plot& plot, const std::string& png) {
   const std::filesystem::path script = std::filesystem::path(png).replace_extension(".gnuplot");
   std::ofstream out(script);
   if (!out) throw std::runtime_error(script.string() + ": cannot write the plot script");
-  fmt::print(out, "set terminal pngcairo size 1000,650 noenhanced font 'DejaVu Sans,11'\n");
+  fmt::print(out, "set terminal pngcairo size 1000,700 noenhanced font 'DejaVu Sans,11'\n");
   fmt::print(out, "set output {}\nset title {}\nset xlabel {}\nset ylabel {}\n", quoted(png), quoted(plot.title),
              quoted(plot.xLabel), quoted(plot.yLabel));
-  fmt::print(out, "set grid\nset key outside right top\n");
+  fmt::print(out, "set grid\nset key below\n");
   if (plot.logX) fmt::print(out, "set logscale x\n");
   if (plot.logY) fmt::print(out, "set logscale y\n");
   fmt::print(out, "plot ");

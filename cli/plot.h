@@ -21,7 +21,7 @@ struct Plot {
   std::vector<Series> series;
 };
 
-// Writes `png` (1000x650). Throws std::runtime_error naming gnuplot's failure; returns false,
+// Writes `png` (1000x700, the key below the plot). Throws std::runtime_error naming gnuplot's failure; returns false,
 // saying why on stderr, when gnuplot is not installed.
 bool drawPlot(const Plot& plot, const std::string& png);
 
