@@ -245,7 +245,8 @@ const IterationRecord& ProgressiveSolver::step() {
 
 bool ProgressiveSolver::done() const {
   const State& s = *state_;
-  return s.exhausted || s.convergence >= s.options.until ||
+  const bool littleLeft = s.options.untilUnshot > 0.0 && s.ledger.unshot <= s.options.untilUnshot * s.ledger.emitted;
+  return s.exhausted || s.convergence >= s.options.until || littleLeft ||
          static_cast<int>(s.history.size()) >= s.options.maxIterations;
 }
 

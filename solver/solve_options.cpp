@@ -29,6 +29,9 @@ void validateOptions(const SolveOptions& o) {
   if (!std::isfinite(o.until) || o.until <= 0.0 || o.until > 1.0)
     throw OptionError("--until " + number(o.until) +
                       " is out of range: give a convergence in (0, 1], e.g. 0.95");
+  if (!std::isfinite(o.untilUnshot) || o.untilUnshot < 0.0 || o.untilUnshot >= 1.0)
+    throw OptionError("--until-unshot " + number(o.untilUnshot) +
+                      " is out of range: give a fraction of the emitted power in [0, 1), e.g. 0.01 (0: off)");
   if (o.maxIterations < 1)
     throw OptionError("--max-iterations " + std::to_string(o.maxIterations) +
                       " is out of range: give at least 1");

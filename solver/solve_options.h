@@ -20,6 +20,9 @@ struct SolveOptions {
   double ratio = 3.0;      // half-side of the single plane at height 1 (the paper's ratio 3)
   int shooters = 1;        // k: shooters per iteration, all shot from the same state
   double until = 0.95;     // stop when convergence C reaches this
+  // Also stop when the unshot power falls to this fraction of the emitted (0: off). C follows the
+  // shooter's power alone; this follows what is actually left to distribute (docs/accuracy.md).
+  double untilUnshot = 0.0;
   int maxIterations = 1'000'000;
   int threads = 0;         // 0: every core
   std::size_t formFactorCacheBytes = 0;  // 0: no form-factor row cache

@@ -116,8 +116,10 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   }
   const char* state = snapshot.done ? "converged" : snapshot.playing ? "playing" : "paused";
   if (!snapshot.mesh && snapshot.error.empty()) state = "meshing";
-  ImGui::Text("%s: iteration %d, C = %.4f (until %.3f)", state, snapshot.iteration(), snapshot.convergence(),
-              snapshot.setup.options.until);
+  const Ledger& ledger = snapshot.ledger;
+  ImGui::Text("%s: iteration %d, C = %.4f (until %.3f), unshot %.2f%%", state, snapshot.iteration(),
+              snapshot.convergence(), snapshot.setup.options.until,
+              ledger.emitted > 0.0 ? 100.0 * ledger.unshot / ledger.emitted : 0.0);
   ImGui::Text("%s back end, %s %dx%d, k = %d, %zu patches", toString(snapshot.setup.options.backend),
               toString(snapshot.setup.options.projection), snapshot.setup.options.resolution,
               snapshot.setup.options.resolution, snapshot.setup.options.shooters, snapshot.summary.patches);
@@ -283,6 +285,8 @@ void Panel::drawParameters(SolverThread& solver) {
   sliderDouble("cell m", &edited_.cellM, 0.02, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic);
   changed |= released();
   sliderDouble("until C", &o.until, 0.1, 1.0, "%.3f");
+  changed |= released();
+  sliderDouble("until unshot (0: off)", &o.untilUnshot, 0.0, 0.5, "%.3f");
   changed |= released();
   ImGui::SliderInt("host threads", &o.threads, 0, 64);
   changed |= released();

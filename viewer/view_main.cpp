@@ -28,6 +28,9 @@ int main(int argc, char** argv) {
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();
   app.add_option("--cell", args.setup.cellM, "Grid cell size for meshing, metres")->capture_default_str();
   app.add_option("--until", o.until, "Stop at this convergence C (0..1]")->capture_default_str();
+  app.add_option("--until-unshot", o.untilUnshot,
+                 "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: off)")
+      ->capture_default_str();
   app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")->capture_default_str();
   app.add_option("--size", size, "Window size WxH")->capture_default_str();
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")

@@ -120,6 +120,26 @@ TEST(ProgressiveSolver, ConvergenceFollowsThePaperAndStopsAtUntil) {
   EXPECT_GT(h.front().shotPowerW, h.back().shotPowerW);
 }
 
+// C follows the shooter's power only: in this room it passes 0.9 with much of the power unshot.
+// --until-unshot stops on what is left instead, at the first iteration that leaves at most that.
+TEST(ProgressiveSolver, UntilUnshotStopsOnThePowerLeftToShoot) {
+  const TestScene t = room();
+  SolveOptions o = optionsFor(Projection::Plane, 64);
+  o.until = 0.9;
+  ProgressiveSolver byC(t.scene, t.patches, o);
+  ASSERT_TRUE(solveChecked(byC));
+  EXPECT_GT(byC.ledger().unshot, 0.1 * byC.ledger().emitted);
+  o.until = 1.0;
+  o.untilUnshot = 0.02;
+  ProgressiveSolver byUnshot(t.scene, t.patches, o);
+  ASSERT_TRUE(solveChecked(byUnshot));
+  const auto& h = byUnshot.history();
+  ASSERT_GE(h.size(), 2u);
+  EXPECT_LE(h.back().ledger.unshot, 0.02 * h.back().ledger.emitted);
+  EXPECT_GT(h[h.size() - 2].ledger.unshot, 0.02 * h.back().ledger.emitted);
+  EXPECT_GT(h.size(), byC.history().size());
+}
+
 bool sameBits(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Rgb)) == 0;
 }

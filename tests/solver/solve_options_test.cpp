@@ -54,6 +54,12 @@ TEST(SolveOptions, RefusalsNameTheFlagAndTheRange) {
   o.until = 1.5;
   EXPECT_THAT(refusal(o), HasSubstr("--until 1.5"));
   o = {};
+  o.untilUnshot = 1.0;
+  EXPECT_THAT(refusal(o), AllOf(HasSubstr("--until-unshot 1"), HasSubstr("[0, 1)")));
+  o = {};
+  o.untilUnshot = -0.01;
+  EXPECT_THAT(refusal(o), HasSubstr("--until-unshot -0.01"));
+  o = {};
   o.maxIterations = 0;
   EXPECT_THAT(refusal(o), HasSubstr("--max-iterations 0"));
   o = {};
