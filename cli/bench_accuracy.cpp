@@ -57,9 +57,15 @@ double median(std::vector<double> v) {
 // One iteration of the traced solve: what C says beside the true error and the power still unshot.
 struct TracePoint {
   int iteration = 0;
+  double seconds = 0.0;  // CPU time so far
   double convergence = 0.0;
   double error = 0.0;           // relative RMS error of B - E against the reference
   double unshotFraction = 0.0;  // unshot power over emitted power
+};
+
+struct Trace {
+  std::string label;
+  std::vector<TracePoint> points;
 };
 
 struct Reference {
@@ -114,7 +120,8 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
     perIteration.push_back(seconds);
     elapsed += seconds;
     if (trace)
-      trace->push_back({r.iteration, r.convergence, relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity),
+      trace->push_back({r.iteration, elapsed, r.convergence,
+                        relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity),
                         r.ledger.unshot / r.ledger.emitted});
     if (p.secondsTo95 < 0 && r.convergence >= 0.95) {
       p.secondsTo95 = elapsed;
@@ -173,7 +180,7 @@ Plot errorVersusTime(const std::string& title, const std::string& errorLabel, co
 }
 
 void drawFigures(const std::string& stem, const std::string& sceneName, const std::vector<Point>& points,
-                 const std::vector<TracePoint>& trace, const std::string& traceLabel) {
+                 const std::vector<Trace>& traces) {
   drawPlot(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName, "relative RMS error of B - E",
                            points, &Point::error99),
            stem + "-error-vs-time.png");
@@ -181,15 +188,23 @@ void drawFigures(const std::string& stem, const std::string& sceneName, const st
     drawPlot(errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
                              "RMSE of the pictures, 8-bit levels", points, &Point::imageError99),
              stem + "-image-error-vs-time.png");
-  Series error{"relative RMS error of B - E", {}, "lines lw 2"}, unshot{"unshot power / emitted", {}, "lines"},
-      remaining{"1 - C (what the paper's convergence says is left)", {}, "lines"};
-  for (const TracePoint& t : trace) {
-    error.points.emplace_back(t.iteration, std::max(t.error, 1e-9));
-    unshot.points.emplace_back(t.iteration, std::max(t.unshotFraction, 1e-9));
-    remaining.points.emplace_back(t.iteration, std::max(1.0 - t.convergence, 1e-9));
+  // Each setting's true error and unshot power; 1 - C of the first, which is what C promises.
+  Plot conv{"What convergence C says against the true error: " + sceneName, "iteration", "fraction", false, true, {}};
+  for (const Trace& trace : traces) {
+    Series error{"error of B - E, " + trace.label, {}, "lines lw 2"}, unshot{"unshot / emitted, " + trace.label, {}, "lines"};
+    for (const TracePoint& t : trace.points) {
+      error.points.emplace_back(t.iteration, std::max(t.error, 1e-9));
+      unshot.points.emplace_back(t.iteration, std::max(t.unshotFraction, 1e-9));
+    }
+    conv.series.push_back(error);
+    conv.series.push_back(unshot);
   }
-  Plot conv{"What convergence C says against the true error (" + traceLabel + "): " + sceneName, "iteration",
-            "fraction", false, true, {error, unshot, remaining}};
+  if (!traces.empty()) {
+    Series remaining{"1 - C, " + traces.front().label, {}, "lines dt 2"};
+    for (const TracePoint& t : traces.front().points)
+      remaining.points.emplace_back(t.iteration, std::max(1.0 - t.convergence, 1e-9));
+    conv.series.push_back(remaining);
+  }
   drawPlot(conv, stem + "-error-vs-convergence.png");
 }
 
@@ -233,8 +248,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                           {"image_rmse", imageError}});
   }
   std::vector<Point> points;
-  std::vector<TracePoint> trace;
-  std::string traceLabel;
+  std::vector<Trace> traces;
   fmt::print("{:<9} {:>5} {:>7} {:>8} {:>10} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8}\n", "setting", "N", "cell m",
              "patches", "ms/iter", "s to .95", "s to .99", "err @.95", "err @.99", "img @.99", "MiB");
   // Coarse to fine, as a user would try them.
@@ -242,12 +256,13 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
     const std::vector<Patch>& patches = meshes[*cell];
     for (const Setting& setting : settings) {
       for (int n : args.resolutions) {
-        // One error-against-convergence trace: the paper's setting at the middle resolution.
-        const bool traced = trace.empty() && setting.projection == Projection::Plane && setting.ratio == 3.0 &&
-                            n == args.resolutions[args.resolutions.size() / 2];
-        if (traced) traceLabel = fmt::format("plane r3 {}x{}, cell {}", n, n, *cell);
+        // Error-against-convergence traces on the coarsest mesh at the middle resolution: the
+        // paper's plane, and the hemicube.
+        const bool traced = cell == cells.rbegin() && n == args.resolutions[args.resolutions.size() / 2] &&
+                            setting.label != "plane r5";
+        if (traced) traces.push_back({fmt::format("{} {}x{}, cell {}", setting.label, n, n, *cell), {}});
         const Point p = measure(scene, patches, setting, n, *cell, refs[*cell], args, pictures,
-                                traced ? &trace : nullptr);
+                                traced ? &traces.back().points : nullptr);
         fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9.3f} {:>9.3f} {:>10.4f} {:>10.4f} {:>8.2f} {:>8.2f}\n",
                    setting.label, n, *cell, p.patches, p.msPerIteration, p.secondsTo95, p.secondsTo99, p.error95,
                    p.error99, p.imageError99, p.memoryMiB);
@@ -263,21 +278,26 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                     {"seconds_to_99", p.secondsTo99}, {"error_at_95", p.error95}, {"error_at_99", p.error99},
                     {"image_rmse_at_95", p.imageError95}, {"image_rmse_at_99", p.imageError99},
                     {"memory_mib", p.memoryMiB}});
-  nlohmann::json traceJson = nlohmann::json::array();
-  for (const TracePoint& t : trace)
-    traceJson.push_back({{"iteration", t.iteration},
-                         {"convergence", t.convergence},
-                         {"error", t.error},
-                         {"unshot_fraction", t.unshotFraction}});
+  nlohmann::json tracesJson = nlohmann::json::array();
+  for (const Trace& trace : traces) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const TracePoint& t : trace.points)
+      points.push_back({{"iteration", t.iteration},
+                        {"seconds", t.seconds},
+                        {"convergence", t.convergence},
+                        {"error", t.error},
+                        {"unshot_fraction", t.unshotFraction}});
+    tracesJson.push_back({{"label", trace.label}, {"points", points}});
+  }
   nlohmann::json result = {{"scene", scene.source}, {"references", references}, {"points", rows},
-                           {"trace_label", traceLabel}, {"trace", traceJson},
+                           {"traces", tracesJson},
                            {"image_cameras", pictures.cameraCount()}};
   if (!args.outDir.empty()) {
     std::filesystem::create_directories(args.outDir);
     const std::string stem = (std::filesystem::path(args.outDir) / args.name).string();
     writeCsv(stem + ".csv", points);
     writeJson(stem + ".json", result);
-    drawFigures(stem, scene.source, points, trace, traceLabel);
+    drawFigures(stem, scene.source, points, traces);
     fmt::print("wrote {0}.csv, {0}.json and the plots {0}-*.png\n", stem);
   }
   return result;
