@@ -56,6 +56,10 @@ void run(const SolveArgs& args) {
   options = solver.options();
   fmt::print("solving {}: {} patches, {} {}x{}, k={}, until C={:.2f}\n", scene.source, solver.patches().size(),
              toString(options.projection), options.resolution, options.resolution, options.shooters, options.until);
+  const ProjectionSummary capture = solver.projectionSummary();
+  if (options.projection != Projection::Analytic)
+    fmt::print("projection catches {:.6f} of each shot (closed form), {:.6f} as the sum of its delta form factors\n",
+               capture.capturedFraction, capture.deltaFormFactorSum);
 
   Progress progress(options.until);
   const auto start = std::chrono::steady_clock::now();

@@ -69,6 +69,8 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"threads", o.threads},
           {"until", o.until},
           {"until_unshot", o.untilUnshot},
+          {"captured_fraction", solver.projectionSummary().capturedFraction},
+          {"delta_form_factor_sum", solver.projectionSummary().deltaFormFactorSum},
           {"iterations", solver.history().size()},
           {"convergence", solver.convergence()},
           {"unshot_fraction", solver.ledger().emitted > 0.0 ? solver.ledger().unshot / solver.ledger().emitted : 0.0},

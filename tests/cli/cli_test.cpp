@@ -71,6 +71,11 @@ TEST(Cli, SolveWritesStatsWithTheDocumentedKeysAndABalancedLedger) {
                            l["not_captured"].get<double>() + l["escaped"].get<double>();
   EXPECT_NEAR(accounted, l["emitted"].get<double>(), 1e-9 * l["emitted"].get<double>());
   EXPECT_NEAR(l["emitted"].get<double>(), 1.41513, 1e-4);  // the Cornell light: area x E
+  // The single plane of half-side 3 catches 91.69 % of a diffuse shot, and says so both ways.
+  EXPECT_NEAR(j["captured_fraction"].get<double>(), 0.9169, 1e-4);
+  EXPECT_NEAR(j["delta_form_factor_sum"].get<double>(), j["captured_fraction"].get<double>(), 1e-3);
+  EXPECT_NE(run.output.find("projection catches 0.91688"), std::string::npos) << run.output;
+  EXPECT_NEAR(j["unshot_fraction"].get<double>(), l["unshot"].get<double>() / l["emitted"].get<double>(), 1e-12);
 }
 
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
@@ -124,9 +129,9 @@ TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
   EXPECT_LT(j["references"][1]["image_rmse"].get<double>(), 2.0);
   // The furnace's answer is B = E/(1-rho) everywhere, so B - E = E rho/(1-rho). The hemicube
   // catches the whole hemisphere; a single plane catching c of each shot converges to
-  // B - E = E rho c/(1 - rho c): with rho = 0.5, 15.3 % low at ratio 3 (c = 0.9169) and 7.4 % at
-  // ratio 5 (c = 0.9615). At 128x128 the pixels resolve the patches, and that is what shows (to
-  // 1.5 %: near-field rows for neighbouring patches, area to area, catch a little of the miss).
+  // B - E = E rho c/(1 - rho c): with rho = 0.5, 15.3 % low at ratio 3 (c = 0.9169) and 6.1 % at
+  // ratio 5 (c = 0.9683, the square plane's closed form). At 128x128 the pixels resolve the
+  // patches, and that is what shows.
   auto expectedError = [](double c) { return 1.0 - (0.5 * c / (1.0 - 0.5 * c)) / (0.5 / 0.5); };
   std::map<std::string, double> worstPicture;
   int checked = 0;
@@ -136,9 +141,9 @@ TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
     if (p["resolution"] != 128) continue;
     const double error = p["error_at_99"].get<double>();
     if (key == "plane3.000000") {
-      EXPECT_NEAR(error, expectedError(0.9169), 0.015) << p.dump();
+      EXPECT_NEAR(error, expectedError(0.9169), 0.01) << p.dump();
     } else if (key == "plane5.000000") {
-      EXPECT_NEAR(error, expectedError(0.9615), 0.015) << p.dump();
+      EXPECT_NEAR(error, expectedError(0.9683), 0.01) << p.dump();
     } else {
       EXPECT_LT(error, 0.01) << p.dump();
     }
