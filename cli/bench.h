@@ -29,6 +29,7 @@ struct AccuracyArgs {
   std::vector<int> resolutions{32, 64, 128, 256, 512, 1024};
   int referenceResolution = 1024;
   double referenceUntil = 0.999;
+  double referenceUnshot = 0.001;  // and at most this fraction of the emitted power unshot
   int maxIterations = 20000;
   int threads = 0;
 };

@@ -75,25 +75,40 @@ struct Reference {
   double seconds = 0.0;
 };
 
+double unshotFraction(const ProgressiveSolver& solver) { return solver.ledger().unshot / solver.ledger().emitted; }
+
+// Converged as far as the reference: C, which follows the shooter alone, can pass 0.999 with 5 %
+// of the power unshot, so the power left must be small too.
+bool asFarAsTheReference(const ProgressiveSolver& solver, const AccuracyArgs& args) {
+  return solver.convergence() >= args.referenceUntil && unshotFraction(solver) <= args.referenceUnshot;
+}
+
 // Convex enclosure: analytic form factors are exact. Otherwise the finest hemicube converged far.
 Reference solveReference(const Scene& scene, const std::vector<Patch>& patches, const AccuracyArgs& args) {
   SolveOptions o;
   o.threads = args.threads;
-  o.until = args.referenceUntil;
+  o.until = 1.0;  // asFarAsTheReference decides
   o.maxIterations = args.maxIterations * 10;
   const bool convex = isConvexEnclosure(scene);
   o.projection = convex ? Projection::Analytic : Projection::Hemicube;
   o.resolution = args.referenceResolution;
   const auto start = std::chrono::steady_clock::now();
   ProgressiveSolver solver(scene, patches, o);
-  while (!solver.done()) solver.step();
+  while (!solver.done() && !asFarAsTheReference(solver, args)) solver.step();
+  if (!asFarAsTheReference(solver, args))
+    throw std::runtime_error(fmt::format(
+        "the reference stopped at C = {:.5f} with {:.3f} % unshot after {} iterations, short of C = {} and {} % "
+        "unshot: the errors against it could not be trusted (raise --max-iterations or --reference-unshot)",
+        solver.convergence(), 100.0 * unshotFraction(solver), solver.history().size(), args.referenceUntil,
+        100.0 * args.referenceUnshot));
   Reference ref;
   ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ref.radiosity = solver.radiosity();
   ref.displayRadiosity = solver.displayRadiosity();
-  ref.how = convex ? fmt::format("analytic form factors to C={}", o.until)
-                   : fmt::format("hemicube {}x{} to C={} ({} iterations)", o.resolution, o.resolution, o.until,
-                                 solver.history().size());
+  const std::string reached = fmt::format("C = {:.5f}, {:.3f} % unshot, {} iterations", solver.convergence(),
+                                          100.0 * unshotFraction(solver), solver.history().size());
+  ref.how = convex ? "analytic form factors to " + reached
+                   : fmt::format("hemicube {}x{} to {}", o.resolution, o.resolution, reached);
   return ref;
 }
 
@@ -104,7 +119,7 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
   o.projection = setting.projection;
   o.ratio = setting.ratio;
   o.resolution = n;
-  o.until = trace ? args.referenceUntil : 0.99;  // the trace follows C as far as the reference
+  o.until = trace ? 1.0 : 0.99;  // a trace goes as far as the reference
   o.threads = 1;  // timed on one core, by its CPU time (below)
   o.maxIterations = args.maxIterations;
   ProgressiveSolver solver(scene, patches, o);
@@ -113,7 +128,7 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
   std::vector<double> perIteration;
   size_t iterationsTo99 = 0;
   double elapsed = 0.0;
-  while (!solver.done()) {
+  while (!solver.done() && !(trace && asFarAsTheReference(solver, args))) {
     const double before = threadCpuSeconds();
     const IterationRecord& r = solver.step();
     const double seconds = threadCpuSeconds() - before;
@@ -216,6 +231,7 @@ AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
   args.resolutions = {32, 64, 128};
   args.referenceResolution = 256;
   args.referenceUntil = 0.995;
+  args.referenceUnshot = 0.005;
   return args;
 }
 
@@ -225,6 +241,8 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
       {"plane r3", Projection::Plane, 3.0}, {"plane r5", Projection::Plane, 5.0}, {"hemicube", Projection::Hemicube, 3.0}};
   if (args.cells.empty() || args.resolutions.empty())
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
+  if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
+    throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
   // The finest mesh's reference is solved first: its pictures are the reference across meshes.
   std::vector<double> cells = args.cells;
   std::sort(cells.begin(), cells.end());

@@ -42,7 +42,10 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--cells", args->cells, "Cell sizes, metres")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
   cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();
-  cmd->add_option("--reference-until", args->referenceUntil, "Convergence of the reference")->capture_default_str();
+  cmd->add_option("--reference-until", args->referenceUntil, "Convergence C of the reference")->capture_default_str();
+  cmd->add_option("--reference-unshot", args->referenceUnshot,
+                  "And the most unshot power the reference may leave, as a fraction of the emitted")
+      ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")->capture_default_str();
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, cmd] {
