@@ -117,9 +117,14 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   const char* state = snapshot.done ? "converged" : snapshot.playing ? "playing" : "paused";
   if (!snapshot.mesh && snapshot.error.empty()) state = "meshing";
   const Ledger& ledger = snapshot.ledger;
-  ImGui::Text("%s: iteration %d, C = %.4f (until %.3f), unshot %.2f%%", state, snapshot.iteration(),
-              snapshot.convergence(), snapshot.setup.options.until,
-              ledger.emitted > 0.0 ? 100.0 * ledger.unshot / ledger.emitted : 0.0);
+  ImGui::Text("%s: iteration %d, C = %.4f (until %.3f)", state, snapshot.iteration(), snapshot.convergence(),
+              snapshot.setup.options.until);
+  const double unshotPercent = ledger.emitted > 0.0 ? 100.0 * ledger.unshot / ledger.emitted : 0.0;
+  if (snapshot.setup.options.untilUnshot > 0.0)
+    ImGui::Text("unshot power: %.2f%% of the emitted (until %.2f%%)", unshotPercent,
+                100.0 * snapshot.setup.options.untilUnshot);
+  else
+    ImGui::Text("unshot power: %.2f%% of the emitted", unshotPercent);
   ImGui::Text("%s back end, %s %dx%d, k = %d, %zu patches", toString(snapshot.setup.options.backend),
               toString(snapshot.setup.options.projection), snapshot.setup.options.resolution,
               snapshot.setup.options.resolution, snapshot.setup.options.shooters, snapshot.summary.patches);
