@@ -75,12 +75,10 @@ struct Reference {
   double seconds = 0.0;
 };
 
-double unshotFraction(const ProgressiveSolver& solver) { return solver.ledger().unshot / solver.ledger().emitted; }
-
 // Converged as far as the reference: C, which follows the shooter alone, can pass 0.999 with 5 %
 // of the power unshot, so the power left must be small too.
 bool asFarAsTheReference(const ProgressiveSolver& solver, const AccuracyArgs& args) {
-  return solver.convergence() >= args.referenceUntil && unshotFraction(solver) <= args.referenceUnshot;
+  return solver.convergence() >= args.referenceUntil && solver.ledger().unshotFraction() <= args.referenceUnshot;
 }
 
 // Convex enclosure: analytic form factors are exact. Otherwise the finest hemicube converged far.
@@ -99,14 +97,14 @@ Reference solveReference(const Scene& scene, const std::vector<Patch>& patches, 
     throw std::runtime_error(fmt::format(
         "the reference stopped at C = {:.5f} with {:.3f} % unshot after {} iterations, short of C = {} and {} % "
         "unshot: the errors against it could not be trusted (raise --max-iterations or --reference-unshot)",
-        solver.convergence(), 100.0 * unshotFraction(solver), solver.history().size(), args.referenceUntil,
+        solver.convergence(), 100.0 * solver.ledger().unshotFraction(), solver.history().size(), args.referenceUntil,
         100.0 * args.referenceUnshot));
   Reference ref;
   ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ref.radiosity = solver.radiosity();
   ref.displayRadiosity = solver.displayRadiosity();
   const std::string reached = fmt::format("C = {:.5f}, {:.3f} % unshot, {} iterations", solver.convergence(),
-                                          100.0 * unshotFraction(solver), solver.history().size());
+                                          100.0 * solver.ledger().unshotFraction(), solver.history().size());
   ref.how = convex ? "analytic form factors to " + reached
                    : fmt::format("hemicube {}x{} to {}", o.resolution, o.resolution, reached);
   return ref;
@@ -137,7 +135,7 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
     if (trace)
       trace->push_back({r.iteration, elapsed, r.convergence,
                         relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity),
-                        r.ledger.unshot / r.ledger.emitted});
+                        r.ledger.unshotFraction()});
     if (p.secondsTo95 < 0 && r.convergence >= 0.95) {
       p.secondsTo95 = elapsed;
       p.error95 = relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity);

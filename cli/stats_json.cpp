@@ -73,7 +73,7 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"delta_form_factor_sum", solver.projectionSummary().deltaFormFactorSum},
           {"iterations", solver.history().size()},
           {"convergence", solver.convergence()},
-          {"unshot_fraction", solver.ledger().emitted > 0.0 ? solver.ledger().unshot / solver.ledger().emitted : 0.0},
+          {"unshot_fraction", solver.ledger().unshotFraction()},
           {"seconds", seconds},
           {"per_iteration", std::move(perIteration)},
           {"ledger", ledgerJson(solver.ledger())},

@@ -20,6 +20,8 @@ double Ledger::imbalance() const {
   return emitted > 0.0 ? std::abs(emitted - accounted) / emitted : std::abs(accounted);
 }
 
+double Ledger::unshotFraction() const { return emitted > 0.0 ? unshot / emitted : 0.0; }
+
 namespace {
 
 double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
@@ -245,7 +247,7 @@ const IterationRecord& ProgressiveSolver::step() {
 
 bool ProgressiveSolver::done() const {
   const State& s = *state_;
-  const bool littleLeft = s.options.untilUnshot > 0.0 && s.ledger.unshot <= s.options.untilUnshot * s.ledger.emitted;
+  const bool littleLeft = s.options.untilUnshot > 0.0 && s.ledger.unshotFraction() <= s.options.untilUnshot;
   return s.exhausted || s.convergence >= s.options.until || littleLeft ||
          static_cast<int>(s.history.size()) >= s.options.maxIterations;
 }

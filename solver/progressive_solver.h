@@ -23,6 +23,7 @@ struct Ledger {
   double escaped = 0.0;      // captured but hit no patch: light leaving an open scene
   double absorbedByBackFaces = 0.0;  // part of absorbed: reached the unlit back of a one-sided patch
   double imbalance() const;  // |emitted - (absorbed + unshot + notCaptured + escaped)| / emitted
+  double unshotFraction() const;  // unshot / emitted: what is left to distribute (0 if nothing emits)
 };
 
 struct IterationRecord {

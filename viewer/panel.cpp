@@ -116,10 +116,9 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   }
   const char* state = snapshot.done ? "converged" : snapshot.playing ? "playing" : "paused";
   if (!snapshot.mesh && snapshot.error.empty()) state = "meshing";
-  const Ledger& ledger = snapshot.ledger;
   ImGui::Text("%s: iteration %d, C = %.4f (until %.3f)", state, snapshot.iteration(), snapshot.convergence(),
               snapshot.setup.options.until);
-  const double unshotPercent = ledger.emitted > 0.0 ? 100.0 * ledger.unshot / ledger.emitted : 0.0;
+  const double unshotPercent = 100.0 * snapshot.ledger.unshotFraction();
   if (snapshot.setup.options.untilUnshot > 0.0)
     ImGui::Text("unshot power: %.2f%% of the emitted (until %.2f%%)", unshotPercent,
                 100.0 * snapshot.setup.options.untilUnshot);
