@@ -11,6 +11,8 @@ struct BenchSolveArgs {
   double cellM = 0.381;
   std::vector<std::string> projections{"plane", "hemicube"};
   std::vector<int> resolutions{64, 128, 256, 512};
+  std::vector<int> shooters{1};    // k per iteration
+  std::string backend = "native";
   double until = 0.95;
   int maxIterations = 5000;
   int threads = 1;

@@ -20,6 +20,8 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--cell", args->cellM, "Grid cell size, metres")->capture_default_str();
   cmd->add_option("--projections", args->projections, "Projections to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N to time")->delimiter(',')->capture_default_str();
+  cmd->add_option("--shooters", args->shooters, "Shooters k per iteration to time")->delimiter(',')->capture_default_str();
+  cmd->add_option("--backend", args->backend, "native or mesh (emulated MP-1)")->capture_default_str();
   cmd->add_option("--until", args->until, "Convergence to time to")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per run")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();

@@ -26,6 +26,8 @@ struct Timing {
   int iterationsToUntil = 0;
   double secondsToUntil = 0.0;
   bool reached = false;
+  double unshotFraction = 0.0;            // left at the end
+  double emulatedSecondsPerIteration = 0.0;  // mesh back end: mean emulated MP-1 time
 };
 
 // One thread: the solve's own CPU time. More: wall time, the only clock that sees every thread.
@@ -41,12 +43,16 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
   const double start = now(options.threads);
   ProgressiveSolver solver(scene, patches, options);
   std::vector<double> perIteration;
+  double emulated = 0.0;
   while (!solver.done()) {
     const double before = now(options.threads);
-    solver.step();
+    const IterationRecord& r = solver.step();
     perIteration.push_back(now(options.threads) - before);
+    if (r.meshShot) emulated += r.meshShot->emulatedSeconds;
   }
   Timing t;
+  t.unshotFraction = solver.ledger().unshotFraction();
+  t.emulatedSecondsPerIteration = perIteration.empty() ? 0.0 : emulated / double(perIteration.size());
   t.secondsToUntil = now(options.threads) - start;
   t.msPerIteration = 1e3 * median(perIteration);
   t.iterationsToUntil = static_cast<int>(perIteration.size());
@@ -63,26 +69,35 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
   fmt::print("scene {}: {} patches, threads {}, until C={:.2f}; times are {}\n", scene.source, patches.size(),
              args.threads, args.until,
              args.threads == 1 ? "the solving thread's CPU time" : "wall time");
-  fmt::print("{:<10} {:>6} {:>14} {:>12} {:>12} {:>10}\n", "projection", "N", "ms/iteration", "iterations", "s to C",
-             "it/s");
+  const Backend backend = parseBackend(args.backend);
+  fmt::print("{:<10} {:>6} {:>4} {:>14} {:>12} {:>12} {:>10} {:>8} {:>12}\n", "projection", "N", "k", "ms/iteration",
+             "iterations", "s to C", "it/s", "unshot", "MP-1 s/it");
   for (const std::string& projection : args.projections) {
     for (int n : args.resolutions) {
-      SolveOptions o;
-      o.projection = parseProjection(projection);
-      o.resolution = n;
-      o.until = args.until;
-      o.threads = args.threads;
-      validateOptions(o);
-      const Timing t = timeSolve(scene, patches, o, args.maxIterations);
-      fmt::print("{:<10} {:>6} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f}\n", projection, n, t.msPerIteration,
-                 t.iterationsToUntil, t.reached ? " " : "+", t.secondsToUntil,
-                 t.msPerIteration > 0 ? 1e3 / t.msPerIteration : 0.0);
-      rows.push_back({{"projection", projection},
-                      {"resolution", n},
-                      {"ms_per_iteration", t.msPerIteration},
-                      {"iterations_to_until", t.iterationsToUntil},
-                      {"seconds_to_until", t.secondsToUntil},
-                      {"reached_until", t.reached}});
+      for (int k : args.shooters) {
+        SolveOptions o;
+        o.backend = backend;
+        o.projection = parseProjection(projection);
+        o.resolution = n;
+        o.shooters = k;
+        o.until = args.until;
+        o.threads = args.threads;
+        validateOptions(o);
+        const Timing t = timeSolve(scene, patches, o, args.maxIterations);
+        fmt::print("{:<10} {:>6} {:>4} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f} {:>7.2f}% {:>12.4f}\n", projection, n, k,
+                   t.msPerIteration, t.iterationsToUntil, t.reached ? " " : "+", t.secondsToUntil,
+                   t.msPerIteration > 0 ? 1e3 / t.msPerIteration : 0.0, 100.0 * t.unshotFraction,
+                   t.emulatedSecondsPerIteration);
+        rows.push_back({{"projection", projection},
+                        {"resolution", n},
+                        {"shooters", k},
+                        {"ms_per_iteration", t.msPerIteration},
+                        {"iterations_to_until", t.iterationsToUntil},
+                        {"seconds_to_until", t.secondsToUntil},
+                        {"reached_until", t.reached},
+                        {"unshot_fraction", t.unshotFraction},
+                        {"emulated_seconds_per_iteration", t.emulatedSecondsPerIteration}});
+      }
     }
   }
   nlohmann::json scaling = nlohmann::json::array();
@@ -103,7 +118,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
       scaling.push_back({{"cell", cell}, {"patches", mesh.size()}, {"ms_per_iteration", t.msPerIteration}});
     }
   }
-  return {{"scene", scene.source}, {"patches", patches.size()}, {"threads", args.threads},
+  return {{"scene", scene.source}, {"patches", patches.size()}, {"backend", args.backend}, {"threads", args.threads},
           {"clock", args.threads == 1 ? "thread cpu" : "wall"}, {"until", args.until},   {"rows", rows},               {"scaling", scaling}};
 }
 
