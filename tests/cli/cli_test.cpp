@@ -267,3 +267,30 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
 
 }  // namespace
 }  // namespace radmesh
+
+namespace radmesh {
+namespace {
+
+// k shooters per iteration: half the iterations for k = 2, and the emulated MP-1 time only on the mesh.
+TEST(Cli, BenchSolveTimesEveryShooterCountOnEitherBackEnd) {
+  for (const std::string backend : {"native", "mesh"}) {
+    const std::string json = tempPath("bench-" + backend + ".json");
+    const CommandRun run = radmesh("bench solve cornell --cell 0.1 --backend " + backend +
+                                   " --projections plane --resolutions 64 --shooters 1,2 --until 0.9 --json " + json);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(json);
+    const auto j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["rows"].size(), 2u) << j.dump();
+    EXPECT_EQ(j["rows"][0]["shooters"], 1);
+    EXPECT_EQ(j["rows"][1]["shooters"], 2);
+    const int one = j["rows"][0]["iterations_to_until"], two = j["rows"][1]["iterations_to_until"];
+    EXPECT_LE(two, (one + 1) / 2 + 1) << j.dump();
+    for (const auto& row : j["rows"]) {
+      EXPECT_GT(row["ms_per_iteration"].get<double>(), 0.0);
+      EXPECT_EQ(row["emulated_seconds_per_iteration"].get<double>() > 0.0, backend == "mesh") << row.dump();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace radmesh
