@@ -10,7 +10,7 @@
 #include <map>
 
 #include "cli/bench.h"
-#include "cli/cpu_clock.h"
+#include "cli/bench_timing.h"
 #include "cli/image_error.h"
 #include "cli/plot.h"
 #include "cli/stats_json.h"
@@ -47,11 +47,6 @@ struct Point {
 double projectionMiB(Projection p, int n) {
   const double pixels = p == Projection::Hemicube ? 3.0 * n * n : p == Projection::Plane ? double(n) * n : 0.0;
   return pixels * 20.0 / (1024.0 * 1024.0);
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 // One iteration of the traced solve: what C says beside the true error and the power still unshot.
@@ -153,6 +148,9 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
   p.msPerIteration = 1e3 * median(perIteration);
   return p;
 }
+
+// A figure, or a dash where it was not measured (not reached within the cap, or no viewer to draw).
+std::string shown(double value, int decimals) { return value < 0.0 ? "-" : fmt::format("{:.{}f}", value, decimals); }
 
 // Points no other point beats in both time and error, in order of time.
 std::vector<std::pair<double, double>> paretoFront(std::vector<std::pair<double, double>> points) {
@@ -279,9 +277,9 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
         if (traced) traces.push_back({fmt::format("{} {}x{}, cell {}", setting.label, n, n, *cell), {}});
         const Point p = measure(scene, patches, setting, n, *cell, refs[*cell], args, pictures,
                                 traced ? &traces.back().points : nullptr);
-        fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9.3f} {:>9.3f} {:>10.4f} {:>10.4f} {:>8.2f} {:>8.2f}\n",
-                   setting.label, n, *cell, p.patches, p.msPerIteration, p.secondsTo95, p.secondsTo99, p.error95,
-                   p.error99, p.imageError99, p.memoryMiB);
+        fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8.2f}\n", setting.label, n,
+                   *cell, p.patches, p.msPerIteration, shown(p.secondsTo95, 3), shown(p.secondsTo99, 3),
+                   shown(p.error95, 4), shown(p.error99, 4), shown(p.imageError99, 2), p.memoryMiB);
         points.push_back(p);
       }
     }

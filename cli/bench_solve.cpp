@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/bench.h"
-#include "cli/cpu_clock.h"
+#include "cli/bench_timing.h"
 #include "cli/stats_json.h"
 #include "solver/meshing.h"
 #include "solver/progressive_solver.h"
@@ -15,11 +15,6 @@
 namespace radmesh::cli {
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 struct Timing {
   double msPerIteration = 0.0;  // median over the measured iterations

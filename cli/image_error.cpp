@@ -25,14 +25,16 @@ struct ImageErrorProbe::State {
   DisplayMesh display;
   std::unique_ptr<OffscreenRenderer> renderer;
 
-  std::vector<Image> render(const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
+  // `fixExposure`: take this frame's automatic exposure for every picture from now on.
+  std::vector<Image> render(const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity,
+                            bool fixExposure) {
     if (mesh != &patches || !renderer) {
       display = buildDisplayMesh(patches);
       renderer = std::make_unique<OffscreenRenderer>(display, kSize);
       mesh = &patches;
     }
     const std::vector<Rgb> vertexB = vertexRadiosity(display, displayRadiosity);
-    if (reference.empty()) exposure = autoExposure(vertexB);
+    if (fixExposure) exposure = autoExposure(vertexB);
     std::vector<Image> images;
     for (const RenderView& view : views) images.push_back(renderer->render(vertexB, view, {exposure, {}}));
     return images;
@@ -56,15 +58,15 @@ ImageErrorProbe::ImageErrorProbe(const Scene& scene) : state_(std::make_unique<S
 }
 
 bool ImageErrorProbe::available() { return true; }
+int ImageErrorProbe::cameraCount() const { return static_cast<int>(state_->views.size()); }
 
 void ImageErrorProbe::setReference(const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
-  state_->reference.clear();
-  state_->reference = state_->render(patches, displayRadiosity);
+  state_->reference = state_->render(patches, displayRadiosity, true);
 }
 
 double ImageErrorProbe::error(const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
   if (state_->reference.empty()) throw std::logic_error("ImageErrorProbe: setReference comes first");
-  const std::vector<Image> images = state_->render(patches, displayRadiosity);
+  const std::vector<Image> images = state_->render(patches, displayRadiosity, false);
   double sum = 0.0;
   for (size_t k = 0; k < images.size(); ++k) sum += imageRmse(images[k], state_->reference[k]);
   return sum / static_cast<double>(images.size());
@@ -75,12 +77,12 @@ double ImageErrorProbe::error(const std::vector<Patch>& patches, const std::vect
 struct ImageErrorProbe::State {};
 ImageErrorProbe::ImageErrorProbe(const Scene&) {}
 bool ImageErrorProbe::available() { return false; }
+int ImageErrorProbe::cameraCount() const { return 0; }
 void ImageErrorProbe::setReference(const std::vector<Patch>&, const std::vector<Rgb>&) {}
 double ImageErrorProbe::error(const std::vector<Patch>&, const std::vector<Rgb>&) { return -1.0; }
 
 #endif
 
 ImageErrorProbe::~ImageErrorProbe() = default;
-int ImageErrorProbe::cameraCount() const { return state_ ? static_cast<int>(state_->views.size()) : 0; }
 
 }  // namespace radmesh::cli

@@ -56,6 +56,7 @@ nlohmann::json iterationJson(const IterationRecord& r) {
 
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
   const SolveOptions& o = solver.options();
+  const ProjectionSummary capture = solver.projectionSummary();
   nlohmann::json perIteration = nlohmann::json::array();
   for (const IterationRecord& r : solver.history()) perIteration.push_back(iterationJson(r));
   return {{"scene", scene},
@@ -69,8 +70,8 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"threads", o.threads},
           {"until", o.until},
           {"until_unshot", o.untilUnshot},
-          {"captured_fraction", solver.projectionSummary().capturedFraction},
-          {"delta_form_factor_sum", solver.projectionSummary().deltaFormFactorSum},
+          {"captured_fraction", capture.capturedFraction},
+          {"delta_form_factor_sum", capture.deltaFormFactorSum},
           {"iterations", solver.history().size()},
           {"convergence", solver.convergence()},
           {"unshot_fraction", solver.ledger().unshotFraction()},

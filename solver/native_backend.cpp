@@ -105,7 +105,7 @@ FormFactorRow NativeBackend::analyticRow(int shooter) {
       const LocalPolygon local = toShooterFrame(from, patches_[j]);
       if (std::abs(local.planeOffset) <= nearDepth_) continue;  // coplanar or edge-on
       seenFromFront_[j] = local.seenFromFront();
-      formFactors_[j] = pointToPolygonFormFactor({local.vertices.data(), static_cast<size_t>(local.vertexCount)});
+      formFactors_[j] = pointToPolygonFormFactor(local.corners());
     }
   });
   FormFactorRow row = assembleRow(shooter, 1.0);

@@ -108,7 +108,7 @@ void correctNearField(FormFactorRow& row, const std::vector<Patch>& patches, con
     next = std::lower_bound(next, nearReceivers.end(), j);
     if (next == nearReceivers.end() || *next != j) continue;
     const LocalPolygon local = toShooterFrame(shooter, patches[j]);
-    const double point = pointToPolygonFormFactor({local.vertices.data(), static_cast<size_t>(local.vertexCount)});
+    const double point = pointToPolygonFormFactor(local.corners());
     const double area = areaToAreaFormFactor(shooter, patches[j]);
     if (!(point > 0.0) || !(area > 0.0)) continue;  // edge-on to the centroid: nothing to scale
     row.formFactors[r] = std::min(1.0, row.formFactors[r] / point) * area;

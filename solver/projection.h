@@ -3,6 +3,7 @@
 // shooter's frame, clipped against the near plane of a projection face and mapped onto that
 // face's pixels. Shared by the native and mesh back ends so both see identical polygons.
 #include <array>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -35,6 +36,7 @@ struct LocalPolygon {
   Vec3 centroid{0.0};
 
   bool seenFromFront() const { return planeOffset < 0.0; }
+  std::span<const Vec3> corners() const { return {vertices.data(), static_cast<size_t>(vertexCount)}; }
 };
 
 LocalPolygon toShooterFrame(const Patch& shooter, const Patch& patch);

@@ -34,7 +34,7 @@ double visibleFormFactor(const ProjectedShot& shot, int j) {
           kDepthTieTolerance * std::max(std::abs(ownerInverseDepth), inverseDepth))
         return 0.0;
     }
-    return pointToPolygonFormFactor({local.vertices.data(), static_cast<size_t>(local.vertexCount)});
+    return pointToPolygonFormFactor(local.corners());
   }
   return 0.0;  // its centroid is outside the projection surface
 }
