@@ -1,13 +1,13 @@
 // What each skip of the effects plan saves: every skip against --effects all on a scene built for
-// it, side by side (solver/effects_plan.h). One benchmark = meshing excluded, one whole solve.
+// it, side by side (solver/radiosity/effects_plan.h). One benchmark = meshing excluded, one whole solve.
 // Run: build/bench/effects_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include <functional>
 #include <string>
 
-#include "solver/meshing.h"
-#include "solver/progressive_solver.h"
+#include "solver/meshing/meshing.h"
+#include "solver/radiosity/progressive_solver.h"
 
 namespace radmesh {
 namespace {

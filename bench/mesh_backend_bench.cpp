@@ -13,10 +13,10 @@
 #include <string>
 #include <utility>
 
-#include "solver/builtin_scenes.h"
-#include "solver/mesh_backend.h"
-#include "solver/meshing.h"
-#include "solver/native_backend.h"
+#include "solver/io/builtin_scenes.h"
+#include "solver/backends/mesh/mesh_backend.h"
+#include "solver/meshing/meshing.h"
+#include "solver/backends/native/native_backend.h"
 
 namespace radmesh {
 namespace {

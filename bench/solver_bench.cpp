@@ -6,9 +6,9 @@
 #include <map>
 #include <memory>
 
-#include "solver/builtin_scenes.h"
-#include "solver/meshing.h"
-#include "solver/progressive_solver.h"
+#include "solver/io/builtin_scenes.h"
+#include "solver/meshing/meshing.h"
+#include "solver/radiosity/progressive_solver.h"
 
 namespace radmesh {
 namespace {

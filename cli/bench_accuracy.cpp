@@ -14,12 +14,12 @@
 #include "cli/image_error.h"
 #include "cli/plot.h"
 #include "cli/stats_json.h"
-#include "solver/accuracy.h"
-#include "solver/effects_plan.h"
-#include "solver/meshing.h"
-#include "solver/progressive_solver.h"
-#include "solver/scene_error.h"
-#include "solver/scene_loader.h"
+#include "solver/radiosity/accuracy.h"
+#include "solver/radiosity/effects_plan.h"
+#include "solver/meshing/meshing.h"
+#include "solver/radiosity/progressive_solver.h"
+#include "solver/scene/scene_error.h"
+#include "solver/io/scene_loader.h"
 
 namespace radmesh::cli {
 

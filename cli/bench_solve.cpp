@@ -8,9 +8,9 @@
 #include "cli/bench.h"
 #include "cli/bench_timing.h"
 #include "cli/stats_json.h"
-#include "solver/meshing.h"
-#include "solver/progressive_solver.h"
-#include "solver/scene_loader.h"
+#include "solver/meshing/meshing.h"
+#include "solver/radiosity/progressive_solver.h"
+#include "solver/io/scene_loader.h"
 
 namespace radmesh::cli {
 

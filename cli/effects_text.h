@@ -1,6 +1,6 @@
 #pragma once
 // The effects plan as `radmesh info` and `radmesh solve` print it: one line per effect.
-#include "solver/effects_plan.h"
+#include "solver/radiosity/effects_plan.h"
 
 namespace radmesh::cli {
 

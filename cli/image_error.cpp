@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #if RADMESH_HAS_VIEWER
-#include "solver/display_radiosity.h"
+#include "solver/bake/display_radiosity.h"
 #include "viewer/camera.h"
 #include "viewer/exposure.h"
 #include "viewer/offscreen_render.h"

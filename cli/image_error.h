@@ -4,8 +4,8 @@
 #include <memory>
 #include <vector>
 
-#include "solver/patch.h"
-#include "solver/scene.h"
+#include "solver/meshing/patch.h"
+#include "solver/scene/scene.h"
 
 namespace radmesh::cli {
 

@@ -6,10 +6,10 @@
 #include "cli/commands.h"
 #include "cli/stats_json.h"
 #include "cli/effects_text.h"
-#include "solver/effects_plan.h"
-#include "solver/meshing.h"
-#include "solver/scene_loader.h"
-#include "solver/scene_summary.h"
+#include "solver/radiosity/effects_plan.h"
+#include "solver/meshing/meshing.h"
+#include "solver/io/scene_loader.h"
+#include "solver/meshing/scene_summary.h"
 
 namespace radmesh::cli {
 

@@ -5,7 +5,7 @@
 #include <exception>
 
 #include "cli/commands.h"
-#include "solver/scene_error.h"
+#include "solver/scene/scene_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"radmesh: view-independent diffuse global illumination (Varshney & Prins)"};

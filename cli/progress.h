@@ -2,7 +2,7 @@
 // Progress of a long solve: one line per iteration, or a single redrawn bar on a terminal.
 #include <cstdio>
 
-#include "solver/progressive_solver.h"
+#include "solver/radiosity/progressive_solver.h"
 
 namespace radmesh::cli {
 

@@ -12,14 +12,14 @@
 #include <string>
 
 #include "cli/commands.h"
-#include "solver/scene_error.h"
+#include "solver/scene/scene_error.h"
 
 #if RADMESH_HAS_VIEWER
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
-#include "solver/display_radiosity.h"
-#include "solver/meshing.h"
-#include "solver/scene_loader.h"
+#include "solver/bake/display_radiosity.h"
+#include "solver/meshing/meshing.h"
+#include "solver/io/scene_loader.h"
 #include "viewer/bake_reader.h"
 #include "viewer/camera.h"
 #include "viewer/offscreen_render.h"

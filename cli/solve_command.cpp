@@ -10,10 +10,10 @@
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
-#include "solver/display_radiosity.h"
-#include "solver/gltf_export.h"
-#include "solver/meshing.h"
-#include "solver/scene_loader.h"
+#include "solver/bake/display_radiosity.h"
+#include "solver/bake/gltf_export.h"
+#include "solver/meshing/meshing.h"
+#include "solver/io/scene_loader.h"
 
 namespace radmesh::cli {
 

@@ -1,8 +1,8 @@
 #include "cli/solve_flags.h"
 
-#include "solver/meshing.h"
-#include "solver/scene_error.h"
-#include "solver/scene_loader.h"
+#include "solver/meshing/meshing.h"
+#include "solver/scene/scene_error.h"
+#include "solver/io/scene_loader.h"
 
 namespace radmesh::cli {
 

@@ -3,7 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "solver/solve_options.h"
+#include "solver/scene/solve_options.h"
 
 namespace radmesh::cli {
 

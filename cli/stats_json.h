@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "solver/effects_plan.h"
-#include "solver/progressive_solver.h"
+#include "solver/radiosity/effects_plan.h"
+#include "solver/radiosity/progressive_solver.h"
 
 namespace radmesh::cli {
 

@@ -2,9 +2,9 @@
 
 #include <tiny_gltf.h>
 
-#include "solver/gltf_accessor.h"
-#include "solver/gltf_load.h"
-#include "solver/scene_error.h"
+#include "solver/io/gltf_accessor.h"
+#include "solver/io/gltf_load.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh {
 

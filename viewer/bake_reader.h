@@ -1,11 +1,11 @@
 #pragma once
-// Reading back a bake written by `radmesh solve --out FILE.glb` (solver/gltf_export.h): its mesh
+// Reading back a bake written by `radmesh solve --out FILE.glb` (solver/bake/gltf_export.h): its mesh
 // and, from COLOR_0 and the radiosityPerColorUnit it records, its vertex radiosity.
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "solver/display_radiosity.h"
+#include "solver/bake/display_radiosity.h"
 #include "viewer/scene_frame.h"
 
 namespace radmesh {

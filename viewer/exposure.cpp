@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "solver/mgf_color.h"
+#include "solver/io/mgf_color.h"
 
 namespace radmesh {
 

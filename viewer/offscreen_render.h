@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/display_radiosity.h"
+#include "solver/bake/display_radiosity.h"
 #include "viewer/image.h"
 #include "viewer/render_view.h"
 

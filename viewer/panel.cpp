@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "solver/scene_error.h"
+#include "solver/scene/scene_error.h"
 #include "viewer/item_buffer_image.h"
 #include "viewer/panel_plot.h"
 

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "solver/display_radiosity.h"
+#include "solver/bake/display_radiosity.h"
 #include "viewer/render_view.h"
 
 namespace radmesh {
@@ -25,7 +25,7 @@ class Renderer {
 
   // New geometry; radiosity starts at zero and nothing is highlighted.
   void setMesh(const DisplayMesh& mesh);
-  // One value per mesh vertex (vertexRadiosity in solver/display_radiosity.h).
+  // One value per mesh vertex (vertexRadiosity in solver/bake/display_radiosity.h).
   void setVertexRadiosity(const std::vector<Rgb>& vertexB);
   // Patches (indices into the solver's patches) drawn tinted, e.g. the last iteration's shooters.
   void setHighlightedPatches(const std::vector<int>& patches);

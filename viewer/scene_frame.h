@@ -3,7 +3,7 @@
 // whether one side of it is open (a Cornell box is looked into from its open front).
 #include <vector>
 
-#include "solver/scene.h"
+#include "solver/scene/scene.h"
 
 namespace radmesh {
 

@@ -6,19 +6,19 @@
 #include <string>
 #include <vector>
 
-#include "solver/display_radiosity.h"
-#include "solver/item_buffer.h"
-#include "solver/mesh_shot_stats.h"
-#include "solver/progressive_solver.h"
-#include "solver/scene_summary.h"
-#include "solver/solve_options.h"
+#include "solver/bake/display_radiosity.h"
+#include "solver/projection/item_buffer.h"
+#include "solver/backends/mesh/mesh_shot_stats.h"
+#include "solver/radiosity/progressive_solver.h"
+#include "solver/meshing/scene_summary.h"
+#include "solver/scene/solve_options.h"
 
 namespace radmesh {
 
 // What a (re)start of the solve is made from: the options, and the grid for meshing.
 struct SolveSetup {
   SolveOptions options;
-  double cellM = 0.381;  // the paper's 15-inch grid (solver/meshing.h)
+  double cellM = 0.381;  // the paper's 15-inch grid (solver/meshing/meshing.h)
 };
 
 // One point per iteration of the curves the panel draws.

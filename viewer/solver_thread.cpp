@@ -4,7 +4,7 @@
 #include <chrono>
 #include <exception>
 
-#include "solver/meshing.h"
+#include "solver/meshing/meshing.h"
 
 namespace radmesh {
 

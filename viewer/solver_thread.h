@@ -6,7 +6,7 @@
 #include <mutex>
 #include <thread>
 
-#include "solver/scene.h"
+#include "solver/scene/scene.h"
 #include "viewer/solver_snapshot.h"
 
 namespace radmesh {

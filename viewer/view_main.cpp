@@ -6,7 +6,7 @@
 #include <exception>
 #include <thread>
 
-#include "solver/scene_error.h"
+#include "solver/scene/scene_error.h"
 #include "viewer/viewer_app.h"
 
 int main(int argc, char** argv) {

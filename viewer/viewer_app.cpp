@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "solver/scene_loader.h"
+#include "solver/io/scene_loader.h"
 #include "viewer/camera.h"
 #include "viewer/exposure.h"
 #include "viewer/imgui_layer.h"

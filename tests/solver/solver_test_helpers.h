@@ -7,8 +7,8 @@
 #include <numeric>
 #include <vector>
 
-#include "solver/native_backend.h"
-#include "solver/progressive_solver.h"
+#include "solver/backends/native/native_backend.h"
+#include "solver/radiosity/progressive_solver.h"
 #include "tests/solver/patch_fixtures.h"
 
 namespace radmesh::test {

@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "solver/gltf_export.h"
-#include "solver/scene_error.h"
+#include "solver/bake/gltf_export.h"
+#include "solver/scene/scene_error.h"
 #include "tests/test_paths.h"
 
 namespace radmesh {

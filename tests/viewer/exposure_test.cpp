@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "solver/mgf_color.h"
+#include "solver/io/mgf_color.h"
 
 namespace radmesh {
 namespace {

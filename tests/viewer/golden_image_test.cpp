@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "solver/meshing.h"
-#include "solver/progressive_solver.h"
-#include "solver/scene_loader.h"
+#include "solver/meshing/meshing.h"
+#include "solver/radiosity/progressive_solver.h"
+#include "solver/io/scene_loader.h"
 #include "tests/test_paths.h"
 #include "tests/viewer/image_compare.h"
 #include "viewer/camera.h"

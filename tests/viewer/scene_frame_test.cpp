@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "solver/scene_loader.h"
+#include "solver/io/scene_loader.h"
 
 namespace radmesh {
 namespace {

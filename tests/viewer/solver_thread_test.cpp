@@ -9,8 +9,8 @@
 #include <functional>
 #include <thread>
 
-#include "solver/meshing.h"
-#include "solver/scene_loader.h"
+#include "solver/meshing/meshing.h"
+#include "solver/io/scene_loader.h"
 
 namespace radmesh {
 namespace {

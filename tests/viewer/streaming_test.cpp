@@ -6,7 +6,7 @@
 #include <chrono>
 #include <thread>
 
-#include "solver/scene_loader.h"
+#include "solver/io/scene_loader.h"
 #include "tests/viewer/image_compare.h"
 #include "viewer/camera.h"
 #include "viewer/exposure.h"

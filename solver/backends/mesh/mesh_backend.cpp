@@ -1,0 +1,157 @@
+#include "solver/backends/mesh/mesh_backend.h"
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include "emulator/reduce.h"
+#include "solver/backends/mesh/mesh_adaptive_mapping.h"
+#include "solver/scene/scene_error.h"
+#include "solver/projection/single_plane.h"
+#include "solver/formfactors/sub_pixel_receivers.h"
+
+namespace radmesh {
+
+namespace {
+
+const SolveOptions& checked(const SolveOptions& options, const MeshBackendOptions& mesh) {
+  validateOptions(options);
+  if (options.projection != Projection::Plane)
+    throw OptionError(std::string("--backend mesh runs the paper's single plane; --projection ") +
+                      toString(options.projection) + " is native only: use --projection plane or --backend native");
+  auto powerOfTwo = [](int x) { return x > 0 && (x & (x - 1)) == 0; };
+  if (!powerOfTwo(mesh.peRows) || !powerOfTwo(mesh.peCols))
+    throw OptionError("a mesh of " + std::to_string(mesh.peRows) + " x " + std::to_string(mesh.peCols) +
+                      " PEs cannot sort on its torus: give it power-of-two sides (the MP-1's 64 x 64)");
+  return options;
+}
+
+emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendOptions& mesh) {
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware};
+}
+
+// A patch's claim to shoot next, ordered as the solver orders shooters: more unshot power first,
+// then the lower tie rank.
+struct ShooterClaim {
+  double powerW = 0.0;
+  int tieRank = 0;
+  bool operator<(const ShooterClaim& o) const {
+    return powerW != o.powerW ? powerW < o.powerW : tieRank > o.tieRank;
+  }
+};
+
+}  // namespace
+
+MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches,
+                         const SolveOptions& options, const MeshBackendOptions& mesh)
+    : patches_(patches),
+      options_(checked(options, mesh)),
+      mesh_(mesh),
+      surface_(makeSinglePlane(options.resolution, options.ratio)),
+      machine_(machineConfig(options, mesh)),
+      patchesOnPe_(machine_, "patches"),
+      hostPool_(options.threads) {
+  layout_ = {static_cast<int>(patches.size()), machine_.size()};
+  // The patches spread out equally over the PE array (section 1.5).
+  for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
+  scan_ = std::make_unique<MeshScanConversion>(machine_, patches_, patchesOnPe_, surface_.faces[0],
+                                               sceneNearDepth(patches_));
+}
+
+MeshBackend::~MeshBackend() = default;
+
+ProjectionSummary MeshBackend::projectionSummary() const {
+  return {surface_.capturedFraction, surface_.tableSum};
+}
+
+MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
+                              std::vector<std::vector<double>>* pixelFormFactors) {
+  const auto start = std::chrono::steady_clock::now();
+  const emu::CostCounts before = machine_.costs();
+  machine_.resetPeaks();
+  MeshShotStats stats;
+  MeshShot shot;
+  shot.shooters.assign(shooters.begin(), shooters.end());
+  shot.mapping = PlaneMapping::uniform(mesh_.mapping, options_.resolution, mesh_.peRows, mesh_.peCols);
+  {
+    PhaseClock clock(machine_, stats, "projection");
+    scan_->project(shot);
+  }
+  if (mesh_.mapping == MappingKind::Adaptive) {
+    PhaseClock clock(machine_, stats, "adaptive mapping");
+    shot.mapping = adaptiveMapping(machine_, shot, patchesOnPe_, layout_.patches, options_.resolution);
+  }
+  ScanDepths depths = scan_->scanConvert(shot, stats);
+  if (formFactors) {
+    PhaseClock clock(machine_, stats, "form factors");
+    *pixelFormFactors = meshFormFactors(machine_, *scan_, shot, surface_, layout_);
+  }
+  stats.depthA = std::move(depths.a);
+  stats.depthB = std::move(depths.b);
+  stats.passes = depths.passes;
+  stats.depthAMax = *std::max_element(stats.depthA.begin(), stats.depthA.end());
+  stats.depthBMax = *std::max_element(stats.depthB.begin(), stats.depthB.end());
+  stats.depthAHist = depthHistogram(stats.depthA);
+  stats.depthBHist = depthHistogram(stats.depthB);
+  stats.counts = machine_.costs() - before;
+  stats.emulatedSeconds = emu::emulatedSeconds(stats.counts).total();
+  stats.hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  lastShot_ = std::move(stats);
+  return shot;
+}
+
+void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) {
+  rows.clear();
+  if (shooters.empty()) return;
+  std::vector<std::vector<double>> formFactors;
+  const MeshShot shot = runShot(shooters, true, &formFactors);
+  for (int q = 0; q < static_cast<int>(shooters.size()); ++q)
+    rows.push_back(assembleRow(shot, q, std::move(formFactors[q])));
+}
+
+FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors) {
+  const int n = layout_.patches;
+  const std::size_t base = static_cast<std::size_t>(plane) * n;
+  if (options_.subPixelReceivers) {
+    const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
+    const ProjectedShot projected{patches_, shot.shooters[plane], surface_, {&buffer, 1}, scan_->depthTieRank(),
+                                  {shot.projectedAreaPixels.data() + base, static_cast<std::size_t>(n)}};
+    refineSubPixelReceivers(projected, hostPool_, formFactors);
+  }
+  return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors,
+                              {shot.seenFromFront.data() + base, static_cast<std::size_t>(n)});
+}
+
+ItemBuffer MeshBackend::singlePlaneItemBuffer(int shooter) {
+  const int shooters[] = {shooter};
+  const MeshShot shot = runShot(shooters, false, nullptr);
+  return scan_->gatherItemBuffer(shot, 0);
+}
+
+std::vector<int> MeshBackend::selectShooters(std::span<const double> unshotPowerW,
+                                             std::span<const int> tieRank, int k) {
+  emu::Plural<ShooterClaim> best(machine_, {}, "strongest claim");
+  emu::Plural<int> bestPatch(machine_, -1, "strongest patch");
+  std::vector<char> chosen(layout_.patches, 0);
+  std::vector<int> shooters;
+  for (int round = 0; round < k; ++round) {
+    // Each PE finds its strongest patch not yet chosen, then one reduceMax over the mesh.
+    emu::Plural<bool> has(machine_, false, "has a claim");
+    machine_.compute({static_cast<double>(layout_.slotsPerPe()), 2.0 * layout_.slotsPerPe()}, [&](int pe) {
+      for (const PatchRecord& r : patchesOnPe_.list(pe)) {
+        const ShooterClaim claim{unshotPowerW[r.patch], tieRank[r.patch]};
+        if (chosen[r.patch] || !(claim.powerW > 0.0)) continue;
+        if (!has[pe] || best[pe] < claim) best[pe] = claim, bestPatch[pe] = r.patch, has[pe] = true;
+      }
+    });
+    emu::ActiveScope scope(machine_, has);
+    const emu::Located<ShooterClaim> top = emu::reduceMax(machine_, best);
+    if (top.pe < 0) break;
+    shooters.push_back(bestPatch[top.pe]);
+    chosen[bestPatch[top.pe]] = 1;
+  }
+  return shooters;
+}
+
+}  // namespace radmesh

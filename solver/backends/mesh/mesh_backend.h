@@ -1,0 +1,68 @@
+#pragma once
+// Form factors on the emulated mesh-connected SIMD machine (emulator/): the paper's section 1.5
+// as mesh programs, phase by phase, with the MP-1's costs and the item-buffer depths of section
+// 1.6.1 recorded per shot. Agrees with the native back end: the same item buffers, and form
+// factors equal up to the order of summation.
+#include <memory>
+#include <span>
+
+#include "emulator/mesh_machine.h"
+#include "solver/backends/form_factor_backend.h"
+#include "solver/backends/mesh/mesh_form_factors.h"
+#include "solver/backends/mesh/mesh_scan_conversion.h"
+#include "solver/backends/mesh/mesh_shot_stats.h"
+#include "solver/projection/plane_mapping.h"
+#include "solver/projection/projection_surface.h"
+#include "parallel/thread_pool.h"
+
+namespace radmesh {
+
+struct MeshBackendOptions {
+  MappingKind mapping = MappingKind::Hierarchical;
+  int peRows = 64;  // the paper's 4096-PE MP-1
+  int peCols = 64;
+  std::int64_t memoryBudgetBytes = 16 * 1024;
+};
+
+class MeshBackend final : public FormFactorBackend {
+ public:
+  // Throws OptionError for invalid options, a projection other than the single plane (the
+  // paper's) or a mesh whose sides are not powers of two. The scene is not needed beyond its
+  // patches (kept for the factory's common signature).
+  MeshBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options,
+              const MeshBackendOptions& mesh = {});
+  ~MeshBackend() override;
+
+  // All shooters' planes are mapped onto the mesh at once (the paper's section 1.7).
+  void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
+  ProjectionSummary projectionSummary() const override;
+  ItemBuffer singlePlaneItemBuffer(int shooter) override;
+  const MeshShotStats* lastMeshShot() const override { return &lastShot_; }
+
+  // The shooting-patch selection phase on the mesh: k reduceMax over the patches' unshot power,
+  // ties to the lower tie rank; patches without unshot power are never chosen. Strongest first.
+  std::vector<int> selectShooters(std::span<const double> unshotPowerW, std::span<const int> tieRank, int k);
+
+  const MeshShotStats& lastShot() const { return lastShot_; }
+  const emu::MeshMachine& machine() const { return machine_; }
+  const MeshBackendOptions& meshOptions() const { return mesh_; }
+
+ private:
+  // Runs the phases up to the z-buffer (and the form factors when asked) for the shooters.
+  MeshShot runShot(std::span<const int> shooters, bool formFactors,
+                   std::vector<std::vector<double>>* pixelFormFactors);
+  FormFactorRow assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors);
+
+  const std::vector<Patch>& patches_;
+  SolveOptions options_;
+  MeshBackendOptions mesh_;
+  ProjectionSurface surface_;
+  PatchLayout layout_;
+  emu::MeshMachine machine_;
+  emu::PeArray<PatchRecord> patchesOnPe_;
+  std::unique_ptr<MeshScanConversion> scan_;
+  ThreadPool hostPool_;  // the sub-pixel refinement (solver/formfactors/sub_pixel_receivers.h) runs on the host
+  MeshShotStats lastShot_;
+};
+
+}  // namespace radmesh

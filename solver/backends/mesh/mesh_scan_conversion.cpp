@@ -1,0 +1,264 @@
+#include "solver/backends/mesh/mesh_scan_conversion.h"
+
+#include <algorithm>
+
+#include "emulator/memory_ledger.h"
+#include "emulator/router.h"
+#include "emulator/xnet.h"
+
+namespace radmesh {
+
+namespace {
+
+using emu::AluCost;
+using emu::Direction;
+using emu::Plural;
+
+// Declared MP-1 work (docs/emulator-cost-model.md, assumption 6): the per-PE instruction counts
+// of the loops below, estimated from the operations in solver/projection/projection.cpp and
+// solver/projection/scan_conversion.cpp.
+// Transform 4 vertices, normal and centroid into the shooter's frame (~80), clip against the
+// near plane and divide (~40), edge functions, depth plane and bounding box (~80).
+constexpr double kProjectFlopsPerPatch = 200.0;
+// One (description, pixel) pair: up to 5 edge functions at 4 flops, the 1/depth plane (4) and
+// the depth compare (4).
+constexpr double kPixelTestFlops = 28.0;
+// Decrement, test and keep-or-drop of one description in a spread step.
+constexpr double kSpreadIntOpsPerItem = 4.0;
+// Upper-left PE of a bounding box (two table look-ups and an index) and the strip length.
+constexpr double kRouteIntOps = 8.0;
+
+}  // namespace
+
+MeshScanConversion::MeshScanConversion(emu::MeshMachine& machine, const std::vector<Patch>& patches,
+                                       const emu::PeArray<PatchRecord>& patchesOnPe,
+                                       const ProjectionFace& face, double nearDepth)
+    : machine_(machine),
+      patches_(patches),
+      patchesOnPe_(patchesOnPe),
+      face_(face),
+      nearDepth_(nearDepth),
+      rank_(depthTieRanks(patches)),
+      descriptions_(machine, "patch descriptions"),
+      forward_(machine, "descriptions to send on"),
+      zBuffer_(machine, "item buffer pixels") {}
+
+void MeshScanConversion::project(MeshShot& shot) {
+  const int n = static_cast<int>(patches_.size());
+  const int planes = static_cast<int>(shot.shooters.size());
+  const std::size_t entries = static_cast<std::size_t>(planes) * n;
+  shot.setups.assign(entries, PolygonSetup{});
+  shot.projected.assign(entries, 0);
+  shot.seenFromFront.assign(entries, 0);
+  shot.projectedAreaPixels.assign(entries, 0.0);
+  // Each PE projects its own patches onto every plane of the shot; it writes only its patches'
+  // entries, so the PEs can run on any number of host threads.
+  const AluCost cost{kProjectFlopsPerPatch * planes * patchesOnPe_.maxCount(), 0.0};
+  machine_.compute(cost, [&](int pe) {
+    for (const PatchRecord& record : patchesOnPe_.list(pe))
+      for (int q = 0; q < planes; ++q) {
+        const int j = record.patch;
+        const int shooter = shot.shooters[q];
+        if (j == shooter) continue;
+        // The native back end's steps (solver/projection/environment_projection.cpp), in the same order.
+        const LocalPolygon local = toShooterFrame(patches_[shooter], patches_[j]);
+        double highest = local.vertices[0].z;
+        for (int k = 1; k < local.vertexCount; ++k) highest = std::max(highest, local.vertices[k].z);
+        if (highest <= 0.0) continue;
+        const std::size_t e = static_cast<std::size_t>(q) * n + j;
+        shot.seenFromFront[e] = local.seenFromFront();
+        ScreenPolygon screen;
+        if (projectOntoFace(local, face_, nearDepth_, screen) &&
+            setupPolygon(screen, face_.width, face_.height, j, rank_[j], shot.setups[e])) {
+          shot.projected[e] = 1;
+          shot.projectedAreaPixels[e] = shot.setups[e].areaPixels;
+        }
+      }
+  });
+}
+
+ScanDepths MeshScanConversion::scanConvert(const MeshShot& shot, MeshShotStats& stats) {
+  const int patches = static_cast<int>(patches_.size());
+  for (int passes = 1;; passes *= 2) {
+    ScanDepths depths{std::vector<int>(machine_.size(), 0), std::vector<int>(machine_.size(), 0), passes};
+    {
+      PhaseClock clock(machine_, stats, "spread right, z-buffer");
+      resetItemBuffers(shot);
+    }
+    try {
+      for (int pass = 0; pass < passes; ++pass) {
+        {
+          PhaseClock clock(machine_, stats, "route (a)");
+          routeToUpperLeft(shot, pass, passes, depths);
+        }
+        {
+          PhaseClock clock(machine_, stats, "spread down (b)");
+          spreadDown(depths);
+        }
+        PhaseClock clock(machine_, stats, "spread right, z-buffer");
+        spreadRight(shot);
+      }
+      descriptions_.releaseAll();  // the next phase needs the room
+      forward_.releaseAll();
+      return depths;
+    } catch (const emu::MemoryBudgetError&) {
+      descriptions_.releaseAll();
+      forward_.releaseAll();
+      if (passes >= patches) throw;  // one patch per pass and still too big: nothing left to split
+    }
+  }
+}
+
+void MeshScanConversion::routeToUpperLeft(const MeshShot& shot, int pass, int passes, ScanDepths& depths) {
+  const int n = static_cast<int>(patches_.size());
+  const emu::PeGrid& grid = machine_.grid();
+  descriptions_.releaseAll();  // each pass starts with the PEs' memory as the last one found it
+  Plural<Description> message(machine_, {}, "outgoing description");
+  Plural<int> destination(machine_, 0, "upper-left PE");
+  Plural<bool> sends(machine_, false, "has a description");
+  // SIMD: one router send per (plane, patch slot); PEs without that description sit it out.
+  for (int q = 0; q < static_cast<int>(shot.shooters.size()); ++q)
+    for (int slot = 0; slot < patchesOnPe_.maxCount(); ++slot) {
+      machine_.chargeAlu({0.0, kRouteIntOps});
+      for (int pe = 0; pe < grid.size(); ++pe) {
+        sends[pe] = false;
+        if (slot >= patchesOnPe_.count(pe)) continue;
+        const int j = patchesOnPe_.at(pe, slot).patch;
+        const int e = q * n + j;
+        if (!shot.projected[e] || j % passes != pass) continue;
+        const PolygonSetup& s = shot.setups[e];
+        sends[pe] = true;
+        message[pe] = {e, shot.mapping.rows.stepsToCover(s.rowBegin, s.rowEnd)};
+        destination[pe] = grid.index(shot.mapping.rows.peOf(s.rowBegin),
+                                     shot.mapping.columns.peOf(s.columnBegin));
+      }
+      emu::ActiveScope scope(machine_, sends);
+      const emu::RouterStats routed = emu::routerSendAppend(machine_, descriptions_, message, destination);
+      for (int pe = 0; pe < grid.size(); ++pe) depths.a[pe] += routed.arrivals[pe];
+    }
+}
+
+void MeshScanConversion::spreadDown(ScanDepths& depths) {
+  const int size = machine_.size();
+  for (int pe = 0; pe < size; ++pe)
+    for (int i = 0; i < descriptions_.count(pe); ++i)
+      if (descriptions_.at(pe, i).stepsLeft > 0) forward_.push(pe, i);
+  machine_.chargeAlu({0.0, kSpreadIntOpsPerItem * descriptions_.maxCount()});
+  // One xnet step south per round: every PE keeps (accumulates) what reaches it, and sends on
+  // what must go further.
+  while (forward_.maxCount() > 0) {
+    emu::xnetForward(machine_, descriptions_, forward_, Direction::S, 1);
+    machine_.chargeAlu({0.0, kSpreadIntOpsPerItem * forward_.maxCount()});
+    for (int pe = 0; pe < size; ++pe) {
+      const auto arrived = forward_.list(pe);
+      int kept = 0;
+      for (int index : arrived)
+        if (--descriptions_.at(pe, index).stepsLeft > 0) arrived[kept++] = index;
+      forward_.truncate(pe, kept);
+    }
+  }
+  forward_.releaseAll();
+  for (int pe = 0; pe < size; ++pe) depths.b[pe] += descriptions_.count(pe);
+}
+
+void MeshScanConversion::resetItemBuffers(const MeshShot& shot) {
+  rowsPerPe_ = shot.mapping.rows.maxPixelsPerPe();
+  columnsPerPe_ = shot.mapping.columns.maxPixelsPerPe();
+  const int length = static_cast<int>(shot.shooters.size()) * pixelsPerPlane();
+  zBuffer_.releaseAll();  // an adaptive mapping sizes it anew each shot
+  zBuffer_.reserve(length);
+  for (int pe = 0; pe < machine_.size(); ++pe) {
+    zBuffer_.clear(pe);
+    for (int i = 0; i < length; ++i) zBuffer_.pushReserved(pe, ZEntry{});
+  }
+  machine_.chargeAlu({0.0, static_cast<double>(length)});
+}
+
+int MeshScanConversion::zBuffer(const MeshShot& shot, int pe, const Description& d) {
+  const int n = static_cast<int>(patches_.size());
+  const PolygonSetup& s = shot.setups[d.setup];
+  const int base = d.setup / n * pixelsPerPlane();
+  const auto rows = shot.mapping.rows.pixelsOf(machine_.grid().row(pe));
+  const auto columns = shot.mapping.columns.pixelsOf(machine_.grid().col(pe));
+  int tests = 0;
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    const int row = rows[a];
+    if (row < s.rowBegin || row >= s.rowEnd) continue;
+    for (std::size_t b = 0; b < columns.size(); ++b) {
+      const int column = columns[b];
+      if (column < s.columnBegin || column >= s.columnEnd) continue;
+      ++tests;
+      if (!covers(s, column, row)) continue;  // inside the bounding box, outside the patch
+      const double inverseDepth = inverseDepthAt(s, column, row);
+      ZEntry& z = zBuffer_.at(pe, base + static_cast<int>(a) * columnsPerPe_ + static_cast<int>(b));
+      if (z.item == ItemBuffer::kNone || closer(inverseDepth, s.rank, z.inverseDepth, rank_[z.item]))
+        z = {s.id, inverseDepth};
+    }
+  }
+  return tests;
+}
+
+template <class Steps>
+int MeshScanConversion::zBufferAndKeep(const MeshShot& shot, int pe, Steps steps) {
+  const auto list = descriptions_.list(pe);
+  int kept = 0;
+  int tests = 0;
+  for (const Description& d : list) {
+    tests += zBuffer(shot, pe, d);
+    const int left = steps(d);
+    if (left > 0) list[kept++] = {d.setup, left};
+  }
+  descriptions_.truncate(pe, kept);
+  return tests;
+}
+
+void MeshScanConversion::zBufferStep(const MeshShot& shot, bool first) {
+  // Each PE runs through its own (description, pixel) pairs, the loop flattened, so the SIMD time
+  // is the most pairs any PE has, not descriptions times pixels.
+  const int most = descriptions_.maxCount();
+  pixelTests_.assign(machine_.size(), 0);
+  machine_.forEachActive(kPixelTestFlops * most, [&](int pe) {
+    if (first) {
+      pixelTests_[pe] = zBufferAndKeep(shot, pe, [&](const Description& d) {
+        const PolygonSetup& s = shot.setups[d.setup];
+        return shot.mapping.columns.stepsToCover(s.columnBegin, s.columnEnd);
+      });
+    } else {
+      pixelTests_[pe] = zBufferAndKeep(shot, pe, [](const Description& d) { return d.stepsLeft - 1; });
+    }
+  });
+  const int pairs = *std::max_element(pixelTests_.begin(), pixelTests_.end());
+  machine_.chargeAlu({kPixelTestFlops * pairs, kSpreadIntOpsPerItem * most});
+}
+
+void MeshScanConversion::spreadRight(const MeshShot& shot) {
+  // Every PE z-buffers the strip pieces it holds; they then travel east one PE per step, each PE
+  // z-buffering what passes through it without keeping it (section 1.5).
+  zBufferStep(shot, true);
+  emu::Plural<bool> busy(machine_, false, "has arrivals");
+  while (descriptions_.maxCount() > 0) {
+    emu::xnetShift(machine_, descriptions_, descriptions_, Direction::E, 1);
+    for (int pe = 0; pe < machine_.size(); ++pe) busy[pe] = descriptions_.count(pe) > 0;
+    emu::ActiveScope scope(machine_, busy);
+    zBufferStep(shot, false);
+  }
+}
+
+ItemBuffer MeshScanConversion::gatherItemBuffer(const MeshShot& shot, int plane) const {
+  ItemBuffer buffer(face_.width, face_.height);
+  for (int pe = 0; pe < machine_.size(); ++pe) {
+    const auto rows = shot.mapping.rows.pixelsOf(machine_.grid().row(pe));
+    const auto columns = shot.mapping.columns.pixelsOf(machine_.grid().col(pe));
+    for (std::size_t a = 0; a < rows.size(); ++a)
+      for (std::size_t b = 0; b < columns.size(); ++b) {
+        const ZEntry& z = zBuffer_.at(pe, plane * pixelsPerPlane() + static_cast<int>(a) * columnsPerPe_ +
+                                              static_cast<int>(b));
+        const int q = buffer.index(columns[b], rows[a]);
+        buffer.items[q] = z.item;
+        buffer.inverseDepth[q] = z.inverseDepth;
+      }
+  }
+  return buffer;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,139 @@
+#pragma once
+// The paper's projection and scan-conversion phases (section 1.5) as mesh programs on the
+// emulator: every PE projects its own patches onto the shooters' single planes (the solver's
+// projection code, so the polygons are the native back end's); stage (a) routes each
+// description to the PE owning the upper-left pixel of its bounding box; stage (b) spreads it
+// down the xnet into a single-PE-thick strip, each PE accumulating what passes; then the strips
+// spread right, and every PE z-buffers each description passing through against the pixels it
+// owns (the solver's covers / inverseDepthAt / closer, so the item buffer is the native one).
+// Several shooters' planes share the mesh at once, each PE holding its pixels of every plane.
+#include <vector>
+
+#include "emulator/pe_array.h"
+#include "emulator/wire_size.h"
+#include "solver/projection/item_buffer.h"
+#include "solver/meshing/patch.h"
+#include "solver/projection/plane_mapping.h"
+#include "solver/projection/projection.h"
+#include "solver/backends/mesh/mesh_shot_stats.h"
+#include "solver/projection/scan_conversion.h"
+
+namespace radmesh {
+
+// A patch on its PE: the patch index stands for its geometry and shooter-frame matrix, which
+// never change (see the WireSize below).
+struct PatchRecord {
+  int patch = -1;
+};
+
+// A projected patch's description in flight: it stands for the PolygonSetup the projecting PE
+// made (immutable once made), plus the shift steps it still has to travel.
+struct Description {
+  int setup = -1;      // plane * patches + patch: this shot's description table
+  int stepsLeft = 0;
+};
+
+// One item-buffer pixel on a PE.
+struct ZEntry {
+  int item = ItemBuffer::kNone;
+  double inverseDepth = 0.0;
+};
+
+}  // namespace radmesh
+
+// MP-1 sizes of these records (emulator/wire_size.h): what memory and links are charged.
+namespace radmesh::emu {
+// Geometry in floats: 4 vertices, normal, centroid, area, and the 3 x 4 matrix into the patch's
+// projection frame that the paper stores with every patch (section 1.5): 29 floats, 4-byte id.
+template <>
+struct WireSize<PatchRecord> {
+  static constexpr std::int64_t bytes = 29 * 4 + 4;
+};
+// Up to 5 projected vertices (a quad clipped once) as float pairs, the 1/depth plane (3 floats),
+// the patch id and depth-tie rank, a 4 x 16-bit bounding box, a 16-bit step count.
+template <>
+struct WireSize<Description> {
+  static constexpr std::int64_t bytes = 5 * 8 + 12 + 4 + 4 + 8 + 2;
+};
+// Patch id and 1/depth, unpadded.
+template <>
+struct WireSize<ZEntry> {
+  static constexpr std::int64_t bytes = 4 + 8;
+};
+}  // namespace radmesh::emu
+
+namespace radmesh {
+
+// What the mesh holds for one shot of up to k shooters.
+struct MeshShot {
+  std::vector<int> shooters;
+  PlaneMapping mapping;
+  std::vector<PolygonSetup> setups;        // [plane * patches + patch]; valid where projected
+  std::vector<char> projected;             // [plane * patches + patch]
+  std::vector<char> seenFromFront;         // [plane * patches + patch]
+  std::vector<double> projectedAreaPixels; // [plane * patches + patch]
+};
+
+// Stage-(a) and stage-(b) depths per PE, counted from what arrived, summed over the passes.
+struct ScanDepths {
+  std::vector<int> a;
+  std::vector<int> b;
+  int passes = 1;
+};
+
+class MeshScanConversion {
+ public:
+  MeshScanConversion(emu::MeshMachine& machine, const std::vector<Patch>& patches,
+                     const emu::PeArray<PatchRecord>& patchesOnPe, const ProjectionFace& face,
+                     double nearDepth);
+
+  // Projection phase: fills shot.setups and friends (shot.shooters set by the caller).
+  void project(MeshShot& shot);
+
+  // Stage (a), stage (b) and the rightward spread with z-buffering into the per-PE item buffers.
+  // When a PE's descriptions would overflow its memory (the PE raises a global flag on the real
+  // machine; here the emulator's MemoryBudgetError), the scan conversion restarts in twice as many
+  // passes, pass p taking the patches with index p mod passes; the item buffer carries over from
+  // pass to pass. The work of an abandoned attempt stays charged, as the machine did it.
+  ScanDepths scanConvert(const MeshShot& shot, MeshShotStats& stats);
+
+  // The plane's item buffer gathered from the PEs (the front end reading PE memory).
+  ItemBuffer gatherItemBuffer(const MeshShot& shot, int plane) const;
+  // Per PE: planes x (most pixel rows a PE row owns) x (most pixel columns a PE column owns)
+  // slots; a PE's own pixel (a-th of its rows, b-th of its columns) of plane q sits in slot
+  // q * pixelsPerPlane() + a * columnsPerPe() + b. Unowned slots stay empty.
+  const emu::PeArray<ZEntry>& itemBuffers() const { return zBuffer_; }
+  int pixelsPerPlane() const { return rowsPerPe_ * columnsPerPe_; }
+  const std::vector<int>& depthTieRank() const { return rank_; }
+  int columnsPerPe() const { return columnsPerPe_; }
+
+ private:
+  void resetItemBuffers(const MeshShot& shot);
+  void routeToUpperLeft(const MeshShot& shot, int pass, int passes, ScanDepths& depths);
+  void spreadDown(ScanDepths& depths);
+  void spreadRight(const MeshShot& shot);
+  // z-buffers one description against PE pe's pixels of its plane; returns the pixels tested
+  // (those of the PE inside the description's bounding box).
+  int zBuffer(const MeshShot& shot, int pe, const Description& description);
+  // z-buffers PE pe's descriptions, then keeps (in place) those that must travel further east,
+  // each with its remaining steps from `steps`; returns the pixels tested.
+  template <class Steps>
+  int zBufferAndKeep(const MeshShot& shot, int pe, Steps steps);
+  // One step of the rightward spread's z-buffering on every active PE (the first: the strips).
+  void zBufferStep(const MeshShot& shot, bool first);
+
+  emu::MeshMachine& machine_;
+  const std::vector<Patch>& patches_;
+  const emu::PeArray<PatchRecord>& patchesOnPe_;
+  ProjectionFace face_;
+  double nearDepth_;
+  std::vector<int> rank_;
+  emu::PeArray<Description> descriptions_;  // (a), then accumulated through (b), then in transit
+  emu::PeArray<int> forward_;               // (b): which of a PE's descriptions go on down
+  emu::PeArray<ZEntry> zBuffer_;
+  int rowsPerPe_ = 0;
+  int columnsPerPe_ = 0;
+  std::vector<int> pixelTests_;  // per PE, this step
+};
+
+}  // namespace radmesh

@@ -1,0 +1,119 @@
+#include "solver/backends/native/native_backend.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "solver/formfactors/analytic_form_factor.h"
+#include "solver/projection/hemicube.h"
+#include "solver/scene/scene_error.h"
+#include "solver/projection/single_plane.h"
+#include "solver/formfactors/sub_pixel_receivers.h"
+
+namespace radmesh {
+
+namespace {
+
+constexpr int kAnalyticChunk = 256;
+constexpr double kRowSumSlack = 1e-6;  // analytic rows of a convex enclosure sum to 1 within rounding
+
+std::unique_ptr<ProjectionSurface> surfaceFor(const SolveOptions& options) {
+  switch (options.projection) {
+    case Projection::Plane:
+      return std::make_unique<ProjectionSurface>(makeSinglePlane(options.resolution, options.ratio));
+    case Projection::Hemicube:
+      return std::make_unique<ProjectionSurface>(makeHemicube(options.resolution));
+    case Projection::Analytic: break;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patches,
+                             const SolveOptions& options)
+    : scene_(scene),
+      patches_(patches),
+      options_(options),
+      nearDepth_(sceneNearDepth(patches)),
+      pool_(options.threads),
+      formFactors_(patches.size(), 0.0),
+      seenFromFront_(patches.size(), 0) {
+  validateOptions(options);
+  if (auto surface = surfaceFor(options))
+    projection_ = std::make_unique<EnvironmentProjection>(patches, std::move(*surface), nearDepth_, pool_);
+}
+
+NativeBackend::~NativeBackend() = default;
+
+ProjectionSummary NativeBackend::projectionSummary() const {
+  if (!projection_) return {};  // analytic: the whole hemisphere, exactly
+  return {projection_->surface().capturedFraction, projection_->surface().tableSum};
+}
+
+void NativeBackend::computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) {
+  rows.resize(shooters.size());
+  for (size_t s = 0; s < shooters.size(); ++s)
+    rows[s] = projection_ ? projectedRow(*projection_, shooters[s]) : analyticRow(shooters[s]);
+}
+
+ItemBuffer NativeBackend::singlePlaneItemBuffer(int shooter) {
+  const bool same = options_.projection == Projection::Plane;
+  if (!same && !singlePlane_)
+    singlePlane_ = std::make_unique<EnvironmentProjection>(
+        patches_, makeSinglePlane(options_.resolution, options_.ratio), nearDepth_, pool_);
+  EnvironmentProjection& plane = same ? *projection_ : *singlePlane_;
+  plane.project(shooter);
+  return plane.itemBuffers()[0];
+}
+
+FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int shooter) {
+  projection.project(shooter);
+  formFactors_ = projection.pixelFormFactors();
+  seenFromFront_ = projection.seenFromFront();
+  if (options_.subPixelReceivers) {
+    const ProjectedShot shot{patches_, shooter, projection.surface(), projection.itemBuffers(),
+                             projection.depthTieRank(), projection.projectedAreaPixels()};
+    refineSubPixelReceivers(shot, pool_, formFactors_);
+  }
+  return assembleRow(shooter, projection.surface().capturedFraction, formFactors_, seenFromFront_);
+}
+
+FormFactorRow NativeBackend::analyticRow(int shooter) {
+  const Patch& from = patches_[shooter];
+  const int n = static_cast<int>(patches_.size());
+  pool_.parallelFor((n + kAnalyticChunk - 1) / kAnalyticChunk, [&](int chunk, int) {
+    for (int j = chunk * kAnalyticChunk; j < std::min(n, (chunk + 1) * kAnalyticChunk); ++j) {
+      formFactors_[j] = 0.0;
+      seenFromFront_[j] = 0;
+      if (j == shooter) continue;
+      const LocalPolygon local = toShooterFrame(from, patches_[j]);
+      if (std::abs(local.planeOffset) <= nearDepth_) continue;  // coplanar or edge-on
+      seenFromFront_[j] = local.seenFromFront();
+      formFactors_[j] = pointToPolygonFormFactor(local.corners());
+    }
+  });
+  FormFactorRow row = assembleRow(shooter, 1.0, formFactors_, seenFromFront_);
+  const double sum = row.hitFraction();
+  if (sum > 1.0 + kRowSumSlack) {
+    const Patch& p = patches_[shooter];
+    const bool known = p.polygon >= 0 && p.polygon < static_cast<int>(scene_.polygons.size());
+    const std::string origin = known && !scene_.polygons[p.polygon].origin.empty()
+                                   ? " (" + scene_.polygons[p.polygon].origin + ")"
+                                   : "";
+    throw SceneError(scene_.source, fmt::format("patch {} of polygon {}{}", shooter, p.polygon, origin),
+                     fmt::format("its analytic form factors sum to {:.6f} > 1: patches hide one "
+                                 "another, so the scene is not a convex enclosure and form factors "
+                                 "without occlusion would create light",
+                                 sum),
+                     "use --projection hemicube (or plane), which resolve occlusion");
+  }
+  if (sum > 1.0) {  // rounding, within the slack: not light to create
+    for (double& f : row.formFactors) f /= sum;
+    row.backFaces /= sum;
+  }
+  return row;
+}
+
+}  // namespace radmesh

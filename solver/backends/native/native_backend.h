@@ -1,0 +1,39 @@
+#pragma once
+// Form factors on the host CPU: the single plane or the hemicube with item buffers, or analytic
+// point-to-polygon form factors for convex enclosures. The oracle the mesh back end must match.
+#include <memory>
+
+#include "solver/projection/environment_projection.h"
+#include "solver/backends/form_factor_backend.h"
+#include "parallel/thread_pool.h"
+
+namespace radmesh {
+
+class NativeBackend final : public FormFactorBackend {
+ public:
+  NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options);
+  ~NativeBackend() override;
+
+  void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
+  ProjectionSummary projectionSummary() const override;
+
+  ItemBuffer singlePlaneItemBuffer(int shooter) override;
+
+  double nearDepth() const { return nearDepth_; }
+
+ private:
+  FormFactorRow projectedRow(EnvironmentProjection& projection, int shooter);
+  FormFactorRow analyticRow(int shooter);
+
+  const Scene& scene_;
+  const std::vector<Patch>& patches_;
+  SolveOptions options_;
+  double nearDepth_;
+  ThreadPool pool_;
+  std::unique_ptr<EnvironmentProjection> projection_;  // null for --projection analytic
+  std::unique_ptr<EnvironmentProjection> singlePlane_;  // made when first asked for
+  std::vector<double> formFactors_;                     // per patch, this shot
+  std::vector<char> seenFromFront_;                     // per patch, this shot
+};
+
+}  // namespace radmesh

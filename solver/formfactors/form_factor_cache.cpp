@@ -1,0 +1,29 @@
+#include "solver/formfactors/form_factor_cache.h"
+
+#include <utility>
+
+namespace radmesh {
+
+const FormFactorRow* FormFactorCache::find(int shooter) {
+  const auto it = byShooter_.find(shooter);
+  if (it == byShooter_.end()) return nullptr;
+  order_.splice(order_.begin(), order_, it->second);
+  return &*it->second;
+}
+
+void FormFactorCache::insert(const FormFactorRow& row) {
+  if (byShooter_.count(row.shooter)) return;
+  FormFactorRow kept = row;  // a copy holds no spare capacity
+  const std::size_t need = kept.bytes();
+  if (need > budgetBytes_) return;
+  while (bytes_ + need > budgetBytes_) {
+    bytes_ -= order_.back().bytes();
+    byShooter_.erase(order_.back().shooter);
+    order_.pop_back();
+  }
+  order_.push_front(std::move(kept));
+  bytes_ += need;
+  byShooter_[row.shooter] = order_.begin();
+}
+
+}  // namespace radmesh

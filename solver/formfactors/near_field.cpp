@@ -1,0 +1,126 @@
+#include "solver/formfactors/near_field.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "solver/formfactors/analytic_form_factor.h"
+#include "solver/projection/projection.h"
+
+namespace radmesh {
+
+namespace {
+
+double diameter(const Patch& p) {
+  double d = 0.0;
+  for (int a = 0; a < p.vertexCount; ++a)
+    for (int b = a + 1; b < p.vertexCount; ++b) d = std::max(d, glm::length(p.vertices[a] - p.vertices[b]));
+  return d;
+}
+
+// Some vertex of `patch` strictly in front of the plane of `of` (beyond rounding at size `scale`).
+bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
+  for (int k = 0; k < patch.vertexCount; ++k)
+    if (glm::dot(patch.vertices[k] - of.centroid, of.normal) > 1e-9 * scale) return true;
+  return false;
+}
+
+using Cell = std::array<long long, 3>;
+
+}  // namespace
+
+std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches) {
+  const int n = static_cast<int>(patches.size());
+  std::vector<std::vector<int>> near(n);
+  std::vector<double> size(n);
+  double cellSize = 0.0;
+  for (int i = 0; i < n; ++i) cellSize = std::max(cellSize, size[i] = diameter(patches[i]));
+  if (!(cellSize > 0.0)) return near;
+  // Centroids bucketed in cells as wide as the largest diameter: every near receiver of a
+  // shooter lies in the 27 cells around the shooter's.
+  auto cellOf = [&](const Vec3& c) {
+    return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
+                std::llround(std::floor(c.z / cellSize))};
+  };
+  std::vector<std::pair<Cell, int>> sorted(n);
+  for (int i = 0; i < n; ++i) sorted[i] = {cellOf(patches[i].centroid), i};
+  std::sort(sorted.begin(), sorted.end());
+  for (int i = 0; i < n; ++i) {
+    const Patch& shooter = patches[i];
+    const Cell home = cellOf(shooter.centroid);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const Cell cell{home[0] + dx, home[1] + dy, home[2] + dz};
+          auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{cell, -1});
+          for (; it != sorted.end() && it->first == cell; ++it) {
+            const int j = it->second;
+            if (j == i || !(glm::length(patches[j].centroid - shooter.centroid) < size[i])) continue;
+            if (partlyInFront(patches[j], shooter, size[i]) && partlyInFront(shooter, patches[j], size[i]))
+              near[i].push_back(j);
+          }
+        }
+    std::sort(near[i].begin(), near[i].end());
+  }
+  return near;
+}
+
+double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions) {
+  const LocalPolygon local = toShooterFrame(shooter, receiver);
+  std::array<Vec3, 4> shifted{};
+  const std::span<const Vec3> polygon{shifted.data(), static_cast<size_t>(local.vertexCount)};
+  const double m = subdivisions;
+  double weighted = 0.0, area = 0.0;
+  // The fan of triangles from vertex 0, each cut into m^2 equal triangles: m(m+1)/2 upright ones
+  // at barycentric steps (3i+1, 3j+1)/3m, m(m-1)/2 inverted ones at (3i+2, 3j+2)/3m.
+  const Vec3 a = toShooterFrame(shooter, shooter.vertices[0]);
+  for (int t = 1; t + 1 < shooter.vertexCount; ++t) {
+    const Vec3 ab = toShooterFrame(shooter, shooter.vertices[t]) - a;
+    const Vec3 ac = toShooterFrame(shooter, shooter.vertices[t + 1]) - a;
+    const double triangleArea = 0.5 * glm::length(glm::cross(ab, ac));
+    double sum = 0.0;
+    auto at = [&](double s, double u) {
+      Vec3 p = a + s * ab + u * ac;
+      p.z = 0.0;  // on the shooter's plane, its normal +z
+      for (int k = 0; k < local.vertexCount; ++k) shifted[k] = local.vertices[k] - p;
+      sum += pointToPolygonFormFactor(polygon);
+    };
+    for (int i = 0; i < subdivisions; ++i)
+      for (int j = 0; i + j < subdivisions; ++j) {
+        at((3 * i + 1) / (3 * m), (3 * j + 1) / (3 * m));
+        if (i + j + 1 < subdivisions) at((3 * i + 2) / (3 * m), (3 * j + 2) / (3 * m));
+      }
+    weighted += sum * triangleArea / (m * m);
+    area += triangleArea;
+  }
+  return area > 0.0 ? weighted / area : 0.0;
+}
+
+void correctNearField(FormFactorRow& row, const std::vector<Patch>& patches, const std::vector<int>& nearReceivers) {
+  if (nearReceivers.empty()) return;
+  const Patch& shooter = patches[row.shooter];
+  const double before = row.hitFraction();
+  const bool enclosed = row.escapedFraction() == 0.0;
+  bool changed = false;
+  auto next = nearReceivers.begin();
+  for (size_t r = 0; r < row.receivers.size() && next != nearReceivers.end(); ++r) {
+    const int j = row.receivers[r];
+    next = std::lower_bound(next, nearReceivers.end(), j);
+    if (next == nearReceivers.end() || *next != j) continue;
+    const LocalPolygon local = toShooterFrame(shooter, patches[j]);
+    const double point = pointToPolygonFormFactor(local.corners());
+    const double area = areaToAreaFormFactor(shooter, patches[j]);
+    if (!(point > 0.0) || !(area > 0.0)) continue;  // edge-on to the centroid: nothing to scale
+    row.formFactors[r] = std::min(1.0, row.formFactors[r] / point) * area;
+    changed = true;
+  }
+  if (!changed) return;
+  const double after = row.hitFraction();
+  const double target = enclosed ? before : std::min(after, row.capturedFraction);
+  if (!(after > 0.0) || after == target) return;
+  const double scale = target / after;
+  for (double& f : row.formFactors) f *= scale;
+  row.backFaces *= scale;
+}
+
+}  // namespace radmesh

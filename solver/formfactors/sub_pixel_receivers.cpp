@@ -1,0 +1,76 @@
+#include "solver/formfactors/sub_pixel_receivers.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/formfactors/analytic_form_factor.h"
+#include "solver/projection/projection.h"
+#include "solver/projection/scan_conversion.h"
+
+namespace radmesh {
+
+namespace {
+
+// The analytic form factor of patch j if nothing in the item buffer is in front of its
+// centroid, else 0.
+double visibleFormFactor(const ProjectedShot& shot, int j) {
+  const Patch& shooter = shot.patches[shot.shooter];
+  const LocalPolygon local = toShooterFrame(shooter, shot.patches[j]);
+  for (size_t f = 0; f < shot.surface.faces.size(); ++f) {
+    const ProjectionFace& face = shot.surface.faces[f];
+    const Vec3 c = toFace(face, local.centroid);
+    if (!(c.z > 0.0)) continue;
+    const glm::dvec2 ab{c.x / c.z, c.y / c.z};
+    if (ab.x < face.a0 || ab.x >= face.a1 || ab.y < face.b0 || ab.y >= face.b1) continue;
+    const int column = std::min(face.width - 1, static_cast<int>((ab.x - face.a0) / face.pixelWidth()));
+    const int row = std::min(face.height - 1, static_cast<int>((ab.y - face.b0) / face.pixelHeight()));
+    const int owner = shot.itemBuffers[f].item(column, row);
+    if (owner != ItemBuffer::kNone && owner != j) {
+      const LocalPolygon front = toShooterFrame(shooter, shot.patches[owner]);
+      const double ownerInverseDepth = inverseDepthAlong(front, face, ab);
+      const double inverseDepth = 1.0 / c.z;
+      // Strictly in front only: a coplanar neighbour does not hide the patch.
+      if (ownerInverseDepth - inverseDepth >
+          kDepthTieTolerance * std::max(std::abs(ownerInverseDepth), inverseDepth))
+        return 0.0;
+    }
+    return pointToPolygonFormFactor(local.corners());
+  }
+  return 0.0;  // its centroid is outside the projection surface
+}
+
+double total(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return sum;
+}
+
+}  // namespace
+
+void refineSubPixelReceivers(const ProjectedShot& shot, ThreadPool& pool,
+                             std::vector<double>& formFactors) {
+  std::vector<int> candidates;
+  for (size_t j = 0; j < shot.projectedAreaPixels.size(); ++j)
+    if (shot.projectedAreaPixels[j] > 0.0 && shot.projectedAreaPixels[j] < kSubPixelAreaPixels)
+      candidates.push_back(static_cast<int>(j));
+  if (candidates.empty()) return;
+
+  const double caught = total(formFactors);
+  constexpr int kChunk = 64;
+  const int chunks = (static_cast<int>(candidates.size()) + kChunk - 1) / kChunk;
+  pool.parallelFor(chunks, [&](int chunk, int) {
+    const size_t end = std::min(candidates.size(), static_cast<size_t>(chunk + 1) * kChunk);
+    for (size_t c = static_cast<size_t>(chunk) * kChunk; c < end; ++c)
+      formFactors[candidates[c]] = visibleFormFactor(shot, candidates[c]);
+  });
+
+  // Keep the power the pixels caught; with none caught, keep the analytic values, within what the
+  // surface can catch at all.
+  const double refined = total(formFactors);
+  if (!(refined > 0.0)) return;
+  const double target = caught > 0.0 ? caught : std::min(refined, shot.surface.capturedFraction);
+  const double scale = target / refined;
+  for (double& f : formFactors) f *= scale;
+}
+
+}  // namespace radmesh

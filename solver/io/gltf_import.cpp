@@ -1,0 +1,203 @@
+#include "solver/io/gltf_import.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+#include "solver/geometry/coplanar_merge.h"
+#include "solver/io/gltf_accessor.h"
+#include "solver/io/gltf_load.h"
+#include "solver/io/gltf_material.h"
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+
+bool finiteMatrix(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+std::string nodeLabel(const tinygltf::Model& model, int index) {
+  const std::string& name = model.nodes[index].name;
+  return "node " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
+}
+
+// Collects the triangles of every mesh instance under the chosen scene roots, in world space.
+class TriangleCollector {
+ public:
+  TriangleCollector(const tinygltf::Model& model, const std::string& file, std::vector<std::string>* warnings)
+      : model_(model), file_(file), warnings_(warnings), onPath_(model.nodes.size(), false) {}
+
+  // glTF's transform hierarchy (glTF 2.0 spec, 3.5.2): world = parent x local.
+  void visit(int node, const glm::dmat4& parent, const std::string& referrer) {
+    if (node < 0 || static_cast<size_t>(node) >= model_.nodes.size())
+      throw SceneError(file_, referrer, "refers to node " + std::to_string(node) + ", which does not exist",
+                       "refer to existing nodes only");
+    const std::string element = nodeLabel(model_, node);
+    if (onPath_[node])
+      throw SceneError(file_, element, "is its own ancestor (the node hierarchy has a cycle)",
+                       "make the node hierarchy a tree");
+    const glm::dmat4 world = parent * localTransform(model_.nodes[node], element);
+    if (!finiteMatrix(world))
+      throw SceneError(file_, element, "has a NaN or infinite transform", "give the node a finite transform");
+    onPath_[node] = true;
+    if (model_.nodes[node].mesh >= 0) addMesh(model_.nodes[node].mesh, world, element);
+    for (int child : model_.nodes[node].children) visit(child, world, "children of " + element);
+    onPath_[node] = false;
+  }
+
+  std::vector<Polygon>& triangles() { return triangles_; }
+  int defaultMaterialUsers() const { return defaultMaterialUsers_; }
+
+ private:
+  glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& element) const {
+    auto sizeError = [&](const char* field, size_t want, size_t got) {
+      return SceneError(file_, element, std::string(field) + " has " + std::to_string(got) + " numbers",
+                        "give " + std::string(field) + " exactly " + std::to_string(want) + " numbers");
+    };
+    if (!n.matrix.empty()) {
+      if (n.matrix.size() != 16) throw sizeError("matrix", 16, n.matrix.size());
+      return glm::make_mat4(n.matrix.data());  // both column-major
+    }
+    glm::dmat4 m(1.0);
+    if (!n.translation.empty()) {
+      if (n.translation.size() != 3) throw sizeError("translation", 3, n.translation.size());
+      m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+    }
+    if (!n.rotation.empty()) {
+      if (n.rotation.size() != 4) throw sizeError("rotation", 4, n.rotation.size());
+      // glTF stores the quaternion as (x, y, z, w); glm's constructor takes w first.
+      m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+    }
+    if (!n.scale.empty()) {
+      if (n.scale.size() != 3) throw sizeError("scale", 3, n.scale.size());
+      m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+    }
+    return m;
+  }
+
+  void addMesh(int mesh, const glm::dmat4& world, const std::string& element) {
+    if (static_cast<size_t>(mesh) >= model_.meshes.size())
+      throw SceneError(file_, element, "refers to mesh " + std::to_string(mesh) + ", which does not exist",
+                       "refer to an existing mesh");
+    const std::string& name = model_.meshes[mesh].name;
+    const std::string label = name.empty() ? "mesh " + std::to_string(mesh) : "mesh '" + name + "'";
+    for (size_t p = 0; p < model_.meshes[mesh].primitives.size(); ++p)
+      addPrimitive(model_.meshes[mesh].primitives[p], world, label + " primitive " + std::to_string(p));
+  }
+
+  void addPrimitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& element) {
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+      if (warnings_)
+        warnings_->push_back(file_ + ": " + element + ": mode " + std::to_string(prim.mode) +
+                             " (points, lines, strips or fans) skipped; only triangle lists (mode 4) are read");
+      return;
+    }
+    const auto position = prim.attributes.find("POSITION");
+    if (position == prim.attributes.end())
+      throw SceneError(file_, element, "has no POSITION attribute", "give every triangle primitive positions");
+    const std::vector<Vec3> local = readFloatVec3(model_, position->second, file_, "POSITION of " + element);
+    std::vector<uint32_t> indices;
+    if (prim.indices >= 0) {
+      indices = readIndices(model_, prim.indices, file_, "indices of " + element);
+    } else {
+      indices.resize(local.size());
+      for (size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<uint32_t>(i);
+    }
+    if (indices.size() % 3 != 0)
+      throw SceneError(file_, element,
+                       "has " + std::to_string(indices.size()) + " vertices, not a multiple of 3 for triangles",
+                       "give each triangle exactly 3 indices");
+    for (size_t i = 0; i < indices.size(); ++i)
+      if (indices[i] >= local.size())
+        throw SceneError(file_, element,
+                         "index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
+                             ", out of range for its " + std::to_string(local.size()) + " positions",
+                         "keep every index below the POSITION accessor's count");
+    const int material = materialOf(prim, element);
+    // A mirroring transform turns counter-clockwise into clockwise (glTF 2.0 spec, 3.7.4).
+    const bool mirrored = glm::determinant(world) < 0.0;
+    for (size_t i = 0; i < indices.size(); i += 3) {
+      Polygon t{{}, material, element};
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t index = indices[i + (mirrored ? 2 - k : k)];
+        t.vertices.push_back(Vec3(world * glm::dvec4(local[index], 1.0)));
+      }
+      triangles_.push_back(std::move(t));
+    }
+  }
+
+  // Scene material index: the file's own materials come first, the default grey after them.
+  int materialOf(const tinygltf::Primitive& prim, const std::string& element) {
+    if (prim.material < 0) {
+      ++defaultMaterialUsers_;
+      return static_cast<int>(model_.materials.size());
+    }
+    if (static_cast<size_t>(prim.material) >= model_.materials.size())
+      throw SceneError(file_, element, "refers to material " + std::to_string(prim.material) + ", which does not exist",
+                       "refer to an existing material, or none for the default grey");
+    return prim.material;
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& file_;
+  std::vector<std::string>* warnings_;
+  std::vector<bool> onPath_;  // nodes on the current root-to-node path, to refuse cycles
+  std::vector<Polygon> triangles_;
+  int defaultMaterialUsers_ = 0;
+};
+
+// The roots to draw: the default scene's, else every scene's, else every node no node has as a child.
+std::vector<std::pair<int, std::string>> sceneRoots(const tinygltf::Model& model, const std::string& file) {
+  std::vector<std::pair<int, std::string>> roots;
+  auto addScene = [&](int s) {
+    for (int node : model.scenes[s].nodes) roots.emplace_back(node, "scene " + std::to_string(s));
+  };
+  if (model.defaultScene >= 0) {
+    if (static_cast<size_t>(model.defaultScene) >= model.scenes.size())
+      throw SceneError(file, "scene", "the default scene " + std::to_string(model.defaultScene) + " does not exist",
+                       "set \"scene\" to an existing scene's index");
+    addScene(model.defaultScene);
+  } else if (!model.scenes.empty()) {
+    for (size_t s = 0; s < model.scenes.size(); ++s) addScene(static_cast<int>(s));
+  } else {
+    std::vector<bool> isChild(model.nodes.size(), false);
+    for (const tinygltf::Node& n : model.nodes)
+      for (int c : n.children)
+        if (c >= 0 && static_cast<size_t>(c) < isChild.size()) isChild[c] = true;
+    for (size_t n = 0; n < model.nodes.size(); ++n)
+      if (!isChild[n]) roots.emplace_back(static_cast<int>(n), "nodes");
+  }
+  return roots;
+}
+
+}  // namespace
+
+Scene importGltf(const std::string& path, std::vector<std::string>* warnings) {
+  const tinygltf::Model model = loadGltfModel(path, warnings);
+  Scene scene;
+  scene.source = path;
+  scene.materials = convertGltfMaterials(model, path, warnings);
+  TriangleCollector collector(model, path, warnings);
+  for (const auto& [node, referrer] : sceneRoots(model, path)) collector.visit(node, glm::dmat4(1.0), referrer);
+  if (collector.defaultMaterialUsers() > 0) {
+    scene.materials.push_back(defaultGltfMaterial());
+    if (warnings)
+      warnings->push_back(path + ": " + std::to_string(collector.defaultMaterialUsers()) +
+                          " primitive(s) without a material get the material '" + scene.materials.back().name + "'");
+  }
+  MergeReport report;
+  scene.polygons = mergeCoplanarTriangles(collector.triangles(), &report);
+  if (report.degenerateDropped > 0 && warnings)
+    warnings->push_back(path + ": " + std::to_string(report.degenerateDropped) +
+                        " degenerate (zero-area) triangle(s) dropped");
+  return scene;
+}
+
+}  // namespace radmesh

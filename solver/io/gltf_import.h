@@ -1,0 +1,20 @@
+#pragma once
+// glTF 2.0 (.gltf / .glb) import through tinygltf.
+#include <string>
+#include <vector>
+
+#include "solver/scene/scene.h"
+
+namespace radmesh {
+
+// Reads the triangle lists (mode 4, indexed or not) of every mesh under the default scene's roots
+// (or every scene's, or every root node's), in world space through the node transforms (matrix or
+// TRS); other primitive modes are warned about and skipped. Materials: rho = baseColorFactor x the
+// baseColorTexture's texel average, E = emissiveFactor x KHR_materials_emissive_strength (W/m^2);
+// see gltf_material.h. Primitives without a material get a grey default (warned about). Coplanar
+// adjacent triangles of one material are merged into polygons (coplanar_merge.h). Throws
+// SceneError naming the file and the element (JSON, GLB container, buffer, accessor, node, mesh
+// primitive, material) on bad input; the scene is not validated here (loadScene does that).
+Scene importGltf(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace radmesh

@@ -1,0 +1,143 @@
+#include "solver/io/gltf_load.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr size_t kGlbHeaderBytes = 20;  // magic, version, length, then the JSON chunk's length and type
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path, "", "cannot be opened", "check the path and the file's permissions");
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+bool isGlb(const std::string& bytes) { return bytes.compare(0, 4, "glTF") == 0; }
+
+uint32_t littleEndian32(const std::string& bytes, size_t at) {
+  uint32_t v = 0;
+  for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
+  return v;
+}
+
+// tinygltf's messages come as lines; one line reads better inside ours.
+std::string oneLine(const std::string& message) {
+  std::string out;
+  for (char c : message) out += c == '\n' ? std::string("; ") : std::string(1, c);
+  while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+  return out.empty() ? "no message" : out;
+}
+
+struct Diagnosis {
+  std::string element;
+  std::string detail;  // added to tinygltf's message
+  std::string fix;
+};
+
+// Why tinygltf refused the file, found by reading the file again ourselves: the GLB container,
+// the JSON syntax, or an external buffer that is missing or short.
+Diagnosis diagnose(const std::string& path, const std::string& bytes) {
+  std::string json = bytes;
+  if (isGlb(bytes)) {
+    const uint32_t declared = bytes.size() >= 12 ? littleEndian32(bytes, 8) : 0;
+    const uint32_t jsonBytes = bytes.size() >= kGlbHeaderBytes ? littleEndian32(bytes, 12) : 0;
+    if (bytes.size() < kGlbHeaderBytes || declared > bytes.size() || jsonBytes > bytes.size() - kGlbHeaderBytes)
+      return {"GLB container",
+              "the file has " + std::to_string(bytes.size()) + " bytes, its header declares " + std::to_string(declared),
+              "the file is truncated or damaged: export or copy it again"};
+    json = bytes.substr(kGlbHeaderBytes, jsonBytes);
+  }
+  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+  if (doc.is_discarded())
+    return {"JSON", "", "repair the JSON text (a truncated file ends mid-object)"};
+  const auto buffers = doc.find("buffers");
+  if (buffers != doc.end() && buffers->is_array()) {
+    for (size_t i = 0; i < buffers->size(); ++i) {
+      const nlohmann::json& b = (*buffers)[i];
+      if (!b.is_object() || !b.contains("uri") || !b["uri"].is_string()) continue;
+      const std::string uri = b["uri"].get<std::string>();
+      if (uri.rfind("data:", 0) == 0) continue;
+      const fs::path file = fs::path(path).parent_path() / uri;
+      std::error_code ec;
+      const std::string element = "buffer " + std::to_string(i);
+      if (!fs::is_regular_file(file, ec))
+        return {element, "its file '" + file.string() + "' does not exist",
+                "put '" + uri + "' beside the glTF file, or embed the buffer"};
+      const auto size = fs::file_size(file, ec);
+      if (!ec && b.contains("byteLength") && b["byteLength"].is_number_unsigned() &&
+          size < b["byteLength"].get<uint64_t>())
+        return {element, "its file '" + file.string() + "' has " + std::to_string(size) + " bytes, fewer than byteLength",
+                "supply the whole buffer file (it may be truncated)"};
+    }
+  }
+  return {"", "", "check that the file is valid glTF 2.0 (for example with the Khronos glTF validator)"};
+}
+
+// A texture only scales a material's colour: one that cannot be decoded is warned about (the
+// material keeps its factor alone) instead of refusing the whole scene.
+bool decodeImageOrWarn(tinygltf::Image* image, const int index, std::string* /*err*/, std::string* warn, int width,
+                       int height, const unsigned char* bytes, int size, void* options) {
+  std::string why;
+  if (tinygltf::LoadImageData(image, index, &why, warn, width, height, bytes, size, options)) return true;
+  if (warn) *warn += "image " + std::to_string(index) + " could not be decoded (" + oneLine(why) + ")\n";
+  return true;
+}
+
+void appendWarnings(const std::string& path, const std::string& text, std::vector<std::string>* warnings) {
+  if (!warnings || text.empty()) return;
+  size_t start = 0;
+  while (start < text.size()) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    if (end > start) warnings->push_back(path + ": " + text.substr(start, end - start));
+    start = end + 1;
+  }
+}
+
+}  // namespace
+
+tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>* warnings) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw SceneError(path, "", "does not exist or is not a file", "check the path");
+  const std::string bytes = readBytes(path);
+  if (bytes.size() > std::numeric_limits<unsigned>::max())
+    throw SceneError(path, "", "is larger than 4 GiB, more than tinygltf reads", "split the model");
+  const std::string baseDir = fs::path(path).parent_path().string();  // external buffers and images
+  const auto length = static_cast<unsigned>(bytes.size());
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&decodeImageOrWarn, nullptr);  // no options: the decoder's defaults (RGBA)
+  tinygltf::Model model;
+  std::string error, warning;
+  bool loaded = false;
+  try {
+    loaded = isGlb(bytes)
+                 ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                               reinterpret_cast<const unsigned char*>(bytes.data()), length, baseDir)
+                 : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), length, baseDir);
+  } catch (const std::exception& e) {
+    error += e.what();
+  }
+  appendWarnings(path, warning, warnings);
+  // tinygltf may report an error yet return true (a bad optional part); trust only a clean load.
+  if (loaded && error.empty()) return model;
+  const Diagnosis d = diagnose(path, bytes);
+  throw SceneError(path, d.element,
+                   "could not be loaded (tinygltf: " + oneLine(error) + ")" +
+                       (d.detail.empty() ? "" : ": " + d.detail),
+                   d.fix);
+}
+
+}  // namespace radmesh

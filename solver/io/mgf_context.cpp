@@ -1,0 +1,120 @@
+#include "solver/io/mgf_context.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "solver/io/mgf_error.h"
+
+namespace radmesh {
+
+namespace {
+
+std::vector<double> numbers(const MgfEntity& e, size_t first, size_t count, const std::string& what) {
+  std::vector<double> values;
+  for (size_t k = first; k < first + count; ++k) values.push_back(parseMgfNumber(e.words[k], what));
+  return values;
+}
+
+Vec3 vector3(const MgfEntity& e, const std::string& what) {
+  const std::vector<double> v = numbers(e, 1, 3, what);
+  return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+template <class T>
+void MgfContexts::Family<T>::select(const MgfEntity& e, const T& fresh) {
+  const std::string k = keyword;
+  requireMgfArguments(e, 0, 3, k + " [name [= [template]]]");
+  if (e.words.size() == 1) {
+    unnamed = fresh;
+    current = &unnamed;
+    currentName.clear();
+    return;
+  }
+  const std::string& name = e.words[1];
+  if (e.words.size() == 2) {
+    current = &find(name);
+    currentName = name;
+    return;
+  }
+  if (e.words[2] != "=")
+    throw MgfError("expected '=' after the name, found '" + e.words[2] + "'",
+                   "write " + k + " " + name + " = [template]");
+  const T value = e.words.size() == 4 ? find(e.words[3]) : fresh;
+  current = &(named[name] = value);
+  currentName = name;
+}
+
+template <class T>
+const T& MgfContexts::Family<T>::find(const std::string& name) const {
+  const auto it = named.find(name);
+  if (it == named.end())
+    throw MgfError(std::string(keyword) + " '" + name + "' is not defined",
+                   std::string("define it first with ") + keyword + " " + name + " = ...");
+  return it->second;
+}
+
+const MgfVertex& MgfContexts::vertex(const std::string& name) const { return vertices_.find(name); }
+
+bool MgfContexts::handle(const MgfEntity& e) {
+  const std::string& k = e.words[0];
+  Xyz& color = *colors_.current;
+  MgfMaterial& material = *materials_.current;
+  MgfVertex& vertex = *vertices_.current;
+  if (k == "c") {
+    colors_.select(e, kMgfNeutral);
+  } else if (k == "cxy") {
+    requireMgfArguments(e, 2, 2, "cxy x y");
+    color = xyzFromChromaticity(parseMgfNumber(e.words[1], "x"), parseMgfNumber(e.words[2], "y"));
+  } else if (k == "cspec") {
+    requireMgfArguments(e, 4, SIZE_MAX, "cspec l_min l_max v1 v2 ...");
+    color = xyzFromSpectrum(parseMgfNumber(e.words[1], "l_min"), parseMgfNumber(e.words[2], "l_max"),
+                            numbers(e, 3, e.words.size() - 3, "spectral value"));
+  } else if (k == "cct") {
+    requireMgfArguments(e, 1, 1, "cct temperature");
+    color = xyzFromTemperature(parseMgfNumber(e.words[1], "temperature"));
+  } else if (k == "cmix") {
+    if (e.words.size() < 3 || e.words.size() % 2 == 0)
+      throw MgfError("cmix needs pairs of weight and colour name", "write it as: cmix w1 c1 w2 c2 ...");
+    std::vector<double> weights;
+    std::vector<Xyz> mixed;
+    for (size_t i = 1; i < e.words.size(); i += 2) {
+      weights.push_back(parseMgfNumber(e.words[i], "weight"));
+      mixed.push_back(colors_.find(e.words[i + 1]));
+    }
+    color = mixColors(weights, mixed);
+  } else if (k == "m") {
+    materials_.select(e, MgfMaterial{});
+  } else if (k == "rd") {
+    requireMgfArguments(e, 1, 1, "rd rho_d");
+    const double rd = parseMgfNumber(e.words[1], "rho_d");
+    // rho = 1 would never let light die out, so the solver needs it strictly below 1.
+    if (rd < 0.0 || rd >= 1.0)
+      throw MgfError("diffuse reflectance " + e.words[1] + " is outside [0, 1)",
+                     "give rd a value from 0 up to (not including) 1");
+    material.rd = rd;
+    material.rdColor = color;
+  } else if (k == "ed") {
+    requireMgfArguments(e, 1, 1, "ed epsilon_d");
+    const double ed = parseMgfNumber(e.words[1], "epsilon_d");
+    if (ed < 0.0)
+      throw MgfError("emittance " + e.words[1] + " is negative", "give ed in lm/m^2, >= 0");
+    material.ed = ed;
+    material.edColor = color;
+  } else if (k == "v") {
+    vertices_.select(e, MgfVertex{});
+  } else if (k == "p") {
+    requireMgfArguments(e, 3, 3, "p x y z");
+    vertex.position = vector3(e, "coordinate");
+  } else if (k == "n") {
+    requireMgfArguments(e, 3, 3, "n dx dy dz");
+    vertex.normal = vector3(e, "normal component");
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace radmesh

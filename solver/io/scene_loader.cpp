@@ -1,0 +1,48 @@
+#include "solver/io/scene_loader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <system_error>
+
+#include "solver/io/builtin_scenes.h"
+#include "solver/io/gltf_import.h"
+#include "solver/io/mgf_import.h"
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+
+std::string acceptedForms() {
+  std::string names;
+  for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+  return "give a .gltf, .glb or .mgf file, or a built-in scene name (" + names + ")";
+}
+
+Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
+  std::error_code error;
+  const std::filesystem::path p(path);
+  if (!std::filesystem::exists(p, error))
+    throw SceneError(path, "", "no such file, and not a built-in scene name", acceptedForms());
+  if (std::filesystem::is_directory(p, error))
+    throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
+  std::string extension = p.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".gltf" || extension == ".glb") return importGltf(path, warnings);
+  if (extension == ".mgf") return importMgf(path, warnings);
+  throw SceneError(path, "",
+                   "has an unknown extension '" + extension + "': radmesh reads glTF 2.0 and MGF scenes",
+                   acceptedForms());
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings) {
+  Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
+  validateScene(scene);
+  return scene;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,15 @@
+#pragma once
+// One entry point for every command that takes a SCENE: a built-in name or a .gltf/.glb/.mgf path.
+#include <string>
+#include <vector>
+
+#include "solver/scene/scene.h"
+
+namespace radmesh {
+
+inline constexpr const char* kDefaultScene = "office";
+
+// Loads and validates; throws SceneError with file, element and fix on anything unusable.
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace radmesh

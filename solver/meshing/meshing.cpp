@@ -1,0 +1,241 @@
+#include "solver/meshing/meshing.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "solver/geometry/polygon_clip.h"
+#include "solver/geometry/polygon_convex.h"
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+
+// A polygon's own 2D frame: world axes u and v span its dominant plane (ordered so that the
+// polygon is counter-clockwise in them), n is the dropped one. Coordinates are taken relative to a
+// grid corner near the polygon, so the global grid lines fall at integer multiples of the cell and
+// a scene far from the world origin keeps its precision.
+struct PolygonFrame {
+  int u = 0, v = 1, n = 2;
+  Vec3 origin{0.0};  // a grid corner in u and v; the plane's height in n
+  Vec3 unitNormal{0.0};
+  Vec2 planePoint{0.0};      // a point of the plane (local u, v) ...
+  double planeHeight = 0.0;  // ... and its local n coordinate
+
+  Vec2 toLocal(const Vec3& p) const { return {p[u] - origin[u], p[v] - origin[v]}; }
+
+  // Back onto the polygon's plane (its mean plane, if the input is slightly bent), in world space.
+  Vec3 lift(const Vec2& q) const {
+    const Vec2 d = q - planePoint;
+    Vec3 world;
+    world[u] = origin[u] + q.x;
+    world[v] = origin[v] + q.y;
+    world[n] = origin[n] + planeHeight - (unitNormal[u] * d.x + unitNormal[v] * d.y) / unitNormal[n];
+    return world;
+  }
+};
+
+// One polygon cut into convex pieces, in its own frame, before slicing.
+struct PreparedPolygon {
+  PolygonFrame frame;
+  Frame patchFrame;
+  std::vector<std::vector<Vec2>> pieces;
+  double noiseM = 0.0;        // distances below this are rounding, not geometry
+  double sliverAreaM2 = 0.0;  // projected area below which a piece is a clipping sliver
+};
+
+std::string describe(const Scene& scene, size_t index) {
+  const std::string& origin = scene.polygons[index].origin;
+  return "polygon " + std::to_string(index) + (origin.empty() ? "" : " (" + origin + ")");
+}
+
+// The projection frame of section 1.5: n is the normal, u the world axis least aligned with it,
+// projected into the plane (deterministic, and the same for every patch of a polygon).
+Frame frameFor(const Vec3& normal) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(normal[k]) < std::abs(normal[axis])) axis = k;
+  Vec3 u{0.0};
+  u[axis] = 1.0;
+  u = glm::normalize(u - normal * glm::dot(u, normal));
+  return {u, glm::cross(normal, u), normal};
+}
+
+PreparedPolygon prepare(const Scene& scene, size_t index, double cellM) {
+  const std::vector<Vec3>& vertices = scene.polygons[index].vertices;
+  const Vec3 newell = newellNormal(vertices);
+  const double length = glm::length(newell);
+  if (vertices.size() < 3 || !(length > 0.0) || !std::isfinite(length))
+    throw SceneError(scene.source, describe(scene, index), "has zero or non-finite area",
+                     "remove the polygon or fix its vertices");
+  PreparedPolygon out;
+  PolygonFrame& f = out.frame;
+  f.unitNormal = newell / length;
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(newell[k]) > std::abs(newell[f.n])) f.n = k;
+  // Newell's n-component is twice the signed area projected along n: order u, v to make it positive.
+  f.u = (f.n + (newell[f.n] > 0 ? 1 : 2)) % 3;
+  f.v = (f.n + (newell[f.n] > 0 ? 2 : 1)) % 3;
+  double maxAbs = 0.0;
+  Vec3 lo = vertices[0];
+  for (const Vec3& p : vertices) {
+    lo = glm::min(lo, p);
+    maxAbs = std::max({maxAbs, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  }
+  f.origin[f.u] = std::floor(lo[f.u] / cellM) * cellM;
+  f.origin[f.v] = std::floor(lo[f.v] / cellM) * cellM;
+  f.origin[f.n] = vertices[0][f.n];
+  std::vector<Vec2> points;
+  Vec3 mean{0.0};
+  for (const Vec3& p : vertices) {
+    points.push_back(f.toLocal(p));
+    mean += p - f.origin;
+  }
+  mean /= static_cast<double>(vertices.size());
+  f.planePoint = {mean[f.u], mean[f.v]};
+  f.planeHeight = mean[f.n];
+  out.patchFrame = frameFor(f.unitNormal);
+
+  // Rounding noise: relative to the polygon's size, and to the magnitude of its world coordinates.
+  out.noiseM = 1e-12 * extentOf(points) + 4.0 * DBL_EPSILON * maxAbs;
+  const double area = signedArea(points);
+  out.sliverAreaM2 = 1e-12 * area;
+  if (isConvex(points, out.noiseM)) {
+    out.pieces.push_back(std::move(points));
+    return out;
+  }
+  out.pieces = convexPieces(points, out.noiseM);
+  double total = 0.0;
+  for (const auto& piece : out.pieces) total += signedArea(piece);
+  if (!(std::abs(total - area) <= 1e-6 * area))
+    throw SceneError(scene.source, describe(scene, index),
+                     "crosses or overlaps itself (its convex parts cover " + fmt::format("{:.6g}", total) +
+                         " of its " + fmt::format("{:.6g}", area) + " projected square metres)",
+                     "split it into simple polygons");
+  return out;
+}
+
+// Grid cells a convex piece touches, from above: the cells of its bounding box, or (for a thin
+// slanted piece) its area grown by one cell along each side of the box.
+double cellEstimate(const std::vector<Vec2>& piece, double cellM, double noiseM) {
+  Vec2 lo = piece[0], hi = piece[0];
+  for (const Vec2& p : piece) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const auto span = [&](int a) {
+    return std::max(1.0, std::ceil((hi[a] - noiseM) / cellM) - std::floor((lo[a] + noiseM) / cellM));
+  };
+  const Vec2 size = hi - lo;
+  const double grown = signedArea(piece) / (cellM * cellM) + (size.x + size.y) / cellM + 1.0;
+  return std::min(span(0) * span(1), grown);
+}
+
+void refuseCell(double cellM) {
+  if (!std::isfinite(cellM) || !(cellM > 0.0))
+    throw OptionError(fmt::format(
+        "--cell must be a finite grid size in metres greater than 0, got {}; use e.g. --cell 0.381 "
+        "(15 inches, the paper's grid)",
+        cellM));
+}
+
+void refuseCount(double patches, double cellM, size_t maxPatches, double areaM2) {
+  // Patch count goes as area / cell^2: the cell that would about meet the limit.
+  const double limit = static_cast<double>(maxPatches);
+  const double suggested =
+      std::isfinite(patches) ? cellM * std::sqrt(patches / limit) * 1.1 : 2.0 * std::sqrt(areaM2 / limit);
+  const std::string count =
+      std::isfinite(patches) ? fmt::format("about {:.3g}", patches) : "uncountably many";
+  throw OptionError(
+      fmt::format("--cell {} m would cut the scene into {} patches, more than the limit of {}; use a larger "
+                  "--cell (about {:.3g} m or more)",
+                  cellM, count, maxPatches, suggested));
+}
+
+// Drops repeated and collinear vertices (within noise): what is left turns strictly left.
+std::vector<Vec2> withoutStraightVertices(std::vector<Vec2> p, double noiseM) {
+  for (bool changed = true; changed && p.size() >= 3;) {
+    changed = false;
+    for (size_t i = 0; i < p.size() && p.size() >= 3; ++i) {
+      const Vec2& a = p[(i + p.size() - 1) % p.size()];
+      const Vec2& c = p[(i + 1) % p.size()];
+      if (glm::length(p[i] - a) <= noiseM || std::abs(sideOfLine(a, c, p[i])) <= noiseM) {
+        p.erase(p.begin() + static_cast<long>(i));
+        changed = true;
+      }
+    }
+  }
+  return p;
+}
+
+// Fanning from the lowest vertex (x, then y) makes the patches independent of which vertex the
+// input polygon happened to list first.
+void startAtLowestVertex(std::vector<Vec2>& p) {
+  const auto lower = [](const Vec2& a, const Vec2& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  std::rotate(p.begin(), std::min_element(p.begin(), p.end(), lower), p.end());
+}
+
+Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, double area2d, int material,
+                int polygon) {
+  const PolygonFrame& f = prepared.frame;
+  Patch patch;
+  patch.vertexCount = static_cast<int>(q.size());
+  Vec2 centroid{0.0};
+  for (size_t i = 1; i + 1 < q.size(); ++i)
+    centroid += cross2(q[i] - q[0], q[i + 1] - q[0]) * (q[0] + q[i] + q[i + 1]) / 3.0;
+  centroid = centroid / (2.0 * area2d);
+  for (size_t i = 0; i < q.size(); ++i) patch.vertices[i] = f.lift(q[i]);
+  // Lifting onto the plane is affine, so it carries the area centroid along; areas grow by
+  // 1 / cos of the angle between the normal and the dropped axis.
+  patch.centroid = f.lift(centroid);
+  patch.areaM2 = area2d / std::abs(f.unitNormal[f.n]);
+  patch.normal = f.unitNormal;
+  patch.frame = prepared.patchFrame;
+  patch.material = material;
+  patch.polygon = polygon;
+  return patch;
+}
+
+}  // namespace
+
+std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches) {
+  refuseCell(cellM);
+  std::vector<PreparedPolygon> prepared;
+  prepared.reserve(scene.polygons.size());
+  double estimate = 0.0, areaM2 = 0.0;
+  for (size_t i = 0; i < scene.polygons.size(); ++i) {
+    prepared.push_back(prepare(scene, i, cellM));
+    for (const auto& piece : prepared.back().pieces) {
+      estimate += cellEstimate(piece, cellM, prepared.back().noiseM);
+      areaM2 += signedArea(piece);
+    }
+  }
+  // Refuse before slicing: a tiny cell must fail fast, not exhaust memory.
+  if (!(estimate <= static_cast<double>(maxPatches))) refuseCount(estimate, cellM, maxPatches, areaM2);
+
+  std::vector<Patch> patches;
+  patches.reserve(static_cast<size_t>(estimate));
+  for (size_t i = 0; i < prepared.size(); ++i) {
+    const PreparedPolygon& p = prepared[i];
+    for (const auto& piece : p.pieces) {
+      for (const auto& cell : sliceByGrid(piece, cellM, p.noiseM)) {
+        std::vector<Vec2> clean = withoutStraightVertices(cell, p.noiseM);
+        if (clean.size() < 3) continue;
+        startAtLowestVertex(clean);
+        for (const auto& q : fanIntoQuads(clean)) {
+          const double area2d = signedArea(q);
+          if (!(area2d > p.sliverAreaM2)) continue;  // a zero-area sliver of clipping
+          if (patches.size() >= maxPatches)
+            refuseCount(std::max(estimate, maxPatches + 1.0), cellM, maxPatches, areaM2);
+          patches.push_back(makePatch(p, q, area2d, scene.polygons[i].material, static_cast<int>(i)));
+        }
+      }
+    }
+  }
+  return patches;
+}
+
+}  // namespace radmesh

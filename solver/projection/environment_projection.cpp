@@ -1,0 +1,110 @@
+#include "solver/projection/environment_projection.h"
+
+#include <algorithm>
+
+namespace radmesh {
+
+namespace {
+
+constexpr int kBandRows = 16;       // rows of pixels per task
+constexpr int kChunkPatches = 256;  // patches per set-up task
+
+}  // namespace
+
+EnvironmentProjection::EnvironmentProjection(const std::vector<Patch>& patches,
+                                             ProjectionSurface surface, double nearDepth,
+                                             ThreadPool& pool)
+    : patches_(patches),
+      surface_(std::move(surface)),
+      nearDepth_(nearDepth),
+      pool_(pool),
+      rank_(depthTieRanks(patches)),
+      slotOfPatch_(pool.size(), std::vector<int>(patches.size(), -1)),
+      pixelFormFactors_(patches.size(), 0.0),
+      projectedArea_(patches.size(), 0.0),
+      seenFromFront_(patches.size(), 0) {
+  const int faces = static_cast<int>(surface_.faces.size());
+  for (int f = 0; f < faces; ++f) {
+    const ProjectionFace& face = surface_.faces[f];
+    buffers_.emplace_back(face.width, face.height);
+    firstBandOfFace_.push_back(static_cast<int>(bands_.size()));
+    for (int row = 0; row < face.height; row += kBandRows)
+      bands_.push_back({f, row, std::min(row + kBandRows, face.height), {}, {}});
+  }
+  const size_t chunks = (patches.size() + kChunkPatches - 1) / kChunkPatches;
+  chunkSetups_.assign(chunks, std::vector<std::vector<PolygonSetup>>(faces));
+}
+
+void EnvironmentProjection::setUpPatches(int shooter) {
+  const Patch& from = patches_[shooter];
+  const int n = static_cast<int>(patches_.size());
+  pool_.parallelFor(static_cast<int>(chunkSetups_.size()), [&](int chunk, int) {
+    auto& out = chunkSetups_[chunk];
+    for (auto& faceSetups : out) faceSetups.clear();
+    const int end = std::min(n, (chunk + 1) * kChunkPatches);
+    for (int j = chunk * kChunkPatches; j < end; ++j) {
+      projectedArea_[j] = 0.0;
+      seenFromFront_[j] = 0;
+      if (j == shooter) continue;
+      const LocalPolygon local = toShooterFrame(from, patches_[j]);
+      double highest = local.vertices[0].z;
+      for (int k = 1; k < local.vertexCount; ++k) highest = std::max(highest, local.vertices[k].z);
+      if (highest <= 0.0) continue;  // wholly behind the shooter: no face sees it
+      seenFromFront_[j] = local.seenFromFront();
+      for (size_t f = 0; f < out.size(); ++f) {
+        const ProjectionFace& face = surface_.faces[f];
+        ScreenPolygon screen;
+        if (!projectOntoFace(local, face, nearDepth_, screen)) continue;
+        PolygonSetup& setup = out[f].emplace_back();  // set up in place: it is a few hundred bytes
+        if (setupPolygon(screen, face.width, face.height, j, rank_[j], setup))
+          projectedArea_[j] += setup.areaPixels;
+        else
+          out[f].pop_back();
+      }
+    }
+  });
+
+  // Hand each band the polygons that reach its rows, in patch order.
+  for (Band& band : bands_) band.setups.clear();
+  for (const auto& chunk : chunkSetups_)
+    for (size_t f = 0; f < chunk.size(); ++f)
+      for (const PolygonSetup& setup : chunk[f])
+        for (int row = setup.rowBegin / kBandRows * kBandRows; row < setup.rowEnd; row += kBandRows)
+          bands_[firstBandOfFace_[f] + row / kBandRows].setups.push_back(&setup);
+}
+
+void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
+  ItemBuffer& buffer = buffers_[band.face];
+  buffer.clearRows(band.rowBegin, band.rowEnd);
+  for (const PolygonSetup* setup : band.setups) rasterise(*setup, buffer, band.rowBegin, band.rowEnd, rank_);
+
+  // Form-factor phase: the delta form factor of every pixel goes to the patch seen there.
+  std::vector<int>& slot = slotOfPatch_[worker];
+  const std::vector<double>& df = surface_.deltaFormFactors[band.face];
+  band.sums.clear();
+  const size_t begin = static_cast<size_t>(band.rowBegin) * buffer.width;
+  const size_t end = static_cast<size_t>(band.rowEnd) * buffer.width;
+  for (size_t q = begin; q < end; ++q) {
+    const int id = buffer.items[q];
+    if (id == ItemBuffer::kNone) continue;
+    if (slot[id] < 0) {
+      slot[id] = static_cast<int>(band.sums.size());
+      band.sums.emplace_back(id, df[q]);
+    } else {
+      band.sums[slot[id]].second += df[q];
+    }
+  }
+  for (const auto& [id, sum] : band.sums) slot[id] = -1;
+}
+
+void EnvironmentProjection::project(int shooter) {
+  setUpPatches(shooter);
+  pool_.parallelFor(static_cast<int>(bands_.size()),
+                    [&](int b, int worker) { rasteriseBand(bands_[b], worker); });
+  // Bands are summed in a fixed order: the same bits whatever thread did which band.
+  std::fill(pixelFormFactors_.begin(), pixelFormFactors_.end(), 0.0);
+  for (const Band& band : bands_)
+    for (const auto& [id, sum] : band.sums) pixelFormFactors_[id] += sum;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,61 @@
+#pragma once
+// One shot's environment projection (the paper's section 1.5): every patch is projected onto the
+// shooter's projection surface, z-buffered into one item buffer per face, and the delta form
+// factors of the pixels where each patch is seen are summed (its form factor, before any
+// refinement). Rows of pixels are split into fixed bands, so the work spreads over threads while
+// the sums stay bitwise the same for any thread count.
+#include <vector>
+
+#include "solver/projection/item_buffer.h"
+#include "solver/meshing/patch.h"
+#include "solver/projection/projection_surface.h"
+#include "solver/projection/scan_conversion.h"
+#include "parallel/thread_pool.h"
+
+namespace radmesh {
+
+class EnvironmentProjection {
+ public:
+  // nearDepth: the near plane, a small length relative to the scene's size.
+  EnvironmentProjection(const std::vector<Patch>& patches, ProjectionSurface surface,
+                        double nearDepth, ThreadPool& pool);
+
+  void project(int shooter);
+
+  const ProjectionSurface& surface() const { return surface_; }
+  const std::vector<ItemBuffer>& itemBuffers() const { return buffers_; }
+  const std::vector<int>& depthTieRank() const { return rank_; }
+  // After project(), per patch: the summed delta form factors of the pixels showing it,
+  // its projected area in pixels over all faces, and whether the shooter sees its front.
+  const std::vector<double>& pixelFormFactors() const { return pixelFormFactors_; }
+  const std::vector<double>& projectedAreaPixels() const { return projectedArea_; }
+  const std::vector<char>& seenFromFront() const { return seenFromFront_; }
+
+ private:
+  struct Band {  // rows [rowBegin, rowEnd) of one face
+    int face = 0;
+    int rowBegin = 0;
+    int rowEnd = 0;
+    std::vector<const PolygonSetup*> setups;     // polygons reaching these rows, in patch order
+    std::vector<std::pair<int, double>> sums;    // per patch seen in the band, in first-seen order
+  };
+
+  void setUpPatches(int shooter);
+  void rasteriseBand(Band& band, int worker);
+
+  const std::vector<Patch>& patches_;
+  ProjectionSurface surface_;
+  double nearDepth_;
+  ThreadPool& pool_;
+  std::vector<int> rank_;
+  std::vector<ItemBuffer> buffers_;
+  std::vector<Band> bands_;
+  std::vector<std::vector<std::vector<PolygonSetup>>> chunkSetups_;  // [chunk][face], patch order
+  std::vector<int> firstBandOfFace_;
+  std::vector<std::vector<int>> slotOfPatch_;                        // [worker] scratch, -1 when free
+  std::vector<double> pixelFormFactors_;
+  std::vector<double> projectedArea_;
+  std::vector<char> seenFromFront_;
+};
+
+}  // namespace radmesh

@@ -1,0 +1,111 @@
+#include "solver/projection/projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+namespace radmesh {
+
+glm::dvec2 ProjectionFace::pixelCentre(int column, int row) const {
+  return {a0 + (column + 0.5) * pixelWidth(), b0 + (row + 0.5) * pixelHeight()};
+}
+
+Vec3 toShooterFrame(const Patch& shooter, const Vec3& point) {
+  // Differences first: a scene far from the origin keeps its precision near the shooter.
+  const Vec3 d = point - shooter.centroid;
+  return {glm::dot(d, shooter.frame.u), glm::dot(d, shooter.frame.v), glm::dot(d, shooter.frame.n)};
+}
+
+LocalPolygon toShooterFrame(const Patch& shooter, const Patch& patch) {
+  LocalPolygon local;
+  local.vertexCount = patch.vertexCount;
+  for (int k = 0; k < patch.vertexCount; ++k) local.vertices[k] = toShooterFrame(shooter, patch.vertices[k]);
+  const Frame& f = shooter.frame;
+  local.normal = {glm::dot(patch.normal, f.u), glm::dot(patch.normal, f.v), glm::dot(patch.normal, f.n)};
+  local.centroid = toShooterFrame(shooter, patch.centroid);
+  local.planeOffset = glm::dot(local.normal, local.centroid);
+  return local;
+}
+
+Vec3 toFace(const ProjectionFace& face, const Vec3& local) {
+  return {face.sign[0] * local[face.axis[0]], face.sign[1] * local[face.axis[1]],
+          face.sign[2] * local[face.axis[2]]};
+}
+
+double inverseDepthAlong(const LocalPolygon& patch, const ProjectionFace& face, glm::dvec2 faceAB) {
+  const Vec3 m = toFace(face, patch.normal);
+  return (m.x * faceAB.x + m.y * faceAB.y + m.z) / patch.planeOffset;
+}
+
+namespace {
+
+// The point where edge (p, q) crosses depth = nearDepth, computed from the pair in a fixed order
+// so that two patches sharing the edge get the very same point (and so share the clipped edge).
+Vec3 nearCrossing(const Vec3& p, const Vec3& q, double nearDepth) {
+  const bool pFirst = std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  const Vec3& s = pFirst ? p : q;
+  const Vec3& t = pFirst ? q : p;
+  const double f = (nearDepth - s.z) / (t.z - s.z);
+  Vec3 crossing = s + f * (t - s);
+  crossing.z = nearDepth;
+  return crossing;
+}
+
+}  // namespace
+
+bool projectOntoFace(const LocalPolygon& patch, const ProjectionFace& face, double nearDepth,
+                     ScreenPolygon& out) {
+  if (std::abs(patch.planeOffset) <= nearDepth) return false;  // edge-on: a line, no area
+
+  std::array<Vec3, 4> faceVertices;
+  bool anyInFront = false;
+  for (int k = 0; k < patch.vertexCount; ++k) {
+    faceVertices[k] = toFace(face, patch.vertices[k]);
+    anyInFront = anyInFront || faceVertices[k].z > nearDepth;
+  }
+  if (!anyInFront) return false;
+
+  // Sutherland-Hodgman against the near plane: a convex polygon stays convex, gains at most one vertex.
+  std::array<Vec3, ScreenPolygon::kMaxVertices> clipped;
+  int count = 0;
+  for (int k = 0; k < patch.vertexCount; ++k) {
+    const Vec3& p = faceVertices[k];
+    const Vec3& q = faceVertices[(k + 1) % patch.vertexCount];
+    const bool pIn = p.z > nearDepth;
+    const bool qIn = q.z > nearDepth;
+    if (pIn) clipped[count++] = p;
+    if (pIn != qIn) clipped[count++] = nearCrossing(p, q, nearDepth);
+  }
+
+  const double scaleA = face.width / (face.a1 - face.a0);
+  const double scaleB = face.height / (face.b1 - face.b0);
+  out.vertexCount = count;
+  for (int k = 0; k < count; ++k)
+    out.vertices[k] = {(clipped[k].x / clipped[k].z - face.a0) * scaleA,
+                       (clipped[k].y / clipped[k].z - face.b0) * scaleB};
+
+  // 1/depth = (m . (a, b, 1)) / planeOffset, with a, b affine in pixel coordinates.
+  const Vec3 m = toFace(face, patch.normal);
+  const double h = patch.planeOffset;
+  out.inverseDepthX = m.x / (scaleA * h);
+  out.inverseDepthY = m.y / (scaleB * h);
+  out.inverseDepthC = (m.x * face.a0 + m.y * face.b0 + m.z) / h;
+  return true;
+}
+
+double sceneNearDepth(const std::vector<Patch>& patches) {
+  Vec3 low(std::numeric_limits<double>::max());
+  Vec3 high(-std::numeric_limits<double>::max());
+  for (const Patch& p : patches)
+    for (int k = 0; k < p.vertexCount; ++k) {
+      low = glm::min(low, p.vertices[k]);
+      high = glm::max(high, p.vertices[k]);
+    }
+  if (patches.empty()) return 0.0;
+  const double magnitude = std::max(glm::length(low), glm::length(high));
+  // Far below any feature, yet above the rounding of coordinates far from the origin.
+  return std::max(1e-9 * glm::length(high - low), 64.0 * std::numeric_limits<double>::epsilon() * magnitude);
+}
+
+}  // namespace radmesh

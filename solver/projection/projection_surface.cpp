@@ -1,0 +1,27 @@
+#include "solver/projection/projection_surface.h"
+
+namespace radmesh {
+
+void addFace(ProjectionSurface& surface, const ProjectionFace& face, DeltaFormFactorFn df) {
+  const double pixelArea = face.pixelWidth() * face.pixelHeight();
+  std::vector<double> table(static_cast<size_t>(face.width) * face.height);
+  for (int row = 0; row < face.height; ++row)
+    for (int column = 0; column < face.width; ++column) {
+      const glm::dvec2 c = face.pixelCentre(column, row);
+      table[static_cast<size_t>(row) * face.width + column] = df(c.x, c.y, pixelArea);
+    }
+  surface.faces.push_back(face);
+  surface.deltaFormFactors.push_back(std::move(table));
+}
+
+void scaleToCapturedFraction(ProjectionSurface& surface, double capturedFraction) {
+  double sum = 0.0;
+  for (const auto& table : surface.deltaFormFactors)
+    for (double df : table) sum += df;
+  surface.tableSum = sum;
+  surface.capturedFraction = capturedFraction;
+  for (auto& table : surface.deltaFormFactors)
+    for (double& df : table) df *= capturedFraction / sum;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,27 @@
+#pragma once
+// A projection surface (the paper's section 1.2): planar faces above the shooter, each split into
+// pixels that carry a delta form factor. The single plane has one face, the hemicube five.
+#include <vector>
+
+#include "solver/projection/projection.h"
+
+namespace radmesh {
+
+struct ProjectionSurface {
+  std::vector<ProjectionFace> faces;
+  // Per face, per pixel (row-major): the delta form factor, scaled so that they sum to
+  // capturedFraction exactly; energy bookkeeping then rests on the closed form.
+  std::vector<std::vector<double>> deltaFormFactors;
+  double capturedFraction = 1.0;  // closed form: the fraction of a diffuse shooter's power caught
+  double tableSum = 1.0;          // the delta form factors' sum as sampled, before that scaling
+};
+
+// Delta form factor of a pixel centred at face coordinates (a, b), of area pixelArea at depth 1.
+using DeltaFormFactorFn = double (*)(double a, double b, double pixelArea);
+
+// Adds a face whose pixels carry df at their centres.
+void addFace(ProjectionSurface& surface, const ProjectionFace& face, DeltaFormFactorFn df);
+// Records the sampled sum and scales every delta form factor so that they sum to capturedFraction.
+void scaleToCapturedFraction(ProjectionSurface& surface, double capturedFraction);
+
+}  // namespace radmesh

@@ -1,0 +1,21 @@
+#pragma once
+// The single plane (the paper's section 1.5; Recker et al. 1990): one square of half-side r at
+// height 1 above the shooter, N x N pixels, catching most of a diffuse shooter's power.
+#include "solver/projection/projection_surface.h"
+
+namespace radmesh {
+
+// Closed form of the form factor from a differential area to a centred, parallel square of
+// half-side r at height 1: (4/pi) s atan(s), s = r / sqrt(1 + r^2). r = 3 gives 0.91688.
+double singlePlaneCapturedFraction(double ratio);
+
+// Delta form factor of a pixel of area dA on a plane at height 1, centred at (x, y):
+// dA / (pi (x^2+y^2+1)^2). The hemicube's top face is such a plane too.
+double singlePlaneDeltaFormFactor(double x, double y, double pixelArea);
+
+// The plane's face: N x N pixels over [-r, r]^2, a along u, b along v.
+ProjectionFace singlePlaneFace(int resolution, double ratio);
+
+ProjectionSurface makeSinglePlane(int resolution, double ratio);
+
+}  // namespace radmesh

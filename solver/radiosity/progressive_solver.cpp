@@ -1,0 +1,290 @@
+#include "solver/radiosity/progressive_solver.h"
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <queue>
+#include <string>
+
+#include "solver/formfactors/form_factor_cache.h"
+#include "solver/formfactors/near_field.h"
+#include "solver/projection/scan_conversion.h"
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+double Ledger::imbalance() const {
+  const double accounted = absorbed + unshot + notCaptured + escaped;
+  return emitted > 0.0 ? std::abs(emitted - accounted) / emitted : std::abs(accounted);
+}
+
+double Ledger::unshotFraction() const { return emitted > 0.0 ? unshot / emitted : 0.0; }
+
+namespace {
+
+double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
+
+// With colour off (a grey scene) one channel stands for three: `double` holds it, and these give
+// bitwise what the three equal channels of an Rgb would (a + a + a rounds as 3a does).
+double channelSum(double c) { return 3.0 * c; }
+template <typename Value> Value channels(const Rgb& c);
+template <> Rgb channels<Rgb>(const Rgb& c) { return c; }
+template <> double channels<double>(const Rgb& c) { return c.r; }
+
+// Patches come from the mesher; a bad one would turn into NaN radiosity, so refuse it by name.
+void checkPatches(const Scene& scene, const std::vector<Patch>& patches) {
+  for (size_t i = 0; i < patches.size(); ++i) {
+    const Patch& p = patches[i];
+    const bool ok = (p.vertexCount == 3 || p.vertexCount == 4) && std::isfinite(p.areaM2) &&
+                    p.areaM2 > 0.0 && p.material >= 0 &&
+                    p.material < static_cast<int>(scene.materials.size());
+    if (!ok)
+      throw SceneError(scene.source, fmt::format("patch {} (of polygon {})", i, p.polygon),
+                       "has no area, a vertex count other than 3 or 4, or an unknown material",
+                       "fix the polygon it came from, or mesh with another --cell");
+  }
+  if (patches.empty())
+    throw SceneError(scene.source, "the scene", "meshed into no patches", "give it polygons");
+}
+
+}  // namespace
+
+struct ProgressiveSolver::State {
+  Scene scene;
+  std::vector<Patch> patches;
+  SolveOptions options;
+  EffectsPlan plan;
+  std::vector<Rgb> rho;
+  std::vector<Rgb> radiosity;          // B
+  std::vector<Rgb> unshotRadiosity;    // dB: received, not yet shot
+  std::vector<double> unshotPowerW;    // dB * A summed over RGB, what shooter selection compares
+  std::vector<int> timesShot;
+  std::vector<int> tieRank;            // shooters of equal power go in geometric order
+  std::unique_ptr<FormFactorBackend> backend;
+  FormFactorCache cache;
+  Ledger ledger;
+  std::vector<IterationRecord> history;
+  std::vector<FormFactorRow> rows;
+  double firstShotPowerW = 0.0;
+  double convergence = 0.0;
+  bool exhausted = false;
+
+  State(const Scene& s, std::vector<Patch> p, const SolveOptions& o)
+      : scene(s), patches(std::move(p)), options(o), cache(o.formFactorCacheBytes) {}
+
+  std::vector<int> pickShooters() const;
+  void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
+  void shoot(const std::vector<int>& shooters, IterationRecord& record);
+  template <typename Value> void receive(const FormFactorRow& row, const Value& power);
+};
+
+ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
+                                     const SolveOptions& options)
+    : state_(std::make_unique<State>(scene, std::move(patches), options)) {
+  validateOptions(options);
+  State& s = *state_;
+  checkPatches(s.scene, s.patches);
+  s.plan = planEffects(s.scene, s.patches, options.effects);
+  // No occlusion: exact analytic form factors replace the item buffer (the mesh back end keeps its
+  // plane, being the machine under study).
+  if (!s.plan.occlusion && s.options.backend == Backend::Native) s.options.projection = Projection::Analytic;
+  const size_t n = s.patches.size();
+  s.rho.resize(n);
+  s.radiosity.resize(n);
+  s.unshotRadiosity.resize(n);
+  s.unshotPowerW.resize(n);
+  s.timesShot.assign(n, 0);
+  for (size_t j = 0; j < n; ++j) {
+    const Material& m = s.scene.materials[s.patches[j].material];
+    s.rho[j] = m.rho;
+    s.radiosity[j] = s.unshotRadiosity[j] = m.emittance;
+    s.unshotPowerW[j] = channelSum(m.emittance) * s.patches[j].areaM2;
+    s.ledger.emitted += s.unshotPowerW[j];
+  }
+  s.ledger.unshot = s.ledger.emitted;
+  s.exhausted = !(s.ledger.emitted > 0.0);
+  s.tieRank = depthTieRanks(s.patches);
+  s.backend = makeFormFactorBackend(s.scene, s.patches, s.options);
+}
+
+ProgressiveSolver::~ProgressiveSolver() = default;
+
+// The k patches with the most unshot power (the paper's reduceMax, k at a time). Without
+// interreflection, every emitter at once: nothing comes back, so one shot each from the first
+// state is the whole solution.
+std::vector<int> ProgressiveSolver::State::pickShooters() const {
+  const int k = plan.interreflection ? options.shooters : static_cast<int>(patches.size());
+  auto before = [&](int a, int b) {  // a shoots before b
+    if (unshotPowerW[a] != unshotPowerW[b]) return unshotPowerW[a] > unshotPowerW[b];
+    return tieRank[a] < tieRank[b];
+  };
+  // A heap of the best k so far whose top is the weakest of them.
+  std::priority_queue<int, std::vector<int>, decltype(before)> best(before);
+  for (int j = 0; j < static_cast<int>(patches.size()); ++j) {
+    if (!(unshotPowerW[j] > 0.0)) continue;
+    if (static_cast<int>(best.size()) < k) {
+      best.push(j);
+    } else if (before(j, best.top())) {
+      best.pop();
+      best.push(j);
+    }
+  }
+  std::vector<int> shooters;
+  for (; !best.empty(); best.pop()) shooters.push_back(best.top());
+  std::reverse(shooters.begin(), shooters.end());  // strongest first
+  return shooters;
+}
+
+void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, IterationRecord& record) {
+  rows.resize(shooters.size());
+  std::vector<int> missing;
+  std::vector<size_t> missingSlot;
+  for (size_t s = 0; s < shooters.size(); ++s) {
+    if (timesShot[shooters[s]] > 0) ++record.reusedRows;
+    if (const FormFactorRow* row = cache.find(shooters[s])) {
+      rows[s] = *row;
+      rows[s].reused = true;
+      ++record.cacheHits;
+    } else {
+      missing.push_back(shooters[s]);
+      missingSlot.push_back(s);
+    }
+  }
+  if (missing.empty()) return;
+  std::vector<FormFactorRow> computed;
+  backend->computeRows(missing, computed);
+  if (plan.nearField)
+    for (FormFactorRow& row : computed) correctNearField(row, patches, plan.nearReceivers[row.shooter]);
+  if (const MeshShotStats* shot = backend->lastMeshShot()) {
+    auto kept = std::make_shared<MeshShotStats>(*shot);
+    kept->depthA.clear();  // 4096 ints a shot: the histograms say the same in far less
+    kept->depthB.clear();
+    record.meshShot = std::move(kept);
+  }
+  for (size_t m = 0; m < missing.size(); ++m) {
+    if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
+    rows[missingSlot[m]] = std::move(computed[m]);
+  }
+}
+
+// Eq. 1.2 for every shooter, all from the same state: B_j += dB_i rho_j F_ij A_i / A_j.
+void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, IterationRecord& record) {
+  std::vector<Rgb> shotPower(shooters.size());
+  for (size_t s = 0; s < shooters.size(); ++s) {
+    const int i = shooters[s];
+    shotPower[s] = unshotRadiosity[i] * patches[i].areaM2;
+    unshotRadiosity[i] = Rgb(0.0);
+    unshotPowerW[i] = 0.0;
+    ++timesShot[i];
+    record.shotPowerW += channelSum(shotPower[s]);
+  }
+  for (size_t s = 0; s < shooters.size(); ++s) {
+    const FormFactorRow& row = rows[s];
+    const double powerW = channelSum(shotPower[s]);
+    ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
+    if (plan.escape) ledger.escaped += powerW * row.escapedFraction();
+    ledger.absorbed += powerW * row.backFaces;
+    ledger.absorbedByBackFaces += powerW * row.backFaces;
+    if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
+      double received = 0.0;
+      for (double f : row.formFactors) received += f;
+      ledger.absorbed += powerW * received;
+    } else if (plan.colour) {
+      receive(row, shotPower[s]);
+    } else {
+      receive(row, shotPower[s].r);
+    }
+  }
+  ledger.unshot = 0.0;
+  for (double p : unshotPowerW) ledger.unshot += p;
+  record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
+}
+
+// Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double).
+template <typename Value>
+void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& power) {
+  for (size_t r = 0; r < row.receivers.size(); ++r) {
+    const int j = row.receivers[r];
+    const Value incident = power * row.formFactors[r];
+    const Value reflected = channels<Value>(rho[j]) * incident;
+    ledger.absorbed += channelSum(incident - reflected);
+    const Value gain = reflected / patches[j].areaM2;
+    radiosity[j] += Rgb(gain);
+    unshotRadiosity[j] += Rgb(gain);
+    unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
+  }
+}
+
+const IterationRecord& ProgressiveSolver::step() {
+  State& s = *state_;
+  if (done() && !s.history.empty()) return s.history.back();
+  const auto start = std::chrono::steady_clock::now();
+
+  IterationRecord record;
+  record.iteration = static_cast<int>(s.history.size()) + 1;
+  record.shooters = s.pickShooters();
+  if (!record.shooters.empty()) {
+    // C_i = 1 - s_i / s_1 (the paper's section 1.6), s_i the strongest shooter's power.
+    const double strongestW = s.unshotPowerW[record.shooters.front()];
+    if (s.history.empty()) s.firstShotPowerW = strongestW;
+    s.fetchRows(record.shooters, record);
+    s.shoot(record.shooters, record);
+    s.convergence = 1.0 - strongestW / s.firstShotPowerW;
+  }
+  s.exhausted = std::none_of(s.unshotPowerW.begin(), s.unshotPowerW.end(), [](double p) { return p > 0.0; });
+  if (s.exhausted) s.convergence = 1.0;  // nothing is left to shoot: the solution is exact
+
+  record.reusedRowsTotal = record.reusedRows + (s.history.empty() ? 0 : s.history.back().reusedRowsTotal);
+  record.convergence = s.convergence;
+  record.ledger = s.ledger;
+  assert(s.ledger.imbalance() <= 1e-9);
+  record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  s.history.push_back(std::move(record));
+  return s.history.back();
+}
+
+bool ProgressiveSolver::done() const {
+  const State& s = *state_;
+  const bool littleLeft = s.options.untilUnshot > 0.0 && s.ledger.unshotFraction() <= s.options.untilUnshot;
+  return s.exhausted || s.convergence >= s.options.until || littleLeft ||
+         static_cast<int>(s.history.size()) >= s.options.maxIterations;
+}
+
+double ProgressiveSolver::convergence() const { return state_->convergence; }
+const std::vector<Patch>& ProgressiveSolver::patches() const { return state_->patches; }
+const std::vector<Rgb>& ProgressiveSolver::radiosity() const { return state_->radiosity; }
+const Ledger& ProgressiveSolver::ledger() const { return state_->ledger; }
+const std::vector<IterationRecord>& ProgressiveSolver::history() const { return state_->history; }
+const SolveOptions& ProgressiveSolver::options() const { return state_->options; }
+const EffectsPlan& ProgressiveSolver::effectsPlan() const { return state_->plan; }
+ProjectionSummary ProgressiveSolver::projectionSummary() const { return state_->backend->projectionSummary(); }
+FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
+
+// The ambient term of Cohen et al. 1988: the unshot power, spread evenly and interreflected with
+// the area-averaged reflectance, added for display only (it is not in the ledger). Cohen's scenes
+// were closed; here the fraction of shot power lost so far (escaped through openings, or missed
+// by the single plane) is lost from the unshot power too, at every bounce, as it will be when it
+// is shot. Without that, an open room shows brighter than it will converge to.
+std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
+  const State& s = *state_;
+  if (!s.options.ambient) return s.radiosity;
+  Rgb unshotPower(0.0), rhoArea(0.0);
+  double area = 0.0;
+  for (size_t j = 0; j < s.patches.size(); ++j) {
+    unshotPower += s.unshotRadiosity[j] * s.patches[j].areaM2;
+    rhoArea += s.rho[j] * s.patches[j].areaM2;
+    area += s.patches[j].areaM2;
+  }
+  const Ledger& l = s.ledger;
+  const double shot = l.emitted - l.unshot;  // = absorbed + not captured + escaped
+  const double kept = shot > 0.0 ? std::clamp(1.0 - (l.escaped + l.notCaptured) / shot, 0.0, 1.0) : 1.0;
+  const Rgb averageRho = rhoArea / area;
+  const Rgb ambient = unshotPower * kept / area / (Rgb(1.0) - averageRho * kept);
+  std::vector<Rgb> shown(s.radiosity);
+  for (size_t j = 0; j < shown.size(); ++j) shown[j] += s.rho[j] * ambient;
+  return shown;
+}
+
+}  // namespace radmesh

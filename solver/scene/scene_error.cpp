@@ -1,0 +1,21 @@
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+std::string format(const std::string& file, const std::string& element, const std::string& problem,
+                   const std::string& fix) {
+  std::string message = file;
+  if (!element.empty()) message += ": " + element;
+  message += ": " + problem;
+  if (!fix.empty()) message += " (fix: " + fix + ")";
+  return message;
+}
+}  // namespace
+
+SceneError::SceneError(std::string file, std::string element, std::string problem, std::string fix)
+    : std::runtime_error(format(file, element, problem, fix)),
+      file_(std::move(file)),
+      element_(std::move(element)) {}
+
+}  // namespace radmesh

@@ -1,0 +1,80 @@
+#include "solver/scene/solve_options.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+
+std::string number(double value) { return fmt::format("{}", value); }  // shortest exact form
+
+}  // namespace
+
+void validateOptions(const SolveOptions& o) {
+  if (o.resolution < 16 || o.resolution > 2048)
+    throw OptionError("--resolution " + std::to_string(o.resolution) +
+                      " is out of range: give N from 16 to 2048 (the projection surface is N x N)");
+  if (!std::isfinite(o.ratio) || o.ratio <= 0.0)
+    throw OptionError("--ratio " + number(o.ratio) +
+                      " is not a finite, positive number: give the single plane's half-side at "
+                      "height 1, e.g. 3 (the paper's)");
+  if (o.shooters < 1)
+    throw OptionError("--shooters " + std::to_string(o.shooters) +
+                      " is out of range: give at least 1 shooter per iteration");
+  if (!std::isfinite(o.until) || o.until <= 0.0 || o.until > 1.0)
+    throw OptionError("--until " + number(o.until) +
+                      " is out of range: give a convergence in (0, 1], e.g. 0.95");
+  if (!std::isfinite(o.untilUnshot) || o.untilUnshot < 0.0 || o.untilUnshot >= 1.0)
+    throw OptionError("--until-unshot " + number(o.untilUnshot) +
+                      " is out of range: give a fraction of the emitted power in [0, 1), e.g. 0.01 (0: off)");
+  if (o.maxIterations < 1)
+    throw OptionError("--max-iterations " + std::to_string(o.maxIterations) +
+                      " is out of range: give at least 1");
+  if (o.threads < 0)
+    throw OptionError("--threads " + std::to_string(o.threads) +
+                      " is out of range: give 0 (every core) or a positive count");
+}
+
+const char* toString(Projection projection) {
+  switch (projection) {
+    case Projection::Plane: return "plane";
+    case Projection::Hemicube: return "hemicube";
+    case Projection::Analytic: return "analytic";
+  }
+  return "?";
+}
+
+const char* toString(Backend backend) {
+  switch (backend) {
+    case Backend::Native: return "native";
+    case Backend::Mesh: return "mesh";
+  }
+  return "?";
+}
+
+Projection parseProjection(const std::string& text) {
+  for (Projection p : {Projection::Plane, Projection::Hemicube, Projection::Analytic})
+    if (text == toString(p)) return p;
+  throw OptionError("--projection '" + text + "' is unknown: give plane, hemicube or analytic");
+}
+
+Backend parseBackend(const std::string& text) {
+  for (Backend b : {Backend::Native, Backend::Mesh})
+    if (text == toString(b)) return b;
+  throw OptionError("--backend '" + text + "' is unknown: give native or mesh");
+}
+
+const char* toString(EffectsMode mode) { return mode == EffectsMode::All ? "all" : "auto"; }
+
+EffectsMode parseEffects(const std::string& text) {
+  for (EffectsMode m : {EffectsMode::Auto, EffectsMode::All})
+    if (text == toString(m)) return m;
+  throw OptionError("--effects must be 'auto' (simulate only what the scene calls for) or 'all', not '" + text + "'");
+}
+
+}  // namespace radmesh

@@ -1,0 +1,51 @@
+#pragma once
+// What a user chooses for a solve; shared by the CLI, the viewer and the benchmarks.
+#include <cstddef>
+#include <string>
+
+namespace radmesh {
+
+enum class Projection { Plane, Hemicube, Analytic };
+enum class Backend { Native, Mesh };
+// How the mesh backend lays the single plane over the PEs (solver/projection/plane_mapping.h).
+enum class MappingKind { Hierarchical, CutAndStack, Adaptive };
+// Which effects the solver simulates (solver/radiosity/effects_plan.h).
+enum class EffectsMode { Auto, All };
+
+struct SolveOptions {
+  Backend backend = Backend::Native;
+  Projection projection = Projection::Plane;
+  MappingKind mapping = MappingKind::Hierarchical;  // mesh backend only
+  int resolution = 128;    // N: the single plane (or each hemicube face) is N x N pixels, 16..2048
+  double ratio = 3.0;      // half-side of the single plane at height 1 (the paper's ratio 3)
+  int shooters = 1;        // k: shooters per iteration, all shot from the same state
+  double until = 0.95;     // stop when convergence C reaches this
+  // Also stop when the unshot power falls to this fraction of the emitted (0: off). C follows the
+  // shooter's power alone; this follows what is actually left to distribute (docs/accuracy.md).
+  double untilUnshot = 0.0;
+  int maxIterations = 1'000'000;
+  int threads = 0;         // 0: every core
+  std::size_t formFactorCacheBytes = 0;  // 0: no form-factor row cache
+  bool ambient = true;     // display-only ambient term (Cohen et al. 1988)
+  // Patches projecting to less than a pixel get analytic form factors with item-buffer
+  // visibility (solver/formfactors/sub_pixel_receivers.h); false: pixel centres only, as in the paper.
+  bool subPixelReceivers = true;
+  // Auto: only the effects the scene calls for, each skip exact; All: every effect. The library
+  // defaults to All, so a caller gets the full simulation unless it asks; the CLI and the viewer
+  // default to auto.
+  EffectsMode effects = EffectsMode::All;
+};
+
+// Throws OptionError naming the option and the accepted range.
+void validateOptions(const SolveOptions& options);
+
+const char* toString(Projection projection);
+const char* toString(Backend backend);
+Projection parseProjection(const std::string& text);  // throws OptionError
+Backend parseBackend(const std::string& text);        // throws OptionError
+const char* toString(MappingKind kind);
+MappingKind parseMapping(const std::string& text);    // throws OptionError
+const char* toString(EffectsMode mode);
+EffectsMode parseEffects(const std::string& text);    // throws OptionError
+
+}  // namespace radmesh

@@ -1,0 +1,46 @@
+#include "solver/formfactors/form_factor_cache.h"
+
+#include <gtest/gtest.h>
+
+namespace radmesh {
+namespace {
+
+FormFactorRow row(int shooter, int receivers) {
+  FormFactorRow r;
+  r.shooter = shooter;
+  for (int j = 0; j < receivers; ++j) {
+    r.receivers.push_back(j);
+    r.formFactors.push_back(1.0 / receivers);
+  }
+  return r;
+}
+
+TEST(FormFactorCache, KeepsRowsWithinBudgetDroppingTheLeastRecentlyUsed) {
+  const FormFactorRow made = row(0, 100);
+  const FormFactorRow kept = made;  // a copy, as the cache keeps: no spare capacity
+  const std::size_t one = kept.bytes();
+  FormFactorCache cache(2 * one + one / 2);  // room for two rows
+  cache.insert(row(1, 100));
+  cache.insert(row(2, 100));
+  ASSERT_NE(cache.find(1), nullptr);  // 1 is now the most recently used
+  cache.insert(row(3, 100));          // drops 2
+  EXPECT_EQ(cache.find(2), nullptr);
+  ASSERT_NE(cache.find(1), nullptr);
+  ASSERT_NE(cache.find(3), nullptr);
+  EXPECT_EQ(cache.find(1)->formFactors.size(), 100u);
+  EXPECT_EQ(cache.rows(), 2u);
+  EXPECT_LE(cache.bytes(), 2 * one + one / 2);
+}
+
+TEST(FormFactorCache, RowLargerThanTheBudgetIsNotKept) {
+  FormFactorCache cache(1000);
+  cache.insert(row(1, 1000));
+  EXPECT_EQ(cache.find(1), nullptr);
+  EXPECT_EQ(cache.bytes(), 0u);
+  FormFactorCache none(0);
+  none.insert(row(1, 1));
+  EXPECT_EQ(none.rows(), 0u);
+}
+
+}  // namespace
+}  // namespace radmesh

@@ -1,0 +1,253 @@
+#include "solver/io/gltf_import.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+#include "solver/bake/display_radiosity.h"
+#include "solver/bake/gltf_export.h"
+#include "solver/scene/scene_error.h"
+#include "tests/solver/io/gltf_test_file.h"
+#include "tests/test_paths.h"
+
+namespace radmesh {
+namespace {
+
+using test::GltfBuilder;
+using test::TempDir;
+
+const std::vector<Vec3> kQuad = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+
+bool mentions(const std::vector<std::string>& warnings, const std::string& text) {
+  return std::any_of(warnings.begin(), warnings.end(),
+                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+TEST(GltfImport, CornellBoxHasThePublishedGeometryAndOneLight) {
+  const std::string path = (test::sourceDir() / "assets" / "cornell.gltf").string();
+  std::vector<std::string> warnings;
+  const Scene scene = importGltf(path, &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_NO_THROW(validateScene(scene));
+  // floor 1, ceiling 4 (around the light), light 1, back 1, right 1, left 2 (published
+  // non-planar, so its two triangles stay apart), short block 5, tall block 5.
+  EXPECT_EQ(scene.polygons.size(), 20u);
+  EXPECT_EQ(scene.materials.size(), 4u);
+
+  Vec3 lo{1e9}, hi{-1e9};
+  int emitters = 0;
+  double lightAreaM2 = 0.0;
+  for (const Polygon& p : scene.polygons) {
+    for (const Vec3& v : p.vertices) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+    if (scene.materials[p.material].emits()) {
+      ++emitters;
+      lightAreaM2 += polygonArea(p.vertices);
+    }
+  }
+  EXPECT_EQ(emitters, 1);
+  EXPECT_NEAR(lightAreaM2, 0.130 * 0.105, 1e-8);  // 130 mm x 105 mm
+  ASSERT_EQ(scene.materials[3].name, "light");
+  const Rgb e = scene.materials[3].emittance;
+  EXPECT_NEAR(e.r, glm::pi<double>() * 17.0, 1e-9);  // E = pi L, L = (17, 12, 4) W/(m^2 sr)
+  EXPECT_NEAR(e.g, glm::pi<double>() * 12.0, 1e-9);
+  EXPECT_NEAR(e.b, glm::pi<double>() * 4.0, 1e-9);
+  EXPECT_NEAR(emittedPowerW(scene), lightAreaM2 * (e.r + e.g + e.b), 1e-12);
+  EXPECT_NEAR(emittedPowerW(scene), 0.01365 * 33.0 * glm::pi<double>(), 1e-6);  // 1.415 W
+
+  // Millimetres became metres: 556.0 x 548.8 x 559.2 mm.
+  EXPECT_NEAR(lo.x, 0.0, 1e-7);
+  EXPECT_NEAR(lo.y, 0.0, 1e-7);
+  EXPECT_NEAR(lo.z, 0.0, 1e-7);
+  EXPECT_NEAR(hi.x, 0.5560, 1e-7);
+  EXPECT_NEAR(hi.y, 0.5488, 1e-7);
+  EXPECT_NEAR(hi.z, 0.5592, 1e-7);
+
+  // Every surface faces into the box: the shell towards its middle, each block's faces away from
+  // that block's centre.
+  auto centroidOf = [](const std::vector<Vec3>& points) {
+    Vec3 c{0.0};
+    for (const Vec3& v : points) c += v / static_cast<double>(points.size());
+    return c;
+  };
+  for (const Polygon& p : scene.polygons) {
+    Vec3 inside = 0.5 * (lo + hi);
+    if (p.origin.find("block") != std::string::npos) {
+      std::vector<Vec3> block;
+      for (const Polygon& q : scene.polygons)
+        if (q.origin == p.origin) block.insert(block.end(), q.vertices.begin(), q.vertices.end());
+      inside = 2.0 * centroidOf(p.vertices) - centroidOf(block);  // mirror the centre through the face
+    }
+    EXPECT_GT(glm::dot(newellNormal(p.vertices), inside - centroidOf(p.vertices)), 0.0) << p.origin;
+  }
+}
+
+TEST(GltfImport, IndexedU8U16U32AndNonIndexedTrianglesGiveTheSameQuad) {
+  TempDir dir;
+  for (int type : {5121, 5123, 5125, 0}) {
+    GltfBuilder b;
+    const int lamp = b.add("materials", {{"name", "lamp"}, {"emissiveFactor", {1, 1, 1}}});
+    if (type == 0) {
+      b.addTriangles("quad", b.addPositions({kQuad[0], kQuad[1], kQuad[2], kQuad[0], kQuad[2], kQuad[3]}), -1, lamp);
+    } else {
+      b.addTriangles("quad", b.addPositions(kQuad), b.addIndices({0, 1, 2, 0, 2, 3}, type), lamp);
+    }
+    const Scene s = importGltf(b.write(dir / ("quad" + std::to_string(type) + ".gltf")).string());
+    ASSERT_EQ(s.polygons.size(), 1u) << "component type " << type;
+    EXPECT_EQ(s.polygons[0].vertices, kQuad) << "component type " << type;
+    EXPECT_EQ(s.polygons[0].origin, "mesh 'quad' primitive 0");
+  }
+}
+
+TEST(GltfImport, NodeTransformsComposeFromTheRootDown) {
+  TempDir dir;
+  GltfBuilder b;
+  const int positions = b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  // Child: a column-major matrix translating by (0, 0, 1). Parent: T(10, 0, 0) R(90 deg about y) S(2).
+  const int child = b.addTriangles("t", positions, -1, -1,
+                                   {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 1}}});
+  const double h = std::sqrt(0.5);
+  b.add("nodes", {{"name", "parent"},
+                  {"translation", {10, 0, 0}},
+                  {"rotation", {0, h, 0, h}},
+                  {"scale", {2, 2, 2}},
+                  {"children", {child}}});
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(b.write(dir / "nodes.gltf").string(), &warnings);
+  ASSERT_EQ(s.polygons.size(), 1u);
+  // p -> T(R(S(p + (0,0,1)))): R about y maps (x, y, z) to (z, y, -x).
+  const std::vector<Vec3> expected = {{12, 0, 0}, {12, 0, -2}, {12, 2, 0}};
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.polygons[0].vertices[k][c], expected[k][c], 1e-12);
+  EXPECT_TRUE(mentions(warnings, "without a material")) << "the default grey is announced";
+  EXPECT_EQ(s.materials.at(s.polygons[0].material).name, "default (grey)");
+}
+
+TEST(GltfImport, MirroringTransformKeepsTheFrontFace) {
+  TempDir dir;
+  GltfBuilder b;
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1, {{"scale", {-1, 1, 1}}});
+  const Scene s = importGltf(b.write(dir / "mirror.gltf").string());
+  ASSERT_EQ(s.polygons.size(), 1u);
+  EXPECT_GT(newellNormal(s.polygons[0].vertices).z, 0.0);  // faced +z before the mirror, still does
+}
+
+TEST(GltfImport, DefaultSceneAloneOrEveryScene) {
+  TempDir dir;
+  GltfBuilder b;
+  const int a = b.addTriangles("a", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1);
+  const int c = b.addTriangles("c", b.addPositions({{0, 0, 5}, {1, 0, 5}, {0, 1, 5}}), -1, -1);
+  b.doc()["scenes"] = {{{"nodes", {a}}}, {{"nodes", {c}}}};
+  const Scene all = importGltf(b.write(dir / "all.gltf").string());
+  EXPECT_EQ(all.polygons.size(), 2u);
+  b.doc()["scene"] = 1;
+  const Scene second = importGltf(b.write(dir / "second.gltf").string());
+  ASSERT_EQ(second.polygons.size(), 1u);
+  EXPECT_EQ(second.polygons[0].vertices[0].z, 5.0);
+}
+
+TEST(GltfImport, NonTriangleModesAreWarnedAboutAndSkipped) {
+  TempDir dir;
+  GltfBuilder b;
+  const int positions = b.addPositions(kQuad);
+  b.add("meshes", {{"name", "mixed"},
+                   {"primitives", {{{"attributes", {{"POSITION", positions}}}, {"mode", 1}},
+                                   {{"attributes", {{"POSITION", positions}}}, {"mode", 5}},
+                                   {{"attributes", {{"POSITION", positions}}}, {"indices", b.addIndices({0, 1, 2})}}}}});
+  b.add("nodes", {{"mesh", 0}});
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(b.write(dir / "modes.gltf").string(), &warnings);
+  EXPECT_EQ(s.polygons.size(), 1u);
+  EXPECT_TRUE(mentions(warnings, "mesh 'mixed' primitive 0: mode 1"));
+  EXPECT_TRUE(mentions(warnings, "mesh 'mixed' primitive 1: mode 5"));
+}
+
+TEST(GltfImport, MaterialsFromFactorsEmissiveStrengthAndTextureAverage) {
+  TempDir dir;
+  // A 2 x 1 texture (binary PPM, which the image decoder reads): sRGB (255, 128, 0) and (255, 0, 0).
+  {
+    std::ofstream ppm(dir / "tex.ppm", std::ios::binary);
+    ppm << "P6\n2 1\n255\n";
+    ppm.put(char(255)).put(char(128)).put(char(0)).put(char(255)).put(char(0)).put(char(0));
+  }
+  GltfBuilder b;
+  b.add("images", {{"uri", "tex.ppm"}});
+  b.add("textures", {{"source", 0}});
+  const int textured = b.add("materials", {{"name", "textured"},
+                                           {"pbrMetallicRoughness",
+                                            {{"baseColorFactor", {0.5, 0.4, 0.2, 1.0}}, {"baseColorTexture", {{"index", 0}}}}}});
+  const int lamp = b.add("materials", {{"emissiveFactor", {1.0, 0.5, 0.25}},
+                                       {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 40.0}}}}}});
+  const int white = b.add("materials", {{"name", "white"}});  // glTF's default baseColorFactor is 1
+  const int positions = b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  b.addTriangles("a", positions, -1, textured);
+  b.addTriangles("b", positions, -1, lamp, {{"translation", {0, 0, 1}}});
+  b.addTriangles("c", positions, -1, white, {{"translation", {0, 0, 2}}});
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(b.write(dir / "materials.gltf").string(), &warnings);
+  ASSERT_EQ(s.materials.size(), 3u);
+  // Texture average in linear terms: R (1 + 1)/2, G (srgb(128/255) + 0)/2 with srgb(128/255) =
+  // 0.2158605, B 0.
+  EXPECT_NEAR(s.materials[0].rho.r, 0.5, 1e-12);
+  EXPECT_NEAR(s.materials[0].rho.g, 0.4 * 0.2158605 / 2.0, 1e-7);
+  EXPECT_NEAR(s.materials[0].rho.b, 0.0, 1e-12);
+  EXPECT_EQ(s.materials[1].name, "material 1");  // generated for the unnamed material
+  EXPECT_EQ(s.materials[1].emittance, Rgb(40.0, 20.0, 10.0));
+  EXPECT_EQ(s.materials[2].rho, Rgb(0.99));  // a reflectance of 1 cannot converge
+  EXPECT_TRUE(mentions(warnings, "material 2 'white': reflectance above 0.99"));
+  EXPECT_FALSE(mentions(warnings, "textured"));
+}
+
+TEST(GltfImport, UndecodableOrMissingTextureIsWarnedAboutAndTheFactorKept) {
+  TempDir dir;
+  std::ofstream(dir / "broken.png") << "not an image";
+  GltfBuilder b;
+  b.add("images", {{"uri", "broken.png"}});
+  b.add("images", {{"uri", "absent.png"}});
+  b.add("textures", {{"source", 0}});
+  b.add("textures", {{"source", 1}});
+  for (int t : {0, 1})
+    b.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {0.3, 0.2, 0.1, 1}}, {"baseColorTexture", {{"index", t}}}}}});
+  const int positions = b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  b.addTriangles("a", positions, -1, 0);
+  b.addTriangles("b", positions, -1, 1, {{"translation", {0, 0, 1}}});
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(b.write(dir / "textures.gltf").string(), &warnings);
+  ASSERT_EQ(s.materials.size(), 2u);
+  for (const Material& m : s.materials) EXPECT_EQ(m.rho, Rgb(0.3, 0.2, 0.1));
+  EXPECT_TRUE(mentions(warnings, "image 0 could not be decoded"));
+  EXPECT_TRUE(mentions(warnings, "material 0: baseColorTexture's image 0 could not be decoded; using the factor alone"));
+  EXPECT_TRUE(mentions(warnings, "material 1: baseColorTexture's image 1 could not be decoded"));
+}
+
+TEST(GltfImport, ExternalBinBufferBesideTheFile) {
+  TempDir dir;
+  GltfBuilder b;
+  const int lamp = b.add("materials", {{"emissiveFactor", {1, 1, 1}}});
+  b.addTriangles("quad", b.addPositions(kQuad), b.addIndices({0, 1, 2, 0, 2, 3}), lamp);
+  const Scene s = importGltf(b.write(dir / "external.gltf", "external.bin").string());
+  ASSERT_EQ(s.polygons.size(), 1u);
+  EXPECT_EQ(s.polygons[0].vertices, kQuad);
+}
+
+TEST(GltfImport, GlbWrittenByTheBakeExportReadsBack) {
+  TempDir dir;
+  DisplayMesh mesh;
+  mesh.positions = kQuad;
+  mesh.normals.assign(4, Vec3(0, 0, 1));
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  const std::string path = (dir / "bake.glb").string();
+  writeBakeGlb(path, mesh, std::vector<Rgb>(4, Rgb(1.0)));
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(path, &warnings);
+  ASSERT_EQ(s.polygons.size(), 1u);
+  EXPECT_EQ(s.polygons[0].vertices, kQuad);
+}
+
+}  // namespace
+}  // namespace radmesh

@@ -1,0 +1,202 @@
+// Each file under tests/data/bad/mgf_* is refused with a SceneError naming the file, the line and
+// entity at fault, the problem and a fix, and never a crash or a hang.
+#include <gtest/gtest.h>
+
+#include "solver/io/mgf_import.h"
+#include "solver/scene/scene_error.h"
+#include "solver/io/scene_loader.h"
+#include "tests/solver/io/mgf_test_scene.h"
+#include "tests/test_paths.h"
+
+namespace radmesh {
+namespace {
+
+struct Refusal {
+  std::string file;
+  std::string element;
+  std::string what;
+};
+
+Refusal refusal(const std::string& name) {
+  const std::string path = test::dataPath("bad/" + name).string();
+  try {
+    importMgf(path);
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find(e.file()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(e.element()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(fix: "), std::string::npos) << e.what();
+    return {e.file(), e.element(), e.what()};
+  }
+  ADD_FAILURE() << name << " was accepted";
+  return {};
+}
+
+// The error is in `name` itself, at `element`, and says `problem`.
+void expectRefused(const std::string& name, const std::string& element, const std::string& problem) {
+  const Refusal r = refusal(name);
+  EXPECT_EQ(r.file, test::dataPath("bad/" + name).string());
+  EXPECT_EQ(r.element, element);
+  EXPECT_NE(r.what.find(problem), std::string::npos) << r.what;
+}
+
+TEST(MgfBadInput, UnknownEntityNamesItsLine) {
+  expectRefused("mgf_unknown_entity.mgf", "line 7: sphere", "unknown entity 'sphere'");
+}
+
+TEST(MgfBadInput, MissingIncludeNamesTheIncludeLine) {
+  expectRefused("mgf_missing_include.mgf", "line 4: i", "include file 'mgf_no_such_file.mgf' not found");
+}
+
+TEST(MgfBadInput, FileEndingInsideAContinuedLineIsTruncated) {
+  expectRefused("mgf_truncated.mgf", "line 10", "ends inside an entity continued with a backslash");
+}
+
+TEST(MgfBadInput, FileEndingInsideATransformIsTruncated) {
+  expectRefused("mgf_truncated_xf.mgf", "line 10: xf", "ends with this transform still open");
+}
+
+TEST(MgfBadInput, NaNCoordinateIsRefused) {
+  expectRefused("mgf_nan.mgf", "line 7: p", "coordinate 'nan' is not a finite number");
+}
+
+TEST(MgfBadInput, InfiniteCoordinateIsRefused) {
+  expectRefused("mgf_infinite.mgf", "line 5: p", "coordinate '1e999' is not a finite number");
+}
+
+TEST(MgfBadInput, WordWhereANumberBelongsIsRefused) {
+  expectRefused("mgf_not_a_number.mgf", "line 5: p", "coordinate 'two' is not a number");
+}
+
+TEST(MgfBadInput, UndefinedVertexNamesTheFace) {
+  expectRefused("mgf_undefined_vertex.mgf", "line 8: f", "v 'c' is not defined");
+}
+
+TEST(MgfBadInput, UndefinedMaterialNamesTheLine) {
+  expectRefused("mgf_undefined_material.mgf", "line 4: m", "m 'whte' is not defined");
+}
+
+TEST(MgfBadInput, WrongArgumentCountShowsTheRightForm) {
+  const Refusal r = refusal("mgf_wrong_arguments.mgf");
+  EXPECT_EQ(r.element, "line 6: cyl");
+  EXPECT_NE(r.what.find("wrong number of arguments (2)"), std::string::npos) << r.what;
+  EXPECT_NE(r.what.find("cyl v1 radius v2"), std::string::npos) << r.what;
+}
+
+TEST(MgfBadInput, IncludeCycleIsRefusedWithoutHanging) {
+  // The cycle closes in the second file, at its include of the first.
+  const Refusal r = refusal("mgf_include_cycle.mgf");
+  EXPECT_EQ(r.file, test::dataPath("bad/mgf_include_cycle_b.mgf").string());
+  EXPECT_EQ(r.element, "line 4: i");
+  EXPECT_NE(r.what.find("include cycle: mgf_include_cycle.mgf -> mgf_include_cycle_b.mgf -> "
+                        "mgf_include_cycle.mgf"),
+            std::string::npos)
+      << r.what;
+}
+
+TEST(MgfBadInput, ReflectanceOfOneIsRefused) {
+  expectRefused("mgf_rho_too_high.mgf", "line 5: rd", "diffuse reflectance 1.0 is outside [0, 1)");
+}
+
+TEST(MgfBadInput, NegativeEmittanceIsRefused) {
+  expectRefused("mgf_negative_emission.mgf", "line 4: ed", "emittance -100 is negative");
+}
+
+TEST(MgfBadInput, RingWithoutAxisIsRefused) {
+  expectRefused("mgf_ring_without_normal.mgf", "line 6: ring", "ring centre vertex has no normal");
+}
+
+TEST(MgfBadInput, UnknownTransformOptionIsRefused) {
+  expectRefused("mgf_bad_transform.mgf", "line 4: xf", "unknown transform argument '-r'");
+}
+
+TEST(MgfBadInput, ImpossibleChromaticityIsRefused) {
+  expectRefused("mgf_impossible_color.mgf", "line 4: cxy", "is impossible (needs x >= 0, y > 0, x + y <= 1)");
+}
+
+TEST(MgfBadInput, UnreadableFileIsRefused) {
+  const std::string path = test::dataPath("bad/mgf_does_not_exist.mgf").string();
+  try {
+    importMgf(path);
+    ADD_FAILURE() << "a missing file was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_NE(std::string(e.what()).find("cannot be opened"), std::string::npos) << e.what();
+  }
+}
+
+// Smaller refusals, written at test time: each names its line and entity.
+TEST(MgfBadInput, ContextAndCountErrorsNameTheirLine) {
+  const struct {
+    std::string text, element, problem;
+  } cases[] = {
+      {"xf -t 1 0 0\nxf\nxf\n", "line 3: xf", "none is open in this file"},
+      {"o a\no\no\n", "line 3: o", "o ends an object, but none is open"},
+      {"c red =\n  cxy 0.64 0.33\nc mix =\n  cmix 1 red 1 blue\n", "line 4: cmix", "c 'blue' is not defined"},
+      {"c odd =\n  cspec 900 1000 1 1\n", "line 2: cspec", "gives no visible light"},
+      {"c hot =\n  cct -5\n", "line 2: cct", "is not positive"},
+      {"v a =\n  p 0 0 0\nf a a a\n", "line 3: f", "fewer than 3 distinct vertices"},
+      {"sides 3\n", "line 1: sides", "sides must be 1 or 2"},
+      {"m x = nosuch\n", "line 1: m", "m 'nosuch' is not defined"},
+      {"m x : y\n", "line 1: m", "expected '=' after the name"},
+      {"xf -a 0 -t 1 0 0\n", "line 1: xf", "-a count '0' is not a whole number of at least 1"},
+  };
+  for (const auto& c : cases) {
+    try {
+      test::importMgfText(c.text);
+      ADD_FAILURE() << c.text << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.element(), c.element) << c.text;
+      EXPECT_NE(std::string(e.what()).find(c.problem), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(MgfBadInput, HugeArraysAreRefusedBeforeTheyAreBuilt) {
+  const std::string sphere = "m w =\n  rd 0.5\nv c =\n  p 0 0 0\n";
+  for (const std::string& text : {sphere + "xf -a 1000 -a 1000\n", sphere + "xf -a 50000\nsph c 1\n",
+                                   sphere + "xf -a 400\nxf -a 400\n", sphere + "xf -i 1000000 -t 1 0 0\n"}) {
+    try {
+      test::importMgfText(text);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("more than"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace radmesh
+
+namespace radmesh {
+namespace {
+
+// Zero area and no emitter are the scene's faults, found when loading validates it.
+std::string loadRefusal(const std::string& name) {
+  const std::string path = test::dataPath("bad/" + name).string();
+  try {
+    loadScene(path);
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_NE(std::string(e.what()).find("(fix: "), std::string::npos) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << name << " was accepted";
+  return {};
+}
+
+TEST(MgfBadInput, FaceWithCollinearVerticesHasZeroArea) {
+  const std::string what = loadRefusal("mgf_zero_area.mgf");
+  EXPECT_NE(what.find("polygon 0 (line 10: f): has zero area"), std::string::npos) << what;
+}
+
+TEST(MgfBadInput, FaceFarFromPlanarIsRefusedNotSplit) {
+  expectRefused("mgf_non_planar.mgf", "line 12: f", "the face is not planar: a vertex lies 0.147 off its plane");
+}
+
+TEST(MgfBadInput, SceneWithoutEmitterIsRefused) {
+  const std::string what = loadRefusal("mgf_no_emitter.mgf");
+  EXPECT_NE(what.find("has no emitter"), std::string::npos) << what;
+}
+
+}  // namespace
+}  // namespace radmesh

@@ -1,0 +1,123 @@
+// CIE colour to linear RGB: the white point, the primaries, spectra through the observer fit,
+// and luminance-preserving gamut fitting.
+#include "solver/io/mgf_color.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/io/mgf_error.h"
+#include "tests/solver/io/mgf_test_scene.h"
+
+namespace radmesh {
+namespace {
+
+glm::dvec2 chromaticity(const Xyz& c) { return {c.x / (c.x + c.y + c.z), c.y / (c.x + c.y + c.z)}; }
+
+TEST(MgfColor, EqualEnergyWhiteIsEqualRgb) {
+  // The white point is E (x = y = 1/3): MGF's neutral colour.
+  const Rgb white = linearRgb(xyzFromChromaticity(1.0 / 3.0, 1.0 / 3.0));
+  EXPECT_NEAR(white.r, 1.0, 1e-12);
+  EXPECT_NEAR(white.g, 1.0, 1e-12);
+  EXPECT_NEAR(white.b, 1.0, 1e-12);
+  // D65 is then slightly blue: B > G > R.
+  const Rgb d65 = linearRgb(xyzFromChromaticity(0.3127, 0.3290));
+  EXPECT_GT(d65.b, d65.g);
+  EXPECT_GT(d65.g, d65.r);
+}
+
+TEST(MgfColor, Rec709PrimariesAreSingleChannels) {
+  const Rgb red = linearRgb(xyzFromChromaticity(0.64, 0.33));
+  const Rgb green = linearRgb(xyzFromChromaticity(0.30, 0.60));
+  const Rgb blue = linearRgb(xyzFromChromaticity(0.15, 0.06));
+  EXPECT_NEAR(red.g, 0.0, 1e-12);
+  EXPECT_NEAR(red.b, 0.0, 1e-12);
+  EXPECT_NEAR(green.r, 0.0, 1e-12);
+  EXPECT_NEAR(blue.g, 0.0, 1e-12);
+  // Each at luminance 1: 1 / its luminance weight; the weights of white sum to 1.
+  EXPECT_NEAR(luminance(red), 1.0, 1e-12);
+  EXPECT_NEAR(luminance(Rgb(1.0)), 1.0, 1e-12);
+  EXPECT_NEAR(1.0 / red.r + 1.0 / green.g + 1.0 / blue.b, 1.0, 1e-12);
+}
+
+TEST(MgfColor, SpectraGoThroughTheStandardObserver) {
+  // A flat spectrum is equal-energy white; black bodies land on the Planckian locus (CIE
+  // illuminant A is 2856 K at (0.4476, 0.4074)); the analytic observer fit is good to ~0.002.
+  const glm::dvec2 flat = chromaticity(xyzFromSpectrum(380, 780, {1, 1, 1, 1, 1}));
+  EXPECT_NEAR(flat.x, 1.0 / 3.0, 2e-3);
+  EXPECT_NEAR(flat.y, 1.0 / 3.0, 2e-3);
+  const glm::dvec2 a = chromaticity(xyzFromTemperature(2856));
+  EXPECT_NEAR(a.x, 0.4476, 2e-3);
+  EXPECT_NEAR(a.y, 0.4074, 2e-3);
+  const glm::dvec2 d = chromaticity(xyzFromTemperature(6504));
+  EXPECT_NEAR(d.x, 0.3135, 2e-3);
+  EXPECT_NEAR(d.y, 0.3236, 2e-3);
+  EXPECT_DOUBLE_EQ(xyzFromTemperature(3000).y, 1.0);
+  EXPECT_THROW(xyzFromSpectrum(900, 1000, {1, 1}), MgfError);  // infrared: no luminance
+}
+
+TEST(MgfColor, MixingPrimariesByTheirLuminanceWeightsGivesWhite) {
+  const Rgb weights = 1.0 / Rgb(linearRgb(xyzFromChromaticity(0.64, 0.33)).r,
+                                linearRgb(xyzFromChromaticity(0.30, 0.60)).g,
+                                linearRgb(xyzFromChromaticity(0.15, 0.06)).b);
+  const Rgb mixed = linearRgb(mixColors({weights.r, weights.g, weights.b},
+                                        {xyzFromChromaticity(0.64, 0.33), xyzFromChromaticity(0.30, 0.60),
+                                         xyzFromChromaticity(0.15, 0.06)}));
+  EXPECT_NEAR(glm::length(mixed - Rgb(1.0)), 0.0, 1e-12);
+}
+
+TEST(MgfColor, OutOfGamutReflectanceIsDesaturatedKeepingLuminance) {
+  // corridor.mgf's red door: cxy 0.75 0.10 lies outside the spectral locus.
+  bool desaturated = false;
+  const Rgb rho = mgfReflectance(0.29, xyzFromChromaticity(0.75, 0.10), &desaturated);
+  EXPECT_TRUE(desaturated);
+  EXPECT_NEAR(luminance(rho), 0.29, 1e-12);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GE(rho[c], 0.0);
+    EXPECT_LE(rho[c], kHighestFittedReflectance + 1e-12);
+  }
+  // Desaturated no further than needed: a channel sits on a bound.
+  EXPECT_TRUE(std::abs(std::max({rho.r, rho.g, rho.b}) - kHighestFittedReflectance) < 1e-12 ||
+              std::abs(std::min({rho.r, rho.g, rho.b})) < 1e-12);
+  const Rgb grey = mgfReflectance(0.5, kMgfNeutral, &desaturated);
+  EXPECT_FALSE(desaturated);
+  EXPECT_NEAR(glm::length(grey - Rgb(0.5)), 0.0, 1e-12);
+}
+
+TEST(MgfColor, EmittanceIsLumensOver179PerChannel) {
+  bool desaturated = true;
+  const Rgb e = mgfEmittance(179.0 * 4.0, kMgfNeutral, &desaturated);
+  EXPECT_FALSE(desaturated);
+  EXPECT_NEAR(glm::length(e - Rgb(4.0)), 0.0, 1e-12);
+}
+
+TEST(MgfColor, MgfNeutralWhiteGivesEqualReflectance) {
+  const Scene s = test::importMgfText(
+      "m wall =\n  c\n    cxy 0.333333 0.333333\n  rd 0.6\nv a =\n p 0 0 0\nv b =\n p 1 0 0\n"
+      "v c =\n p 0 1 0\nf a b c\n");
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_NEAR(glm::length(s.materials[0].rho - Rgb(0.6)), 0.0, 1e-5);
+}
+
+TEST(MgfColor, SpectralAndMixedColoursReachTheMaterial) {
+  // Incandescent (2856 K) is orange: R > G > B; a flat spectrum is grey; red and green mixed
+  // by their luminance weights is yellow (B = 0) at the luminance rd.
+  const std::string face = "v a =\n p 0 0 0\nv b =\n p 1 0 0\nv c =\n p 0 1 0\nf a b c\n";
+  const Scene warm = test::importMgfText("m lamp =\n  c\n    cct 2856\n  rd 0.5\n" + face);
+  const Rgb w = warm.materials.at(0).rho;
+  EXPECT_GT(w.r, w.g);
+  EXPECT_GT(w.g, w.b);
+  EXPECT_NEAR(luminance(w), 0.5, 1e-12);
+  const Scene flat = test::importMgfText("m grey =\n  c\n    cspec 380 780 2 2 2\n  rd 0.5\n" + face);
+  EXPECT_NEAR(glm::length(flat.materials.at(0).rho - Rgb(0.5)), 0.0, 0.01);
+  const Scene mixed = test::importMgfText(
+      "c r =\n  cxy 0.64 0.33\nc g =\n  cxy 0.30 0.60\nm yellow =\n  c\n    cmix 1 r 1 g\n  rd 0.5\n" + face);
+  const Rgb y = mixed.materials.at(0).rho;
+  EXPECT_NEAR(y.b, 0.0, 1e-12);
+  EXPECT_NEAR(luminance(y), 0.5, 1e-12);
+  EXPECT_NEAR(y.r * luminance(Rgb(1, 0, 0)), y.g * luminance(Rgb(0, 1, 0)), 1e-12);  // equal shares
+}
+
+}  // namespace
+}  // namespace radmesh

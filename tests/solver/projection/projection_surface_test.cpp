@@ -1,0 +1,74 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "solver/projection/hemicube.h"
+#include "solver/projection/single_plane.h"
+
+namespace radmesh {
+namespace {
+
+double sum(const ProjectionSurface& s) {
+  double total = 0.0;
+  for (const auto& table : s.deltaFormFactors)
+    for (double df : table) total += df;
+  return total;
+}
+
+TEST(SinglePlane, CapturedFractionClosedForm) {
+  EXPECT_NEAR(singlePlaneCapturedFraction(3.0), 0.91688173, 1e-8);  // the paper's 91.7 %
+  EXPECT_NEAR(singlePlaneCapturedFraction(1e6), 1.0, 1e-6);      // an infinite plane: everything
+  EXPECT_NEAR(singlePlaneCapturedFraction(1e-3), 4.0 / std::numbers::pi * 1e-6, 1e-11);  // small: area / pi
+}
+
+TEST(SinglePlane, TableSumConvergesToTheClosedFormAsResolutionGrows) {
+  const double exact = singlePlaneCapturedFraction(3.0);
+  double previous = 1.0;
+  for (int n : {16, 64, 256, 1024}) {
+    const ProjectionSurface plane = makeSinglePlane(n, 3.0);
+    const double error = std::abs(plane.tableSum - exact);
+    EXPECT_LT(error, previous / 8.0) << "N = " << n;  // midpoint rule: error ~ 1/N^2
+    previous = error;
+    EXPECT_NEAR(sum(plane), exact, 1e-12);  // the table used is scaled to the closed form
+    EXPECT_DOUBLE_EQ(plane.capturedFraction, exact);
+  }
+  EXPECT_LT(previous, 1e-6);
+}
+
+TEST(SinglePlane, PixelsCarryTheDeltaFormFactorOfTheirCentre) {
+  const ProjectionSurface plane = makeSinglePlane(16, 2.0);
+  const ProjectionFace& face = plane.faces[0];
+  const double scale = plane.capturedFraction / plane.tableSum;
+  const double dA = 0.25 * 0.25;
+  // Pixel (0, 0) is centred at (-1.875, -1.875).
+  EXPECT_NEAR(plane.deltaFormFactors[0][0] / scale, dA / (std::numbers::pi * std::pow(2 * 1.875 * 1.875 + 1, 2)), 1e-15);
+  EXPECT_DOUBLE_EQ(face.pixelCentre(0, 0).x, -1.875);
+  EXPECT_EQ(plane.deltaFormFactors[0][0], plane.deltaFormFactors[0][15 * 16 + 15]);  // symmetric
+}
+
+TEST(Hemicube, FacesTileTheHemisphereAndTheTableSumsToOne) {
+  double previous = 1.0;
+  for (int n : {16, 64, 256}) {
+    const ProjectionSurface cube = makeHemicube(n);
+    ASSERT_EQ(cube.faces.size(), 5u);
+    EXPECT_EQ(cube.faces[0].width * cube.faces[0].height, n * n);
+    for (int f = 1; f < 5; ++f) EXPECT_EQ(cube.faces[f].height, n / 2);
+    const double error = std::abs(cube.tableSum - 1.0);
+    EXPECT_LT(error, previous / 8.0) << "N = " << n;
+    previous = error;
+    EXPECT_NEAR(sum(cube), 1.0, 1e-12);
+    EXPECT_EQ(cube.capturedFraction, 1.0);
+  }
+  EXPECT_LT(previous, 1e-5);
+}
+
+TEST(Hemicube, SideFacesCarryCosineWeightedDeltaFormFactors) {
+  EXPECT_DOUBLE_EQ(hemicubeSideDeltaFormFactor(0.0, 0.0, 1.0), 0.0);  // the horizon emits nothing
+  EXPECT_NEAR(hemicubeSideDeltaFormFactor(0.0, 1.0, 1.0), 1.0 / (4.0 * std::numbers::pi), 1e-15);
+  // The top face's corner and the side face's top corner are the same direction: equal per solid angle.
+  EXPECT_NEAR(singlePlaneDeltaFormFactor(1.0, 1.0, 1.0), hemicubeSideDeltaFormFactor(1.0, 1.0, 1.0), 1e-15);
+}
+
+}  // namespace
+}  // namespace radmesh

@@ -1,0 +1,89 @@
+#include "solver/radiosity/effects_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "solver/meshing/meshing.h"
+
+namespace radmesh {
+namespace {
+
+// An axis-aligned box of size s at origin o; inward-facing when `inward`, else outward.
+void addBox(Scene& scene, Vec3 o, double s, bool inward, int material, bool withTop = true) {
+  const Vec3 c[8] = {o + Vec3(0, 0, 0), o + Vec3(s, 0, 0), o + Vec3(s, s, 0), o + Vec3(0, s, 0),
+                     o + Vec3(0, 0, s), o + Vec3(s, 0, s), o + Vec3(s, s, s), o + Vec3(0, s, s)};
+  // Outward counter-clockwise faces.
+  const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  for (int f = 0; f < 6; ++f) {
+    if (!withTop && f == 1) continue;
+    Polygon p;
+    p.material = material;
+    for (int k = 0; k < 4; ++k) p.vertices.push_back(c[faces[f][inward ? 3 - k : k]]);
+    scene.polygons.push_back(p);
+  }
+}
+
+EffectsPlan planEffects(const Scene& scene, EffectsMode mode = EffectsMode::Auto) {
+  return radmesh::planEffects(scene, meshScene(scene, 0.5), mode);
+}
+
+Scene greyFurnace() {
+  Scene s;
+  s.source = "test";
+  s.materials.push_back({"grey", Rgb(0.5), Rgb(1.0)});
+  addBox(s, Vec3(0), 1.0, true, 0);
+  return s;
+}
+
+TEST(EffectsPlan, ClosedGreyBoxNeedsOnlyAnalyticFormFactorsOneChannelAndNoEscape) {
+  const Scene s = greyFurnace();
+  EXPECT_TRUE(isConvexEnclosure(s));
+  EXPECT_TRUE(isClosed(s));
+  const EffectsPlan plan = planEffects(s);
+  EXPECT_FALSE(plan.occlusion);
+  EXPECT_FALSE(plan.colour);
+  EXPECT_TRUE(plan.interreflection);
+  EXPECT_FALSE(plan.escape);
+  ASSERT_EQ(plan.effects.size(), 5u);
+  EXPECT_EQ(plan.effects[0].name, "occlusion");
+}
+
+TEST(EffectsPlan, BoxWithoutLidIsConvexButOpen) {
+  Scene s;
+  s.materials.push_back({"grey", Rgb(0.5), Rgb(1.0)});
+  addBox(s, Vec3(0), 1.0, true, 0, /*withTop=*/false);
+  EXPECT_TRUE(isConvexEnclosure(s));
+  EXPECT_FALSE(isClosed(s));
+  EXPECT_TRUE(planEffects(s).escape);
+}
+
+TEST(EffectsPlan, BlockInsideRoomOccludes) {
+  Scene s = greyFurnace();
+  addBox(s, Vec3(0.4), 0.2, false, 0);
+  EXPECT_FALSE(isConvexEnclosure(s));
+  EXPECT_TRUE(isClosed(s));  // both surfaces are watertight
+  EXPECT_TRUE(planEffects(s).occlusion);
+}
+
+TEST(EffectsPlan, WallSplitInTwoAlongAnEdgeStillCloses) {
+  Scene s = greyFurnace();
+  // Replace the floor (face 0, z = 0) by two halves: its edges are covered by two shorter ones.
+  s.polygons.erase(s.polygons.begin());
+  s.polygons.push_back({{{0, 0, 0}, {0.5, 0, 0}, {0.5, 1, 0}, {0, 1, 0}}, 0, "half"});
+  s.polygons.push_back({{{0.5, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 1, 0}}, 0, "half"});
+  EXPECT_TRUE(isClosed(s));
+}
+
+TEST(EffectsPlan, ColourAndBlackMaterialsAreDetectedAndAllForcesEverything) {
+  Scene s = greyFurnace();
+  s.materials[0].rho = Rgb(0.0);
+  s.materials[0].emittance = Rgb(1.0, 0.5, 0.2);
+  EffectsPlan plan = planEffects(s);
+  EXPECT_TRUE(plan.colour);
+  EXPECT_FALSE(plan.interreflection);
+  plan = planEffects(s, EffectsMode::All);
+  EXPECT_TRUE(plan.occlusion && plan.colour && plan.interreflection && plan.escape && plan.nearField);
+  EXPECT_NE(plan.effects[2].reason.find("forced"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace radmesh

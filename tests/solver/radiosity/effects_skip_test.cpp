@@ -1,0 +1,233 @@
+// Each skip of the effects plan gives the answer of the full simulation, on a scene built for it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "solver/formfactors/analytic_form_factor.h"
+#include "solver/formfactors/near_field.h"
+#include "solver/projection/projection.h"
+#include "tests/solver/closed_forms.h"
+#include "tests/solver/solver_test_helpers.h"
+
+namespace radmesh {
+namespace {
+
+using test::closedBox;
+using test::grey;
+
+struct Solved {
+  std::vector<Rgb> radiosity;
+  Ledger ledger;
+  EffectsPlan plan;
+  Projection projection;
+  size_t iterations = 0;
+};
+
+Solved solve(const test::TestScene& t, EffectsMode mode, SolveOptions o = test::optionsFor(Projection::Analytic)) {
+  o.effects = mode;
+  ProgressiveSolver solver(t.scene, t.patches, o);
+  EXPECT_TRUE(test::solveChecked(solver));
+  return {solver.radiosity(), solver.ledger(), solver.effectsPlan(), solver.options().projection,
+          solver.history().size()};
+}
+
+const Effect& effect(const EffectsPlan& plan, const std::string& name) {
+  const auto it = std::find_if(plan.effects.begin(), plan.effects.end(), [&](const Effect& e) { return e.name == name; });
+  EXPECT_NE(it, plan.effects.end()) << name;
+  return *it;
+}
+
+// The largest difference over patches and channels, relative to the largest radiosity.
+double relativeDifference(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
+  double worst = 0.0, largest = 0.0;
+  for (size_t j = 0; j < a.size(); ++j)
+    for (int c = 0; c < 3; ++c) {
+      worst = std::max(worst, std::abs(a[j][c] - b[j][c]));
+      largest = std::max(largest, std::abs(b[j][c]));
+    }
+  return worst / largest;
+}
+
+// A room of coloured walls (colour stays on) with a light in the floor's middle cell.
+test::TestScene colouredRoom(Rgb wallRho, int divisions = 4) {
+  test::TestScene t = closedBox(Vec3(1.0), divisions, {{"wall", wallRho, Rgb(0.0)}, {"light", Rgb(0.0), Rgb(5.0, 4.0, 3.0)}});
+  t.patches[divisions * divisions / 2 + divisions / 2].material = 1;
+  return t;
+}
+
+TEST(EffectsSkip, OcclusionOffInAConvexEnclosureMatchesTheHemicube) {
+  const test::TestScene t = colouredRoom(Rgb(0.7, 0.5, 0.3));
+  SolveOptions o = test::optionsFor(Projection::Hemicube, 128, 2);
+  o.until = 0.99;
+  const Solved skipped = solve(t, EffectsMode::Auto, o), full = solve(t, EffectsMode::All, o);
+  EXPECT_FALSE(skipped.plan.occlusion);
+  EXPECT_NE(effect(skipped.plan, "occlusion").reason.find("convex enclosure"), std::string::npos);
+  EXPECT_EQ(skipped.projection, Projection::Analytic);
+  EXPECT_EQ(full.projection, Projection::Hemicube);
+  EXPECT_TRUE(full.plan.occlusion);
+  // The hemicube's pixels against exact analytic form factors: agreement to its discretization.
+  EXPECT_LT(relativeDifference(skipped.radiosity, full.radiosity), 0.02);
+}
+
+TEST(EffectsSkip, ColourOffInAGreyFurnaceIsBitwiseTheThreeChannelAnswer) {
+  const test::TestScene t = closedBox(Vec3(1.0, 2.0, 1.5), 3, {grey(0.6, 1.0)});
+  SolveOptions o = test::optionsFor(Projection::Analytic);
+  o.until = 0.999;
+  const Solved skipped = solve(t, EffectsMode::Auto, o), full = solve(t, EffectsMode::All, o);
+  EXPECT_FALSE(skipped.plan.colour);
+  EXPECT_NE(effect(skipped.plan, "colour").reason.find("grey"), std::string::npos);
+  EXPECT_TRUE(full.plan.colour);
+  ASSERT_EQ(skipped.iterations, full.iterations);
+  EXPECT_LE(relativeDifference(skipped.radiosity, full.radiosity), 1e-12);
+  EXPECT_NEAR(skipped.ledger.absorbed, full.ledger.absorbed, 1e-12 * full.ledger.emitted);
+  for (const Rgb& b : skipped.radiosity) EXPECT_TRUE(b.r == b.g && b.g == b.b);
+  // The furnace's closed form: B = E / (1 - rho), less what is still unshot.
+  EXPECT_NEAR(skipped.radiosity[0].r, 1.0 / (1.0 - 0.6), 0.01 * 2.5);
+}
+
+TEST(EffectsSkip, InterreflectionOffInABlackRoomShootsEveryEmitterOnceInOneIteration) {
+  test::TestScene t = colouredRoom(Rgb(0.0));
+  t.patches[3].material = t.patches[40].material = 1;  // three lights, on floor and a wall
+  const Solved skipped = solve(t, EffectsMode::Auto), full = solve(t, EffectsMode::All);
+  EXPECT_FALSE(skipped.plan.interreflection);
+  EXPECT_NE(effect(skipped.plan, "interreflection").reason.find("direct light only"), std::string::npos);
+  EXPECT_EQ(skipped.iterations, 1u);
+  EXPECT_EQ(full.iterations, 3u);
+  EXPECT_EQ(relativeDifference(skipped.radiosity, full.radiosity), 0.0);
+  EXPECT_NEAR(skipped.ledger.absorbed, full.ledger.absorbed, 1e-12 * full.ledger.emitted);
+  EXPECT_GT(skipped.ledger.absorbed, 0.99 * skipped.ledger.emitted);  // a closed room absorbs it all
+  EXPECT_EQ(skipped.ledger.unshot, 0.0);
+}
+
+// A cube of side `size` at `corner`, faces outward: a closed blocker.
+void addBlock(test::TestScene& t, Vec3 corner, double size) {
+  const Vec3 c[8] = {corner + Vec3(0, 0, 0), corner + Vec3(size, 0, 0), corner + Vec3(size, size, 0),
+                     corner + Vec3(0, size, 0), corner + Vec3(0, 0, size), corner + Vec3(size, 0, size),
+                     corner + Vec3(size, size, size), corner + Vec3(0, size, size)};
+  const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  for (const auto& f : faces) {
+    const std::vector<Vec3> v{c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+    t.scene.polygons.push_back({v, 0, "block"});
+    t.patches.push_back(test::makePatch(v, 0, static_cast<int>(t.scene.polygons.size()) - 1));
+  }
+}
+
+TEST(EffectsSkip, EscapeOffInAClosedBoxKeepsTheAnswerAndNothingEscapes) {
+  test::TestScene t = colouredRoom(Rgb(0.8, 0.6, 0.4));
+  addBlock(t, Vec3(0.35, 0.35, 0.3), 0.3);  // keeps occlusion on, so both modes use the plane
+  SolveOptions o = test::optionsFor(Projection::Plane, 128, 2);
+  o.until = 0.99;
+  const Solved skipped = solve(t, EffectsMode::Auto, o), full = solve(t, EffectsMode::All, o);
+  EXPECT_EQ(skipped.projection, Projection::Plane);
+  EXPECT_FALSE(skipped.plan.escape);
+  EXPECT_NE(effect(skipped.plan, "escape").reason.find("closed"), std::string::npos);
+  EXPECT_TRUE(full.plan.escape);
+  EXPECT_EQ(full.ledger.escaped, 0.0);  // the full simulation finds nothing escaping either
+  EXPECT_EQ(skipped.ledger.escaped, 0.0);
+  EXPECT_LE(relativeDifference(skipped.radiosity, full.radiosity), 1e-12);
+}
+
+TEST(EffectsSkip, EscapeStaysOnForAnOpenBoxAndBooksTheLeak) {
+  test::TestScene t = colouredRoom(Rgb(0.5));
+  t.scene.polygons.erase(t.scene.polygons.begin() + 1);  // no ceiling
+  std::erase_if(t.patches, [](const Patch& p) { return p.polygon == 1; });
+  const Solved s = solve(t, EffectsMode::Auto);
+  EXPECT_TRUE(s.plan.escape);
+  EXPECT_GT(s.ledger.escaped, 0.1 * s.ledger.emitted);
+}
+
+// Two small squares facing each other 1 m apart, one lit: far apart for their size.
+test::TestScene separatedSquares() {
+  test::TestScene t;
+  t.scene.source = "separated squares";
+  t.scene.materials = {grey(0.5), grey(0.0, 1.0, "light")};
+  const std::vector<Vec3> lower{{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.1, 0}, {0, 0.1, 0}};
+  const std::vector<Vec3> upper{{0, 0, 1}, {0, 0.1, 1}, {0.1, 0.1, 1}, {0.1, 0, 1}};
+  t.scene.polygons = {{lower, 1, "light"}, {upper, 0, "receiver"}};
+  t.patches = {test::makePatch(lower, 1, 0), test::makePatch(upper, 0, 1)};
+  return t;
+}
+
+TEST(EffectsSkip, NearFieldOffForSeparatedPatchesChangesNothing) {
+  const test::TestScene t = separatedSquares();
+  const Solved skipped = solve(t, EffectsMode::Auto), full = solve(t, EffectsMode::All);
+  EXPECT_FALSE(skipped.plan.nearField);
+  EXPECT_NE(effect(skipped.plan, "near field").reason.find("no receiver is closer"), std::string::npos);
+  EXPECT_TRUE(full.plan.nearField);
+  EXPECT_EQ(relativeDifference(skipped.radiosity, full.radiosity), 0.0);
+  // Point source from 1 m: F = A cos cos / (pi r^2) for the small receiver.
+  EXPECT_NEAR(skipped.radiosity[1].r / 0.5, 0.01 / std::numbers::pi, 2e-5);
+}
+
+// Emitter square [0,1]^2 at z = 0 facing +z, and a unit receiver square placed by `receiver`.
+test::TestScene emitterAndReceiver(const std::vector<Vec3>& receiver) {
+  test::TestScene t;
+  t.scene.source = "two squares";
+  t.scene.materials = {grey(0.5), grey(0.0, 1.0, "light")};
+  const std::vector<Vec3> emitter{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  t.scene.polygons = {{emitter, 1, "light"}, {receiver, 0, "receiver"}};
+  t.patches = {test::makePatch(emitter, 1, 0), test::makePatch(receiver, 0, 1)};
+  return t;
+}
+
+double centroidFormFactor(const test::TestScene& t) {
+  const LocalPolygon local = toShooterFrame(t.patches[0], t.patches[1]);
+  return pointToPolygonFormFactor({local.vertices.data(), static_cast<size_t>(local.vertexCount)});
+}
+
+TEST(EffectsSkip, NearFieldGivesThePerpendicularSquaresTheirAreaToAreaFormFactor) {
+  // Sharing the edge x = 0: receiver in the plane x = 0 facing +x.
+  const test::TestScene t = emitterAndReceiver({{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}});
+  const double exact = test::perpendicularRectanglesFormFactor(1, 1, 1);
+  ASSERT_NEAR(exact, 0.2000, 1e-4);
+  EXPECT_NEAR(centroidFormFactor(t), 0.1901, 1e-4);  // the point source: 5% low
+  EXPECT_NEAR(areaToAreaFormFactor(t.patches[0], t.patches[1]), exact, 1e-3);
+  // Through the solver: B_receiver = E F rho (unit areas), on both projections.
+  for (Projection projection : {Projection::Analytic, Projection::Hemicube}) {
+    const Solved s = solve(t, EffectsMode::Auto, test::optionsFor(projection, 256));
+    EXPECT_TRUE(s.plan.nearField);
+    EXPECT_NE(effect(s.plan, "near field").reason.find("2 shooter-receiver pairs, from 2 of the 2 patches"), std::string::npos)
+        << effect(s.plan, "near field").reason;
+    EXPECT_NEAR(s.radiosity[1].r / 0.5, exact, projection == Projection::Analytic ? 1e-3 : 3e-3) << toString(projection);
+    EXPECT_LE(s.ledger.imbalance(), 1e-9);
+  }
+}
+
+TEST(EffectsSkip, NearFieldGivesTheParallelSquaresTheirAreaToAreaFormFactor) {
+  const test::TestScene t = emitterAndReceiver({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}});
+  const double exact = test::parallelRectanglesFormFactor(1, 1, 1);
+  ASSERT_NEAR(exact, 0.1998, 1e-4);
+  EXPECT_GT(centroidFormFactor(t), exact + 0.03) << centroidFormFactor(t);  // the point source: 19% high
+  EXPECT_NEAR(areaToAreaFormFactor(t.patches[0], t.patches[1]), exact, 1e-3);
+  const Solved s = solve(t, EffectsMode::Auto);
+  EXPECT_TRUE(s.plan.nearField);
+  EXPECT_NEAR(s.radiosity[1].r / 0.5, exact, 1e-3);
+  EXPECT_LE(s.ledger.imbalance(), 1e-9);
+}
+
+TEST(EffectsSkip, NearFieldPairsAreCloseFacingPatchesOnly) {
+  std::vector<Patch> patches;
+  test::addGrid(patches, Vec3(0), Vec3(2, 0, 0), Vec3(0, 2, 0), 2, 2);  // a floor of four unit cells
+  patches.push_back(test::makePatch({{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}));  // a wall on cell 0's edge
+  const auto near = findNearFieldReceivers(patches);
+  ASSERT_EQ(near.size(), 5u);
+  EXPECT_EQ(near[0], std::vector<int>{4});  // coplanar neighbours do not count
+  EXPECT_EQ(near[4], (std::vector<int>{0, 2}));  // cell 2's centroid is 1.22 away, within the wall's 1.41
+  EXPECT_EQ(near[1], std::vector<int>{});        // centroids 1.58 apart: farther than the diameter 1.41
+  EXPECT_EQ(near[2], std::vector<int>{4});
+  EXPECT_EQ(near[3], std::vector<int>{});
+}
+
+TEST(EffectsSkip, NearFieldCorrectionCreatesNoPowerInAClosedBox) {
+  const test::TestScene t = colouredRoom(Rgb(0.5), 3);
+  SolveOptions o = test::optionsFor(Projection::Hemicube, 64);
+  o.until = 0.9;
+  const Solved s = solve(t, EffectsMode::Auto, o);
+  EXPECT_TRUE(s.plan.nearField);
+  EXPECT_LE(s.ledger.imbalance(), 1e-9);
+  EXPECT_EQ(s.ledger.escaped, 0.0);
+}
+
+}  // namespace
+}  // namespace radmesh

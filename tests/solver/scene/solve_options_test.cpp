@@ -1,0 +1,79 @@
+#include "solver/scene/solve_options.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+std::string refusal(SolveOptions o) {
+  try {
+    validateOptions(o);
+  } catch (const OptionError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(SolveOptions, DefaultsAndRangeEndsAreAccepted) {
+  EXPECT_NO_THROW(validateOptions(SolveOptions{}));
+  SolveOptions o;
+  o.resolution = 16;
+  o.until = 1.0;
+  o.threads = 0;
+  EXPECT_NO_THROW(validateOptions(o));
+  o.resolution = 2048;
+  EXPECT_NO_THROW(validateOptions(o));
+}
+
+TEST(SolveOptions, RefusalsNameTheFlagAndTheRange) {
+  SolveOptions o;
+  o.resolution = 15;
+  EXPECT_THAT(refusal(o), AllOf(HasSubstr("--resolution 15"), HasSubstr("16 to 2048")));
+  o = {};
+  o.resolution = 2049;
+  EXPECT_THAT(refusal(o), HasSubstr("--resolution 2049"));
+  o = {};
+  o.ratio = std::nan("");
+  EXPECT_THAT(refusal(o), AllOf(HasSubstr("--ratio nan"), HasSubstr("positive")));
+  o = {};
+  o.ratio = 0.0;
+  EXPECT_THAT(refusal(o), HasSubstr("--ratio 0 "));
+  o = {};
+  o.shooters = 0;
+  EXPECT_THAT(refusal(o), AllOf(HasSubstr("--shooters 0"), HasSubstr("at least 1")));
+  o = {};
+  o.until = 0.0;
+  EXPECT_THAT(refusal(o), AllOf(HasSubstr("--until 0"), HasSubstr("(0, 1]")));
+  o = {};
+  o.until = 1.5;
+  EXPECT_THAT(refusal(o), HasSubstr("--until 1.5"));
+  o = {};
+  o.untilUnshot = 1.0;
+  EXPECT_THAT(refusal(o), AllOf(HasSubstr("--until-unshot 1"), HasSubstr("[0, 1)")));
+  o = {};
+  o.untilUnshot = -0.01;
+  EXPECT_THAT(refusal(o), HasSubstr("--until-unshot -0.01"));
+  o = {};
+  o.maxIterations = 0;
+  EXPECT_THAT(refusal(o), HasSubstr("--max-iterations 0"));
+  o = {};
+  o.threads = -1;
+  EXPECT_THAT(refusal(o), HasSubstr("--threads -1"));
+}
+
+TEST(SolveOptions, NamesRoundTripAndUnknownNamesAreRefused) {
+  for (Projection p : {Projection::Plane, Projection::Hemicube, Projection::Analytic})
+    EXPECT_EQ(parseProjection(toString(p)), p);
+  for (Backend b : {Backend::Native, Backend::Mesh}) EXPECT_EQ(parseBackend(toString(b)), b);
+  EXPECT_THROW(parseProjection("sphere"), OptionError);
+  EXPECT_THROW(parseBackend("gpu"), OptionError);
+}
+
+}  // namespace
+}  // namespace radmesh
