@@ -78,11 +78,11 @@ Rgb reflectance(const tinygltf::Model& model, const tinygltf::Material& m, const
       throw SceneError(file, element, "baseColorFactor " + std::to_string(rho[c]) + " is outside [0, 1]",
                        "give each baseColorFactor channel a value from 0 to 1");
   rho *= textureAverage(model, m.pbrMetallicRoughness.baseColorTexture, file, element, "baseColorTexture", warnings);
-  if (rho.r > kMaxGltfReflectance || rho.g > kMaxGltfReflectance || rho.b > kMaxGltfReflectance) {
+  if (rho.r > kHighestReflectance || rho.g > kHighestReflectance || rho.b > kHighestReflectance) {
     warn(warnings, file, element,
-         "reflectance above " + std::to_string(kMaxGltfReflectance) +
+         "reflectance above " + std::to_string(kHighestReflectance) +
              " lowered to it (radiosity cannot converge with a reflectance of 1)");
-    rho = glm::min(rho, Rgb(kMaxGltfReflectance));
+    rho = glm::min(rho, Rgb(kHighestReflectance));
   }
   return rho;
 }

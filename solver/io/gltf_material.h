@@ -11,9 +11,6 @@
 
 namespace radmesh {
 
-// A reflectance of exactly 1 (glTF's default white) would never converge; it becomes this.
-inline constexpr double kMaxGltfReflectance = 0.99;
-
 // The grey used for primitives without a material.
 Material defaultGltfMaterial();
 

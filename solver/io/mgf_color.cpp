@@ -136,7 +136,7 @@ Rgb fitRgb(const Xyz& xyz, double y, double ceiling, bool* desaturated) {
 }
 
 Rgb mgfReflectance(double rd, const Xyz& xyz, bool* desaturated) {
-  return fitRgb(xyz, rd, std::max(rd, kHighestFittedReflectance), desaturated);
+  return fitRgb(xyz, rd, std::max(rd, kHighestReflectance), desaturated);
 }
 
 Rgb mgfEmittance(double ed, const Xyz& xyz, bool* desaturated) {

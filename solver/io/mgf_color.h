@@ -39,10 +39,8 @@ Xyz xyzFromTemperature(double kelvin);
 Xyz mixColors(const std::vector<double>& weights, const std::vector<Xyz>& colors);
 
 inline constexpr double kWhiteEfficacyLmPerW = 179.0;
-// When a saturated colour pushes a reflectance channel up, it stops here (or at rd, if higher).
-inline constexpr double kHighestFittedReflectance = 0.99;
-
-// rho for `rd` in [0, 1) of colour `xyz`: channels in [0, max(rd, 0.99)], luminance rd.
+// rho for `rd` in [0, 1) of colour `xyz`: luminance rd, channels in [0, max(rd,
+// kHighestReflectance)] (where a saturated colour pushes one up, it stops there).
 Rgb mgfReflectance(double rd, const Xyz& xyz, bool* desaturated);
 // E in W/m^2 for `ed` lm/m^2 of colour `xyz`: channels >= 0, luminance ed / 179.
 Rgb mgfEmittance(double ed, const Xyz& xyz, bool* desaturated);

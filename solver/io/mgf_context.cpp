@@ -1,8 +1,11 @@
 #include "solver/io/mgf_context.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#include <fmt/core.h>
 
 #include "solver/io/mgf_error.h"
 
@@ -67,7 +70,17 @@ bool MgfContexts::handle(const MgfEntity& e) {
     colors_.select(e, kMgfNeutral);
   } else if (k == "cxy") {
     requireMgfArguments(e, 2, 2, "cxy x y");
-    color = xyzFromChromaticity(parseMgfNumber(e.words[1], "x"), parseMgfNumber(e.words[2], "y"));
+    double x = parseMgfNumber(e.words[1], "x");
+    double y = parseMgfNumber(e.words[2], "y");
+    if (x < 0.0 || y <= 0.0 || x + y > 1.0) {  // outside the diagram: onto its nearest edge
+      x = std::max(x, 0.0);
+      y = std::max(y, 1e-6);
+      const double sum = std::max(x + y, 1.0);
+      x /= sum;
+      y /= sum;
+      repairs_.push_back("cxy outside the chromaticity diagram (x >= 0, y > 0, x + y <= 1) clipped into it");
+    }
+    color = xyzFromChromaticity(x, y);
   } else if (k == "cspec") {
     requireMgfArguments(e, 4, SIZE_MAX, "cspec l_min l_max v1 v2 ...");
     color = xyzFromSpectrum(parseMgfNumber(e.words[1], "l_min"), parseMgfNumber(e.words[2], "l_max"),
@@ -90,11 +103,13 @@ bool MgfContexts::handle(const MgfEntity& e) {
   } else if (k == "rd") {
     requireMgfArguments(e, 1, 1, "rd rho_d");
     const double rd = parseMgfNumber(e.words[1], "rho_d");
-    // rho = 1 would never let light die out, so the solver needs it strictly below 1.
-    if (rd < 0.0 || rd >= 1.0)
-      throw MgfError("diffuse reflectance " + e.words[1] + " is outside [0, 1)",
-                     "give rd a value from 0 up to (not including) 1");
-    material.rd = rd;
+    if (rd < 0.0)
+      throw MgfError("diffuse reflectance " + e.words[1] + " is negative", "give rd a value from 0 up to 1");
+    // rho = 1 would never let light die out; files in the wild write `rd 1` for white.
+    if (rd >= 1.0)
+      repairs_.push_back(fmt::format("rd of 1 or more lowered to {} (a reflectance of 1 never lets light die out)",
+                                     kHighestReflectance));
+    material.rd = std::min(rd, kHighestReflectance);
     material.rdColor = color;
   } else if (k == "ed") {
     requireMgfArguments(e, 1, 1, "ed epsilon_d");

@@ -37,8 +37,12 @@ class MgfContexts {
   const MgfVertex& vertex(const std::string& name) const;  // throws MgfError when undefined
   const MgfMaterial& material() const { return *materials_.current; }
   const std::string& materialName() const { return materials_.currentName; }  // "" if unnamed
+  // What the last handle() repaired (a reflectance of 1 or more, an impossible chromaticity), as
+  // MGF's reference parser does: one message per kind, for the caller to count and report.
+  std::vector<std::string> takeRepairs() { return std::exchange(repairs_, {}); }
 
  private:
+  std::vector<std::string> repairs_;
   // The get/set pattern shared by c, m and v: "x" (the unnamed one, reset), "x id" (a defined
   // one), "x id =" (define id afresh), "x id = template" (define id as a copy).
   template <class T>

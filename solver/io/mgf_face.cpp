@@ -43,12 +43,6 @@ std::vector<std::vector<Vec3>> planarFace(std::vector<Vec3> face, bool* split) {
   double offPlane = 0.0;
   for (const Vec3& v : face) offPlane = std::max(offPlane, std::abs(glm::dot(v - face.front(), n)));
   if (offPlane <= kMgfFlatnessTolerance * size) return {face};
-  if (offPlane > kMgfBentLimit * size)
-    throw MgfError(fmt::format("the face is not planar: a vertex lies {:.3g} off its plane, {:.1f}% of its size "
-                               "(more than {:.0f}% is taken for an error, not a bent quad)",
-                               offPlane, 100.0 * offPlane / size, 100.0 * kMgfBentLimit),
-                   "give the face vertices in one plane, or split it into flat faces");
-
   // Counter-clockwise 2D coordinates seen from the front, so ear clipping keeps the orientation.
   // u along the in-plane part of the chord to the farthest vertex: well away from zero length.
   Vec3 far = face[0];

@@ -132,7 +132,11 @@ void MgfInterpreter::load(const fs::path& path, const std::string& label) {
 
 void MgfInterpreter::entity(const MgfEntity& e) {
   const std::string& k = e.words[0];
-  if (contexts_.handle(e) || geometry(e)) return;
+  if (contexts_.handle(e)) {
+    for (const std::string& repair : contexts_.takeRepairs()) note(e, repair);
+    return;
+  }
+  if (geometry(e)) return;
   if (k == "xf") return transform(e);
   if (k == "o") return object(e);
   if (k == "i") return include(e);
@@ -148,9 +152,10 @@ void MgfInterpreter::entity(const MgfEntity& e) {
     for (size_t i = 1; i < e.words.size(); ++i) parseMgfNumber(e.words[i], k + " value");
     return note(e, k + " ignored: " + ignored.why);
   }
-  throw MgfError("unknown entity '" + k + "'",
-                 "check the spelling; radmesh reads the MGF 2.0 entities # o xf i ies c cxy cspec "
-                 "cct cmix m sides rd td ed rs ts ir v p n f sph cyl cone prism ring torus");
+  // As MGF's reference parser does: counted and passed over, so files of newer or private
+  // dialects still open.
+  note(e, "unknown entity '" + k + "' skipped (radmesh reads the MGF 2.0 entities # o xf i ies c cxy "
+          "cspec cct cmix m sides rd td ed rs ts ir v p n f sph cyl cone prism ring torus)");
 }
 
 void MgfInterpreter::include(const MgfEntity& e) {
@@ -220,10 +225,18 @@ bool MgfInterpreter::geometry(const MgfEntity& e) {
   const auto number = [&](size_t i, const char* what) { return parseMgfNumber(e.words[i], what); };
   if (k == "f") {
     requireMgfArguments(e, 3, SIZE_MAX, "f v1 v2 v3 ...");
-    std::vector<Vec3> face;
-    for (size_t i = 1; i < e.words.size(); ++i) face.push_back(position(e.words[i]));
+    // A face that cannot be built is skipped, as MGF's reference parser does, not the whole file.
     bool split = false;
-    emit(planarFace(face, &split), e);
+    std::vector<std::vector<Vec3>> polygons;
+    try {
+      std::vector<Vec3> face;
+      for (size_t i = 1; i < e.words.size(); ++i) face.push_back(position(e.words[i]));
+      polygons = planarFace(face, &split);
+    } catch (const MgfError& error) {
+      note(e, std::string("f skipped: ") + error.what() + " (fix: " + error.fix() + ")");
+      return true;
+    }
+    emit(polygons, e);
     if (split) note(e, "f split into triangles: its vertices are not in one plane");
   } else if (k == "sph") {
     requireMgfArguments(e, 2, 2, "sph vc radius");

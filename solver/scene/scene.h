@@ -11,6 +11,10 @@ namespace radmesh {
 using Vec3 = glm::dvec3;
 using Rgb = glm::dvec3;  // linear RGB, one value per channel
 
+// What a reflectance of 1 or more is lowered to, in every reader: rho = 1 would never let light
+// die out, and exporters write 1 for white.
+inline constexpr double kHighestReflectance = 0.99;
+
 struct Material {
   std::string name;
   Rgb rho{0.0};        // diffuse reflectance per channel, each in [0, 1)

@@ -75,10 +75,10 @@ TEST(MgfColor, OutOfGamutReflectanceIsDesaturatedKeepingLuminance) {
   EXPECT_NEAR(luminance(rho), 0.29, 1e-12);
   for (int c = 0; c < 3; ++c) {
     EXPECT_GE(rho[c], 0.0);
-    EXPECT_LE(rho[c], kHighestFittedReflectance + 1e-12);
+    EXPECT_LE(rho[c], kHighestReflectance + 1e-12);
   }
   // Desaturated no further than needed: a channel sits on a bound.
-  EXPECT_TRUE(std::abs(std::max({rho.r, rho.g, rho.b}) - kHighestFittedReflectance) < 1e-12 ||
+  EXPECT_TRUE(std::abs(std::max({rho.r, rho.g, rho.b}) - kHighestReflectance) < 1e-12 ||
               std::abs(std::min({rho.r, rho.g, rho.b})) < 1e-12);
   const Rgb grey = mgfReflectance(0.5, kMgfNeutral, &desaturated);
   EXPECT_FALSE(desaturated);

@@ -1,0 +1,99 @@
+// Each file under tests/data/repaired/mgf_* is one that real tools write and MGF's reference parser
+// opens: radmesh opens it too, repairs it as that parser does, and reports each kind of repair
+// once, with where it first applied and how often.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "solver/io/mgf_color.h"
+#include "solver/io/mgf_import.h"
+#include "solver/io/scene_loader.h"
+#include "tests/solver/io/mgf_test_scene.h"
+#include "tests/test_paths.h"
+
+namespace radmesh {
+namespace {
+
+struct Repaired {
+  Scene scene;
+  std::vector<std::string> warnings;
+};
+
+Repaired repaired(const std::string& name) {
+  Repaired r;
+  r.scene = loadScene(test::dataPath("repaired/" + name).string(), &r.warnings);  // also validates
+  return r;
+}
+
+// The one warning that contains `text`; fails unless exactly one does.
+std::string warningWith(const Repaired& r, const std::string& text) {
+  const auto n = std::count_if(r.warnings.begin(), r.warnings.end(),
+                               [&](const std::string& w) { return w.find(text) != std::string::npos; });
+  EXPECT_EQ(n, 1) << "warnings naming '" << text << "'";
+  for (const std::string& w : r.warnings)
+    if (w.find(text) != std::string::npos) return w;
+  return {};
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(MgfRepair, UnknownEntitiesAreCountedAndSkipped) {
+  const Repaired r = repaired("mgf_unknown_entity.mgf");
+  ASSERT_EQ(r.scene.polygons.size(), 1u);
+  EXPECT_DOUBLE_EQ(test::totalArea(r.scene), 1.0);
+  ASSERT_EQ(r.warnings.size(), 2u);
+  const std::string sphere = warningWith(r, "unknown entity 'sphere' skipped");
+  EXPECT_TRUE(contains(sphere, "mgf_unknown_entity.mgf: line 13:")) << sphere;
+  EXPECT_TRUE(contains(sphere, "(2 times)")) << sphere;
+  const std::string glow = warningWith(r, "unknown entity 'glow' skipped");
+  EXPECT_TRUE(contains(glow, "line 14:")) << glow;
+  EXPECT_FALSE(contains(glow, "times)")) << glow;
+}
+
+TEST(MgfRepair, ReflectanceOfOneOrMoreIsLoweredTo099) {
+  const Repaired r = repaired("mgf_rd_one.mgf");
+  ASSERT_EQ(r.scene.materials.size(), 3u);
+  for (int m : {1, 2}) EXPECT_NEAR(luminance(r.scene.materials[m].rho), kHighestReflectance, 1e-12) << m;
+  for (int m : {1, 2})
+    for (int c = 0; c < 3; ++c) EXPECT_LT(r.scene.materials[m].rho[c], 1.0) << m;
+  const std::string w = warningWith(r, "rd of 1 or more lowered to 0.99");
+  EXPECT_TRUE(contains(w, "line 8:")) << w;
+  EXPECT_TRUE(contains(w, "(2 times)")) << w;
+}
+
+TEST(MgfRepair, AFaceAFifthOffItsPlaneIsTriangulated) {
+  const Repaired r = repaired("mgf_bent_quad.mgf");
+  ASSERT_EQ(r.scene.polygons.size(), 2u);
+  const double h = std::sqrt(0.5);
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{1, 1, h}, d{0, 1, 0};
+  // Split along one diagonal or the other; either way the triangles use the face's own corners.
+  const double alongAc = polygonArea({a, b, c}) + polygonArea({a, c, d});
+  const double alongBd = polygonArea({a, b, d}) + polygonArea({b, c, d});
+  const double area = test::totalArea(r.scene);
+  EXPECT_TRUE(std::abs(area - alongAc) < 1e-12 || std::abs(area - alongBd) < 1e-12) << area;
+  for (const Polygon& p : r.scene.polygons) EXPECT_EQ(p.vertices.size(), 3u);
+  EXPECT_TRUE(contains(warningWith(r, "f split into triangles"), "line 13:"));
+}
+
+TEST(MgfRepair, FacesThatCannotBeBuiltAreSkippedByName) {
+  const Repaired r = repaired("mgf_undefined_vertex.mgf");
+  ASSERT_EQ(r.scene.polygons.size(), 1u);
+  EXPECT_DOUBLE_EQ(test::totalArea(r.scene), 0.5);
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_TRUE(contains(warningWith(r, "f skipped: v 'c' is not defined"), "line 11:"));
+  EXPECT_TRUE(contains(warningWith(r, "f skipped: the face has fewer than 3 distinct vertices"), "line 12:"));
+}
+
+TEST(MgfRepair, AChromaticityOutsideTheDiagramIsClipped) {
+  const Repaired r = repaired("mgf_color_outside_gamut.mgf");
+  ASSERT_EQ(r.scene.materials.size(), 2u);
+  EXPECT_NEAR(luminance(r.scene.materials[1].rho), 0.5, 1e-9);
+  EXPECT_TRUE(contains(warningWith(r, "cxy outside the chromaticity diagram"), "line 7:"));
+  EXPECT_TRUE(contains(warningWith(r, "outside the Rec. 709 gamut"), "material 'odd'"));
+}
+
+}  // namespace
+}  // namespace radmesh
