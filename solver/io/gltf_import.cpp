@@ -4,6 +4,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <array>
 #include <cmath>
 
 #include "solver/geometry/coplanar_merge.h"
@@ -29,6 +30,31 @@ std::string nodeLabel(const tinygltf::Model& model, int index) {
 }
 
 // Collects the triangles of every mesh instance under the chosen scene roots, in world space.
+// A triangle list (three indices a triangle, counter-clockwise) from a list, strip or fan, as
+// glTF 2.0 defines them (section 3.7.2.1): strip triangle i is (i, i+1+i%2, i+2-i%2), fan
+// triangle i is (i+1, i+2, 0).
+std::vector<uint32_t> triangleList(int mode, const std::vector<uint32_t>& v, const std::string& file,
+                                   const std::string& element) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    if (v.size() % 3 != 0)
+      throw SceneError(file, element, "has " + std::to_string(v.size()) + " vertices, not a multiple of 3 for triangles",
+                       "give each triangle exactly 3 indices");
+    return v;
+  }
+  if (v.size() < 3)
+    throw SceneError(file, element, "has " + std::to_string(v.size()) + " vertices, fewer than one triangle needs",
+                     "give a strip or fan at least 3 vertices");
+  std::vector<uint32_t> out;
+  for (size_t i = 0; i + 2 < v.size(); ++i) {
+    const size_t odd = mode == TINYGLTF_MODE_TRIANGLE_STRIP ? i % 2 : 0;
+    const std::array<uint32_t, 3> t = mode == TINYGLTF_MODE_TRIANGLE_STRIP
+                                          ? std::array<uint32_t, 3>{v[i], v[i + 1 + odd], v[i + 2 - odd]}
+                                          : std::array<uint32_t, 3>{v[i + 1], v[i + 2], v[0]};
+    out.insert(out.end(), t.begin(), t.end());
+  }
+  return out;
+}
+
 class TriangleCollector {
  public:
   TriangleCollector(const tinygltf::Model& model, const std::string& file, std::vector<std::string>* warnings)
@@ -93,33 +119,35 @@ class TriangleCollector {
   }
 
   void addPrimitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& element) {
-    if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+    if (prim.mode == TINYGLTF_MODE_POINTS || prim.mode == TINYGLTF_MODE_LINE ||
+        prim.mode == TINYGLTF_MODE_LINE_LOOP || prim.mode == TINYGLTF_MODE_LINE_STRIP) {
       if (warnings_)
         warnings_->push_back(file_ + ": " + element + ": mode " + std::to_string(prim.mode) +
-                             " (points, lines, strips or fans) skipped; only triangle lists (mode 4) are read");
+                             " (points or lines) skipped: it has no area to light");
       return;
     }
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        prim.mode != TINYGLTF_MODE_TRIANGLE_FAN)
+      throw SceneError(file_, element, "has mode " + std::to_string(prim.mode) + ", which glTF 2.0 does not define",
+                       "use a mode from 0 to 6");
     const auto position = prim.attributes.find("POSITION");
     if (position == prim.attributes.end())
       throw SceneError(file_, element, "has no POSITION attribute", "give every triangle primitive positions");
     const std::vector<Vec3> local = readFloatVec3(model_, position->second, file_, "POSITION of " + element);
-    std::vector<uint32_t> indices;
+    std::vector<uint32_t> vertices;
     if (prim.indices >= 0) {
-      indices = readIndices(model_, prim.indices, file_, "indices of " + element);
+      vertices = readIndices(model_, prim.indices, file_, "indices of " + element);
     } else {
-      indices.resize(local.size());
-      for (size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<uint32_t>(i);
+      vertices.resize(local.size());
+      for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = static_cast<uint32_t>(i);
     }
-    if (indices.size() % 3 != 0)
-      throw SceneError(file_, element,
-                       "has " + std::to_string(indices.size()) + " vertices, not a multiple of 3 for triangles",
-                       "give each triangle exactly 3 indices");
-    for (size_t i = 0; i < indices.size(); ++i)
-      if (indices[i] >= local.size())
+    for (size_t i = 0; i < vertices.size(); ++i)
+      if (vertices[i] >= local.size())
         throw SceneError(file_, element,
-                         "index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
+                         "index " + std::to_string(i) + " is " + std::to_string(vertices[i]) +
                              ", out of range for its " + std::to_string(local.size()) + " positions",
                          "keep every index below the POSITION accessor's count");
+    const std::vector<uint32_t> indices = triangleList(prim.mode, vertices, file_, element);
     const int material = materialOf(prim, element);
     // A mirroring transform turns counter-clockwise into clockwise (glTF 2.0 spec, 3.7.4).
     const bool mirrored = glm::determinant(world) < 0.0;

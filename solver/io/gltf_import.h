@@ -7,9 +7,9 @@
 
 namespace radmesh {
 
-// Reads the triangle lists (mode 4, indexed or not) of every mesh under the default scene's roots
+// Reads the triangles (lists, strips and fans, indexed or not) of every mesh under the default scene's roots
 // (or every scene's, or every root node's), in world space through the node transforms (matrix or
-// TRS); other primitive modes are warned about and skipped. Materials: rho = baseColorFactor x the
+// TRS); points and lines, which have no area, are warned about and skipped. Materials: rho = baseColorFactor x the
 // baseColorTexture's texel average, E = emissiveFactor x KHR_materials_emissive_strength (W/m^2);
 // see gltf_material.h. Primitives without a material get a grey default (warned about). Coplanar
 // adjacent triangles of one material are merged into polygons (coplanar_merge.h). Throws

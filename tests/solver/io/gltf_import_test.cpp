@@ -5,6 +5,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "solver/bake/display_radiosity.h"
@@ -151,20 +152,36 @@ TEST(GltfImport, DefaultSceneAloneOrEveryScene) {
   EXPECT_EQ(second.polygons[0].vertices[0].z, 5.0);
 }
 
-TEST(GltfImport, NonTriangleModesAreWarnedAboutAndSkipped) {
+// An exporter's n-gon as a triangle fan, a quad as a strip, and a line (tests/data/repaired/).
+TEST(GltfImport, FansAndStripsAreReadLinesSkipped) {
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(test::dataPath("repaired/gltf_fan_and_strip.gltf").string(), &warnings);
+  ASSERT_EQ(s.polygons.size(), 2u);  // each primitive's coplanar triangles merged into one polygon
+  std::vector<double> areas;
+  for (const Polygon& p : s.polygons) {
+    areas.push_back(polygonArea(p.vertices));
+    EXPECT_GT(newellNormal(p.vertices).z, 0.0) << "counter-clockwise seen from +z";
+  }
+  std::sort(areas.begin(), areas.end());
+  EXPECT_NEAR(areas[0], 1.0, 1e-6);                       // the strip's unit square
+  EXPECT_NEAR(areas[1], 3.0 * std::sqrt(3.0) / 2.0, 1e-6);  // the fan's regular hexagon
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(mentions(warnings, "mesh 'exported' primitive 2: mode 1 (points or lines) skipped"));
+}
+
+TEST(GltfImport, AStripOrFanWithoutATriangleIsRefused) {
   TempDir dir;
   GltfBuilder b;
-  const int positions = b.addPositions(kQuad);
-  b.add("meshes", {{"name", "mixed"},
-                   {"primitives", {{{"attributes", {{"POSITION", positions}}}, {"mode", 1}},
-                                   {{"attributes", {{"POSITION", positions}}}, {"mode", 5}},
-                                   {{"attributes", {{"POSITION", positions}}}, {"indices", b.addIndices({0, 1, 2})}}}}});
+  const int positions = b.addPositions({{0, 0, 0}, {1, 0, 0}});
+  b.add("meshes", {{"name", "short"}, {"primitives", {{{"attributes", {{"POSITION", positions}}}, {"mode", 6}}}}});
   b.add("nodes", {{"mesh", 0}});
-  std::vector<std::string> warnings;
-  const Scene s = importGltf(b.write(dir / "modes.gltf").string(), &warnings);
-  EXPECT_EQ(s.polygons.size(), 1u);
-  EXPECT_TRUE(mentions(warnings, "mesh 'mixed' primitive 0: mode 1"));
-  EXPECT_TRUE(mentions(warnings, "mesh 'mixed' primitive 1: mode 5"));
+  try {
+    importGltf(b.write(dir / "short.gltf").string());
+    ADD_FAILURE() << "a fan of 2 vertices was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.element(), "mesh 'short' primitive 0");
+    EXPECT_NE(std::string(e.what()).find("fewer than one triangle needs"), std::string::npos) << e.what();
+  }
 }
 
 TEST(GltfImport, MaterialsFromFactorsEmissiveStrengthAndTextureAverage) {
