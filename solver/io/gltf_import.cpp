@@ -4,8 +4,10 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "solver/geometry/coplanar_merge.h"
 #include "solver/io/gltf_accessor.h"
@@ -29,7 +31,6 @@ std::string nodeLabel(const tinygltf::Model& model, int index) {
   return "node " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
 }
 
-// Collects the triangles of every mesh instance under the chosen scene roots, in world space.
 // A triangle list (three indices a triangle, counter-clockwise) from a list, strip or fan, as
 // glTF 2.0 defines them (section 3.7.2.1): strip triangle i is (i, i+1+i%2, i+2-i%2), fan
 // triangle i is (i+1, i+2, 0).
@@ -55,6 +56,7 @@ std::vector<uint32_t> triangleList(int mode, const std::vector<uint32_t>& v, con
   return out;
 }
 
+// Collects the triangles of every mesh instance under the chosen scene roots, in world space.
 class TriangleCollector {
  public:
   TriangleCollector(const tinygltf::Model& model, const std::string& file, std::vector<std::string>* warnings)
@@ -205,6 +207,32 @@ std::vector<std::pair<int, std::string>> sceneRoots(const tinygltf::Model& model
   return roots;
 }
 
+// A doubleSided surface receives and reflects on both sides: each of its triangles gets a reversed
+// copy, set back along the copy's own normal by a hair (1e-6 of the scene's size, far above the
+// projection's near depth) so that from either side the facing copy is the nearer one and the
+// other lies behind the shooter.
+void addBackFaces(const tinygltf::Model& model, std::vector<Polygon>& triangles) {
+  Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
+  for (const Polygon& t : triangles)
+    for (const Vec3& v : t.vertices) {
+      low = glm::min(low, v);
+      high = glm::max(high, v);
+    }
+  const double setBack = 1e-6 * glm::length(high - low);
+  const size_t n = triangles.size();
+  for (size_t i = 0; i < n; ++i) {
+    const int m = triangles[i].material;
+    if (m >= static_cast<int>(model.materials.size()) || !model.materials[m].doubleSided) continue;
+    Polygon back = triangles[i];
+    std::reverse(back.vertices.begin(), back.vertices.end());
+    const Vec3 normal = newellNormal(back.vertices);
+    if (!(glm::length(normal) > 0.0)) continue;  // degenerate: dropped when merging
+    for (Vec3& v : back.vertices) v += setBack * glm::normalize(normal);
+    back.origin += " (back face)";
+    triangles.push_back(std::move(back));
+  }
+}
+
 }  // namespace
 
 Scene importGltf(const std::string& path, std::vector<std::string>* warnings) {
@@ -220,6 +248,7 @@ Scene importGltf(const std::string& path, std::vector<std::string>* warnings) {
       warnings->push_back(path + ": " + std::to_string(collector.defaultMaterialUsers()) +
                           " primitive(s) without a material get the material '" + scene.materials.back().name + "'");
   }
+  addBackFaces(model, collector.triangles());
   MergeReport report;
   scene.polygons = mergeCoplanarTriangles(collector.triangles(), &report);
   if (report.degenerateDropped > 0 && warnings)

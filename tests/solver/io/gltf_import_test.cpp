@@ -169,6 +169,35 @@ TEST(GltfImport, FansAndStripsAreReadLinesSkipped) {
   EXPECT_TRUE(mentions(warnings, "mesh 'exported' primitive 2: mode 1 (points or lines) skipped"));
 }
 
+// glTF's doubleSided: the surface receives and reflects on both sides, as two one-sided faces.
+TEST(GltfImport, DoubleSidedSurfacesGetABackFaceSetBackAHair) {
+  TempDir dir;
+  GltfBuilder b;
+  b.add("materials", {{"name", "card"}, {"doubleSided", true}});
+  b.add("materials", {{"name", "wall"}});
+  b.addTriangles("card", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, 0);
+  b.addTriangles("wall", b.addPositions({{0, 0, 3}, {0, 1, 3}, {1, 0, 3}}), -1, 1);
+  const Scene s = importGltf(b.write(dir / "two-sided.gltf").string());
+  ASSERT_EQ(s.polygons.size(), 3u);
+  const double diagonal = std::sqrt(1.0 + 1.0 + 9.0);
+  int up = 0, down = 0;
+  for (const Polygon& p : s.polygons) {
+    EXPECT_NEAR(polygonArea(p.vertices), 0.5, 1e-12);
+    const Vec3 n = glm::normalize(newellNormal(p.vertices));
+    if (p.material == 1) {
+      EXPECT_EQ(n.z, -1.0) << "a one-sided wall stays one face";
+    } else if (n.z > 0.0) {
+      ++up;
+      EXPECT_EQ(p.vertices[0].z, 0.0);
+    } else {
+      ++down;  // the back face, behind the front one as seen from its own side
+      for (const Vec3& v : p.vertices) EXPECT_NEAR(v.z, -1e-6 * diagonal, 1e-15);
+    }
+  }
+  EXPECT_EQ(up, 1);
+  EXPECT_EQ(down, 1);
+}
+
 TEST(GltfImport, AStripOrFanWithoutATriangleIsRefused) {
   TempDir dir;
   GltfBuilder b;
