@@ -7,7 +7,11 @@
 #include <numbers>
 
 #include "solver/formfactors/analytic_form_factor.h"
+#include "solver/io/gltf_import.h"
+#include "solver/meshing/meshing.h"
 #include "solver/projection/projection.h"
+#include "tests/solver/closed_forms.h"
+#include "tests/solver/io/gltf_test_file.h"
 #include "tests/solver/solver_test_helpers.h"
 
 namespace radmesh {
@@ -230,6 +234,39 @@ TEST(HardCases, PatchStraddlingTheShootersPlaneCountsOnlyItsFrontPart) {
   const double upper = pointToPolygonFormFactor(std::vector<Vec3>{{2, -1, 0}, {2, 1, 0}, {2, 1, 1}, {2, -1, 1}});
   EXPECT_NEAR(test::entry(test::rowsOf(t, optionsFor(Projection::Analytic), {0})[0], 1), upper, 1e-6 * upper);
   EXPECT_NEAR(test::entry(test::rowsOf(t, optionsFor(Projection::Hemicube, 512), {0})[0], 1), upper, 0.01 * upper);
+}
+
+// A glTF card marked doubleSided, 1 above a square lamp facing it: its underside receives the
+// lamp's light (a one-sided card would absorb it on its unlit back), its top none.
+TEST(HardCases, DoubleSidedCardReceivesOnItsUnderside) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  const nlohmann::json grey = {{"baseColorFactor", {0.5, 0.5, 0.5, 1.0}}};
+  b.add("materials", {{"name", "lamp"}, {"pbrMetallicRoughness", grey}, {"emissiveFactor", {1.0, 1.0, 1.0}},
+                      {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 10.0}}}}}});
+  b.add("materials", {{"name", "card"}, {"pbrMetallicRoughness", grey}, {"doubleSided", true}});
+  const auto square = [](double z) { return std::vector<Vec3>{{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 0, z}, {1, 1, z}, {0, 1, z}}; };
+  b.addTriangles("lamp", b.addPositions(square(0.0)), -1, 0);
+  b.addTriangles("card", b.addPositions(square(1.0)), -1, 1);
+  TestScene t;
+  t.scene = importGltf(b.write(dir / "card.gltf").string());
+  t.patches = meshScene(t.scene, 0.125);
+  ASSERT_EQ(t.patches.size(), 3u * 64u);
+  ProgressiveSolver solver(t.scene, t.patches, test::fixedIterations(optionsFor(Projection::Hemicube, 128), 64));
+  solveChecked(solver);
+  ASSERT_EQ(solver.history().size(), 64u);
+  std::vector<Patch> under, top;
+  std::vector<Rgb> underB, topB;
+  for (size_t i = 0; i < t.patches.size(); ++i) {
+    if (t.patches[i].material != 1) continue;
+    (t.patches[i].normal.z < 0 ? under : top).push_back(t.patches[i]);
+    (t.patches[i].normal.z < 0 ? underB : topB).push_back(solver.radiosity()[i]);
+  }
+  ASSERT_EQ(under.size(), 64u);
+  // Every lamp patch has shot once: B = rho E F(lamp -> card), the facing unit squares' form factor.
+  const double expected = 0.5 * 10.0 * test::parallelRectanglesFormFactor(1.0, 1.0, 1.0);
+  EXPECT_NEAR(areaMean(under, underB), expected, 0.02 * expected);
+  EXPECT_EQ(areaMean(top, topB), 0.0);
 }
 
 }  // namespace
