@@ -238,4 +238,31 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
   return patches;
 }
 
+CellChoice chooseCell(const Scene& scene) {
+  Vec3 low(DBL_MAX), high(-DBL_MAX);
+  double area = 0.0;
+  for (const Polygon& p : scene.polygons) {
+    area += polygonArea(p.vertices);
+    for (const Vec3& v : p.vertices) {
+      low = glm::min(low, v);
+      high = glm::max(high, v);
+    }
+  }
+  if (scene.polygons.empty()) return {kDefaultCellM, "the paper's 15-inch cell"};
+  // The smallest extent that is not flat: a single wall is sized by its shorter side.
+  const Vec3 extent = high - low;
+  const double largest = std::max({extent.x, extent.y, extent.z});
+  double smallest = largest;
+  for (int a = 0; a < 3; ++a)
+    if (extent[a] > 1e-9 * largest) smallest = std::min(smallest, extent[a]);
+  if (smallest < kRoomSizedM)
+    return {smallest / 16.0, fmt::format("cell {:.4g} m, a sixteenth of the model's smallest extent ({:.3g} m, "
+                                         "smaller than a room)", smallest / 16.0, smallest)};
+  const double budgetCell = std::sqrt(area / kCellPatchBudget);
+  if (budgetCell > kDefaultCellM)
+    return {budgetCell, fmt::format("cell {:.4g} m, so that its {:.4g} m^2 make about {:.0f} patches", budgetCell,
+                                    area, kCellPatchBudget)};
+  return {kDefaultCellM, fmt::format("cell {} m, the paper's 15 inches (a room-sized model)", kDefaultCellM)};
+}
+
 }  // namespace radmesh

@@ -1,5 +1,6 @@
 #pragma once
 // Slicing polygons into patches on a global grid (the paper's section 1.6).
+#include <string>
 #include <vector>
 
 #include "solver/meshing/patch.h"
@@ -8,6 +9,21 @@
 namespace radmesh {
 
 inline constexpr double kDefaultCellM = 0.381;  // 15 inches, the paper's grid
+// Models whose smallest extent is below this are smaller than a room: their cell follows their size.
+inline constexpr double kRoomSizedM = 1.5;
+// The cell chosen for a model when none is given: at most about this many patches.
+inline constexpr double kCellPatchBudget = 200'000;
+
+struct CellChoice {
+  double cellM = kDefaultCellM;
+  std::string why;  // one line for the user: what was chosen and from what
+};
+
+// The cell for a model when the user gives none: the paper's 15 inches for room-sized models and
+// buildings; a sixteenth of the smallest extent for a model smaller than a room (a 0.55 m box
+// would be 42 patches at 15 inches); and for a model so large that 15 inches would make more than
+// about kCellPatchBudget patches, the cell of that many.
+CellChoice chooseCell(const Scene& scene);
 
 // Every polygon is cut by the planes x = k*cell, y = k*cell, z = k*cell that cross its face (the
 // two axes spanning its dominant plane) into convex pieces within one cell each, then into

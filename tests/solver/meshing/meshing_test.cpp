@@ -81,6 +81,29 @@ bool insidePolygon(const std::vector<Vec3>& polygon, const Vec3& p) {
   return inside;
 }
 
+// Without --cell: rooms keep the paper's cell, small models and campuses get one of their size.
+TEST(Meshing, TheDefaultCellFollowsTheModelsSize) {
+  const auto box = [](Vec3 size) {
+    Scene s;
+    const Vec3 o(0.0);
+    s.polygons.push_back({{o, {size.x, 0, 0}, {size.x, size.y, 0}, {0, size.y, 0}}, 0, "floor"});
+    s.polygons.push_back({{o, {0, 0, size.z}, {size.x, 0, size.z}, {size.x, 0, 0}}, 0, "wall"});
+    return s;
+  };
+  const CellChoice room = chooseCell(box({5.0, 4.0, 2.7}));
+  EXPECT_EQ(room.cellM, kDefaultCellM);
+  EXPECT_NE(room.why.find("15 inches"), std::string::npos) << room.why;
+  const CellChoice cornell = chooseCell(box({0.556, 0.559, 0.548}));
+  EXPECT_DOUBLE_EQ(cornell.cellM, 0.548 / 16.0);
+  EXPECT_NE(cornell.why.find("smaller than a room"), std::string::npos) << cornell.why;
+  const CellChoice wall = chooseCell(box({1.0, 0.0, 1.2}));  // flat: sized by its shorter side
+  EXPECT_DOUBLE_EQ(wall.cellM, 1.0 / 16.0);
+  const CellChoice campus = chooseCell(box({400.0, 300.0, 20.0}));  // 400*300 + 400*20 m^2
+  EXPECT_DOUBLE_EQ(campus.cellM, std::sqrt((400.0 * 300.0 + 400.0 * 20.0) / kCellPatchBudget));
+  EXPECT_NEAR(static_cast<double>(meshScene(box({400.0, 300.0, 20.0}), campus.cellM).size()), kCellPatchBudget,
+              0.02 * kCellPatchBudget);
+}
+
 TEST(Meshing, UnitSquareAtOriginIsSixteenQuads) {
   const Scene s = sceneOf({rectangleXY(0, 0, 1, 1)});
   const auto patches = meshScene(s, 0.25);
