@@ -3,11 +3,16 @@
 // time. Colours, named contexts, transforms and primitives live in their own mgf_* files.
 #include "solver/io/mgf_import.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <numbers>
 
+#include "solver/io/ies_photometry.h"
 #include "solver/io/mgf_color.h"
 #include "solver/io/mgf_context.h"
 #include "solver/io/mgf_error.h"
@@ -42,8 +47,6 @@ constexpr IgnoredEntity kIgnoredEntities[] = {
     {"sides", 1, "sides {1|2}",
      "radmesh surfaces are one-sided: they emit and receive on their right-hand-rule front"},
 };
-constexpr const char* kIesWhy =
-    "an IES luminaire, radmesh has no photometric sources (give its surfaces ed instead)";
 
 // A warning given once however often it applies: where it first did, and how often.
 struct Note {
@@ -73,6 +76,8 @@ class MgfInterpreter {
   void load(const fs::path& path, const std::string& label);
   void entity(const MgfEntity& e);
   void include(const MgfEntity& e);
+  void luminaire(const MgfEntity& e);
+  fs::path includedPath(const std::string& name, const char* what) const;
   void transform(const MgfEntity& e);
   void pushTransform(const std::vector<std::string>& args, int line);
   void popTransform();
@@ -80,6 +85,7 @@ class MgfInterpreter {
   bool geometry(const MgfEntity& e);
   void note(const MgfEntity& e, const std::string& message);
   void emit(const MgfPolygons& polygons, const MgfEntity& e);
+  void emit(const MgfPolygons& polygons, const MgfEntity& e, int material);
   int currentMaterial(const MgfEntity& e);
   Vec3 position(const std::string& vertex) const { return contexts_.vertex(vertex).position; }
   std::string where(int line) const {
@@ -140,10 +146,7 @@ void MgfInterpreter::entity(const MgfEntity& e) {
   if (k == "xf") return transform(e);
   if (k == "o") return object(e);
   if (k == "i") return include(e);
-  if (k == "ies") {
-    requireMgfArguments(e, 1, SIZE_MAX, "ies pathname [-m f] [xform]");
-    return note(e, std::string("ies ignored: ") + kIesWhy);
-  }
+  if (k == "ies") return luminaire(e);
   for (const IgnoredEntity& ignored : kIgnoredEntities) {
     if (k != ignored.keyword) continue;
     requireMgfArguments(e, ignored.arguments, ignored.arguments, ignored.usage);
@@ -158,14 +161,66 @@ void MgfInterpreter::entity(const MgfEntity& e) {
           "cspec cct cmix m sides rd td ed rs ts ir v p n f sph cyl cone prism ring torus)");
 }
 
-void MgfInterpreter::include(const MgfEntity& e) {
-  requireMgfArguments(e, 1, SIZE_MAX, "i pathname [xform]");
-  fs::path target = e.words[1];
+fs::path MgfInterpreter::includedPath(const std::string& name, const char* what) const {
+  fs::path target = name;
   if (target.is_relative()) target = files_.back().path.parent_path() / target;
   std::error_code ec;
   if (!fs::is_regular_file(target, ec))
-    throw MgfError("include file '" + e.words[1] + "' not found (looked for " + target.string() + ")",
+    throw MgfError(std::string(what) + " '" + name + "' not found (looked for " + target.string() + ")",
                    "check the name; include paths are relative to the including file's folder");
+  return target;
+}
+
+// An IES luminaire (the ies entity): its gross luminous opening, centred at the origin with the
+// 0-180 degree plane along x and up along z, emitting its downward flux from its underside and its
+// upward flux from its top, as diffuse emitters of the same total flux.
+void MgfInterpreter::luminaire(const MgfEntity& e) {
+  requireMgfArguments(e, 1, SIZE_MAX, "ies pathname [-m multiplier] [xform]");
+  const fs::path target = includedPath(e.words[1], "IES file");
+  size_t first = 2;
+  double multiplier = 1.0;
+  if (e.words.size() > 2 && e.words[2] == "-m") {
+    if (e.words.size() < 4) throw MgfError("-m is missing its multiplier", "write ies file -m 2.5");
+    multiplier = parseMgfNumber(e.words[3], "multiplier");
+    if (multiplier < 0.0) throw MgfError("the multiplier is negative", "give -m a value >= 0");
+    first = 4;
+  }
+  const IesLuminaire lum = readIes(target.string(), multiplier);
+  for (const std::string& n : lum.notes) note(e, "ies " + target.filename().string() + ": " + n);
+  // Clockwise seen from above, so that the underside faces down.
+  std::vector<Vec3> opening;
+  const double z = -lum.heightM / 2.0;
+  if (lum.widthM < 0.0) {  // a disc
+    for (int k = 0; k < kMgfSegmentsAround; ++k) {
+      const double angle = -2.0 * std::numbers::pi * k / kMgfSegmentsAround;
+      opening.push_back({-lum.widthM / 2.0 * std::cos(angle), -lum.widthM / 2.0 * std::sin(angle), z});
+    }
+  } else {
+    const double x = lum.lengthM / 2.0, y = lum.widthM / 2.0;
+    opening = {{-x, -y, z}, {-x, y, z}, {x, y, z}, {x, -y, z}};
+  }
+  const double area = polygonArea(opening);
+  const bool transformed = e.words.size() > first;
+  if (transformed) pushTransform(std::vector<std::string>(e.words.begin() + first, e.words.end()), e.line);
+  for (const bool up : {false, true}) {
+    const double lumens = up ? lum.upLumens : lum.downLumens;
+    if (!(lumens > 0.0)) continue;
+    std::vector<Vec3> face = opening;
+    if (up) {
+      std::reverse(face.begin(), face.end());
+      for (Vec3& v : face) v.z = lum.heightM / 2.0;
+    }
+    bool desaturated = false;
+    const std::string name = fmt::format("ies {} ({})", target.filename().string(), up ? "up" : "down");
+    scene_.materials.push_back({name, Rgb(0.0), mgfEmittance(lumens / area, kMgfNeutral, &desaturated)});
+    emit({face}, e, static_cast<int>(scene_.materials.size()) - 1);
+  }
+  if (transformed) popTransform();
+}
+
+void MgfInterpreter::include(const MgfEntity& e) {
+  requireMgfArguments(e, 1, SIZE_MAX, "i pathname [xform]");
+  const fs::path target = includedPath(e.words[1], "include file");
   const fs::path canonical = canonicalOf(target);
   for (size_t i = 0; i < files_.size(); ++i) {
     if (files_[i].canonical != canonical) continue;
@@ -275,10 +330,13 @@ void MgfInterpreter::note(const MgfEntity& e, const std::string& message) {
 }
 
 void MgfInterpreter::emit(const MgfPolygons& polygons, const MgfEntity& e) {
+  emit(polygons, e, currentMaterial(e));
+}
+
+void MgfInterpreter::emit(const MgfPolygons& polygons, const MgfEntity& e, int material) {
   if (scene_.polygons.size() + transforms_.back().size() * polygons.size() > kMaxPolygons)
     throw MgfError("the scene would have more than " + std::to_string(kMaxPolygons) + " polygons",
                    "use fewer or smaller arrays");
-  const int material = currentMaterial(e);
   std::string origin = where(e.line) + ": " + e.words[0];
   if (!objects_.empty()) {
     origin += " (object '" + objects_.front();
