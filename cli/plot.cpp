@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -38,7 +39,9 @@ bool drawPlot(const Plot& plot, const std::string& png) {
     for (const auto& [x, y] : s.points) script += fmt::format("{:.9g} {:.9g}\n", x, y);
     script += "e\n";
   }
-  // The script goes down a pipe: nothing is left beside the PNG.
+  // The script goes down a pipe: nothing is left beside the PNG. A gnuplot that stops early fails the
+  // write below instead of killing radmesh with SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
   FILE* gnuplot = popen("gnuplot", "w");
   if (!gnuplot) throw std::runtime_error("cannot start gnuplot to draw " + png);
   const bool written = std::fputs(script.c_str(), gnuplot) >= 0;
