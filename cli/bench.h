@@ -26,7 +26,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args);
 struct AccuracyArgs {
   std::string scene = "office";
   std::string name = "office";   // file stem of the outputs
-  std::string outDir;            // CSV, JSON and plots go here; empty: table only
+  std::string outDir;            // CSV and plots go here; empty: table only
   std::vector<double> cells{0.5, 0.381, 0.25};
   std::vector<int> resolutions{32, 64, 128, 256, 512, 1024};
   int referenceResolution = 1024;
@@ -38,6 +38,11 @@ struct AccuracyArgs {
 
 // --quick: the CI-sized sweep (well under a minute), same code and outputs.
 AccuracyArgs quickAccuracyArgs(AccuracyArgs args);
+// With an outDir, writes NAME.csv (a row per point) and NAME-traces.csv (error against iteration), then draws them.
 nlohmann::json benchAccuracy(const AccuracyArgs& args);
+// The plots of docs/accuracy.md, STEM-*.png, drawn from STEM.csv and STEM-traces.csv.
+void drawAccuracyFigures(const std::string& stem, const std::string& sceneName);
+// "plane r3", "plane r5", "hemicube": a setting as the tables and plots name it.
+std::string settingLabel(const std::string& projection, double ratio);
 
 }  // namespace radmesh::cli

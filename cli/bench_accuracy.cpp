@@ -1,19 +1,17 @@
 // `radmesh bench accuracy SCENE`: what each projection, resolution and cell size buys in accuracy
 // and costs in time, against a reference solution on the same mesh.
 #include <fmt/core.h>
-#include <fmt/ostream.h>
 
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <map>
 
 #include "cli/bench.h"
 #include "cli/bench_timing.h"
+#include "cli/csv.h"
 #include "cli/image_error.h"
 #include "cli/plot.h"
-#include "cli/stats_json.h"
 #include "solver/radiosity/accuracy.h"
 #include "solver/radiosity/effects_plan.h"
 #include "solver/meshing/meshing.h"
@@ -26,10 +24,16 @@ namespace radmesh::cli {
 namespace {
 
 struct Setting {
-  std::string label;  // "plane r3", "plane r5", "hemicube"
   Projection projection;
   double ratio;
 };
+
+std::string label(const Setting& s) { return settingLabel(toString(s.projection), s.ratio); }
+
+// A trace's name in the JSON and on the plot.
+std::string traceLabel(const std::string& setting, int n, double cellM) {
+  return fmt::format("{} {}x{}, cell {}", setting, n, n, cellM);
+}
 
 struct Point {
   Setting setting;
@@ -59,9 +63,32 @@ struct TracePoint {
 };
 
 struct Trace {
-  std::string label;
+  Setting setting;
+  int resolution = 0;
+  double cellM = 0.0;
   std::vector<TracePoint> points;
 };
+
+// The plot cannot show more iterations than it has pixels: the CSV and the plot keep this many of each
+// trace, evenly spaced, the last, and the first at each stop docs/accuracy.md quotes; the JSON keeps every one.
+constexpr size_t kTraceRows = 300;
+constexpr double kConvergenceStops[] = {0.95, 0.99, 0.999};
+constexpr double kUnshotStops[] = {0.10, 0.05, 0.01};
+
+std::vector<char> keptTraceRows(const std::vector<TracePoint>& points) {
+  const size_t n = points.size();
+  std::vector<char> kept(n, 0);
+  if (n == 0) return kept;
+  for (size_t i = 0; i < n; i += (n + kTraceRows - 1) / kTraceRows) kept[i] = 1;
+  kept[n - 1] = 1;
+  auto keepFirst = [&](auto reached) {
+    const auto it = std::find_if(points.begin(), points.end(), reached);
+    if (it != points.end()) kept[it - points.begin()] = 1;
+  };
+  for (double c : kConvergenceStops) keepFirst([c](const TracePoint& p) { return p.convergence >= c; });
+  for (double u : kUnshotStops) keepFirst([u](const TracePoint& p) { return p.unshotFraction <= u; });
+  return kept;
+}
 
 struct Reference {
   std::string how;
@@ -161,65 +188,95 @@ std::vector<std::pair<double, double>> paretoFront(std::vector<std::pair<double,
   return front;
 }
 
-void writeCsv(const std::string& path, const std::vector<Point>& points) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write");
-  fmt::print(out, "projection,ratio,resolution,cell_m,patches,ms_per_iteration,seconds_to_95,seconds_to_99,"
-                  "error_at_95,error_at_99,image_rmse_at_95,image_rmse_at_99,memory_mib\n");
+CsvTable pointsTable(const std::vector<Point>& points) {
+  CsvTable t{.columns = {"projection", "ratio", "resolution", "cell_m", "patches", "ms_per_iteration", "seconds_to_95",
+              "seconds_to_99", "error_at_95", "error_at_99", "image_rmse_at_95", "image_rmse_at_99", "memory_mib"}};
   for (const Point& p : points)
-    fmt::print(out, "{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g}\n",
-               toString(p.setting.projection), p.setting.ratio, p.resolution, p.cellM, p.patches, p.msPerIteration,
-               p.secondsTo95, p.secondsTo99, p.error95, p.error99, p.imageError95, p.imageError99, p.memoryMiB);
+    t.rows.push_back({toString(p.setting.projection), fmt::format("{}", p.setting.ratio), std::to_string(p.resolution),
+                      fmt::format("{}", p.cellM), std::to_string(p.patches), fmt::format("{:.6g}", p.msPerIteration),
+                      fmt::format("{:.6g}", p.secondsTo95), fmt::format("{:.6g}", p.secondsTo99),
+                      fmt::format("{:.6g}", p.error95), fmt::format("{:.6g}", p.error99),
+                      fmt::format("{:.4g}", p.imageError95), fmt::format("{:.4g}", p.imageError99),
+                      fmt::format("{:.4g}", p.memoryMiB)});
+  return t;
 }
 
+CsvTable tracesTable(const std::vector<Trace>& traces) {
+  CsvTable t{.columns = {"projection", "ratio", "resolution", "cell_m", "iteration", "seconds", "convergence", "error",
+              "unshot_fraction"}};
+  for (const Trace& trace : traces) {
+    const std::vector<char> kept = keptTraceRows(trace.points);
+    for (size_t i = 0; i < trace.points.size(); ++i) {
+      if (!kept[i]) continue;
+      const TracePoint& p = trace.points[i];
+      // C to 9 digits: the plot shows 1 - C down to 1e-5.
+      t.rows.push_back({toString(trace.setting.projection), fmt::format("{}", trace.setting.ratio),
+                        std::to_string(trace.resolution), fmt::format("{}", trace.cellM), std::to_string(p.iteration),
+                        fmt::format("{:.4g}", p.seconds), fmt::format("{:.9g}", p.convergence),
+                        fmt::format("{:.4g}", p.error), fmt::format("{:.4g}", p.unshotFraction)});
+    }
+  }
+  return t;
+}
+
+std::string rowSetting(const CsvTable& t, size_t row) { return settingLabel(t.text(row, "projection"), t.number(row, "ratio")); }
+
 // Error at C = 0.99 against the time to reach it, a series per setting and cell, Pareto front in black.
-Plot errorVersusTime(const std::string& title, const std::string& errorLabel, const std::vector<Point>& points,
-                     double Point::*error) {
-  Plot plot{title, "seconds to C = 0.99", errorLabel, true, true, {}};
+Plot errorVersusTime(const std::string& title, const std::string& errorLabel, const CsvTable& points,
+                     const std::string& errorColumn) {
+  Plot plot{.title = title, .xLabel = "seconds to C = 0.99", .yLabel = errorLabel, .logX = true, .logY = true};
   std::vector<std::pair<double, double>> all;
-  for (const Point& p : points) {
-    if (p.secondsTo99 <= 0 || p.*error < 0) continue;
-    const std::string name = fmt::format("{} cell {}", p.setting.label, p.cellM);
+  for (size_t row = 0; row < points.rows.size(); ++row) {
+    const double seconds = points.number(row, "seconds_to_99"), error = points.number(row, errorColumn);
+    if (seconds <= 0 || error < 0) continue;
+    const std::string name = fmt::format("{} cell {}", rowSetting(points, row), points.number(row, "cell_m"));
     auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const Series& s) { return s.title == name; });
     if (it == plot.series.end()) it = plot.series.insert(plot.series.end(), Series{name, {}, "linespoints"});
     // Log axes: an exact zero is drawn at the floor.
-    it->points.emplace_back(p.secondsTo99, std::max(p.*error, 1e-9));
+    it->points.emplace_back(seconds, std::max(error, 1e-9));
     all.push_back(it->points.back());
   }
   plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
   return plot;
 }
 
-void drawFigures(const std::string& stem, const std::string& sceneName, const std::vector<Point>& points,
-                 const std::vector<Trace>& traces) {
-  drawPlot(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName, "relative RMS error of B - E",
-                           points, &Point::error99),
-           stem + "-error-vs-time.png");
-  if (ImageErrorProbe::available())
-    drawPlot(errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
-                             "RMSE of the pictures, 8-bit levels", points, &Point::imageError99),
-             stem + "-image-error-vs-time.png");
-  // Each setting's true error and unshot power; 1 - C of the first, which is what C promises.
-  Plot conv{"What convergence C says against the true error: " + sceneName, "iteration", "fraction", false, true, {}};
-  for (const Trace& trace : traces) {
-    Series error{"error of B - E, " + trace.label, {}, "lines lw 2"}, unshot{"unshot / emitted, " + trace.label, {}, "lines"};
-    for (const TracePoint& t : trace.points) {
-      error.points.emplace_back(t.iteration, std::max(t.error, 1e-9));
-      unshot.points.emplace_back(t.iteration, std::max(t.unshotFraction, 1e-9));
-    }
-    conv.series.push_back(error);
-    conv.series.push_back(unshot);
-  }
-  if (!traces.empty()) {
-    Series remaining{"1 - C, " + traces.front().label, {}, "lines dt 2"};
-    for (const TracePoint& t : traces.front().points)
-      remaining.points.emplace_back(t.iteration, std::max(1.0 - t.convergence, 1e-9));
-    conv.series.push_back(remaining);
-  }
-  drawPlot(conv, stem + "-error-vs-convergence.png");
+}  // namespace
+
+std::string settingLabel(const std::string& projection, double ratio) {
+  return projection == "plane" ? fmt::format("plane r{}", ratio) : projection;
 }
 
-}  // namespace
+void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) {
+  const CsvTable points = readCsv(stem + ".csv"), traces = readCsv(stem + "-traces.csv");
+  drawPlot(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName, "relative RMS error of B - E",
+                           points, "error_at_99"),
+           stem + "-error-vs-time.png");
+  const Plot pictures = errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
+                                        "RMSE of the pictures, 8-bit levels", points, "image_rmse_at_99");
+  if (pictures.series.size() > 1) drawPlot(pictures, stem + "-image-error-vs-time.png");  // not without the viewer
+  // Each setting's true error and unshot power; 1 - C of the first, which is what C promises.
+  Plot conv{.title = "What convergence C says against the true error: " + sceneName, .xLabel = "iteration",
+            .yLabel = "fraction", .logY = true};
+  Series remaining{"", {}, "lines dt 2"};
+  std::string previous;  // a trace's rows are consecutive
+  for (size_t row = 0; row < traces.rows.size(); ++row) {
+    const std::string label = traceLabel(rowSetting(traces, row), int(traces.number(row, "resolution")),
+                                         traces.number(row, "cell_m"));
+    if (label != previous) {
+      conv.series.push_back({"error of B - E, " + label, {}, "lines lw 2"});
+      conv.series.push_back({"unshot / emitted, " + label, {}, "lines"});
+      if (previous.empty()) remaining.title = "1 - C, " + label;
+      previous = label;
+    }
+    const double iteration = traces.number(row, "iteration");
+    conv.series[conv.series.size() - 2].points.emplace_back(iteration, std::max(traces.number(row, "error"), 1e-9));
+    conv.series.back().points.emplace_back(iteration, std::max(traces.number(row, "unshot_fraction"), 1e-9));
+    if (conv.series.size() == 2)
+      remaining.points.emplace_back(iteration, std::max(1.0 - traces.number(row, "convergence"), 1e-9));
+  }
+  if (!remaining.points.empty()) conv.series.push_back(remaining);
+  drawPlot(conv, stem + "-error-vs-convergence.png");
+}
 
 AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
   // Two cells, so that the pictures compare across meshes too.
@@ -234,7 +291,7 @@ AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
 nlohmann::json benchAccuracy(const AccuracyArgs& args) {
   const Scene scene = loadScene(args.scene);
   const std::vector<Setting> settings = {
-      {"plane r3", Projection::Plane, 3.0}, {"plane r5", Projection::Plane, 5.0}, {"hemicube", Projection::Hemicube, 3.0}};
+      {Projection::Plane, 3.0}, {Projection::Plane, 5.0}, {Projection::Hemicube, 3.0}};
   if (args.cells.empty() || args.resolutions.empty())
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
@@ -273,11 +330,11 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
         // Error-against-convergence traces on the coarsest mesh at the middle resolution: the
         // paper's plane, and the hemicube.
         const bool traced = cell == cells.rbegin() && n == args.resolutions[args.resolutions.size() / 2] &&
-                            setting.label != "plane r5";
-        if (traced) traces.push_back({fmt::format("{} {}x{}, cell {}", setting.label, n, n, *cell), {}});
+                            !(setting.projection == Projection::Plane && setting.ratio == 5.0);
+        if (traced) traces.push_back({setting, n, *cell, {}});
         const Point p = measure(scene, patches, setting, n, *cell, refs[*cell], args, pictures,
                                 traced ? &traces.back().points : nullptr);
-        fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8.2f}\n", setting.label, n,
+        fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8.2f}\n", label(setting), n,
                    *cell, p.patches, p.msPerIteration, shown(p.secondsTo95, 3), shown(p.secondsTo99, 3),
                    shown(p.error95, 4), shown(p.error99, 4), shown(p.imageError99, 2), p.memoryMiB);
         points.push_back(p);
@@ -301,18 +358,17 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                         {"convergence", t.convergence},
                         {"error", t.error},
                         {"unshot_fraction", t.unshotFraction}});
-    tracesJson.push_back({{"label", trace.label}, {"points", points}});
+    tracesJson.push_back({{"label", traceLabel(label(trace.setting), trace.resolution, trace.cellM)}, {"points", points}});
   }
   nlohmann::json result = {{"scene", scene.source}, {"references", references}, {"points", rows},
                            {"traces", tracesJson},
                            {"image_cameras", pictures.cameraCount()}};
   if (!args.outDir.empty()) {
-    std::filesystem::create_directories(args.outDir);
     const std::string stem = (std::filesystem::path(args.outDir) / args.name).string();
-    writeCsv(stem + ".csv", points);
-    writeJson(stem + ".json", result);
-    drawFigures(stem, scene.source, points, traces);
-    fmt::print("wrote {0}.csv, {0}.json and the plots {0}-*.png\n", stem);
+    writeCsv(stem + ".csv", pointsTable(points));
+    writeCsv(stem + "-traces.csv", tracesTable(traces));
+    drawAccuracyFigures(stem, args.name);
+    fmt::print("wrote {0}.csv, {0}-traces.csv and the plots {0}-*.png\n", stem);
   }
   return result;
 }

@@ -12,6 +12,10 @@ namespace radmesh::cli {
 
 namespace {
 
+void writeJsonIfAsked(const std::string& path, const nlohmann::json& result) {
+  if (!path.empty()) writeJson(path, result), fmt::print("wrote {}\n", path);
+}
+
 void addBenchSolve(CLI::App* bench) {
   auto args = std::make_shared<BenchSolveArgs>();
   auto json = std::make_shared<std::string>();
@@ -28,19 +32,18 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
-  cmd->callback([args, json] {
-    const nlohmann::json result = benchSolve(*args);
-    if (!json->empty()) writeJson(*json, result), fmt::print("wrote {}\n", *json);
-  });
+  cmd->callback([args, json] { writeJsonIfAsked(*json, benchSolve(*args)); });
 }
 
 void addBenchAccuracy(CLI::App* bench) {
   auto args = std::make_shared<AccuracyArgs>();
   auto quick = std::make_shared<bool>(false);
+  auto json = std::make_shared<std::string>();
   CLI::App* cmd = bench->add_subcommand("accuracy", "Error against a reference by projection, resolution and cell size");
   cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
   cmd->add_option("--name", args->name, "File stem of the outputs (default: the scene's)");
-  cmd->add_option("--out-dir", args->outDir, "Write CSV, JSON and PNG plots here");
+  cmd->add_option("--out-dir", args->outDir, "Write the CSV (NAME.csv, NAME-traces.csv) and the PNG plots here");
+  cmd->add_option("--json", *json, "Also write every figure, with the traces of every iteration, as JSON");
   cmd->add_option("--cells", args->cells, "Cell sizes, metres")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
   cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();
@@ -50,10 +53,10 @@ void addBenchAccuracy(CLI::App* bench) {
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")->capture_default_str();
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
-  cmd->callback([args, quick, cmd] {
+  cmd->callback([args, quick, json, cmd] {
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
     if (cmd->count("--name") == 0) a.name = std::filesystem::path(a.scene).stem().string();
-    benchAccuracy(a);
+    writeJsonIfAsked(*json, benchAccuracy(a));
   });
 }
 

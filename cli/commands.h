@@ -8,5 +8,6 @@ void addInfoCommand(CLI::App& app);    // cli/info_command.cpp
 void addSolveCommand(CLI::App& app);   // cli/solve_command.cpp
 void addRenderCommand(CLI::App& app);  // cli/render_command.cpp (needs the viewer's OSMesa path)
 void addBenchCommand(CLI::App& app);   // cli/bench_command.cpp
+void addPlotCommand(CLI::App& app);    // cli/plot_command.cpp
 
 }  // namespace radmesh::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   radmesh::cli::addSolveCommand(app);
   radmesh::cli::addRenderCommand(app);
   radmesh::cli::addBenchCommand(app);
+  radmesh::cli::addPlotCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

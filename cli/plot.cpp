@@ -1,11 +1,10 @@
 #include "cli/plot.h"
 
 #include <fmt/core.h>
-#include <fmt/ostream.h>
 
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 namespace radmesh::cli {
@@ -25,28 +24,28 @@ bool drawPlot(const Plot& plot, const std::string& png) {
     fmt::print(stderr, "radmesh: gnuplot is not installed, so {} was not drawn (apt-get install gnuplot-nox)\n", png);
     return false;
   }
-  const std::filesystem::path script = std::filesystem::path(png).replace_extension(".gnuplot");
-  std::ofstream out(script);
-  if (!out) throw std::runtime_error(script.string() + ": cannot write the plot script");
-  fmt::print(out, "set terminal pngcairo size 1000,700 noenhanced font 'DejaVu Sans,11'\n");
-  fmt::print(out, "set output {}\nset title {}\nset xlabel {}\nset ylabel {}\n", quoted(png), quoted(plot.title),
-             quoted(plot.xLabel), quoted(plot.yLabel));
-  fmt::print(out, "set grid\nset key below\n");
-  if (plot.logX) fmt::print(out, "set logscale x\n");
-  if (plot.logY) fmt::print(out, "set logscale y\n");
-  fmt::print(out, "plot ");
+  std::string script = "set terminal pngcairo size 1000,700 noenhanced font 'DejaVu Sans,11'\n";
+  script += fmt::format("set output {}\nset title {}\nset xlabel {}\nset ylabel {}\n", quoted(png), quoted(plot.title),
+                        quoted(plot.xLabel), quoted(plot.yLabel));
+  script += "set grid\nset key below\n";
+  if (plot.logX) script += "set logscale x\n";
+  if (plot.logY) script += "set logscale y\n";
+  for (const std::string& setting : plot.settings) script += setting + "\n";
+  script += "plot ";
   for (size_t i = 0; i < plot.series.size(); ++i)
-    fmt::print(out, "{}'-' with {} title {}", i ? ", " : "", plot.series[i].style, quoted(plot.series[i].title));
-  fmt::print(out, "\n");
+    script += fmt::format("{}'-' with {} title {}", i ? ", " : "", plot.series[i].style, quoted(plot.series[i].title));
+  script += "\n";
   for (const Series& s : plot.series) {
-    for (const auto& [x, y] : s.points) fmt::print(out, "{:.9g} {:.9g}\n", x, y);
-    fmt::print(out, "e\n");
+    for (const auto& [x, y] : s.points) script += fmt::format("{:.9g} {:.9g}\n", x, y);
+    script += "e\n";
   }
-  out.close();
-  std::string shellPath;  // single-quoted for the shell
-  for (char c : script.string()) shellPath += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  const std::string command = "gnuplot '" + shellPath + "' 2>&1";
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("gnuplot failed on " + script.string());
+  // The script goes down a pipe: nothing is left beside the PNG. A gnuplot that stops early fails the
+  // write below instead of killing radmesh with SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  FILE* gnuplot = popen("gnuplot", "w");
+  if (!gnuplot) throw std::runtime_error("cannot start gnuplot to draw " + png);
+  const bool written = std::fputs(script.c_str(), gnuplot) >= 0;
+  if (pclose(gnuplot) != 0 || !written) throw std::runtime_error("gnuplot failed to draw " + png + " (its message is above)");
   return true;
 }
 

@@ -18,7 +18,8 @@ struct Plot {
   std::string yLabel;
   bool logX = false;
   bool logY = false;
-  std::vector<Series> series;
+  std::vector<Series> series{};
+  std::vector<std::string> settings{};  // more gnuplot commands after the defaults, e.g. "set xrange [50:100]"
 };
 
 // Writes `png` (1000x700, the key below the plot). Throws std::runtime_error naming gnuplot's failure; returns false,

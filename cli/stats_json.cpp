@@ -1,7 +1,8 @@
 #include "cli/stats_json.h"
 
-#include <fstream>
 #include <stdexcept>
+
+#include "cli/output_file.h"
 
 namespace radmesh::cli {
 
@@ -88,9 +89,8 @@ nlohmann::json effectsJson(const EffectsPlan& plan) {
 }
 
 void writeJson(const std::string& path, const nlohmann::json& document) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing (check the folder exists and is writable)");
-  out << document.dump(2) << '\n';
+  std::ofstream out = openOutput(path);
+  out << document.dump() << '\n';  // compact: a per-iteration document runs to megabytes indented
   if (!out) throw std::runtime_error(path + ": write failed (disk full?)");
 }
 

@@ -12,6 +12,7 @@ namespace radmesh::cli {
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
 // {"occlusion": {"on": false, "reason": "..."}, ...}
 nlohmann::json effectsJson(const EffectsPlan& plan);
-void writeJson(const std::string& path, const nlohmann::json& document);  // throws on I/O failure
+// Compact, one line; makes the folder. Throws on I/O failure.
+void writeJson(const std::string& path, const nlohmann::json& document);
 
 }  // namespace radmesh::cli

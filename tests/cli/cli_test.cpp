@@ -3,14 +3,18 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/test_paths.h"
 
@@ -113,12 +117,49 @@ TEST(Cli, MissingFileAndUnknownSceneNameSayWhatIsAccepted) {
   EXPECT_NE(run.output.find("office"), std::string::npos) << run.output;
 }
 
+// A CSV file as rows of fields, the header first.
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    rows.emplace_back();
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) rows.back().push_back(field);
+  }
+  return rows;
+}
+
+bool gnuplotInstalled() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
 TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
   const std::string dir = tempPath("accuracy");
-  const CommandRun run = radmesh("bench accuracy furnace --quick --out-dir " + dir);
+  const std::string json = tempPath("raw/furnace.json");  // its folder is made
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(std::filesystem::path(json).parent_path());
+  const CommandRun run = radmesh("bench accuracy furnace --quick --out-dir " + dir + " --json " + json);
   ASSERT_EQ(run.exitCode, 0) << run.output;
-  std::ifstream in(dir + "/furnace.json");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/furnace.json"));  // the raw JSON goes where --json says only
+  std::ifstream in(json);
   const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(readCsv(dir + "/furnace.csv").size(), 1u + 18u);
+  // The traces' CSV keeps, of each trace, the first iteration at C >= 0.95 and the last.
+  const auto traces = readCsv(dir + "/furnace-traces.csv");
+  ASSERT_EQ(traces.front().size(), 9u);
+  ASSERT_EQ(j["traces"].size(), 2u);
+  std::vector<std::string> iterations;
+  for (size_t row = 1; row < traces.size(); ++row) iterations.push_back(traces[row][0] + " " + traces[row][4]);
+  for (const auto& trace : j["traces"]) {
+    const auto& points = trace["points"];
+    const std::string projection = trace["label"].get<std::string>().substr(0, trace["label"].get<std::string>().find(' '));
+    size_t first95 = 0;
+    while (first95 + 1 < points.size() && points[first95]["convergence"].get<double>() < 0.95) ++first95;
+    for (const auto& point : {points[first95], points.back()}) {
+      const std::string key = projection + " " + std::to_string(point["iteration"].get<int>());
+      EXPECT_NE(std::find(iterations.begin(), iterations.end(), key), iterations.end()) << key;
+    }
+  }
+  for (const std::string plot : {"error-vs-time", "image-error-vs-time", "error-vs-convergence"})
+    EXPECT_EQ(std::filesystem::exists(dir + "/furnace-" + plot + ".png"), gnuplotInstalled()) << plot;
   EXPECT_EQ(j["points"].size(), 18u);  // 3 settings x 3 resolutions x 2 cells
   ASSERT_EQ(j["references"].size(), 2u);
   EXPECT_NE(j["references"][0]["how"].get<std::string>().find("analytic"), std::string::npos);
@@ -263,6 +304,58 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
     EXPECT_NE(run.output.find(named), std::string::npos) << options << ": " << run.output;
   }
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Stats as `radmesh solve --stats` writes them, with the figures `plot paper` reads: C 0.5, 0.96, 0.99, the
+// last past the 0.95 the tables average to.
+void writePaperStats(const std::string& path, int resolution, bool mesh) {
+  nlohmann::json iterations = nlohmann::json::array();
+  const double convergence[] = {0.5, 0.96, 0.99}, emulated[] = {1.0, 3.0, 100.0}, depthA[] = {10, 20, 900};
+  for (int i = 0; i < (mesh ? 3 : 13); ++i) {
+    nlohmann::json it = {{"iteration", i + 1}, {"convergence", mesh ? convergence[i] : 0.5 + 0.01 * i},
+                         {"seconds", 0.01}, {"reused_rows_total", i / 4}};
+    if (mesh) it.update({{"emulated_seconds", emulated[i]}, {"depth_a_max", depthA[i]}, {"depth_b_max", 2 * depthA[i]}});
+    iterations.push_back(it);
+  }
+  std::ofstream(path) << nlohmann::json{{"resolution", resolution}, {"per_iteration", iterations}}.dump();
+}
+
+TEST(Cli, PlotPaperGathersTheStatsIntoOneCsvAndDrawsFromIt) {
+  const std::string stats = tempPath("stats"), csv = tempPath("paper-test.csv"), images = tempPath("images");
+  std::filesystem::create_directories(stats);
+  for (const std::string mapping : {"hierarchical", "cut-and-stack", "adaptive"})
+    for (int n : {64, 128, 256}) writePaperStats(stats + "/paper-test-" + mapping + "-" + std::to_string(n) + ".json", n, true);
+  writePaperStats(stats + "/paper-test-reuse.json", 128, false);
+  const CommandRun gathered = radmesh("plot paper test --stats " + stats + " --csv " + csv + " --images " + images);
+  ASSERT_EQ(gathered.exitCode, 0) << gathered.output;
+  EXPECT_EQ(readCsv(csv).size(), 1u + 9u * 3u + 13u);
+  // Averages over the iterations up to the first at C >= 0.95: (1 + 3) / 2, (10 + 20) / 2, (20 + 40) / 2.
+  EXPECT_NE(gathered.output.find("| cut-and-stack | 128x128 | 2 | 2.000 | 0.0100 | 15.0 | 30.0 |"), std::string::npos)
+      << gathered.output;
+  // Table 1.3 at the paper's iteration 13, which is also the last: 3 rows reused, C = 0.62.
+  EXPECT_NE(gathered.output.find("| 13 | 3 | 62.00 |"), std::string::npos) << gathered.output;
+  for (const std::string figure : {"convergence", "depth-a", "depth-b", "table11", "table12", "table13"})
+    EXPECT_EQ(std::filesystem::exists(images + "/paper-test-" + figure + ".png"), gnuplotInstalled()) << figure;
+  // Without --stats, the CSV alone gives the same tables.
+  std::filesystem::remove_all(stats);
+  const CommandRun redrawn = radmesh("plot paper test --csv " + csv + " --images " + images);
+  ASSERT_EQ(redrawn.exitCode, 0) << redrawn.output;
+  EXPECT_EQ(redrawn.output.substr(redrawn.output.find("Table 1.1")), gathered.output.substr(gathered.output.find("Table 1.1")));
+}
+
+TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
+  CommandRun run = radmesh("plot paper test --stats " + tempPath("none") + " --csv " + tempPath("p.csv") + " --images " +
+                           tempPath("images"));
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("paper-test-hierarchical-64.json: cannot read"), std::string::npos) << run.output;
+  run = radmesh("plot accuracy " + tempPath("nothing"));
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("nothing.csv: cannot read"), std::string::npos) << run.output;
+  const std::string bad = tempPath("bad");
+  std::ofstream(bad + ".csv") << "projection,ratio,seconds_to_99\nplane,3\n";
+  run = radmesh("plot accuracy " + bad);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("bad.csv, line 2: 2 fields under a header of 3"), std::string::npos) << run.output;
 }
 
 }  // namespace

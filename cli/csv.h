@@ -1,0 +1,22 @@
+#pragma once
+// The CSV tables the benches write and the docs' figures are drawn from: a header line, then a line
+// per row; fields hold no commas, quotes or line breaks.
+#include <string>
+#include <vector>
+
+namespace radmesh::cli {
+
+struct CsvTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows{};
+  std::string path{};  // where it was read from, for messages
+
+  // Throw std::runtime_error naming the file, the column and the line when it is missing or not a number.
+  const std::string& text(size_t row, const std::string& column) const;
+  double number(size_t row, const std::string& column) const;
+};
+
+CsvTable readCsv(const std::string& path);  // throws naming the file and the line of a row of the wrong width
+void writeCsv(const std::string& path, const CsvTable& table);
+
+}  // namespace radmesh::cli
