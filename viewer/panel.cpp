@@ -266,12 +266,13 @@ void Panel::drawShotFigures(const SolverSnapshot& snapshot) {
     return;
   }
   const nlohmann::json& figures = snapshot.lastShotStats->figures;
-  ImGui::TextUnformatted("last shot");
-  for (const auto& [key, value] : figures.items()) {
+  ImGui::TextUnformatted("last shot");  // its numbers, then its histograms, then its groups
+  for (const auto& [key, value] : figures.items())
     if (value.is_number()) ImGui::Text("  %s %.6g", key.c_str(), value.get<double>());
+  for (const auto& [key, value] : figures.items())
     if (isHistogram(value)) figureHistogram(key, value);
+  for (const auto& [key, value] : figures.items())
     if (value.is_object()) figureGroup(key, value);
-  }
   // The counts among the numbers, over the iterations that shot.
   for (const auto& [key, value] : figures.items()) {
     if (!value.is_number_integer()) continue;
@@ -280,7 +281,7 @@ void Panel::drawShotFigures(const SolverSnapshot& snapshot) {
     for (const ConvergencePoint& p : snapshot.curve) {
       if (!p.shot || !p.shot->figures.contains(key)) continue;
       iterations.push_back(p.iteration);
-      counts.push_back(p.shot->figures[key].get<double>());
+      counts.push_back(p.shot->figures.at(key).get<double>());
       highest = std::max(highest, counts.back());
     }
     ImGui::Text("%s over iterations", key.c_str());
