@@ -13,10 +13,9 @@
 #include <string>
 #include <utility>
 
+#include "solver/backends/form_factor_backend.h"
 #include "solver/io/builtin_scenes.h"
-#include "solver/backends/mesh/mesh_backend.h"
 #include "solver/meshing/meshing.h"
-#include "solver/backends/native/native_backend.h"
 
 namespace radmesh {
 namespace {
@@ -47,39 +46,42 @@ const Office& office() {
   return o;
 }
 
-// Shoots the office's shooters in turn; for the mesh, reports the emulated cost and depths.
-void shoot(benchmark::State& state, FormFactorBackend& backend, const MeshBackend* mesh) {
+// Shoots the office's shooters in turn; on a back end with a machine of its own (the mesh),
+// reports from its shot figures the machine seconds, the depths and where the host time goes.
+void shoot(benchmark::State& state, FormFactorBackend& backend) {
   const Office& o = office();
   std::vector<FormFactorRow> rows;
   std::size_t next = 0;
-  double emulated = 0.0, depthA = 0.0, depthB = 0.0;
+  double machine = 0.0, depthA = 0.0, depthB = 0.0;
   std::map<std::string, double> host;  // counter name -> host seconds over the shots
+  bool figures = false;
   for (auto _ : state) {
     const int shooter[] = {o.shooters[next++ % o.shooters.size()]};
     const auto start = std::chrono::steady_clock::now();
     backend.computeRows(shooter, rows);
-    if (!mesh) continue;
-    const MeshShotStats& s = mesh->lastShot();
+    const std::shared_ptr<const ShotStats> s = backend.lastShotStats();
+    if (!s) continue;
+    figures = true;
+    const nlohmann::json& f = s->figures;
+    const double shotHost = f.at("host_seconds").get<double>();
     // After the shot the host assembles the rows (and refines sub-pixel receivers).
-    host["ms rows on host"] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - s.hostSeconds;
-    emulated += s.emulatedSeconds;
-    depthA += s.depthAMax;
-    depthB += s.depthBMax;
-    for (const MeshPhaseCost& p : s.phases) host["ms phase " + p.name] += p.hostSeconds;
-    const std::pair<const char*, const emu::ClassCounts&> classes[] = {
-        {"xnet", s.counts.xnet},     {"router", s.counts.router}, {"alu", s.counts.alu},
-        {"reduce", s.counts.reduce}, {"scan", s.counts.scan},     {"sort", s.counts.sort}};
+    host["ms rows on host"] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - shotHost;
+    machine += s->machineSeconds;
+    depthA += f.at("depth_a_max").get<double>();
+    depthB += f.at("depth_b_max").get<double>();
+    for (const auto& p : f.at("phases")) host["ms phase " + p.at("name").get<std::string>()] += p.at("host_seconds").get<double>();
     double inOperations = 0.0;
-    for (const auto& [name, counts] : classes) {
-      host[std::string("ms op ") + name] += counts.hostSeconds;
-      inOperations += counts.hostSeconds;
+    for (const char* name : {"xnet", "router", "alu", "reduce", "scan", "sort"}) {
+      const double seconds = f.at("op_counts").at(name).at("host_seconds").get<double>();
+      host[std::string("ms op ") + name] += seconds;
+      inOperations += seconds;
     }
-    host["ms op between"] += s.hostSeconds - inOperations;
+    host["ms op between"] += shotHost - inOperations;
   }
   state.counters["iterations_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  if (!mesh) return;
+  if (!figures) return;
   const double n = static_cast<double>(state.iterations());
-  state.counters["mp1_s_per_it"] = emulated / n;
+  state.counters["mp1_s_per_it"] = machine / n;
   state.counters["depth_a_max"] = depthA / n;
   state.counters["depth_b_max"] = depthB / n;
   for (const auto& [name, seconds] : host) state.counters[name] = seconds / n * 1e3;
@@ -95,16 +97,11 @@ SolveOptions optionsOf(int resolution, int threads) {
 // {backend (0 native, 1 mesh), resolution, host threads}: the two back ends side by side.
 void BM_Shot(benchmark::State& state) {
   const Office& o = office();
-  const SolveOptions options = optionsOf(static_cast<int>(state.range(1)), static_cast<int>(state.range(2)));
-  if (state.range(0) == 1) {
-    MeshBackend mesh(o.scene, o.patches, options);
-    state.SetLabel("mesh");
-    shoot(state, mesh, &mesh);
-  } else {
-    NativeBackend native(o.scene, o.patches, options);
-    state.SetLabel("native");
-    shoot(state, native, nullptr);
-  }
+  SolveOptions options = optionsOf(static_cast<int>(state.range(1)), static_cast<int>(state.range(2)));
+  options.backend = state.range(0) == 1 ? Backend::Mesh : Backend::Native;
+  const auto backend = makeFormFactorBackend(o.scene, o.patches, options);
+  state.SetLabel(toString(options.backend));
+  shoot(state, *backend);
 }
 BENCHMARK(BM_Shot)
     ->ArgsProduct({{0, 1}, {64, 128, 256}, {1, 2}})
@@ -116,11 +113,12 @@ BENCHMARK(BM_Shot)
 void BM_Mapping(benchmark::State& state) {
   const Office& o = office();
   const MappingKind kinds[] = {MappingKind::Hierarchical, MappingKind::CutAndStack, MappingKind::Adaptive};
-  MeshBackendOptions mapping;
-  mapping.mapping = kinds[state.range(0)];
-  MeshBackend mesh(o.scene, o.patches, optionsOf(static_cast<int>(state.range(1)), 2), mapping);
-  state.SetLabel(toString(mapping.mapping));
-  shoot(state, mesh, &mesh);
+  SolveOptions options = optionsOf(static_cast<int>(state.range(1)), 2);
+  options.backend = Backend::Mesh;
+  options.mapping = kinds[state.range(0)];
+  const auto backend = makeFormFactorBackend(o.scene, o.patches, options);
+  state.SetLabel(toString(options.mapping));
+  shoot(state, *backend);
 }
 BENCHMARK(BM_Mapping)
     ->ArgsProduct({{0, 1, 2}, {64, 128, 256}})

@@ -43,7 +43,7 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
     const double before = now(options.threads);
     const IterationRecord& r = solver.step();
     perIteration.push_back(now(options.threads) - before);
-    if (r.meshShot) emulated += r.meshShot->emulatedSeconds;
+    if (r.shotStats) emulated += r.shotStats->machineSeconds;
   }
   Timing t;
   t.unshotFraction = solver.ledger().unshotFraction();

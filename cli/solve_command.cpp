@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <string>
 
 #include "cli/commands.h"
 #include "cli/effects_text.h"
@@ -32,11 +33,14 @@ void printSummary(const ProgressiveSolver& solver, double seconds) {
   const size_t n = solver.history().size();
   fmt::print("solved: {} patches, {} iterations, convergence {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
              solver.patches().size(), n, 100.0 * solver.convergence(), seconds, seconds > 0 ? n / seconds : 0.0);
-  double emulated = 0.0;
-  for (const IterationRecord& r : solver.history()) emulated += r.meshShot ? r.meshShot->emulatedSeconds : 0.0;
-  if (emulated > 0.0)
-    fmt::print("mesh: {:.3f} emulated MP-1 seconds ({:.3f} s per iteration) beside {:.3f} host seconds\n", emulated,
-               emulated / std::max<size_t>(n, 1), seconds);
+  double machineSeconds = 0.0;
+  std::string machine;
+  for (const IterationRecord& r : solver.history())
+    if (r.shotStats) machineSeconds += r.shotStats->machineSeconds, machine = r.shotStats->machine;
+  if (!machine.empty())
+    fmt::print("{}: {:.3f} {} seconds ({:.3f} s per iteration) beside {:.3f} host seconds\n",
+               toString(solver.options().backend), machineSeconds, machine, machineSeconds / std::max<size_t>(n, 1),
+               seconds);
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
              "  (imbalance {:.1e})\n",
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());

@@ -13,31 +13,6 @@ nlohmann::json ledgerJson(const Ledger& l) {
           {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"imbalance", l.imbalance()}};
 }
 
-nlohmann::json countsJson(const emu::CostCounts& c) {
-  auto cls = [](const emu::ClassCounts& k) {
-    return nlohmann::json{{"ops", k.ops},           {"hops", k.hops},         {"byte_hops", k.byteHops},
-                          {"messages", k.messages}, {"rounds", k.rounds},     {"byte_rounds", k.byteRounds},
-                          {"flops", k.flops},       {"int_ops", k.intOps}};
-  };
-  return {{"xnet", cls(c.xnet)},     {"router", cls(c.router)}, {"alu", cls(c.alu)},
-          {"reduce", cls(c.reduce)}, {"scan", cls(c.scan)},     {"sort", cls(c.sort)},
-          {"max_collisions", c.maxCollisions}, {"memory_high_water_bytes", c.memoryHighWaterBytes}};
-}
-
-void addMeshShot(nlohmann::json& j, const MeshShotStats& m) {
-  j["depth_a_max"] = m.depthAMax;
-  j["depth_b_max"] = m.depthBMax;
-  j["depth_a_hist"] = m.depthAHist;
-  j["depth_b_hist"] = m.depthBHist;
-  j["emulated_seconds"] = m.emulatedSeconds;
-  j["passes"] = m.passes;
-  j["op_counts"] = countsJson(m.counts);
-  nlohmann::json phases = nlohmann::json::array();
-  for (const MeshPhaseCost& p : m.phases)
-    phases.push_back({{"name", p.name}, {"emulated_seconds", p.emulatedSeconds}, {"host_seconds", p.hostSeconds}});
-  j["phases"] = phases;
-}
-
 nlohmann::json iterationJson(const IterationRecord& r) {
   nlohmann::json j = {{"iteration", r.iteration},
           {"shooter", r.shooters.empty() ? -1 : r.shooters.front()},
@@ -49,7 +24,7 @@ nlohmann::json iterationJson(const IterationRecord& r) {
           {"reused_rows", r.reusedRows},
           {"reused_rows_total", r.reusedRowsTotal},
           {"cache_hits", r.cacheHits}};
-  if (r.meshShot) addMeshShot(j, *r.meshShot);
+  if (r.shotStats) j.update(r.shotStats->figures);  // the back end's own figures, whichever it is
   return j;
 }
 

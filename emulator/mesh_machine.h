@@ -12,7 +12,7 @@
 #include "emulator/host_timer.h"
 #include "emulator/memory_ledger.h"
 #include "emulator/pe_grid.h"
-#include "emulator/thread_pool.h"
+#include "parallel/thread_pool.h"
 
 namespace radmesh::emu {
 
@@ -35,7 +35,7 @@ class MeshMachine {
 
   const PeGrid& grid() const { return grid_; }
   int size() const { return grid_.size(); }
-  int threads() const { return pool_.threads(); }
+  int threads() const { return pool_.size(); }
 
   // SIMD `if`: narrow the active set, flip to the `else` branch, restore (see ActiveScope).
   bool active(int pe) const { return mask_.active(pe); }
@@ -97,13 +97,13 @@ void MeshMachine::forEachActive(double workPerPe, PerPe&& perPe) {
       if (all || flags[pe]) perPe(pe);
   };
   const double work = workPerPe * mask_.activeCount();
-  if (pool_.threads() == 1 || work < kParallelMinWork) {
+  if (pool_.size() == 1 || work < kParallelMinWork) {
     range(0, size());
     return;
   }
   inParallel_ = true;
   try {
-    pool_.run(size(), range);
+    pool_.forEachChunk(size(), range);
   } catch (...) {
     inParallel_ = false;
     throw;

@@ -5,6 +5,8 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -22,6 +24,7 @@ struct ThreadPool::Impl {
   int busy = 0;  // helper threads still working on the current generation
   bool stopping = false;
   std::exception_ptr error;
+  int errorIndex = 0;  // the index whose exception `error` holds: the lowest that threw
   std::vector<std::thread> helpers;
 
   // Tasks are handed out one index at a time; which worker takes which does not matter.
@@ -31,7 +34,10 @@ struct ThreadPool::Impl {
         (*task)(index, worker);
       } catch (...) {
         std::lock_guard lock(mutex);
-        if (!error) error = std::current_exception();
+        if (!error || index < errorIndex) {
+          error = std::current_exception();
+          errorIndex = index;
+        }
       }
     }
   }
@@ -52,6 +58,9 @@ struct ThreadPool::Impl {
 };
 
 ThreadPool::ThreadPool(int threads) : impl_(std::make_unique<Impl>()) {
+  if (threads < 0)
+    throw std::invalid_argument("ThreadPool: " + std::to_string(threads) +
+                                " threads is impossible; use 0 (one per hardware thread) or more");
   const int total = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
   for (int worker = 1; worker < total; ++worker)
     impl_->helpers.emplace_back([this, worker] { impl_->helperLoop(worker); });
@@ -89,6 +98,19 @@ void ThreadPool::parallelFor(int count, const std::function<void(int, int)>& tas
   p.finished.wait(lock, [&] { return p.busy == 0; });
   p.task = nullptr;
   if (p.error) std::rethrow_exception(std::exchange(p.error, nullptr));
+}
+
+void ThreadPool::forEachChunk(int n, const std::function<void(int, int)>& body) {
+  const int parts = size();
+  if (parts == 1 || n < parts) {
+    body(0, n);
+    return;
+  }
+  parallelFor(parts, [&](int chunk, int) {
+    const long long begin = static_cast<long long>(n) * chunk / parts;
+    const long long end = static_cast<long long>(n) * (chunk + 1) / parts;
+    body(static_cast<int>(begin), static_cast<int>(end));
+  });
 }
 
 }  // namespace radmesh

@@ -22,10 +22,15 @@ run_ctest() {
 configure_and_build build all -DCMAKE_BUILD_TYPE=Release
 run_ctest build
 
-# ThreadSanitizer: only the program whose tests run threads against each other.
+# ThreadSanitizer: the programs whose tests run threads against each other: the viewer's solver
+# thread against the UI's reads, and the host thread pool (alone and under the emulator).
 configure_and_build build-tsan viewer_tests -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRADMESH_TSAN=ON -DRADMESH_BUILD_BENCHMARKS=OFF
-echo "== build-tsan: threaded viewer tests"
-TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/viewer_tests --gtest_filter='SolverThread.*:Streaming.*'
+cmake --build build-tsan -j"$jobs" --target parallel_tests emulator_tests >> build-tsan.log 2>&1 || { tail -80 build-tsan.log; exit 1; }
+echo "== build-tsan: threaded viewer tests, the thread pool"
+export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
+build-tsan/tests/viewer_tests --gtest_filter='SolverThread.*:Streaming.*'
+build-tsan/tests/parallel_tests
+build-tsan/tests/emulator_tests --gtest_filter='Determinism.*'
 
 # Leak checks off because Mesa's llvmpipe keeps its JIT caches until exit.
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "solver/scene/scene_error.h"
@@ -52,6 +53,60 @@ void row(const char* name, const char* format, double value) {
   ImGui::TextUnformatted(name);
   ImGui::TableNextColumn();
   ImGui::Text(format, value);
+}
+
+// A shot figure that is a histogram: an array of counts.
+bool isHistogram(const nlohmann::json& value) {
+  return value.is_array() && !value.empty() &&
+         std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_number(); });
+}
+
+// A shot figure that is a table: an array of objects, one a row, the first's keys the columns.
+bool isTable(const nlohmann::json& value) {
+  return value.is_array() && !value.empty() &&
+         std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_object(); });
+}
+
+void figureHistogram(const std::string& key, const nlohmann::json& counts) {
+  ImGui::Text("%s, 0 .. %zu", key.c_str(), counts.empty() ? size_t{0} : counts.size() - 1);
+  std::vector<float> values;
+  for (const auto& v : counts) values.push_back(v.get<float>());
+  ImGui::PushID(key.c_str());
+  ImGui::PlotHistogram("##histogram", values.data(), int(values.size()), 0, nullptr, 0.0f, FLT_MAX,
+                       ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
+  ImGui::PopID();
+}
+
+// Its columns: the first row's keys, the names (strings) before the numbers.
+void figureTable(const std::string& key, const nlohmann::json& rows) {
+  std::vector<std::string> columns;
+  for (const auto& [column, value] : rows.front().items()) columns.push_back(column);
+  std::stable_partition(columns.begin(), columns.end(),
+                        [&](const std::string& c) { return rows.front()[c].is_string(); });
+  if (!ImGui::BeginTable(key.c_str(), int(columns.size()), ImGuiTableFlags_SizingFixedFit)) return;
+  for (const std::string& c : columns)
+    ImGui::TableSetupColumn(c.c_str(), c == columns.front() ? ImGuiTableColumnFlags_WidthStretch : 0);
+  ImGui::TableHeadersRow();
+  for (const nlohmann::json& r : rows) {
+    ImGui::TableNextRow();
+    for (const std::string& c : columns) {
+      ImGui::TableNextColumn();
+      const nlohmann::json cell = r.value(c, nlohmann::json());
+      if (cell.is_string()) ImGui::TextUnformatted(cell.get<std::string>().c_str());
+      if (cell.is_number()) ImGui::Text("%.4g", cell.get<double>());
+    }
+  }
+  ImGui::EndTable();
+}
+
+// A group of figures (an object), folded: its numbers, and its groups inside.
+void figureGroup(const std::string& key, const nlohmann::json& group) {
+  if (!ImGui::TreeNode(key.c_str())) return;
+  for (const auto& [k, v] : group.items()) {
+    if (v.is_number()) ImGui::Text("%s %.6g", k.c_str(), v.get<double>());
+    if (v.is_object()) figureGroup(k, v);
+  }
+  ImGui::TreePop();
 }
 
 }  // namespace
@@ -159,7 +214,7 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
   ImGui::Text("host: %.3f s in all, last iteration %.2f ms", snapshot.hostSeconds(), 1e3 * lastSeconds);
   ImGui::Text("last shooters: %zu, captured fraction %.4f", snapshot.lastShooters.size(),
               snapshot.lastCapturedFraction);
-  drawEmulatedCost(snapshot);
+  drawMachineCost(snapshot);
   ImGui::Separator();
   ImGui::TextUnformatted("energy ledger");
   const Ledger& l = snapshot.ledger;
@@ -185,76 +240,59 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
   if (l.emitted > 0.0) ImGui::Text("imbalance %.1e", l.imbalance());
 }
 
-void Panel::drawEmulatedCost(const SolverSnapshot& snapshot) {
-  if (!snapshot.lastMeshShot) {
-    note("emulated MP-1 seconds: with the mesh back end (Parameters)");
+void Panel::drawMachineCost(const SolverSnapshot& snapshot) {
+  if (!snapshot.lastShotStats) {
+    note("machine seconds: with a back end that runs on a machine of its own, e.g. the mesh (Parameters)");
     return;
   }
-  const MeshShotStats& shot = *snapshot.lastMeshShot;
-  const double emulated = snapshot.curve.empty() ? 0.0 : snapshot.curve.back().emulatedSeconds;
-  ImGui::Text("emulated MP-1: %.3f s, last shot %.1f ms", emulated, 1e3 * shot.emulatedSeconds);
-  std::vector<double> emulatedSeconds, c;
+  const ShotStats& shot = *snapshot.lastShotStats;
+  const double total = snapshot.curve.empty() ? 0.0 : snapshot.curve.back().machineSeconds;
+  ImGui::Text("%s: %.3f s, last shot %.1f ms", shot.machine.c_str(), total, 1e3 * shot.machineSeconds);
+  std::vector<double> machineSeconds, c;
   for (const ConvergencePoint& p : snapshot.curve) {
-    emulatedSeconds.push_back(p.emulatedSeconds);
+    machineSeconds.push_back(p.machineSeconds);
     c.push_back(p.convergence);
   }
-  ImGui::TextUnformatted("convergence C over emulated MP-1 seconds");
-  plotXY("c-emulated", emulatedSeconds, c, {"MP-1 s", 0.0, 1.0}, 70.0f);
-  if (ImGui::BeginTable("phases", 3, ImGuiTableFlags_SizingFixedFit)) {
-    ImGui::TableSetupColumn("last shot's phase", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("MP-1 ms");
-    ImGui::TableSetupColumn("host ms");
-    ImGui::TableHeadersRow();
-    for (const MeshPhaseCost& phase : shot.phases) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(phase.name.c_str());
-      ImGui::TableNextColumn();
-      ImGui::Text("%.3f", 1e3 * phase.emulatedSeconds);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.3f", 1e3 * phase.hostSeconds);
-    }
-    ImGui::EndTable();
-  }
+  ImGui::Text("convergence C over %s seconds", shot.machine.c_str());
+  plotXY("c-machine", machineSeconds, c, {"machine s", 0.0, 1.0}, 70.0f);
+  for (const auto& [key, value] : shot.figures.items())
+    if (isTable(value)) figureTable(key, value);
 }
 
-void Panel::drawDepths(const SolverSnapshot& snapshot) {
-  if (!snapshot.lastMeshShot) {
-    note("item-buffer depths at stages (a) and (b): with the mesh back end (Parameters)");
+void Panel::drawShotFigures(const SolverSnapshot& snapshot) {
+  if (!snapshot.lastShotStats) {
+    note("the last shot's figures (on the mesh: item-buffer depths at stages (a) and (b)): with a back end that "
+         "reports them (Parameters)");
     return;
   }
-  const MeshShotStats& shot = *snapshot.lastMeshShot;
-  ImGui::Text("last shot: max depth (a) %d, (b) %d, %d pass%s", shot.depthAMax, shot.depthBMax, shot.passes,
-              shot.passes == 1 ? "" : "es");
-  auto histogram = [](const char* title, const std::vector<int>& counts) {
-    ImGui::Text("%s, depth 0 .. %zu", title, counts.empty() ? size_t{0} : counts.size() - 1);
-    const std::vector<float> values(counts.begin(), counts.end());
-    ImGui::PushID(title);
-    ImGui::PlotHistogram("##histogram", values.data(), int(values.size()), 0, nullptr, 0.0f, FLT_MAX,
-                         ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
-    ImGui::PopID();
-  };
-  histogram("PEs by item-buffer depth at (a)", shot.depthAHist);
-  histogram("PEs by item-buffer depth at (b)", shot.depthBHist);
-  std::vector<double> iterations, depthA, depthB;
-  double highest = 1.0;
-  for (const ConvergencePoint& p : snapshot.curve) {
-    if (p.depthAMax < 0) continue;  // a cache hit shot nothing
-    iterations.push_back(p.iteration);
-    depthA.push_back(p.depthAMax);
-    depthB.push_back(p.depthBMax);
-    highest = std::max({highest, double(p.depthAMax), double(p.depthBMax)});
+  const nlohmann::json& figures = snapshot.lastShotStats->figures;
+  ImGui::TextUnformatted("last shot");  // its numbers, then its histograms, then its groups
+  for (const auto& [key, value] : figures.items())
+    if (value.is_number()) ImGui::Text("  %s %.6g", key.c_str(), value.get<double>());
+  for (const auto& [key, value] : figures.items())
+    if (isHistogram(value)) figureHistogram(key, value);
+  for (const auto& [key, value] : figures.items())
+    if (value.is_object()) figureGroup(key, value);
+  // The counts among the numbers, over the iterations that shot.
+  for (const auto& [key, value] : figures.items()) {
+    if (!value.is_number_integer()) continue;
+    std::vector<double> iterations, counts;
+    double highest = 1.0;
+    for (const ConvergencePoint& p : snapshot.curve) {
+      if (!p.shot || !p.shot->figures.contains(key)) continue;
+      iterations.push_back(p.iteration);
+      counts.push_back(p.shot->figures.at(key).get<double>());
+      highest = std::max(highest, counts.back());
+    }
+    ImGui::Text("%s over iterations", key.c_str());
+    plotXY(key.c_str(), iterations, counts, {"iteration", 0.0, highest}, 55.0f);
   }
-  ImGui::TextUnformatted("max depth (a) over iterations");
-  plotXY("depth-a", iterations, depthA, {"iteration", 0.0, highest}, 55.0f);
-  ImGui::TextUnformatted("max depth (b) over iterations");
-  plotXY("depth-b", iterations, depthB, {"iteration", 0.0, highest}, 55.0f);
 }
 
 void Panel::drawItemBuffer(const SolverSnapshot& snapshot) {
   if (!snapshot.itemBuffer) {
     note(snapshot.itemBufferShooter >= 0 ? "the back end could not give it" : "shown after the next shot");
-    drawDepths(snapshot);
+    drawShotFigures(snapshot);
     return;
   }
   if (snapshot.itemBuffer != uploadedItemBuffer_) {
@@ -269,7 +307,7 @@ void Panel::drawItemBuffer(const SolverSnapshot& snapshot) {
   const float side = std::min(ImGui::GetContentRegionAvail().x, 250.0f);
   ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(itemBufferTexture_.id())), ImVec2(side, side));
   note("false colour by patch id");
-  drawDepths(snapshot);
+  drawShotFigures(snapshot);
 }
 
 void Panel::drawParameters(SolverThread& solver) {

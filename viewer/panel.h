@@ -35,9 +35,9 @@ class Panel {
  private:
   void drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver);
   void drawProgress(const SolverSnapshot& snapshot);
-  void drawEmulatedCost(const SolverSnapshot& snapshot);
+  void drawMachineCost(const SolverSnapshot& snapshot);
   void drawItemBuffer(const SolverSnapshot& snapshot);
-  void drawDepths(const SolverSnapshot& snapshot);
+  void drawShotFigures(const SolverSnapshot& snapshot);
   void drawParameters(SolverThread& solver);
   void drawScene(const SolverSnapshot& snapshot);
   void drawView(WalkCamera& camera, ViewSettings& view);

@@ -8,7 +8,7 @@
 
 #include "solver/bake/display_radiosity.h"
 #include "solver/projection/item_buffer.h"
-#include "solver/backends/mesh/mesh_shot_stats.h"
+#include "solver/backends/shot_stats.h"
 #include "solver/radiosity/progressive_solver.h"
 #include "solver/meshing/scene_summary.h"
 #include "solver/scene/solve_options.h"
@@ -26,9 +26,8 @@ struct ConvergencePoint {
   int iteration = 0;
   double convergence = 0.0;      // C after this iteration
   double hostSeconds = 0.0;      // solve time up to and including this iteration
-  double emulatedSeconds = 0.0;  // emulated MP-1 time so far (mesh back end; else 0)
-  int depthAMax = -1;            // max item-buffer depth at stage (a) of this shot; -1: not known
-  int depthBMax = -1;            // and at stage (b) (mesh back end only)
+  double machineSeconds = 0.0;   // the back end's machine time so far (ShotStats; else 0)
+  std::shared_ptr<const ShotStats> shot;  // this iteration's; null without figures or on a cache hit
 };
 
 struct SolverSnapshot {
@@ -46,8 +45,9 @@ struct SolverSnapshot {
   // it (SolverThread::setItemBufferWanted); may lag a few iterations behind while playing.
   std::shared_ptr<const ItemBuffer> itemBuffer;
   int itemBufferShooter = -1;
-  // The mesh back end's last shot: depth histograms at stages (a), (b) and emulated phase costs.
-  std::shared_ptr<const MeshShotStats> lastMeshShot;
+  // The back end's figures of the last shot there was (cache hits have none): on the mesh, depth
+  // histograms at stages (a), (b) and emulated phase costs.
+  std::shared_ptr<const ShotStats> lastShotStats;
   bool playing = false;
   bool done = false;
   std::string error;                         // why the last restart failed, else empty

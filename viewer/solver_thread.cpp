@@ -31,7 +31,7 @@ struct SolverThread::Run {
   std::shared_ptr<const DisplayMesh> mesh;
   SceneSummary summary;
   std::vector<ConvergencePoint> curve;
-  std::shared_ptr<const MeshShotStats> lastMeshShot;  // the last one there was (cache hits have none)
+  std::shared_ptr<const ShotStats> lastShotStats;  // the last there was (cache hits have none)
   std::shared_ptr<const ItemBuffer> itemBuffer;
   int itemBufferShooter = -1;
   Clock::time_point itemBufferTime{};
@@ -147,12 +147,10 @@ void SolverThread::loop() {
       point.iteration = record.iteration;
       point.convergence = record.convergence;
       point.hostSeconds += record.seconds;
-      point.depthAMax = point.depthBMax = -1;
-      if (record.meshShot) {
-        point.emulatedSeconds += record.meshShot->emulatedSeconds;
-        point.depthAMax = record.meshShot->depthAMax;
-        point.depthBMax = record.meshShot->depthBMax;
-        run->lastMeshShot = record.meshShot;
+      point.shot = record.shotStats;
+      if (record.shotStats) {
+        point.machineSeconds += record.shotStats->machineSeconds;
+        run->lastShotStats = record.shotStats;
       }
       run->curve.push_back(point);
     } catch (const std::exception& e) {
@@ -222,7 +220,7 @@ void SolverThread::publish(const Run& run) {
     snapshot->lastShooters = history.back().shooters;
     snapshot->lastCapturedFraction = history.back().capturedFraction;
   }
-  snapshot->lastMeshShot = run.lastMeshShot;
+  snapshot->lastShotStats = run.lastShotStats;
   snapshot->itemBuffer = run.itemBuffer;
   snapshot->itemBufferShooter = run.itemBufferShooter;
   snapshot->curve = run.curve;

@@ -8,7 +8,7 @@
 
 #include "solver/formfactors/form_factor_row.h"
 #include "solver/projection/item_buffer.h"
-#include "solver/backends/mesh/mesh_shot_stats.h"
+#include "solver/backends/shot_stats.h"
 #include "solver/meshing/patch.h"
 #include "solver/scene/scene.h"
 #include "solver/scene/solve_options.h"
@@ -30,8 +30,8 @@ class FormFactorBackend {
   // The single plane's item buffer for a shooter, at the options' resolution and ratio, whatever
   // the projection in use: what the viewer shows, and where the back ends must agree pixel for pixel.
   virtual ItemBuffer singlePlaneItemBuffer(int shooter) = 0;
-  // Load balance and emulated cost of the last computeRows, on a back end that has them.
-  virtual const MeshShotStats* lastMeshShot() const { return nullptr; }
+  // What the last computeRows did on the back end's machine, on a back end that reports it.
+  virtual std::shared_ptr<const ShotStats> lastShotStats() const { return nullptr; }
 };
 
 // The back end options.backend names. Throws OptionError for one that is not available.

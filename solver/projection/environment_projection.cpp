@@ -1,6 +1,7 @@
 #include "solver/projection/environment_projection.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace radmesh {
 
@@ -46,17 +47,12 @@ void EnvironmentProjection::setUpPatches(int shooter) {
       projectedArea_[j] = 0.0;
       seenFromFront_[j] = 0;
       if (j == shooter) continue;
-      const LocalPolygon local = toShooterFrame(from, patches_[j]);
-      double highest = local.vertices[0].z;
-      for (int k = 1; k < local.vertexCount; ++k) highest = std::max(highest, local.vertices[k].z);
-      if (highest <= 0.0) continue;  // wholly behind the shooter: no face sees it
-      seenFromFront_[j] = local.seenFromFront();
+      const std::optional<LocalPolygon> local = inShooterView(from, patches_[j]);
+      if (!local) continue;
+      seenFromFront_[j] = local->seenFromFront();
       for (size_t f = 0; f < out.size(); ++f) {
-        const ProjectionFace& face = surface_.faces[f];
-        ScreenPolygon screen;
-        if (!projectOntoFace(local, face, nearDepth_, screen)) continue;
         PolygonSetup& setup = out[f].emplace_back();  // set up in place: it is a few hundred bytes
-        if (setupPolygon(screen, face.width, face.height, j, rank_[j], setup))
+        if (setUpProjection(*local, surface_.faces[f], nearDepth_, j, rank_[j], setup))
           projectedArea_[j] += setup.areaPixels;
         else
           out[f].pop_back();

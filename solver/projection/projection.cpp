@@ -28,6 +28,14 @@ LocalPolygon toShooterFrame(const Patch& shooter, const Patch& patch) {
   return local;
 }
 
+std::optional<LocalPolygon> inShooterView(const Patch& shooter, const Patch& patch) {
+  const LocalPolygon local = toShooterFrame(shooter, patch);
+  double highest = local.vertices[0].z;
+  for (int k = 1; k < local.vertexCount; ++k) highest = std::max(highest, local.vertices[k].z);
+  if (highest <= 0.0) return std::nullopt;
+  return local;
+}
+
 Vec3 toFace(const ProjectionFace& face, const Vec3& local) {
   return {face.sign[0] * local[face.axis[0]], face.sign[1] * local[face.axis[1]],
           face.sign[2] * local[face.axis[2]]};

@@ -3,6 +3,7 @@
 // shooter's frame, clipped against the near plane of a projection face and mapped onto that
 // face's pixels. Shared by the native and mesh back ends so both see identical polygons.
 #include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct LocalPolygon {
 
 LocalPolygon toShooterFrame(const Patch& shooter, const Patch& patch);
 Vec3 toShooterFrame(const Patch& shooter, const Vec3& point);
+// The patch in the shooter's frame, or nothing when it lies wholly behind the shooter, where no
+// projection face sees it: the first step of the projection phase in both back ends.
+std::optional<LocalPolygon> inShooterView(const Patch& shooter, const Patch& patch);
 
 // The part of a patch in front of a face's near plane, in the face's pixel coordinates (pixel
 // (i, j) spans [i, i+1] x [j, j+1], its centre at (i + 0.5, j + 0.5)).

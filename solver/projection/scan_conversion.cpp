@@ -92,6 +92,12 @@ bool setupPolygon(const ScreenPolygon& polygon, int width, int height, int id, i
   return setup.edgeCount >= 3;
 }
 
+bool setUpProjection(const LocalPolygon& patch, const ProjectionFace& face, double nearDepth, int id, int rank,
+                     PolygonSetup& setup) {
+  ScreenPolygon screen;
+  return projectOntoFace(patch, face, nearDepth, screen) && setupPolygon(screen, face.width, face.height, id, rank, setup);
+}
+
 bool covers(const PolygonSetup& setup, int column, int row) {
   if (column < setup.columnBegin || column >= setup.columnEnd || row < setup.rowBegin ||
       row >= setup.rowEnd)

@@ -43,6 +43,11 @@ struct PolygonSetup {
 bool setupPolygon(const ScreenPolygon& polygon, int width, int height, int id, int rank,
                   PolygonSetup& setup);
 
+// The rest of the projection phase for one patch in view (inShooterView) and one face, in both
+// back ends: projectOntoFace, then setupPolygon. False when it leaves no pixel on the face.
+bool setUpProjection(const LocalPolygon& patch, const ProjectionFace& face, double nearDepth, int id, int rank,
+                     PolygonSetup& setup);
+
 // Is the centre of pixel (column, row) inside? Top-left fill rule: a centre on an edge shared by
 // two polygons belongs to exactly one of them.
 bool covers(const PolygonSetup& setup, int column, int row);

@@ -157,12 +157,7 @@ void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, Itera
   backend->computeRows(missing, computed);
   if (plan.nearField)
     for (FormFactorRow& row : computed) correctNearField(row, patches, plan.nearReceivers[row.shooter]);
-  if (const MeshShotStats* shot = backend->lastMeshShot()) {
-    auto kept = std::make_shared<MeshShotStats>(*shot);
-    kept->depthA.clear();  // 4096 ints a shot: the histograms say the same in far less
-    kept->depthB.clear();
-    record.meshShot = std::move(kept);
-  }
+  record.shotStats = backend->lastShotStats();
   for (size_t m = 0; m < missing.size(); ++m) {
     if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
     rows[missingSlot[m]] = std::move(computed[m]);

@@ -37,9 +37,9 @@ struct IterationRecord {
   int reusedRowsTotal = 0;  // the same, over all iterations so far
   int cacheHits = 0;        // rows served by the form-factor cache this iteration
   Ledger ledger;            // after this iteration
-  // Mesh backend only: depths at stages (a) and (b) (histograms; per-PE lists dropped) and the
-  // emulated cost of this iteration's shot. Null on the native backend or a cache hit.
-  std::shared_ptr<const MeshShotStats> meshShot;
+  // What this iteration's shot did on the back end's machine (the mesh back end: its emulated
+  // cost and item-buffer depths). Null on a back end without figures or a cache hit.
+  std::shared_ptr<const ShotStats> shotStats;
 };
 
 class ProgressiveSolver {

@@ -70,6 +70,9 @@ TEST(Cli, SolveWritesStatsWithTheDocumentedKeysAndABalancedLedger) {
   ASSERT_EQ(j["per_iteration"].size(), j["iterations"].get<size_t>());
   for (const char* key : {"iteration", "shooter", "shot_power", "convergence", "seconds"})
     EXPECT_TRUE(j["per_iteration"][0].contains(key)) << key;
+  // The native back end has no machine of its own: no shot figures, no machine seconds printed.
+  EXPECT_FALSE(j["per_iteration"][0].contains("emulated_seconds"));
+  EXPECT_EQ(run.output.find("emulated"), std::string::npos) << run.output;
   const auto& l = j["ledger"];
   const double accounted = l["absorbed"].get<double>() + l["unshot"].get<double>() +
                            l["not_captured"].get<double>() + l["escaped"].get<double>();
@@ -211,9 +214,12 @@ TEST(Cli, MeshBackendStatsCarryDepthsEmulatedTimeAndOpCountsForEveryMapping) {
     std::ifstream in(stats);
     const auto j = nlohmann::json::parse(in);
     EXPECT_EQ(j["mapping"], mapping);
+    EXPECT_NE(run.output.find("mesh: "), std::string::npos) << run.output;  // the machine's seconds, summed
+    EXPECT_NE(run.output.find(" emulated MP-1 seconds ("), std::string::npos) << run.output;
     ASSERT_EQ(j["per_iteration"].size(), 5u);
     for (const auto& it : j["per_iteration"]) {
-      for (const char* key : {"depth_a_max", "depth_b_max", "depth_a_hist", "depth_b_hist", "emulated_seconds", "op_counts"})
+      for (const char* key : {"depth_a_max", "depth_b_max", "depth_a_hist", "depth_b_hist", "emulated_seconds", "passes",
+                              "op_counts", "phases"})
         ASSERT_TRUE(it.contains(key)) << key;
       // The histograms count every one of the 4096 PEs, and their top bin is the max depth.
       int pes = 0;

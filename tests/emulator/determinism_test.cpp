@@ -7,7 +7,6 @@
 #include "emulator/reduce.h"
 #include "emulator/router.h"
 #include "emulator/scan.h"
-#include "emulator/thread_pool.h"
 #include "emulator/xnet.h"
 #include "tests/emulator/plural_compare.h"
 
@@ -59,21 +58,6 @@ TEST(Determinism, OneAndTwoThreadsGiveIdenticalBitsAndCounts) {
   EXPECT_EQ(one.sum, two.sum);
   EXPECT_EQ(one.best.pe, two.best.pe);
   EXPECT_EQ(one.costs.summary(), two.costs.summary());
-}
-
-TEST(ThreadPool, RethrowsTheLowestChunksExceptionAndStaysUsable) {
-  ThreadPool pool(2);
-  try {
-    pool.run(100, [](int begin, int) { throw std::runtime_error(std::to_string(begin)); });
-    FAIL() << "expected an exception";
-  } catch (const std::runtime_error& e) {
-    EXPECT_STREQ(e.what(), "0");
-  }
-  std::vector<int> hit(100, 0);
-  pool.run(100, [&](int begin, int end) {
-    for (int i = begin; i < end; ++i) ++hit[i];
-  });
-  EXPECT_EQ(std::count(hit.begin(), hit.end(), 1), 100);
 }
 
 }  // namespace

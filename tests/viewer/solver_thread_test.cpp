@@ -81,16 +81,19 @@ TEST(SolverThread, MeshBackEndSnapshotsCarryEmulatedSecondsAndDepths) {
   thread.setItemBufferWanted(true);
   thread.step(3);
   const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.iteration() >= 3 && s.itemBuffer; });
-  ASSERT_NE(s->lastMeshShot, nullptr);
+  ASSERT_NE(s->lastShotStats, nullptr);
+  EXPECT_EQ(s->lastShotStats->machine, "emulated MP-1");
   ASSERT_EQ(s->curve.size(), 3u);
   double emulated = 0.0;
   for (const ConvergencePoint& p : s->curve) {
-    EXPECT_GT(p.emulatedSeconds, emulated);  // every shot costs emulated time
-    emulated = p.emulatedSeconds;
-    EXPECT_GE(p.depthAMax, 1);
-    EXPECT_GE(p.depthBMax, 1);
+    ASSERT_NE(p.shot, nullptr);
+    EXPECT_DOUBLE_EQ(p.machineSeconds, emulated + p.shot->machineSeconds);  // the machine's clock adds up
+    EXPECT_GT(p.machineSeconds, emulated);                                 // every shot costs emulated time
+    emulated = p.machineSeconds;
+    EXPECT_GE(p.shot->figures["depth_a_max"].get<int>(), 1);
+    EXPECT_GE(p.shot->figures["depth_b_max"].get<int>(), 1);
   }
-  EXPECT_EQ(s->curve.back().depthAMax, s->lastMeshShot->depthAMax);
+  EXPECT_EQ(s->curve.back().shot, s->lastShotStats);
   // The item buffer is the single plane above the last shooter, at the options' resolution.
   EXPECT_EQ(s->itemBufferShooter, s->lastShooters.front());
   EXPECT_EQ(s->itemBuffer->width, setup.options.resolution);

@@ -98,6 +98,7 @@ MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
   stats.emulatedSeconds = emu::emulatedSeconds(stats.counts).total();
   stats.hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   lastShot_ = std::move(stats);
+  lastShotStats_ = std::make_shared<const ShotStats>(shotStats(lastShot_));
   return shot;
 }
 

@@ -37,7 +37,7 @@ class MeshBackend final : public FormFactorBackend {
   void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
   ProjectionSummary projectionSummary() const override;
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
-  const MeshShotStats* lastMeshShot() const override { return &lastShot_; }
+  std::shared_ptr<const ShotStats> lastShotStats() const override { return lastShotStats_; }
 
   // The shooting-patch selection phase on the mesh: k reduceMax over the patches' unshot power,
   // ties to the lower tie rank; patches without unshot power are never chosen. Strongest first.
@@ -63,6 +63,7 @@ class MeshBackend final : public FormFactorBackend {
   std::unique_ptr<MeshScanConversion> scan_;
   ThreadPool hostPool_;  // the sub-pixel refinement (solver/formfactors/sub_pixel_receivers.h) runs on the host
   MeshShotStats lastShot_;
+  std::shared_ptr<const ShotStats> lastShotStats_;  // lastShot_ for every consumer
 };
 
 }  // namespace radmesh

@@ -1,6 +1,7 @@
 #include "solver/backends/mesh/mesh_scan_conversion.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "emulator/memory_ledger.h"
 #include "emulator/router.h"
@@ -60,16 +61,12 @@ void MeshScanConversion::project(MeshShot& shot) {
         const int j = record.patch;
         const int shooter = shot.shooters[q];
         if (j == shooter) continue;
-        // The native back end's steps (solver/projection/environment_projection.cpp), in the same order.
-        const LocalPolygon local = toShooterFrame(patches_[shooter], patches_[j]);
-        double highest = local.vertices[0].z;
-        for (int k = 1; k < local.vertexCount; ++k) highest = std::max(highest, local.vertices[k].z);
-        if (highest <= 0.0) continue;
+        // The projection stage's own functions, as the native back end calls them.
+        const std::optional<LocalPolygon> local = inShooterView(patches_[shooter], patches_[j]);
+        if (!local) continue;
         const std::size_t e = static_cast<std::size_t>(q) * n + j;
-        shot.seenFromFront[e] = local.seenFromFront();
-        ScreenPolygon screen;
-        if (projectOntoFace(local, face_, nearDepth_, screen) &&
-            setupPolygon(screen, face_.width, face_.height, j, rank_[j], shot.setups[e])) {
+        shot.seenFromFront[e] = local->seenFromFront();
+        if (setUpProjection(*local, face_, nearDepth_, j, rank_[j], shot.setups[e])) {
           shot.projected[e] = 1;
           shot.projectedAreaPixels[e] = shot.setups[e].areaPixels;
         }

@@ -19,6 +19,36 @@ PhaseClock::~PhaseClock() {
   it->hostSeconds += host;
 }
 
+namespace {
+nlohmann::json countsJson(const emu::CostCounts& c) {
+  auto cls = [](const emu::ClassCounts& k) {
+    return nlohmann::json{{"ops", k.ops},           {"hops", k.hops},         {"byte_hops", k.byteHops},
+                          {"messages", k.messages}, {"rounds", k.rounds},     {"byte_rounds", k.byteRounds},
+                          {"flops", k.flops},       {"int_ops", k.intOps},    {"host_seconds", k.hostSeconds}};
+  };
+  return {{"xnet", cls(c.xnet)},     {"router", cls(c.router)}, {"alu", cls(c.alu)},
+          {"reduce", cls(c.reduce)}, {"scan", cls(c.scan)},     {"sort", cls(c.sort)},
+          {"max_collisions", c.maxCollisions}, {"memory_high_water_bytes", c.memoryHighWaterBytes}};
+}
+}  // namespace
+
+ShotStats shotStats(const MeshShotStats& m) {
+  nlohmann::json phases = nlohmann::json::array();
+  for (const MeshPhaseCost& p : m.phases)
+    phases.push_back({{"name", p.name}, {"emulated_seconds", p.emulatedSeconds}, {"host_seconds", p.hostSeconds}});
+  return {"emulated MP-1",
+          m.emulatedSeconds,
+          {{"depth_a_max", m.depthAMax},
+           {"depth_b_max", m.depthBMax},
+           {"depth_a_hist", m.depthAHist},
+           {"depth_b_hist", m.depthBHist},
+           {"emulated_seconds", m.emulatedSeconds},
+           {"host_seconds", m.hostSeconds},
+           {"passes", m.passes},
+           {"op_counts", countsJson(m.counts)},
+           {"phases", std::move(phases)}}};
+}
+
 std::vector<int> depthHistogram(const std::vector<int>& depths) {
   const int most = depths.empty() ? 0 : *std::max_element(depths.begin(), depths.end());
   std::vector<int> hist(most + 1, 0);

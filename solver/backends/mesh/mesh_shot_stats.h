@@ -9,6 +9,7 @@
 #include "emulator/cost_counts.h"
 #include "emulator/cost_model.h"
 #include "emulator/mesh_machine.h"
+#include "solver/backends/shot_stats.h"
 
 namespace radmesh {
 
@@ -49,6 +50,12 @@ class PhaseClock {
   emu::CostCounts before_;
   std::chrono::steady_clock::time_point start_;
 };
+
+// The shot as every consumer sees it (solver/backends/shot_stats.h): the emulated MP-1 seconds,
+// and as figures the depths' maxima and histograms (the per-PE lists left out: the histograms say
+// the same in far less), the passes, the op counts and host seconds per operation class, and the
+// phases' emulated and host seconds.
+ShotStats shotStats(const MeshShotStats& stats);
 
 // Histogram of depths: hist[d] = how many entries equal d (d from 0 to the maximum).
 std::vector<int> depthHistogram(const std::vector<int>& depths);

@@ -118,6 +118,19 @@ TEST(MeshBackend, DepthsCountWhatArrivedAtEachPe) {
   EXPECT_NEAR(phaseSum, s.emulatedSeconds, 1e-9 * s.emulatedSeconds);
   EXPECT_GT(s.counts.router.messages, 0);
   EXPECT_GT(s.counts.sort.ops, 0);
+  // Every consumer gets the same through the generic channel, the per-PE lists left out; the
+  // native back end has no machine of its own to report on.
+  const std::shared_ptr<const ShotStats> generic = mesh.lastShotStats();
+  ASSERT_NE(generic, nullptr);
+  EXPECT_EQ(generic->machine, "emulated MP-1");
+  EXPECT_EQ(generic->machineSeconds, s.emulatedSeconds);
+  EXPECT_EQ(generic->figures.at("depth_a_max").get<int>(), s.depthAMax);
+  EXPECT_EQ(generic->figures.at("depth_b_hist").get<std::vector<int>>(), s.depthBHist);
+  EXPECT_EQ(generic->figures.at("passes").get<int>(), s.passes);
+  EXPECT_EQ(generic->figures.at("phases").size(), s.phases.size());
+  EXPECT_EQ(generic->figures.at("op_counts").at("router").at("messages").get<std::int64_t>(), s.counts.router.messages);
+  EXPECT_FALSE(generic->figures.contains("depth_a"));
+  EXPECT_EQ(native.lastShotStats(), nullptr);
 }
 
 TEST(MeshBackend, ThreadCountDoesNotChangeABit) {

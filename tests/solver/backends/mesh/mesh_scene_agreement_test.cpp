@@ -113,10 +113,10 @@ TEST_P(MeshMappingsOnShared, EveryMappingRunsWithTheHierarchicalRadiosity) {
     EXPECT_TRUE(test::sameRadiosity(other->radiosity(), hierarchical->radiosity(), 1e-6)) << toString(mapping);
     // The shots ran on the mesh with this mapping: adaptive has its own phase.
     for (const IterationRecord& record : other->history()) {
-      ASSERT_NE(record.meshShot, nullptr) << toString(mapping) << " iteration " << record.iteration;
-      const auto& phases = record.meshShot->phases;
+      ASSERT_NE(record.shotStats, nullptr) << toString(mapping) << " iteration " << record.iteration;
+      const auto& phases = record.shotStats->figures.at("phases");
       const bool adaptivePhase = std::any_of(phases.begin(), phases.end(),
-                                             [](const MeshPhaseCost& p) { return p.name == "adaptive mapping"; });
+                                             [](const nlohmann::json& p) { return p["name"] == "adaptive mapping"; });
       EXPECT_EQ(adaptivePhase, mapping == MappingKind::Adaptive) << toString(mapping);
     }
   }
