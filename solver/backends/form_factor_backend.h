@@ -3,6 +3,7 @@
 // F_ij for given shooters. The native back end (host CPU) and the mesh back end (the emulated
 // SIMD machine) implement it, as pbrt's cpu/ and gpu/ implement one integrator.
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -32,6 +33,11 @@ class FormFactorBackend {
   virtual ItemBuffer singlePlaneItemBuffer(int shooter) = 0;
   // Load balance and emulated cost of the last computeRows, on a back end that has them.
   virtual const MeshShotStats* lastMeshShot() const { return nullptr; }
+  // The emulated machine's running cost counts, on a back end that has one. A shot's costs are
+  // differences of them (in floating point, for flops), so a resumed solve restores them to cost
+  // its shots bitwise as an uninterrupted one does.
+  virtual std::optional<emu::CostCounts> machineCosts() const { return std::nullopt; }
+  virtual void restoreMachineCosts(const emu::CostCounts&) {}
 };
 
 // The back end options.backend names. Throws OptionError for one that is not available.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <queue>
+#include <stdexcept>
 #include <string>
 
 #include "solver/formfactors/form_factor_cache.h"
@@ -253,12 +254,45 @@ bool ProgressiveSolver::done() const {
 }
 
 double ProgressiveSolver::convergence() const { return state_->convergence; }
+const Scene& ProgressiveSolver::scene() const { return state_->scene; }
 const std::vector<Patch>& ProgressiveSolver::patches() const { return state_->patches; }
 const std::vector<Rgb>& ProgressiveSolver::radiosity() const { return state_->radiosity; }
 const Ledger& ProgressiveSolver::ledger() const { return state_->ledger; }
 const std::vector<IterationRecord>& ProgressiveSolver::history() const { return state_->history; }
 const SolveOptions& ProgressiveSolver::options() const { return state_->options; }
 const EffectsPlan& ProgressiveSolver::effectsPlan() const { return state_->plan; }
+SolverProgress ProgressiveSolver::progress() const {
+  const State& s = *state_;
+  return {s.radiosity, s.unshotRadiosity, s.unshotPowerW, s.timesShot, s.ledger, s.history,
+          s.firstShotPowerW, s.convergence, s.exhausted, s.backend->machineCosts(), s.cache.contents()};
+}
+
+void ProgressiveSolver::restoreProgress(SolverProgress p) {
+  State& s = *state_;
+  const size_t n = s.patches.size();
+  auto patchIndex = [n](int j) { return j >= 0 && static_cast<size_t>(j) < n; };
+  const bool rowsFit = std::all_of(p.cachedRows.begin(), p.cachedRows.end(), [&](const FormFactorRow& row) {
+    return patchIndex(row.shooter) && row.receivers.size() == row.formFactors.size() &&
+           std::all_of(row.receivers.begin(), row.receivers.end(), patchIndex);
+  });
+  if (p.radiosity.size() != n || p.unshotRadiosity.size() != n || p.unshotPowerW.size() != n ||
+      p.timesShot.size() != n || p.machineCosts.has_value() != s.backend->machineCosts().has_value() || !rowsFit)
+    throw std::invalid_argument(
+        fmt::format("solver progress of another solve: not {} patches, another back end, or rows of other patches", n));
+  s.radiosity = std::move(p.radiosity);
+  s.unshotRadiosity = std::move(p.unshotRadiosity);
+  s.unshotPowerW = std::move(p.unshotPowerW);
+  s.timesShot = std::move(p.timesShot);
+  s.ledger = p.ledger;
+  s.history = std::move(p.history);
+  s.firstShotPowerW = p.firstShotPowerW;
+  s.convergence = p.convergence;
+  s.exhausted = p.exhausted;
+  if (p.machineCosts) s.backend->restoreMachineCosts(*p.machineCosts);
+  s.cache = FormFactorCache(s.options.formFactorCacheBytes);
+  for (auto row = p.cachedRows.rbegin(); row != p.cachedRows.rend(); ++row) s.cache.insert(*row);
+}
+
 ProjectionSummary ProgressiveSolver::projectionSummary() const { return state_->backend->projectionSummary(); }
 FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
 

@@ -38,6 +38,8 @@ class MeshBackend final : public FormFactorBackend {
   ProjectionSummary projectionSummary() const override;
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
   const MeshShotStats* lastMeshShot() const override { return &lastShot_; }
+  std::optional<emu::CostCounts> machineCosts() const override { return machine_.costs(); }
+  void restoreMachineCosts(const emu::CostCounts& costs) override { machine_.counters() = costs; }
 
   // The shooting-patch selection phase on the mesh: k reduceMax over the patches' unshot power,
   // ties to the lower tie rank; patches without unshot power are never chosen. Strongest first.
