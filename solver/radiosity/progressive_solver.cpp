@@ -50,6 +50,19 @@ void checkPatches(const Scene& scene, const std::vector<Patch>& patches) {
     throw SceneError(scene.source, "the scene", "meshed into no patches", "give it polygons");
 }
 
+// Whether a progress has n patches and names no others (a row's, a record's shooters).
+bool fitsPatches(const SolverProgress& p, size_t n) {
+  auto patchIndex = [n](int j) { return j >= 0 && static_cast<size_t>(j) < n; };
+  auto rowFits = [&](const FormFactorRow& row) {
+    return patchIndex(row.shooter) && row.receivers.size() == row.formFactors.size() &&
+           std::all_of(row.receivers.begin(), row.receivers.end(), patchIndex);
+  };
+  auto recordFits = [&](const IterationRecord& r) { return std::all_of(r.shooters.begin(), r.shooters.end(), patchIndex); };
+  return p.radiosity.size() == n && p.unshotRadiosity.size() == n && p.unshotPowerW.size() == n &&
+         p.timesShot.size() == n && std::all_of(p.cachedRows.begin(), p.cachedRows.end(), rowFits) &&
+         std::all_of(p.history.begin(), p.history.end(), recordFits);
+}
+
 }  // namespace
 
 struct ProgressiveSolver::State {
@@ -270,15 +283,9 @@ SolverProgress ProgressiveSolver::progress() const {
 void ProgressiveSolver::restoreProgress(SolverProgress p) {
   State& s = *state_;
   const size_t n = s.patches.size();
-  auto patchIndex = [n](int j) { return j >= 0 && static_cast<size_t>(j) < n; };
-  const bool rowsFit = std::all_of(p.cachedRows.begin(), p.cachedRows.end(), [&](const FormFactorRow& row) {
-    return patchIndex(row.shooter) && row.receivers.size() == row.formFactors.size() &&
-           std::all_of(row.receivers.begin(), row.receivers.end(), patchIndex);
-  });
-  if (p.radiosity.size() != n || p.unshotRadiosity.size() != n || p.unshotPowerW.size() != n ||
-      p.timesShot.size() != n || p.machineCosts.has_value() != s.backend->machineCosts().has_value() || !rowsFit)
-    throw std::invalid_argument(
-        fmt::format("solver progress of another solve: not {} patches, another back end, or rows of other patches", n));
+  if (!fitsPatches(p, n) || p.machineCosts.has_value() != s.backend->machineCosts().has_value())
+    throw std::invalid_argument(fmt::format(
+        "solver progress of another solve: not {} patches, shooters of other patches, or another back end", n));
   s.radiosity = std::move(p.radiosity);
   s.unshotRadiosity = std::move(p.unshotRadiosity);
   s.unshotPowerW = std::move(p.unshotPowerW);

@@ -189,6 +189,19 @@ TEST_F(CheckpointRefusal, OneFlippedByte) {
   expectRefused(path, m, options(Backend::Native, 10), "is a version 2 checkpoint");
 }
 
+TEST(Checkpoint, RestoreRefusesAProgressOfOtherPatchesAndLeavesTheSolverAsItWas) {
+  const Meshed m = cornell();
+  auto solver = solved(m, options(Backend::Native, 3));
+  SolverProgress other = solver->progress();
+  other.history.back().shooters.push_back(static_cast<int>(m.patches.size()));
+  EXPECT_THROW(solver->restoreProgress(other), std::invalid_argument);
+  other = solver->progress();
+  other.timesShot.pop_back();
+  EXPECT_THROW(solver->restoreProgress(other), std::invalid_argument);
+  EXPECT_EQ(solver->history().size(), 3u);
+  EXPECT_EQ(solver->history().back().shooters.size(), 2u);
+}
+
 TEST(Checkpoint, MeshedSceneHashFollowsVerticesAndEmissionBitwise) {
   Meshed a = cornell();
   const std::uint64_t hash = meshedSceneHash(a.scene, a.patches);
