@@ -15,6 +15,7 @@
 #include "solver/bake/gltf_export.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
+#include "solver/radiosity/checkpoint.h"
 
 namespace radmesh::cli {
 
@@ -26,6 +27,9 @@ struct SolveArgs {
   std::string outPath;
   std::string effects = "auto";
   bool quiet = false;
+  std::string checkpointPath;
+  double checkpointEverySeconds = 0.0;  // 0: once, at the end
+  std::string resumePath;
 };
 
 void printSummary(const ProgressiveSolver& solver, double seconds) {
@@ -52,7 +56,12 @@ void run(const SolveArgs& args) {
   const Scene scene = loadScene(args.flags.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
   options.effects = parseEffects(args.effects);
+  if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
+    resumeFromCheckpoint(args.resumePath, solver);
+    fmt::print("resumed from {} after iteration {}\n", args.resumePath, solver.history().size());
+  }
   printEffects(solver.effectsPlan());
   if (solver.options().projection != options.projection)
     fmt::print("  occlusion is off, so --projection {} becomes {}\n", toString(options.projection),
@@ -68,11 +77,20 @@ void run(const SolveArgs& args) {
   Progress progress(options.until);
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  double lastCheckpoint = 0.0;
   while (!solver.done()) {
     const IterationRecord& record = solver.step();
     if (!args.quiet) progress.report(record, elapsed());
+    if (args.checkpointEverySeconds > 0.0 && elapsed() - lastCheckpoint >= args.checkpointEverySeconds) {
+      writeCheckpoint(args.checkpointPath, solver);
+      lastCheckpoint = elapsed();
+    }
   }
   progress.finish();
+  if (!args.checkpointPath.empty()) {
+    writeCheckpoint(args.checkpointPath, solver);
+    fmt::print("wrote checkpoint {}\n", args.checkpointPath);
+  }
   const double seconds = elapsed();
   printSummary(solver, seconds);
 
@@ -98,6 +116,14 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--effects", args->effects, "auto: simulate only what the scene calls for; all: everything")
       ->capture_default_str();
   cmd->add_flag("--quiet", args->quiet, "No per-iteration progress");
+  CLI::Option* checkpoint = cmd->add_option(
+      "--checkpoint", args->checkpointPath, "Save the solver's state to this file at the end (resume with --resume)");
+  cmd->add_option("--checkpoint-every", args->checkpointEverySeconds,
+                  "Also save the checkpoint every this many seconds of solving")
+      ->check(CLI::PositiveNumber)
+      ->needs(checkpoint);
+  cmd->add_option("--resume", args->resumePath,
+                  "Go on from a checkpoint of the same scene and options; --max-iterations counts from the start");
   cmd->callback([args] { run(*args); });
 }
 

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -120,6 +121,11 @@ PanelTab parsePanelTab(const std::string& name) {
   throw OptionError("--panel '" + name + "' is not a tab: use progress, item-buffer, parameters, scene or view");
 }
 
+Panel::Panel(const SolveSetup& setup, PanelTab firstTab, const std::string& checkpointPath)
+    : edited_(setup), firstTab_(firstTab) {
+  std::strncpy(checkpointPath_.data(), checkpointPath.c_str(), checkpointPath_.size() - 1);
+}
+
 void Panel::draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamera& camera, ViewSettings& view) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - kWidthPx, viewport->WorkPos.y));
@@ -193,6 +199,11 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   stepCount_ = std::max(1, stepCount_);
   ImGui::SameLine();
   if (ImGui::Button("Restart")) solver.restart(edited_);
+  if (ImGui::Button("Save checkpoint (F5)")) saveCheckpoint(solver);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  ImGui::InputText("##checkpoint", checkpointPath_.data(), checkpointPath_.size());
+  if (!snapshot.checkpointMessage.empty()) note(snapshot.checkpointMessage.c_str());
   const float fps = ImGui::GetIO().Framerate;
   ImGui::TextDisabled("%.1f fps (%.1f ms per frame)", fps, 1e3f / std::max(fps, 1e-3f));
 }

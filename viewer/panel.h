@@ -3,6 +3,7 @@
 // (convergence curves, timing, energy ledger), the last shot's item buffer, the solve parameters,
 // the scene's figures and the view. Commands go to the solver thread; everything shown comes from
 // its latest snapshot.
+#include <array>
 #include <memory>
 #include <string>
 
@@ -28,9 +29,11 @@ class Panel {
   static constexpr float kWidthPx = 380.0f;  // docked at the window's right edge
 
   // Needs the window's GL context current (the item buffer is shown from a texture).
-  Panel(const SolveSetup& setup, PanelTab firstTab) : edited_(setup), firstTab_(firstTab) {}
+  // checkpointPath: where "Save checkpoint" (or F5) saves the solve, editable in the panel.
+  Panel(const SolveSetup& setup, PanelTab firstTab, const std::string& checkpointPath);
 
   void draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamera& camera, ViewSettings& view);
+  void saveCheckpoint(SolverThread& solver) const { solver.saveCheckpoint(checkpointPath_.data()); }
 
  private:
   void drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver);
@@ -48,6 +51,7 @@ class Panel {
   bool firstFrame_ = true;
   std::string parameterError_;
   int stepCount_ = 10;
+  std::array<char, 1024> checkpointPath_{};
   bool itemBufferWanted_ = false;
   GlTexture itemBufferTexture_;
   std::shared_ptr<const ItemBuffer> uploadedItemBuffer_;

@@ -51,6 +51,7 @@ struct SolverSnapshot {
   bool playing = false;
   bool done = false;
   std::string error;                         // why the last restart failed, else empty
+  std::string checkpointMessage;             // the last checkpoint saved (or resumed from), or why not
 
   int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }
   double convergence() const { return curve.empty() ? 0.0 : curve.back().convergence; }

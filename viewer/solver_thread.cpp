@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <utility>
 
 #include "solver/meshing/meshing.h"
+#include "solver/radiosity/checkpoint.h"
 
 namespace radmesh {
 
@@ -22,6 +24,17 @@ int lastShooter(const ProgressiveSolver& solver) {
   return history.empty() || history.back().shooters.empty() ? -1 : history.back().shooters.front();
 }
 
+// The curve's next point: this iteration's figures, the running sums carried on.
+ConvergencePoint nextPoint(const std::vector<ConvergencePoint>& curve, const IterationRecord& record) {
+  ConvergencePoint point = curve.empty() ? ConvergencePoint{} : curve.back();
+  point.iteration = record.iteration;
+  point.convergence = record.convergence;
+  point.hostSeconds += record.seconds;
+  point.shot = record.shotStats;
+  if (record.shotStats) point.machineSeconds += record.shotStats->machineSeconds;
+  return point;
+}
+
 }  // namespace
 
 struct SolverThread::Run {
@@ -35,10 +48,16 @@ struct SolverThread::Run {
   std::shared_ptr<const ItemBuffer> itemBuffer;
   int itemBufferShooter = -1;
   Clock::time_point itemBufferTime{};
+  std::string checkpointMessage;  // the last save: where, or why not
+
+  void add(const IterationRecord& record) {
+    curve.push_back(nextPoint(curve, record));
+    if (record.shotStats) lastShotStats = record.shotStats;
+  }
 };
 
-SolverThread::SolverThread(Scene scene, const SolveSetup& setup, bool playing)
-    : scene_(std::move(scene)), playing_(playing), pendingSetup_(setup) {
+SolverThread::SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath)
+    : scene_(std::move(scene)), playing_(playing), pendingSetup_(setup), pendingResume_(std::move(resumePath)) {
   auto first = std::make_shared<SolverSnapshot>();
   first->setup = setup;
   first->playing = playing;
@@ -87,6 +106,14 @@ void SolverThread::restart(const SolveSetup& setup) {
   wake_.notify_all();
 }
 
+void SolverThread::saveCheckpoint(const std::string& path) {
+  {
+    std::lock_guard lock(mutex_);
+    pendingCheckpoint_ = path;
+  }
+  wake_.notify_all();
+}
+
 void SolverThread::setItemBufferWanted(bool wanted) {
   {
     std::lock_guard lock(mutex_);
@@ -104,8 +131,9 @@ void SolverThread::loop() {
   std::unique_ptr<Run> run;
   Clock::time_point lastPublish{};
   for (;;) {
-    enum class Work { Restart, Step, ItemBuffer } work = Work::Step;
+    enum class Work { Restart, Step, ItemBuffer, Checkpoint } work = Work::Step;
     SolveSetup setup;
+    std::string resumePath, checkpointPath;
     std::uint64_t generation = 0;
     {
       std::unique_lock lock(mutex_);
@@ -115,14 +143,19 @@ void SolverThread::loop() {
       };
       wake_.wait(lock, [&] {
         const bool canStep = run && !run->solver->done();
-        return stop_ || restartPending_ || (canStep && (playing_ || pendingSteps_ > 0)) || itemBufferMissing();
+        return stop_ || restartPending_ || (run && !pendingCheckpoint_.empty()) ||
+               (canStep && (playing_ || pendingSteps_ > 0)) || itemBufferMissing();
       });
       if (stop_) return;
       if (restartPending_) {
         work = Work::Restart;
         restartPending_ = false;
         setup = pendingSetup_;
+        resumePath = std::exchange(pendingResume_, {});
         generation = ++generation_;
+      } else if (run && !pendingCheckpoint_.empty()) {
+        work = Work::Checkpoint;
+        checkpointPath = std::exchange(pendingCheckpoint_, {});
       } else if (run && !run->solver->done() && (playing_ || pendingSteps_ > 0)) {
         if (pendingSteps_ > 0) --pendingSteps_;
       } else {
@@ -131,9 +164,14 @@ void SolverThread::loop() {
     }
 
     if (work == Work::Restart) {
-      run = startRun(setup, generation);
+      run = startRun(setup, generation, resumePath);
       if (run) publish(*run);
       lastPublish = Clock::now();
+      continue;
+    }
+    if (work == Work::Checkpoint) {
+      save(*run, checkpointPath);
+      publish(*run);
       continue;
     }
     if (work == Work::ItemBuffer) {
@@ -142,17 +180,7 @@ void SolverThread::loop() {
       continue;
     }
     try {
-      const IterationRecord& record = run->solver->step();
-      ConvergencePoint point = run->curve.empty() ? ConvergencePoint{} : run->curve.back();
-      point.iteration = record.iteration;
-      point.convergence = record.convergence;
-      point.hostSeconds += record.seconds;
-      point.shot = record.shotStats;
-      if (record.shotStats) {
-        point.machineSeconds += record.shotStats->machineSeconds;
-        run->lastShotStats = record.shotStats;
-      }
-      run->curve.push_back(point);
+      run->add(run->solver->step());
     } catch (const std::exception& e) {
       publishFailure(run->setup, e.what());
       run.reset();
@@ -173,7 +201,8 @@ void SolverThread::loop() {
   }
 }
 
-std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setup, std::uint64_t generation) {
+std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setup, std::uint64_t generation,
+                                                         const std::string& resumePath) {
   try {
     auto run = std::make_unique<Run>();
     run->setup = setup;
@@ -181,11 +210,25 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
     std::vector<Patch> patches = meshScene(scene_, setup.cellM);
     run->summary = summarizeScene(scene_, patches, setup.cellM);
     run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), setup.options);
+    if (!resumePath.empty()) {
+      resumeFromCheckpoint(resumePath, *run->solver);
+      for (const IterationRecord& record : run->solver->history()) run->add(record);
+      run->checkpointMessage = "resumed from " + resumePath;
+    }
     run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->solver->patches()));
     return run;
   } catch (const std::exception& e) {
     publishFailure(setup, e.what());
     return nullptr;
+  }
+}
+
+void SolverThread::save(Run& run, const std::string& path) {
+  try {
+    writeCheckpoint(path, *run.solver);
+    run.checkpointMessage = "saved " + path + " after iteration " + std::to_string(run.solver->history().size());
+  } catch (const std::exception& e) {
+    run.checkpointMessage = e.what();
   }
 }
 
@@ -226,6 +269,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->curve = run.curve;
   snapshot->ledger = run.solver->ledger();
   snapshot->done = run.solver->done();
+  snapshot->checkpointMessage = run.checkpointMessage;
   std::lock_guard lock(mutex_);
   snapshot->playing = playing_;
   latest_ = std::move(snapshot);

@@ -4,6 +4,7 @@
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "solver/scene/scene.h"
@@ -13,8 +14,9 @@ namespace radmesh {
 
 class SolverThread {
  public:
-  // Meshes and starts solving at once (playing) or waits for a command (paused).
-  SolverThread(Scene scene, const SolveSetup& setup, bool playing);
+  // Meshes and starts solving at once (playing) or waits for a command (paused); with a
+  // checkpoint (solver/radiosity/checkpoint.h), the first solve goes on from it.
+  SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath = {});
   ~SolverThread();  // stops after the iteration under way and joins
   SolverThread(const SolverThread&) = delete;
   SolverThread& operator=(const SolverThread&) = delete;
@@ -23,6 +25,9 @@ class SolverThread {
   void pause();               // also cancels pending steps
   void step(int iterations);  // this many more iterations, then pause
   void restart(const SolveSetup& setup);  // remesh and solve from scratch, keeping play/pause
+  // Saves the solve to a checkpoint after the iteration under way; the snapshots' checkpointMessage
+  // then says where, or why not.
+  void saveCheckpoint(const std::string& path);
   // Whether snapshots should carry the last shooter's item buffer (it costs a projection).
   void setItemBufferWanted(bool wanted);
 
@@ -32,7 +37,9 @@ class SolverThread {
  private:
   struct Run;  // the solver and what the thread accumulates across its iterations
   void loop();
-  std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation);  // null: failed
+  // Null: failed. With a resume path, goes on from that checkpoint.
+  std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation, const std::string& resumePath);
+  void save(Run& run, const std::string& path);
   void refreshItemBuffer(Run& run, bool finished);
   void publish(const Run& run);
   void publishFailure(const SolveSetup& setup, const std::string& error);
@@ -46,6 +53,8 @@ class SolverThread {
   bool restartPending_ = true;
   bool itemBufferWanted_ = false;
   SolveSetup pendingSetup_;
+  std::string pendingResume_;      // for the first run only: a restart solves from scratch
+  std::string pendingCheckpoint_;  // where to save, once the iteration under way is done
   std::uint64_t generation_ = 0;
   std::shared_ptr<const SolverSnapshot> latest_;
   std::thread thread_;  // last: starts once everything above exists

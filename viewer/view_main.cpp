@@ -32,6 +32,10 @@ int main(int argc, char** argv) {
                  "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: off)")
       ->capture_default_str();
   app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")->capture_default_str();
+  app.add_option("--resume", args.resume, "Go on from a checkpoint of the same scene and options (radmesh solve "
+                 "--checkpoint, or the panel's Save checkpoint)");
+  app.add_option("--checkpoint", args.checkpoint, "Where the panel's Save checkpoint (F5) writes")
+      ->capture_default_str();
   app.add_option("--size", size, "Window size WxH")->capture_default_str();
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")
       ->capture_default_str();

@@ -89,9 +89,9 @@ int runViewer(const ViewerArgs& args) {
   ImGuiLayer imgui(window.window());
   Renderer renderer;
   const bool smokeTest = args.steps > 0;
-  SolverThread solver(std::move(scene), args.setup, !smokeTest);
+  SolverThread solver(std::move(scene), args.setup, !smokeTest, args.resume);
   if (smokeTest) solver.step(args.steps);
-  Panel panel(args.setup, args.firstTab);
+  Panel panel(args.setup, args.firstTab, args.checkpoint);
   ViewSettings view;
   SnapshotFeed feed;
   WalkInputReader input;
@@ -101,9 +101,13 @@ int runViewer(const ViewerArgs& args) {
   long frames = 0;
   int framesSinceReady = 0;
   int exitCode = 0;
+  bool saveKeyWasDown = false;  // F5 saves once per press
   while (!window.shouldClose()) {
     glfwPollEvents();
     if (glfwGetKey(window.window(), GLFW_KEY_ESCAPE) == GLFW_PRESS && !imgui.wantsKeyboard()) window.requestClose();
+    const bool saveKeyDown = glfwGetKey(window.window(), GLFW_KEY_F5) == GLFW_PRESS;
+    if (saveKeyDown && !saveKeyWasDown && !imgui.wantsKeyboard()) panel.saveCheckpoint(solver);
+    saveKeyWasDown = saveKeyDown;
     const auto now = Clock::now();
     const double dt = std::chrono::duration<double>(now - lastFrame).count();
     lastFrame = now;

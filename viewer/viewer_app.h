@@ -14,6 +14,8 @@ struct ViewerArgs {
   SolveSetup setup;
   glm::ivec2 windowSize{1280, 720};
   PanelTab firstTab = PanelTab::Progress;
+  std::string resume;                       // a checkpoint to go on from (empty: from scratch)
+  std::string checkpoint = "radmesh-view.ckpt";  // where the panel's Save checkpoint writes
   // Smoke-test mode when steps > 0: solve this many iterations (paused after), save a screenshot
   // of the whole window with its panel, and exit. Frame statistics are printed on exit.
   int steps = 0;

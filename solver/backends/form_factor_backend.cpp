@@ -4,7 +4,13 @@
 #include "solver/backends/native/native_backend.h"
 #include "solver/scene/scene_error.h"
 
+#include <stdexcept>
+
 namespace radmesh {
+
+void FormFactorBackend::restoreMachineState(const std::string& state) {
+  if (!state.empty()) throw std::invalid_argument("this back end keeps no machine state, but some was given");
+}
 
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
                                                          const std::vector<Patch>& patches,

@@ -3,6 +3,7 @@
 // F_ij for given shooters. The native back end (host CPU) and the mesh back end (the emulated
 // SIMD machine) implement it, as pbrt's cpu/ and gpu/ implement one integrator.
 #include <memory>
+#include <string>
 #include <span>
 #include <vector>
 
@@ -32,6 +33,13 @@ class FormFactorBackend {
   virtual ItemBuffer singlePlaneItemBuffer(int shooter) = 0;
   // What the last computeRows did on the back end's machine, on a back end that reports it.
   virtual std::shared_ptr<const ShotStats> lastShotStats() const { return nullptr; }
+  // The state a back end carries from shot to shot beyond the solver's, as opaque bytes for a
+  // checkpoint (the mesh back end: the emulated machine's running cost counts, of which each
+  // shot's costs are floating-point differences, so a resumed solve costs its shots bitwise as an
+  // uninterrupted one does). Empty on a back end without any.
+  virtual std::string machineState() const { return {}; }
+  // Restores what machineState() gave; throws std::invalid_argument for bytes it did not write.
+  virtual void restoreMachineState(const std::string& state);
 };
 
 // The back end options.backend names. Throws OptionError for one that is not available.

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <list>
 #include <unordered_map>
+#include <vector>
 
 #include "solver/formfactors/form_factor_row.h"
 
@@ -18,6 +19,10 @@ class FormFactorCache {
   // Keeps a copy, dropping the least recently used rows to stay within budget; a row larger than
   // the whole budget is not kept.
   void insert(const FormFactorRow& row);
+
+  // The cached rows, most recently used first: inserted back to front into an empty cache of the
+  // same budget, they make it again as it was.
+  std::vector<FormFactorRow> contents() const { return {order_.begin(), order_.end()}; }
 
   std::size_t bytes() const { return bytes_; }
   std::size_t rows() const { return order_.size(); }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <queue>
+#include <stdexcept>
 #include <string>
 
 #include "solver/formfactors/form_factor_cache.h"
@@ -47,6 +48,19 @@ void checkPatches(const Scene& scene, const std::vector<Patch>& patches) {
   }
   if (patches.empty())
     throw SceneError(scene.source, "the scene", "meshed into no patches", "give it polygons");
+}
+
+// Whether a progress has n patches and names no others (a row's, a record's shooters).
+bool fitsPatches(const SolverProgress& p, size_t n) {
+  auto patchIndex = [n](int j) { return j >= 0 && static_cast<size_t>(j) < n; };
+  auto rowFits = [&](const FormFactorRow& row) {
+    return patchIndex(row.shooter) && row.receivers.size() == row.formFactors.size() &&
+           std::all_of(row.receivers.begin(), row.receivers.end(), patchIndex);
+  };
+  auto recordFits = [&](const IterationRecord& r) { return std::all_of(r.shooters.begin(), r.shooters.end(), patchIndex); };
+  return p.radiosity.size() == n && p.unshotRadiosity.size() == n && p.unshotPowerW.size() == n &&
+         p.timesShot.size() == n && std::all_of(p.cachedRows.begin(), p.cachedRows.end(), rowFits) &&
+         std::all_of(p.history.begin(), p.history.end(), recordFits);
 }
 
 }  // namespace
@@ -248,12 +262,39 @@ bool ProgressiveSolver::done() const {
 }
 
 double ProgressiveSolver::convergence() const { return state_->convergence; }
+const Scene& ProgressiveSolver::scene() const { return state_->scene; }
 const std::vector<Patch>& ProgressiveSolver::patches() const { return state_->patches; }
 const std::vector<Rgb>& ProgressiveSolver::radiosity() const { return state_->radiosity; }
 const Ledger& ProgressiveSolver::ledger() const { return state_->ledger; }
 const std::vector<IterationRecord>& ProgressiveSolver::history() const { return state_->history; }
 const SolveOptions& ProgressiveSolver::options() const { return state_->options; }
 const EffectsPlan& ProgressiveSolver::effectsPlan() const { return state_->plan; }
+SolverProgress ProgressiveSolver::progress() const {
+  const State& s = *state_;
+  return {s.radiosity, s.unshotRadiosity, s.unshotPowerW, s.timesShot, s.ledger, s.history,
+          s.firstShotPowerW, s.convergence, s.exhausted, s.backend->machineState(), s.cache.contents()};
+}
+
+void ProgressiveSolver::restoreProgress(SolverProgress p) {
+  State& s = *state_;
+  const size_t n = s.patches.size();
+  if (!fitsPatches(p, n) || p.machineState.empty() != s.backend->machineState().empty())
+    throw std::invalid_argument(fmt::format(
+        "solver progress of another solve: not {} patches, shooters of other patches, or another back end", n));
+  s.backend->restoreMachineState(p.machineState);  // throws, changing nothing, for another machine's
+  s.radiosity = std::move(p.radiosity);
+  s.unshotRadiosity = std::move(p.unshotRadiosity);
+  s.unshotPowerW = std::move(p.unshotPowerW);
+  s.timesShot = std::move(p.timesShot);
+  s.ledger = p.ledger;
+  s.history = std::move(p.history);
+  s.firstShotPowerW = p.firstShotPowerW;
+  s.convergence = p.convergence;
+  s.exhausted = p.exhausted;
+  s.cache = FormFactorCache(s.options.formFactorCacheBytes);
+  for (auto row = p.cachedRows.rbegin(); row != p.cachedRows.rend(); ++row) s.cache.insert(*row);
+}
+
 ProjectionSummary ProgressiveSolver::projectionSummary() const { return state_->backend->projectionSummary(); }
 FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
 

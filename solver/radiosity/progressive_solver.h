@@ -3,6 +3,8 @@
 // patches with the most unshot power. The CLI loops step(); the viewer interleaves it with frames.
 // It plans the effects the scene calls for (options.effects) and skips the rest, exactly.
 #include <memory>
+#include <string>
+#include <optional>
 #include <vector>
 
 #include "solver/radiosity/effects_plan.h"
@@ -42,6 +44,24 @@ struct IterationRecord {
   std::shared_ptr<const ShotStats> shotStats;
 };
 
+// What a solve has accumulated beyond its scene and options: with them, all it takes to go on
+// bitwise as if it had never stopped (solver/radiosity/checkpoint.h saves it).
+struct SolverProgress {
+  std::vector<Rgb> radiosity;
+  std::vector<Rgb> unshotRadiosity;
+  std::vector<double> unshotPowerW;
+  std::vector<int> timesShot;  // per patch: for the reuse counts
+  Ledger ledger;
+  std::vector<IterationRecord> history;
+  double firstShotPowerW = 0.0;  // s_1 of C_i = 1 - s_i / s_1
+  double convergence = 0.0;
+  bool exhausted = false;
+  std::string machineState;  // the back end's (FormFactorBackend::machineState)
+  // The form-factor cache, most recently used first. On the mesh back end a row computed with
+  // other shooters beside it differs in its last bits, so which rows the cache serves matters.
+  std::vector<FormFactorRow> cachedRows;
+};
+
 class ProgressiveSolver {
  public:
   ProgressiveSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options);
@@ -53,6 +73,7 @@ class ProgressiveSolver {
   bool done() const;              // convergence >= until, max iterations, or nothing left to shoot
   double convergence() const;
 
+  const Scene& scene() const;
   const std::vector<Patch>& patches() const;
   const std::vector<Rgb>& radiosity() const;  // B per patch, W/m^2
   std::vector<Rgb> displayRadiosity() const;  // B plus the display-only ambient term
@@ -61,6 +82,11 @@ class ProgressiveSolver {
   // The options in force: as given, but with an analytic projection where occlusion is off.
   const SolveOptions& options() const;
   const EffectsPlan& effectsPlan() const;  // what is simulated and why
+
+  SolverProgress progress() const;
+  // Goes on from a progress of the same scene and options. Throws std::invalid_argument when its
+  // sizes are not this solve's.
+  void restoreProgress(SolverProgress progress);
 
   // What the projection surface catches (closed form and sum of delta form factors).
   ProjectionSummary projectionSummary() const;

@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstring>
+#include <filesystem>
 #include <functional>
 #include <thread>
+#include <unistd.h>
 
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
@@ -172,6 +175,55 @@ TEST(SolverThread, PauseHoldsTheIterationCount) {
   thread.step(1);
   const Snapshot after = waitFor(thread, [&](const SolverSnapshot& s) { return s.iteration() > before; });
   EXPECT_EQ(after->iteration(), before + 1);
+}
+
+// The panel's Save checkpoint, then radmesh-view --resume: the reopened solve shows the saved one
+// (iteration, curve, bitwise the radiosity) and goes on as if it had never stopped.
+TEST(SolverThread, SavesACheckpointAndReopensItWhereItStood) {
+  const auto dir = std::filesystem::temp_directory_path() / ("radmesh-viewer-checkpoint-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "view.ckpt").string();
+  SolveSetup setup = cornellSetup();
+  setup.options.backend = Backend::Mesh;
+  const Scene scene = loadScene("cornell");
+  auto bitwiseEqual = [](const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Rgb)) == 0;
+  };
+
+  SolverThread first(scene, setup, false);
+  first.step(4);
+  const Snapshot saved = waitFor(first, [](const SolverSnapshot& s) { return s.iteration() >= 4; });
+  first.saveCheckpoint(path);
+  const Snapshot confirmed = waitFor(first, [](const SolverSnapshot& s) { return !s.checkpointMessage.empty(); });
+  EXPECT_EQ(confirmed->checkpointMessage, "saved " + path + " after iteration 4");
+
+  SolverThread reopened(scene, setup, false, path);
+  const Snapshot resumed = waitFor(reopened, [](const SolverSnapshot& s) { return s.mesh != nullptr || !s.error.empty(); });
+  ASSERT_TRUE(resumed->error.empty()) << resumed->error;
+  EXPECT_EQ(resumed->iteration(), 4);
+  ASSERT_EQ(resumed->curve.size(), 4u);
+  EXPECT_EQ(resumed->curve.back().emulatedSeconds, saved->curve.back().emulatedSeconds);
+  EXPECT_TRUE(bitwiseEqual(resumed->vertexB, saved->vertexB));
+  EXPECT_EQ(resumed->checkpointMessage, "resumed from " + path);
+
+  first.step(3);
+  reopened.step(3);
+  const Snapshot a = waitFor(first, [](const SolverSnapshot& s) { return s.iteration() >= 7; });
+  const Snapshot b = waitFor(reopened, [](const SolverSnapshot& s) { return s.iteration() >= 7; });
+  EXPECT_TRUE(bitwiseEqual(a->vertexB, b->vertexB));
+  EXPECT_EQ(a->lastShooters, b->lastShooters);
+
+  // A restart solves from scratch; a checkpoint of other options is refused, naming what differs.
+  reopened.restart(setup);
+  EXPECT_EQ(waitFor(reopened, [&](const SolverSnapshot& s) { return s.generation > b->generation && s.mesh; })
+                ->iteration(),
+            0);
+  SolveSetup native = setup;
+  native.options.backend = Backend::Native;
+  SolverThread refused(scene, native, false, path);
+  const Snapshot failed = waitFor(refused, [](const SolverSnapshot& s) { return !s.error.empty(); });
+  EXPECT_NE(failed->error.find("--backend mesh there, native here"), std::string::npos) << failed->error;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -1,8 +1,13 @@
 #include "solver/backends/mesh/mesh_backend.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cstring>
+#include <stdexcept>
 #include <thread>
+#include <type_traits>
 
 #include "emulator/reduce.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
@@ -122,6 +127,21 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
   }
   return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors,
                               {shot.seenFromFront.data() + base, static_cast<std::size_t>(n)});
+}
+
+// The running counts are plain numbers: their bytes are the state, doubles bitwise.
+static_assert(std::is_trivially_copyable_v<emu::CostCounts>);
+
+std::string MeshBackend::machineState() const {
+  const emu::CostCounts costs = machine_.costs();
+  return std::string(reinterpret_cast<const char*>(&costs), sizeof costs);
+}
+
+void MeshBackend::restoreMachineState(const std::string& state) {
+  if (state.size() != sizeof(emu::CostCounts))
+    throw std::invalid_argument(fmt::format("the mesh back end's state is {} bytes, not {}", state.size(),
+                                            sizeof(emu::CostCounts)));
+  std::memcpy(&machine_.counters(), state.data(), state.size());
 }
 
 ItemBuffer MeshBackend::singlePlaneItemBuffer(int shooter) {

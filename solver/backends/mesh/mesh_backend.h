@@ -38,6 +38,8 @@ class MeshBackend final : public FormFactorBackend {
   ProjectionSummary projectionSummary() const override;
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
   std::shared_ptr<const ShotStats> lastShotStats() const override { return lastShotStats_; }
+  std::string machineState() const override;
+  void restoreMachineState(const std::string& state) override;
 
   // The shooting-patch selection phase on the mesh: k reduceMax over the patches' unshot power,
   // ties to the lower tie rank; patches without unshot power are never chosen. Strongest first.

@@ -1,0 +1,354 @@
+#include "solver/radiosity/checkpoint.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <bit>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+// The file: magic (8 bytes), version (u32), payload size (u64), FNV-1a 64 of the payload (u64),
+// payload. Numbers are little-endian as the host keeps them, doubles bitwise.
+static_assert(std::endian::native == std::endian::little, "checkpoints are written little-endian");
+
+namespace {
+
+constexpr char kMagic[8] = {'R', 'A', 'D', 'M', 'E', 'S', 'H', 'C'};
+constexpr std::size_t kHeaderBytes = sizeof kMagic + sizeof(std::uint32_t) + 2 * sizeof(std::uint64_t);
+constexpr const char* kStartOver = "resume from an earlier checkpoint, or solve from scratch without --resume";
+
+std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t hash = 0xcbf29ce484222325ull) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 0x100000001b3ull;
+  return hash;
+}
+
+// The options that change the answer, as flag and value: compared as text, they name what differs.
+// (--until, --max-iterations, --threads and the display-only ambient term do not; --cache-mb
+// does on the mesh back end, where a row computed beside other shooters differs in its last bits.)
+using OptionList = std::vector<std::pair<std::string, std::string>>;
+OptionList answerOptions(const SolveOptions& o) {
+  OptionList list = {{"--backend", toString(o.backend)},
+                     {"--projection", toString(o.projection)},
+                     {"--resolution", std::to_string(o.resolution)},
+                     {"--ratio", fmt::format("{}", o.ratio)},  // shortest text that reads back bitwise
+                     {"--shooters", std::to_string(o.shooters)},
+                     {"--effects", toString(o.effects)},
+                     {"sub-pixel receivers", o.subPixelReceivers ? "on" : "off"}};
+  if (o.backend == Backend::Mesh) {
+    list.push_back({"--mapping", toString(o.mapping)});
+    list.push_back({"--cache-mb", fmt::format("{}", o.formFactorCacheBytes / 1048576.0)});
+  }
+  return list;
+}
+
+// What a checkpoint is of: resuming needs the same.
+struct Identity {
+  std::uint64_t sceneHash = 0;
+  std::string sceneSource;
+  std::uint64_t patches = 0;
+  OptionList options;
+};
+
+// What a checkpoint holds besides the header.
+struct Contents {
+  Identity identity;
+  SolverProgress progress;
+};
+
+// One field list per type serves writing and reading: transfer(io, x) with io a Writer or a Reader.
+class Writer {
+ public:
+  std::string bytes;
+  template <class T> void scalar(T& v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof v); }
+  void raw(char* data, std::size_t n) { bytes.append(data, n); }
+  std::size_t count(std::size_t n) {
+    std::uint64_t c = n;
+    scalar(c);
+    return n;
+  }
+  static constexpr bool reading = false;
+};
+
+struct Malformed {};  // the payload ends early or holds an impossible count (caught as corrupt)
+
+class Reader {
+ public:
+  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
+  template <class T> void scalar(T& v) { raw(reinterpret_cast<char*>(&v), sizeof v); }
+  void raw(char* data, std::size_t n) {
+    if (n > bytes_.size() - at_) throw Malformed{};
+    std::memcpy(data, bytes_.data() + at_, n);
+    at_ += n;
+  }
+  std::size_t count(std::size_t) {
+    std::uint64_t c = 0;
+    scalar(c);
+    if (c > bytes_.size() - at_) throw Malformed{};  // every element takes at least a byte
+    return static_cast<std::size_t>(c);
+  }
+  bool atEnd() const { return at_ == bytes_.size(); }
+  static constexpr bool reading = true;
+
+ private:
+  std::string_view bytes_;
+  std::size_t at_ = 0;
+};
+
+template <class Io, class T>
+  requires(std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
+void transfer(Io& io, T& v) {
+  io.scalar(v);
+}
+template <class Io> void transfer(Io& io, bool& v) {
+  std::uint8_t b = v ? 1 : 0;
+  io.scalar(b);
+  if (b > 1) throw Malformed{};
+  v = b == 1;
+}
+template <class Io> void transfer(Io& io, std::string& s) {
+  s.resize(io.count(s.size()));
+  io.raw(s.data(), s.size());
+}
+template <class Io> void transfer(Io& io, Rgb& c);
+template <class Io> void transfer(Io& io, Ledger& l);
+template <class Io> void transfer(Io& io, nlohmann::json& j);
+template <class Io> void transfer(Io& io, ShotStats& s);
+template <class Io> void transfer(Io& io, IterationRecord& r);
+template <class Io> void transfer(Io& io, FormFactorRow& r);
+template <class Io> void transfer(Io& io, Contents& c);
+template <class Io, class A, class B> void transfer(Io& io, std::pair<A, B>& p);
+template <class Io, class T> void transfer(Io& io, std::vector<T>& v);
+template <class Io, class T> void transfer(Io& io, std::optional<T>& v);
+template <class Io, class T> void transfer(Io& io, std::shared_ptr<const T>& v);
+
+template <class Io, class... Field> void fields(Io& io, Field&... field) { (transfer(io, field), ...); }
+
+template <class Io, class A, class B> void transfer(Io& io, std::pair<A, B>& p) { fields(io, p.first, p.second); }
+template <class Io, class T> void transfer(Io& io, std::vector<T>& v) {
+  v.resize(io.count(v.size()));
+  for (T& x : v) transfer(io, x);
+}
+template <class Io, class T> void transfer(Io& io, std::optional<T>& v) {
+  bool has = v.has_value();
+  transfer(io, has);
+  if (Io::reading) v = has ? std::optional<T>(T{}) : std::nullopt;
+  if (has) transfer(io, *v);
+}
+template <class Io, class T> void transfer(Io& io, std::shared_ptr<const T>& v) {
+  std::optional<T> value = v ? std::optional<T>(*v) : std::nullopt;
+  transfer(io, value);
+  if (Io::reading) v = value ? std::make_shared<const T>(std::move(*value)) : nullptr;
+}
+template <class Io> void transfer(Io& io, Rgb& c) { fields(io, c.r, c.g, c.b); }
+template <class Io> void transfer(Io& io, Ledger& l) {
+  fields(io, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces);
+}
+// JSON as its text: nlohmann writes the shortest decimal that reads back to the same double.
+template <class Io> void transfer(Io& io, nlohmann::json& j) {
+  std::string text = Io::reading ? std::string() : j.dump();
+  transfer(io, text);
+  if (Io::reading) {
+    j = nlohmann::json::parse(text, nullptr, false);
+    if (j.is_discarded()) throw Malformed{};
+  }
+}
+template <class Io> void transfer(Io& io, ShotStats& s) { fields(io, s.machine, s.machineSeconds, s.figures); }
+template <class Io> void transfer(Io& io, IterationRecord& r) {
+  fields(io, r.iteration, r.shooters, r.shotPowerW, r.convergence, r.seconds, r.capturedFraction, r.reusedRows,
+         r.reusedRowsTotal, r.cacheHits, r.ledger, r.shotStats);
+}
+template <class Io> void transfer(Io& io, FormFactorRow& r) {
+  fields(io, r.shooter, r.receivers, r.formFactors, r.backFaces, r.capturedFraction, r.reused);
+}
+template <class Io> void transfer(Io& io, Contents& c) {
+  Identity& i = c.identity;
+  SolverProgress& p = c.progress;
+  fields(io, i.sceneHash, i.sceneSource, i.patches, i.options, p.radiosity, p.unshotRadiosity, p.unshotPowerW,
+         p.timesShot, p.ledger, p.history, p.firstShotPowerW, p.convergence, p.exhausted, p.machineState,
+         p.cachedRows);
+}
+
+std::string errnoText() { return std::strerror(errno); }
+
+std::runtime_error writeError(const std::string& path, const std::string& what) {
+  return std::runtime_error(fmt::format("cannot write checkpoint {}: {}: {} (fix: give --checkpoint a path in a "
+                                        "writable folder with room)",
+                                        path, what, errnoText()));
+}
+
+// A new temporary file beside path (named by the pid and a count, with the permissions the umask
+// gives), open for writing.
+struct TempFile {
+  std::string path;
+  int fd = -1;
+};
+TempFile createTempBeside(const std::string& path) {
+  namespace fs = std::filesystem;
+  static std::atomic<unsigned> count{0};
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  TempFile temp{(folder / fmt::format("{}.tmp-{}-{}", target.filename().string(), ::getpid(), count++)).string()};
+  temp.fd = ::open(temp.path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (temp.fd < 0) throw writeError(path, "cannot create " + temp.path);
+  return temp;
+}
+
+// Writes bytes to a new temporary file beside path, flushes it to disk and renames it over path.
+void writeAtomically(const std::string& path, const std::string& bytes) {
+  const TempFile temp = createTempBeside(path);
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(temp.fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  const bool flushed = done == bytes.size() && ::fsync(temp.fd) == 0;
+  const int writeErrno = errno;
+  ::close(temp.fd);
+  std::string failed;
+  if (!flushed) {
+    errno = writeErrno;
+    failed = "writing " + temp.path;
+  } else if (std::rename(temp.path.c_str(), path.c_str()) != 0) {
+    failed = "renaming " + temp.path;
+  }
+  if (!failed.empty()) {
+    const std::runtime_error error = writeError(path, failed);
+    ::unlink(temp.path.c_str());
+    throw error;
+  }
+  // The rename itself reaches the disk with the folder.
+  const std::filesystem::path folder = std::filesystem::path(temp.path).parent_path();
+  const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
+}
+
+Identity identityOf(const ProgressiveSolver& solver) {
+  return {meshedSceneHash(solver.scene(), solver.patches()), solver.scene().source, solver.patches().size(),
+          answerOptions(solver.options())};
+}
+
+// "--resolution 128 there, 256 here; ..." for the options that differ; empty if none.
+std::string optionDifferences(const OptionList& saved, const OptionList& now) {
+  std::string text;
+  for (const auto& [flag, value] : now) {
+    std::string there = "not set";
+    for (const auto& [savedFlag, savedValue] : saved)
+      if (savedFlag == flag) there = savedValue;
+    if (there != value) text += fmt::format("{}{} {} there, {} here", text.empty() ? "" : "; ", flag, there, value);
+  }
+  return text;
+}
+
+}  // namespace
+
+std::uint64_t meshedSceneHash(const Scene& scene, const std::vector<Patch>& patches) {
+  std::uint64_t hash = fnv1a(nullptr, 0);
+  auto add = [&](const auto& value) { hash = fnv1a(&value, sizeof value, hash); };
+  add(static_cast<std::uint64_t>(patches.size()));
+  for (const Patch& p : patches) {
+    add(p.vertexCount);
+    for (int v = 0; v < p.vertexCount; ++v)
+      for (int axis = 0; axis < 3; ++axis) add(p.vertices[v][axis]);
+    const Material& m = scene.materials.at(p.material);
+    for (int c = 0; c < 3; ++c) add(m.rho[c]);
+    for (int c = 0; c < 3; ++c) add(m.emittance[c]);
+  }
+  return hash;
+}
+
+void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
+  Contents contents{identityOf(solver), solver.progress()};
+  Writer payload;
+  transfer(payload, contents);
+  Writer file;
+  file.bytes.append(kMagic, sizeof kMagic);
+  std::uint32_t version = kCheckpointVersion;
+  std::uint64_t size = payload.bytes.size();
+  std::uint64_t checksum = fnv1a(payload.bytes.data(), payload.bytes.size());
+  file.scalar(version);
+  file.scalar(size);
+  file.scalar(checksum);
+  writeAtomically(path, file.bytes + payload.bytes);
+}
+
+void checkCheckpointWritable(const std::string& path) {
+  const TempFile temp = createTempBeside(path);
+  ::close(temp.fd);
+  ::unlink(temp.path.c_str());
+}
+
+void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {
+  auto refuse = [&](const std::string& problem, const std::string& fix) { return SceneError(path, "", problem, fix); };
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw refuse("cannot be read: " + errnoText(), "give --resume a checkpoint written by --checkpoint");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    throw refuse("is not a radmesh checkpoint (it does not start with RADMESHC)",
+                 "give --resume a checkpoint written by --checkpoint");
+  Reader header(std::string_view(bytes).substr(sizeof kMagic, kHeaderBytes - sizeof kMagic));
+  std::uint32_t version = 0;
+  std::uint64_t size = 0, checksum = 0;
+  try {
+    header.scalar(version);
+    if (version != kCheckpointVersion)
+      throw refuse(fmt::format("is a version {} checkpoint; this radmesh reads version {}", version, kCheckpointVersion),
+                   "resume with the radmesh that wrote it, or solve from scratch without --resume");
+    header.scalar(size);
+    header.scalar(checksum);
+  } catch (const Malformed&) {
+    throw refuse(fmt::format("is truncated: {} bytes, shorter than its {}-byte header", bytes.size(), kHeaderBytes),
+                 kStartOver);
+  }
+  if (bytes.size() - kHeaderBytes != size)
+    throw refuse(fmt::format("is truncated or has bytes appended: {} bytes, its header says {}", bytes.size(),
+                             kHeaderBytes + size),
+                 kStartOver);
+  const std::string_view payload = std::string_view(bytes).substr(kHeaderBytes);
+  if (fnv1a(payload.data(), payload.size()) != checksum)
+    throw refuse("is corrupted: its checksum does not match its contents", kStartOver);
+  Contents saved;
+  try {
+    Reader reader(payload);
+    transfer(reader, saved);
+    if (!reader.atEnd()) throw Malformed{};
+  } catch (const Malformed&) {
+    throw refuse("is corrupted: its contents do not parse although its checksum matches", kStartOver);
+  }
+
+  const Identity& was = saved.identity;
+  const Identity now = identityOf(solver);
+  if (was.sceneHash != now.sceneHash || was.patches != now.patches)
+    throw refuse(fmt::format("was written for another meshed scene ({}, {} patches; here {}, {} patches): the "
+                             "patches' vertices, materials or emission differ",
+                             was.sceneSource, was.patches, now.sceneSource, now.patches),
+                 "resume with the scene and --cell it was written with, or solve from scratch without --resume");
+  if (const std::string differences = optionDifferences(was.options, now.options); !differences.empty())
+    throw refuse("was written with other options: " + differences,
+                 "resume with the options it was written with, or solve from scratch without --resume");
+  try {
+    solver.restoreProgress(std::move(saved.progress));
+  } catch (const std::invalid_argument& e) {
+    throw refuse(fmt::format("is corrupted: {}", e.what()), kStartOver);
+  }
+}
+
+}  // namespace radmesh

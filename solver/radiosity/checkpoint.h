@@ -1,0 +1,35 @@
+#pragma once
+// Checkpoints of a solve (docs/checkpoints.md): the solver's progress, the options that change
+// its answer and a hash of its meshed scene, in one binary file that names its format, its
+// version and its size and ends in no surprise (a checksum over the payload). Resuming from one
+// goes on bitwise as if the solve had never stopped.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "solver/meshing/patch.h"
+#include "solver/radiosity/progressive_solver.h"
+#include "solver/scene/scene.h"
+
+namespace radmesh {
+
+inline constexpr std::uint32_t kCheckpointVersion = 1;
+
+// Writes the solver's state to path atomically: a temporary file in the same folder, flushed to
+// disk, then renamed over path, so that a kill at any moment leaves the last good checkpoint.
+// Throws std::runtime_error naming the file when it cannot.
+void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver);
+
+// Throws as writeCheckpoint would when path's folder cannot take a file: to know before solving.
+void checkCheckpointWritable(const std::string& path);
+
+// Puts the state saved in path into a solver just made of the same meshed scene and the same
+// options that change the answer. Throws SceneError naming the file, what differs and the fix for
+// a checkpoint of another scene or other options, or a truncated or corrupted one; the solver is
+// then untouched.
+void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver);
+
+// FNV-1a 64 over the patches' vertices and their materials' reflectance and emission, bitwise.
+std::uint64_t meshedSceneHash(const Scene& scene, const std::vector<Patch>& patches);
+
+}  // namespace radmesh

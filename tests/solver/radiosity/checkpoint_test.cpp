@@ -1,0 +1,226 @@
+#include "solver/radiosity/checkpoint.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "solver/io/scene_loader.h"
+#include "solver/meshing/meshing.h"
+#include "solver/scene/scene_error.h"
+#include "tests/solver/io/gltf_test_file.h"
+#include "tests/solver/solver_test_helpers.h"
+
+namespace radmesh {
+namespace {
+
+using test::TempDir;
+
+struct Meshed {
+  Scene scene;
+  std::vector<Patch> patches;
+};
+
+Meshed cornell(double cellM = 0.381) {
+  Meshed m{loadScene("cornell"), {}};
+  m.patches = meshScene(m.scene, cellM);
+  return m;
+}
+
+SolveOptions options(Backend backend, int iterations) {
+  SolveOptions o = test::fixedIterations(test::optionsFor(Projection::Plane, 64, 2), iterations);
+  o.backend = backend;
+  o.shooters = 2;
+  o.formFactorCacheBytes = 64 << 20;  // the cache goes on as it was: the same rows served after the stop
+  return o;
+}
+
+std::unique_ptr<ProgressiveSolver> solved(const Meshed& m, const SolveOptions& o) {
+  auto solver = std::make_unique<ProgressiveSolver>(m.scene, m.patches, o);
+  while (!solver->done()) solver->step();
+  return solver;
+}
+
+bool bitwiseEqual(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Rgb)) == 0;
+}
+
+std::string readBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// Stops after `first` iterations, checkpoints, resumes in a new solver and goes on to `total`:
+// bitwise the solve that never stopped.
+// The figures but the host's wall time, which no two runs share.
+nlohmann::json withoutHostSeconds(nlohmann::json figures) {
+  if (figures.is_object()) {
+    figures.erase("host_seconds");
+    for (auto& [key, value] : figures.items()) value = withoutHostSeconds(value);
+  } else if (figures.is_array()) {
+    for (auto& value : figures) value = withoutHostSeconds(value);
+  }
+  return figures;
+}
+
+void expectResumeIsBitwiseStraight(Backend backend, int first, int total) {
+  TempDir dir;
+  const auto path = (dir / "solve.ckpt").string();
+  const Meshed m = cornell();
+  const auto straight = solved(m, options(backend, total));
+  ASSERT_EQ(static_cast<int>(straight->history().size()), total);
+  writeCheckpoint(path, *solved(m, options(backend, first)));
+
+  ProgressiveSolver resumed(m.scene, m.patches, options(backend, total));
+  resumeFromCheckpoint(path, resumed);
+  ASSERT_EQ(static_cast<int>(resumed.history().size()), first);
+  while (!resumed.done()) resumed.step();
+
+  ASSERT_EQ(resumed.history().size(), straight->history().size());
+  EXPECT_TRUE(bitwiseEqual(resumed.radiosity(), straight->radiosity()));
+  EXPECT_TRUE(bitwiseEqual(resumed.displayRadiosity(), straight->displayRadiosity()));
+  EXPECT_EQ(std::memcmp(&resumed.ledger(), &straight->ledger(), sizeof(Ledger)), 0);
+  for (size_t i = 0; i < straight->history().size(); ++i) {
+    const IterationRecord& a = resumed.history()[i];
+    const IterationRecord& b = straight->history()[i];
+    EXPECT_EQ(a.shooters, b.shooters) << "iteration " << i + 1;
+    EXPECT_EQ(a.convergence, b.convergence) << "iteration " << i + 1;
+    EXPECT_EQ(a.reusedRowsTotal, b.reusedRowsTotal) << "iteration " << i + 1;
+    EXPECT_EQ(a.cacheHits, b.cacheHits) << "iteration " << i + 1;
+    ASSERT_EQ(a.shotStats != nullptr, b.shotStats != nullptr) << "iteration " << i + 1;
+    // The emulated machine goes on from its saved counts: each shot costs bitwise the same.
+    if (a.shotStats && b.shotStats) {
+      EXPECT_EQ(a.shotStats->machineSeconds, b.shotStats->machineSeconds) << "iteration " << i + 1;
+      EXPECT_EQ(withoutHostSeconds(a.shotStats->figures).dump(), withoutHostSeconds(b.shotStats->figures).dump())
+          << "iteration " << i + 1;
+    }
+  }
+  int hitsAfterTheStop = 0;
+  for (int i = first; i < total; ++i) hitsAfterTheStop += straight->history()[i].cacheHits;
+  EXPECT_GT(hitsAfterTheStop, 0) << "no row served from the cache after the stop: the saved cache untested";
+}
+
+TEST(Checkpoint, NativeResumeIsBitwiseTheStraightSolve) { expectResumeIsBitwiseStraight(Backend::Native, 40, 80); }
+
+TEST(Checkpoint, MeshResumeIsBitwiseTheStraightSolveWithTheSameEmulatedCosts) {
+  expectResumeIsBitwiseStraight(Backend::Mesh, 12, 24);
+}
+
+TEST(Checkpoint, WritesAtomicallyLeavingNoTemporaryFile) {
+  TempDir dir;
+  const Meshed m = cornell();
+  const auto solver = solved(m, options(Backend::Native, 3));
+  writeCheckpoint((dir / "a.ckpt").string(), *solver);
+  writeCheckpoint((dir / "a.ckpt").string(), *solver);  // over the last one
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+    EXPECT_EQ(entry.path().filename(), "a.ckpt");
+    ++files;
+  }
+  EXPECT_EQ(files, 1);
+  EXPECT_THROW(writeCheckpoint((dir / "no-such-folder" / "a.ckpt").string(), *solver), std::runtime_error);
+}
+
+// Resuming from `path` into a fresh solver of m and o is refused with a message naming the file
+// and containing `says`; the solver is left as it was.
+void expectRefused(const std::string& path, const Meshed& m, const SolveOptions& o, const std::string& says) {
+  ProgressiveSolver solver(m.scene, m.patches, o);
+  try {
+    resumeFromCheckpoint(path, solver);
+    ADD_FAILURE() << "accepted; expected: " << says;
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(says), std::string::npos) << message;
+    EXPECT_NE(message.find("fix:"), std::string::npos) << message;
+  }
+  EXPECT_TRUE(solver.history().empty());
+}
+
+class CheckpointRefusal : public ::testing::Test {
+ protected:
+  void SetUp() override { writeCheckpoint(path, *solved(m, options(Backend::Native, 5))); }
+  TempDir dir;
+  const std::string path = (dir / "solve.ckpt").string();
+  const Meshed m = cornell();
+};
+
+TEST_F(CheckpointRefusal, OfAnotherScene) {
+  const Meshed finer = cornell(0.2);
+  ASSERT_NE(finer.patches.size(), m.patches.size());
+  expectRefused(path, finer, options(Backend::Native, 10), "another meshed scene");
+  Meshed brighter = m;  // the same patches, another emission
+  for (Material& material : brighter.scene.materials) material.emittance *= 2.0;
+  expectRefused(path, brighter, options(Backend::Native, 10), "another meshed scene");
+}
+
+TEST_F(CheckpointRefusal, OfOtherOptionsNamingThem) {
+  SolveOptions other = options(Backend::Native, 10);
+  other.resolution = 128;
+  expectRefused(path, m, other, "--resolution 64 there, 128 here");
+  other = options(Backend::Mesh, 10);
+  expectRefused(path, m, other, "--backend native there, mesh here");
+  // Options that do not change the answer are free to change.
+  other = options(Backend::Native, 10);
+  other.threads = 1;
+  other.until = 0.5;
+  other.formFactorCacheBytes = 0;
+  ProgressiveSolver solver(m.scene, m.patches, other);
+  resumeFromCheckpoint(path, solver);
+  EXPECT_EQ(solver.history().size(), 5u);
+}
+
+TEST_F(CheckpointRefusal, Truncated) {
+  const std::string bytes = readBytes(path);
+  writeBytes(path, bytes.substr(0, bytes.size() - 1));
+  expectRefused(path, m, options(Backend::Native, 10), "is truncated");
+  writeBytes(path, bytes.substr(0, 20));
+  expectRefused(path, m, options(Backend::Native, 10), "is truncated");
+  writeBytes(path, "");
+  expectRefused(path, m, options(Backend::Native, 10), "is not a radmesh checkpoint");
+}
+
+TEST_F(CheckpointRefusal, OneFlippedByte) {
+  const std::string bytes = readBytes(path);
+  for (size_t at : {size_t{40}, bytes.size() / 2, bytes.size() - 1}) {
+    std::string flipped = bytes;
+    flipped[at] = static_cast<char>(flipped[at] ^ 0x10);
+    writeBytes(path, flipped);
+    expectRefused(path, m, options(Backend::Native, 10), "is corrupted");
+  }
+  std::string otherVersion = bytes;
+  otherVersion[8] = 2;
+  writeBytes(path, otherVersion);
+  expectRefused(path, m, options(Backend::Native, 10), "is a version 2 checkpoint");
+}
+
+TEST(Checkpoint, RestoreRefusesAProgressOfOtherPatchesAndLeavesTheSolverAsItWas) {
+  const Meshed m = cornell();
+  auto solver = solved(m, options(Backend::Native, 3));
+  SolverProgress other = solver->progress();
+  other.history.back().shooters.push_back(static_cast<int>(m.patches.size()));
+  EXPECT_THROW(solver->restoreProgress(other), std::invalid_argument);
+  other = solver->progress();
+  other.timesShot.pop_back();
+  EXPECT_THROW(solver->restoreProgress(other), std::invalid_argument);
+  EXPECT_EQ(solver->history().size(), 3u);
+  EXPECT_EQ(solver->history().back().shooters.size(), 2u);
+}
+
+TEST(Checkpoint, MeshedSceneHashFollowsVerticesAndEmissionBitwise) {
+  Meshed a = cornell();
+  const std::uint64_t hash = meshedSceneHash(a.scene, a.patches);
+  EXPECT_EQ(meshedSceneHash(a.scene, a.patches), hash);
+  a.patches[7].vertices[2].x = std::nextafter(a.patches[7].vertices[2].x, 1e9);
+  EXPECT_NE(meshedSceneHash(a.scene, a.patches), hash);
+}
+
+}  // namespace
+}  // namespace radmesh
