@@ -202,7 +202,7 @@ TEST(SolverThread, SavesACheckpointAndReopensItWhereItStood) {
   ASSERT_TRUE(resumed->error.empty()) << resumed->error;
   EXPECT_EQ(resumed->iteration(), 4);
   ASSERT_EQ(resumed->curve.size(), 4u);
-  EXPECT_EQ(resumed->curve.back().emulatedSeconds, saved->curve.back().emulatedSeconds);
+  EXPECT_EQ(resumed->curve.back().machineSeconds, saved->curve.back().machineSeconds);
   EXPECT_TRUE(bitwiseEqual(resumed->vertexB, saved->vertexB));
   EXPECT_EQ(resumed->checkpointMessage, "resumed from " + path);
 
