@@ -6,6 +6,7 @@
 
 #include "cli/bench.h"
 #include "cli/commands.h"
+#include "cli/output_path.h"
 #include "cli/stats_json.h"
 
 namespace radmesh::cli {
@@ -29,6 +30,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->callback([args, json] {
+    checkOutputPath("--json", *json, ".json", "the figures are JSON");
     const nlohmann::json result = benchSolve(*args);
     if (!json->empty()) writeJson(*json, result), fmt::print("wrote {}\n", *json);
   });

@@ -25,6 +25,7 @@ struct SolveSetup {
 struct ConvergencePoint {
   int iteration = 0;
   double convergence = 0.0;      // C after this iteration
+  double unshotFraction = 0.0;   // unshot power / emitted after this iteration
   double hostSeconds = 0.0;      // solve time up to and including this iteration
   double emulatedSeconds = 0.0;  // emulated MP-1 time so far (mesh back end; else 0)
   int depthAMax = -1;            // max item-buffer depth at stage (a) of this shot; -1: not known
@@ -49,7 +50,8 @@ struct SolverSnapshot {
   // The mesh back end's last shot: depth histograms at stages (a), (b) and emulated phase costs.
   std::shared_ptr<const MeshShotStats> lastMeshShot;
   bool playing = false;
-  bool done = false;
+  bool done = false;       // the stopping rule is met (steps may still go past it)
+  bool exhausted = false;  // nothing is left to shoot
   std::string error;                         // why the last restart failed, else empty
 
   int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }

@@ -87,6 +87,19 @@ void SolverThread::restart(const SolveSetup& setup) {
   wake_.notify_all();
 }
 
+void SolverThread::setStoppingRule(double until, double untilUnshot) {
+  {
+    std::lock_guard lock(mutex_);
+    SolveOptions checked = pendingSetup_.options;
+    checked.until = until;
+    checked.untilUnshot = untilUnshot;
+    validateOptions(checked);
+    pendingSetup_.options = checked;
+    stoppingRulePending_ = true;
+  }
+  wake_.notify_all();
+}
+
 void SolverThread::setItemBufferWanted(bool wanted) {
   {
     std::lock_guard lock(mutex_);
@@ -104,7 +117,7 @@ void SolverThread::loop() {
   std::unique_ptr<Run> run;
   Clock::time_point lastPublish{};
   for (;;) {
-    enum class Work { Restart, Step, ItemBuffer } work = Work::Step;
+    enum class Work { Restart, StoppingRule, Step, ItemBuffer } work = Work::Step;
     SolveSetup setup;
     std::uint64_t generation = 0;
     {
@@ -113,17 +126,25 @@ void SolverThread::loop() {
       auto itemBufferMissing = [&] {
         return run && itemBufferWanted_ && lastShooter(*run->solver) != run->itemBufferShooter;
       };
+      // Playing stops at the stopping rule; a step asked for goes past it, until nothing is left.
+      auto canStep = [&] {
+        return run && ((playing_ && !run->solver->done()) || (pendingSteps_ > 0 && !run->solver->exhausted()));
+      };
       wake_.wait(lock, [&] {
-        const bool canStep = run && !run->solver->done();
-        return stop_ || restartPending_ || (canStep && (playing_ || pendingSteps_ > 0)) || itemBufferMissing();
+        return stop_ || restartPending_ || (run && stoppingRulePending_) || canStep() || itemBufferMissing();
       });
       if (stop_) return;
       if (restartPending_) {
         work = Work::Restart;
         restartPending_ = false;
+        stoppingRulePending_ = false;  // the new setup carries it
         setup = pendingSetup_;
         generation = ++generation_;
-      } else if (run && !run->solver->done() && (playing_ || pendingSteps_ > 0)) {
+      } else if (stoppingRulePending_) {
+        work = Work::StoppingRule;
+        stoppingRulePending_ = false;
+        setup = pendingSetup_;
+      } else if (canStep()) {
         if (pendingSteps_ > 0) --pendingSteps_;
       } else {
         work = Work::ItemBuffer;
@@ -136,6 +157,13 @@ void SolverThread::loop() {
       lastPublish = Clock::now();
       continue;
     }
+    if (work == Work::StoppingRule) {
+      run->setup.options.until = setup.options.until;
+      run->setup.options.untilUnshot = setup.options.untilUnshot;
+      run->solver->setStoppingRule(setup.options.until, setup.options.untilUnshot);  // validated by the caller
+      publish(*run);
+      continue;
+    }
     if (work == Work::ItemBuffer) {
       refreshItemBuffer(*run, true);
       publish(*run);
@@ -146,6 +174,7 @@ void SolverThread::loop() {
       ConvergencePoint point = run->curve.empty() ? ConvergencePoint{} : run->curve.back();
       point.iteration = record.iteration;
       point.convergence = record.convergence;
+      point.unshotFraction = record.ledger.unshotFraction();
       point.hostSeconds += record.seconds;
       point.depthAMax = point.depthBMax = -1;
       if (record.meshShot) {
@@ -163,10 +192,10 @@ void SolverThread::loop() {
     bool moreToDo = false;
     {
       std::lock_guard lock(mutex_);
-      moreToDo = (playing_ || pendingSteps_ > 0) && !restartPending_;
+      moreToDo = ((playing_ && !run->solver->done()) || pendingSteps_ > 0) && !restartPending_;
     }
     // While iterating, publish at the UI's pace; the last iteration before a pause always.
-    const bool finished = !moreToDo || run->solver->done();
+    const bool finished = !moreToDo || run->solver->exhausted();
     if (finished || Clock::now() - lastPublish >= kPublishInterval) {
       refreshItemBuffer(*run, finished);
       publish(*run);
@@ -228,6 +257,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->curve = run.curve;
   snapshot->ledger = run.solver->ledger();
   snapshot->done = run.solver->done();
+  snapshot->exhausted = run.solver->exhausted();
   std::lock_guard lock(mutex_);
   snapshot->playing = playing_;
   latest_ = std::move(snapshot);

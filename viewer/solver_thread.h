@@ -21,7 +21,10 @@ class SolverThread {
 
   void play();
   void pause();               // also cancels pending steps
-  void step(int iterations);  // this many more iterations, then pause
+  void step(int iterations);  // this many more iterations, then pause; also past the stopping rule
+  // Changes the stopping rule of the solve under way (and of later restarts), without restarting
+  // it: a stricter rule lets a stopped solve play on. Throws OptionError on values out of range.
+  void setStoppingRule(double until, double untilUnshot);
   void restart(const SolveSetup& setup);  // remesh and solve from scratch, keeping play/pause
   // Whether snapshots should carry the last shooter's item buffer (it costs a projection).
   void setItemBufferWanted(bool wanted);
@@ -44,6 +47,7 @@ class SolverThread {
   bool playing_ = false;
   int pendingSteps_ = 0;
   bool restartPending_ = true;
+  bool stoppingRulePending_ = false;
   bool itemBufferWanted_ = false;
   SolveSetup pendingSetup_;
   std::uint64_t generation_ = 0;

@@ -78,6 +78,15 @@ class FrameStats {
 
 }  // namespace
 
+SolveSetup viewerSetup() {
+  SolveSetup setup;
+  applyPreset(Preset::Paper, setup.options);
+  setup.options.backend = Backend::Mesh;
+  setup.options.until = 1.0;
+  setup.options.untilUnshot = 0.01;
+  return setup;
+}
+
 int runViewer(const ViewerArgs& args) {
   std::vector<std::string> warnings;
   Scene scene = loadScene(args.scene, &warnings);
