@@ -134,7 +134,7 @@ void run(const RenderArgs& args) {
   const auto start = Clock::now();
   OffscreenRenderer renderer(solved->mesh, size);
   OffscreenShading shading;
-  shading.exposure = args.exposureEv ? std::exp2(*args.exposureEv) : autoExposure(solved->vertexB);
+  shading.exposure = args.exposureEv ? std::exp2(*args.exposureEv) : autoExposure(solved->mesh, solved->vertexB);
   fmt::print("exposure {:+.2f} EV ({}; --exposure sets it)\n", std::log2(*shading.exposure),
              args.exposureEv ? "given" : "automatic");
   Image image = renderer.render(solved->vertexB, view, shading);

@@ -33,7 +33,7 @@ class SnapshotFeed {
     if (snapshot->mesh) {
       renderer.setVertexRadiosity(snapshot->vertexB);
       renderer.setHighlightedPatches(snapshot->lastShooters);
-      if (view.autoExposure) view.exposureStops = std::log2(autoExposure(snapshot->vertexB));
+      if (view.autoExposure) view.exposureStops = std::log2(autoExposure(*snapshot->mesh, snapshot->vertexB));
     }
     shown_ = snapshot;
   }
