@@ -168,6 +168,7 @@ void addRenderCommand(CLI::App& app) {
       cmd->add_option("--iterations", args->iterations, "Solve exactly this many iterations (instead of --until)")
           ->check(CLI::PositiveNumber);
   cmd->get_option("--until")->excludes(iterations);
+  cmd->get_option("--until-unshot")->excludes(iterations);
   cmd->add_option_function<double>(
       "--exposure", [args](double ev) { args->exposureEv = ev; },
       "Exposure in stops: shown value = B x 2^EV, white at 1 (default: automatic)");
