@@ -43,20 +43,22 @@ double Progress::fractionDone(const IterationRecord& r) const {
 void Progress::print(const IterationRecord& r, double elapsed) {
   const double rate = elapsed > 0.0 ? r.iteration / elapsed : 0.0;
   const double done = fractionDone(r);
-  std::string unshot = fmt::format("unshot {:.2f}%", 100.0 * r.ledger.unshotFraction());
-  if (stop_.untilUnshot > 0.0) unshot += fmt::format(" (until {:g}%)", 100.0 * stop_.untilUnshot);
-  std::string c = fmt::format("C {:.4f}", r.convergence);
-  if (stop_.until < 1.0) c += fmt::format(" (until {:g})", stop_.until);
+  const double unshot = 100.0 * r.ledger.unshotFraction();
   const std::string left =
       done > 0.01 && done < 1.0 ? fmt::format("  ~{} left", duration(elapsed * (1.0 - done) / done)) : "";
-  const std::string text = fmt::format("{}  {}  iteration {}  {:.1f} it/s{}", unshot, c, r.iteration, rate, left);
   if (mode_ == Mode::Log) {
-    fmt::print(out_, "{}\n", text);
+    std::string stops;
+    if (stop_.untilUnshot > 0.0) stops += fmt::format(" (until {:g}%)", 100.0 * stop_.untilUnshot);
+    std::string c = fmt::format("C {:.4f}", r.convergence);
+    if (stop_.until < 1.0) c += fmt::format(" (until {:g})", stop_.until);
+    fmt::print(out_, "unshot {:.2f}%{}  {}  iteration {}  {:.1f} it/s{}\n", unshot, stops, c, r.iteration, rate, left);
   } else {
-    const int width = 24;
+    // Within 80 columns, padded so that a shorter line overwrites the whole of a longer one.
+    const int width = 12;
     const int filled = static_cast<int>(width * done);
-    // Padded so that a shorter line overwrites the whole of a longer one.
-    fmt::print(out_, "\r[{}{}] {:<100}", std::string(filled, '#'), std::string(width - filled, '.'), text);
+    const std::string text =
+        fmt::format("unshot {:.2f}%  C {:.4f}  {} it  {:.0f} it/s{}", unshot, r.convergence, r.iteration, rate, left);
+    fmt::print(out_, "\r[{}{}] {:<64}", std::string(filled, '#'), std::string(width - filled, '.'), text);
   }
   std::fflush(out_);
   lastPrintSeconds_ = elapsed;
