@@ -6,6 +6,7 @@
 
 #include "cli/bench.h"
 #include "cli/commands.h"
+#include "cli/output_path.h"
 #include "cli/stats_json.h"
 
 namespace radmesh::cli {
@@ -32,7 +33,10 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
-  cmd->callback([args, json] { writeJsonIfAsked(*json, benchSolve(*args)); });
+  cmd->callback([args, json] {
+    checkOutputPath("--json", *json, ".json", "the figures are JSON");
+    writeJsonIfAsked(*json, benchSolve(*args));
+  });
 }
 
 void addBenchAccuracy(CLI::App* bench) {

@@ -34,7 +34,7 @@ struct ImageErrorProbe::State {
       mesh = &patches;
     }
     const std::vector<Rgb> vertexB = vertexRadiosity(display, displayRadiosity);
-    if (fixExposure) exposure = autoExposure(vertexB);
+    if (fixExposure) exposure = autoExposure(display, vertexB);
     std::vector<Image> images;
     for (const RenderView& view : views) images.push_back(renderer->render(vertexB, view, {exposure, {}}));
     return images;

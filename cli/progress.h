@@ -1,6 +1,9 @@
 #pragma once
-// Progress of a long solve: one line per iteration, or a single redrawn bar on a terminal.
+// Progress a person can read: on a terminal, one live line per solve (a bar toward the stopping
+// rule, the unshot power, C, iterations per second and the time left, redrawn with \r); in a pipe
+// or a log, a line every second (and the final one), not one per iteration.
 #include <cstdio>
+#include <functional>
 
 #include "solver/radiosity/progressive_solver.h"
 
@@ -8,15 +11,31 @@ namespace radmesh::cli {
 
 class Progress {
  public:
-  explicit Progress(double until, std::FILE* out = stdout);
+  enum class Mode { Terminal, Log };
+  // The mode follows `out`: a terminal gets the live line.
+  explicit Progress(const SolveOptions& stop, std::FILE* out = stdout);
+  Progress(const SolveOptions& stop, std::FILE* out, Mode mode);
+  // `elapsedSeconds` since the solve began: the caller's clock, so that tests can inject one.
   void report(const IterationRecord& record, double elapsedSeconds);
-  void finish();  // ends the bar's line on a terminal
+  void finish(const IterationRecord& last, double elapsedSeconds);  // the final line
 
  private:
-  double until_;
+  void print(const IterationRecord& record, double elapsedSeconds);
+  double fractionDone(const IterationRecord& record) const;
+
+  SolveOptions stop_;
   std::FILE* out_;
-  bool terminal_;
-  double lastDrawSeconds_ = -1.0;
+  Mode mode_;
+  double lastPrintSeconds_ = 0.0;
+  int lastPrintedIteration_ = 0;
 };
+
+// Steps `solver` until done(), with progress on stdout unless `quiet`, calling afterStep (if any)
+// with the wall seconds so far after each step; returns the wall seconds.
+double solveWithProgress(ProgressiveSolver& solver, bool quiet,
+                         const std::function<void(double seconds)>& afterStep = {});
+
+// On stderr, when the solve stopped with more than kFarFromConvergedUnshot of the power unshot.
+void warnIfFarFromConverged(const ProgressiveSolver& solver);
 
 }  // namespace radmesh::cli

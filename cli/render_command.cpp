@@ -2,8 +2,6 @@
 // OSMesa, with the window's renderer and no display.
 #include <fmt/core.h>
 
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +13,7 @@
 #include "solver/scene/scene_error.h"
 
 #if RADMESH_HAS_VIEWER
+#include "cli/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "solver/bake/display_radiosity.h"
@@ -22,6 +21,7 @@
 #include "solver/io/scene_loader.h"
 #include "viewer/bake_reader.h"
 #include "viewer/camera.h"
+#include "viewer/exposure.h"
 #include "viewer/offscreen_render.h"
 #endif
 
@@ -40,6 +40,7 @@ struct RenderArgs {
   int iterations = 0;  // 0: until --until
   std::optional<double> exposureEv;
   int frames = 1;
+  bool quiet = false;
   std::string outPath;
 };
 
@@ -59,11 +60,6 @@ glm::ivec2 parseSize(const std::string& text) {
       s.y > 16384)
     throw OptionError(fmt::format("--size '{}' is not WxH with each side in 1..16384 (e.g. 1024x768)", text));
   return s;
-}
-
-bool endsWithGlb(std::string path) {
-  std::transform(path.begin(), path.end(), path.begin(), [](unsigned char c) { return std::tolower(c); });
-  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
 }
 
 // The start view of the walkthrough, moved by --camera / --look / --fov.
@@ -93,32 +89,33 @@ struct Solved {
 Solved solveScene(const RenderArgs& args) {
   SolveOptions options = args.flags.resolved();
   if (args.iterations > 0) {
-    options.until = 1.0;  // C never passes 1: only the iteration count stops the solve
+    options.until = 1.0;  // C never passes 1 and the unshot rule is off: only the count stops the solve
+    options.untilUnshot = 0.0;
     options.maxIterations = args.iterations;
   }
   std::vector<std::string> warnings;
   const Scene scene = loadScene(args.flags.scene, &warnings);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
-  Progress progress(options.until);
-  const auto start = std::chrono::steady_clock::now();
-  while (!solver.done())
-    progress.report(solver.step(),
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  progress.finish();
-  fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}\n", scene.source, solver.patches().size(),
-             solver.history().size(), solver.convergence());
+  solveWithProgress(solver, args.quiet);
+  fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
+             solver.patches().size(), solver.history().size(), solver.convergence(),
+             100.0 * solver.ledger().unshotFraction());
+  if (args.iterations == 0) warnIfFarFromConverged(solver);
   Solved solved{buildDisplayMesh(solver.patches()), {}, sceneFrame(scene)};
   solved.vertexB = vertexRadiosity(solved.mesh, solver.displayRadiosity());
   return solved;
 }
 
 std::optional<Solved> readBake(const RenderArgs& args) {
-  if (!endsWithGlb(args.flags.scene)) return std::nullopt;
+  if (!hasExtension(args.flags.scene, ".glb")) return std::nullopt;
   std::optional<Bake> bake = readBakeGlb(args.flags.scene);
   if (!bake) return std::nullopt;  // a glTF scene to solve, not a bake
   if (args.iterations > 0)
     throw OptionError(fmt::format("{} is a bake, already solved: --iterations applies to scenes", args.flags.scene));
+  for (const std::string& flag : args.flags.given())
+    fmt::print(stderr, "radmesh: warning: {} does not apply: {} is a bake, already solved (it applies to scenes)\n",
+               flag, args.flags.scene);
   fmt::print("read bake {}: {} vertices, {} triangles\n", args.flags.scene, bake->mesh.positions.size(),
              bake->mesh.indices.size() / 3);
   const SceneFrame frame = bakeFrame(*bake);
@@ -128,6 +125,7 @@ std::optional<Solved> readBake(const RenderArgs& args) {
 void run(const RenderArgs& args) {
   const glm::ivec2 size = parseSize(args.size);
   if (!(args.fovDeg > 0.0 && args.fovDeg < 180.0)) throw OptionError("--fov must lie strictly between 0 and 180");
+  checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
   std::optional<Solved> solved = readBake(args);
   if (!solved) solved = solveScene(args);
   const RenderView view = chooseView(args, solved->frame);
@@ -136,7 +134,9 @@ void run(const RenderArgs& args) {
   const auto start = Clock::now();
   OffscreenRenderer renderer(solved->mesh, size);
   OffscreenShading shading;
-  if (args.exposureEv) shading.exposure = std::exp2(*args.exposureEv);
+  shading.exposure = args.exposureEv ? std::exp2(*args.exposureEv) : autoExposure(solved->mesh, solved->vertexB);
+  fmt::print("exposure {:+.2f} EV ({}; --exposure sets it)\n", std::log2(*shading.exposure),
+             args.exposureEv ? "given" : "automatic");
   Image image = renderer.render(solved->vertexB, view, shading);
   const double firstMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   const auto warm = Clock::now();
@@ -168,11 +168,13 @@ void addRenderCommand(CLI::App& app) {
       cmd->add_option("--iterations", args->iterations, "Solve exactly this many iterations (instead of --until)")
           ->check(CLI::PositiveNumber);
   cmd->get_option("--until")->excludes(iterations);
+  cmd->get_option("--until-unshot")->excludes(iterations);
   cmd->add_option_function<double>(
       "--exposure", [args](double ev) { args->exposureEv = ev; },
       "Exposure in stops: shown value = B x 2^EV, white at 1 (default: automatic)");
   cmd->add_option("--frames", args->frames, "Draw this many frames and report ms per frame (timing)")
       ->check(CLI::Range(1, 100000));
+  cmd->add_flag("--quiet", args->quiet, "No progress lines");
   cmd->add_option("--out", args->outPath, "PNG file to write")->required();
   cmd->callback([args] { run(*args); });
 }

@@ -2,12 +2,12 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <chrono>
 #include <memory>
 #include <string>
 
 #include "cli/commands.h"
 #include "cli/effects_text.h"
+#include "cli/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
@@ -35,8 +35,9 @@ struct SolveArgs {
 void printSummary(const ProgressiveSolver& solver, double seconds) {
   const Ledger& l = solver.ledger();
   const size_t n = solver.history().size();
-  fmt::print("solved: {} patches, {} iterations, convergence {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
-             solver.patches().size(), n, 100.0 * solver.convergence(), seconds, seconds > 0 ? n / seconds : 0.0);
+  fmt::print("solved: {} patches, {} iterations, convergence {:.2f}%, unshot {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
+             solver.patches().size(), n, 100.0 * solver.convergence(), 100.0 * l.unshotFraction(), seconds,
+             seconds > 0 ? n / seconds : 0.0);
   double machineSeconds = 0.0;
   std::string machine;
   for (const IterationRecord& r : solver.history())
@@ -51,6 +52,8 @@ void printSummary(const ProgressiveSolver& solver, double seconds) {
 }
 
 void run(const SolveArgs& args) {
+  checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
+  checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
   std::vector<std::string> warnings;
   const Scene scene = loadScene(args.flags.scene, &warnings);
@@ -67,32 +70,31 @@ void run(const SolveArgs& args) {
     fmt::print("  occlusion is off, so --projection {} becomes {}\n", toString(options.projection),
                toString(solver.options().projection));
   options = solver.options();
-  fmt::print("solving {}: {} patches, {} {}x{}, k={}, until C={:.2f}\n", scene.source, solver.patches().size(),
-             toString(options.projection), options.resolution, options.resolution, options.shooters, options.until);
+  std::string until;
+  if (options.until < 1.0) until = fmt::format("C={:.2f}", options.until);
+  if (options.untilUnshot > 0.0)
+    until += fmt::format("{}{:g}% unshot", until.empty() ? "" : " or ", 100.0 * options.untilUnshot);
+  fmt::print("solving {}: {} patches, {} {}x{}, k={}, until {}\n", scene.source, solver.patches().size(),
+             toString(options.projection), options.resolution, options.resolution, options.shooters,
+             until.empty() ? "C=1" : until);
   const ProjectionSummary capture = solver.projectionSummary();
   if (options.projection != Projection::Analytic)
     fmt::print("projection catches {:.6f} of each shot (closed form), {:.6f} as the sum of its delta form factors\n",
                capture.capturedFraction, capture.deltaFormFactorSum);
 
-  Progress progress(options.until);
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   double lastCheckpoint = 0.0;
-  while (!solver.done()) {
-    const IterationRecord& record = solver.step();
-    if (!args.quiet) progress.report(record, elapsed());
-    if (args.checkpointEverySeconds > 0.0 && elapsed() - lastCheckpoint >= args.checkpointEverySeconds) {
+  const double seconds = solveWithProgress(solver, args.quiet, [&](double elapsed) {
+    if (args.checkpointEverySeconds > 0.0 && elapsed - lastCheckpoint >= args.checkpointEverySeconds) {
       writeCheckpoint(args.checkpointPath, solver);
-      lastCheckpoint = elapsed();
+      lastCheckpoint = elapsed;
     }
-  }
-  progress.finish();
+  });
   if (!args.checkpointPath.empty()) {
     writeCheckpoint(args.checkpointPath, solver);
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
-  const double seconds = elapsed();
   printSummary(solver, seconds);
+  warnIfFarFromConverged(solver);
 
   if (!args.statsPath.empty()) {
     writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
@@ -115,7 +117,7 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--out", args->outPath, "Write the bake as glTF 2.0 binary (.glb) with COLOR_0 radiosity");
   cmd->add_option("--effects", args->effects, "auto: simulate only what the scene calls for; all: everything")
       ->capture_default_str();
-  cmd->add_flag("--quiet", args->quiet, "No per-iteration progress");
+  cmd->add_flag("--quiet", args->quiet, "No progress lines");
   CLI::Option* checkpoint = cmd->add_option(
       "--checkpoint", args->checkpointPath, "Save the solver's state to this file at the end (resume with --resume)");
   cmd->add_option("--checkpoint-every", args->checkpointEverySeconds,

@@ -19,6 +19,7 @@ nlohmann::json iterationJson(const IterationRecord& r) {
           {"shooters", r.shooters},
           {"shot_power", r.shotPowerW},
           {"convergence", r.convergence},
+          {"unshot_fraction", r.ledger.unshotFraction()},
           {"seconds", r.seconds},
           {"captured_fraction", r.capturedFraction},
           {"reused_rows", r.reusedRows},

@@ -15,11 +15,11 @@ for mapping in hierarchical cut-and-stack adaptive; do
   until=0.95
   [ "$mapping" = hierarchical ] && until=$figure_until
   for n in 64 128 256; do
-    build/cli/radmesh solve "$scene" --backend mesh --mapping "$mapping" --resolution "$n" --until "$until" \
+    build/cli/radmesh solve "$scene" --preset paper --backend mesh --mapping "$mapping" --resolution "$n" --until "$until" \
       --max-iterations 5000 --quiet --stats "$out/paper-$name-$mapping-$n.json"
   done
 done
 # Table 1.3: form-factor reuse as convergence climbs (native backend, the same shooting order).
-build/cli/radmesh solve "$scene" --resolution 128 --until 0.9965 --max-iterations 5000 --quiet \
+build/cli/radmesh solve "$scene" --preset paper --resolution 128 --until 0.9965 --max-iterations 5000 --quiet \
   --stats "$out/paper-$name-reuse.json"
 build/cli/radmesh plot paper "$name" --stats "$out" --csv "docs/data/paper-$name.csv" --images docs/images

@@ -1,22 +1,46 @@
 #include "viewer/exposure.h"
 
 #include <algorithm>
+#include <utility>
+
+#include <glm/geometric.hpp>
 
 #include "solver/io/mgf_color.h"
 
 namespace radmesh {
 
-double autoExposure(const std::vector<Rgb>& vertexB) {
-  std::vector<double> lit;
-  lit.reserve(vertexB.size());
-  for (const Rgb& b : vertexB) lit.push_back(luminance(b));
+namespace {
+
+constexpr double kPercentile = 0.95;
+constexpr double kShownAs = 0.7;  // the percentile's shown value, white at 1
+
+}  // namespace
+
+double autoExposure(const DisplayMesh& mesh, const std::vector<Rgb>& vertexB) {
+  std::vector<std::pair<double, double>> lit;  // luminance and area of each triangle
+  lit.reserve(mesh.indices.size() / 3);
+  double totalArea = 0.0;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const unsigned a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    if (std::max({a, b, c}) >= vertexB.size()) return 1.0;  // radiosity of another mesh
+    const double area = 0.5 * glm::length(glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]));
+    lit.emplace_back((luminance(vertexB[a]) + luminance(vertexB[b]) + luminance(vertexB[c])) / 3.0, area);
+    totalArea += area;
+  }
   if (lit.empty()) return 1.0;
-  const auto percentile95 = lit.begin() + static_cast<std::ptrdiff_t>(0.95 * double(lit.size() - 1));
-  std::nth_element(lit.begin(), percentile95, lit.end());
-  double reference = *percentile95;
-  // Early in a solve most vertices are still dark: fall back to the brightest one.
-  if (reference <= 0.0) reference = *std::max_element(lit.begin(), lit.end());
-  return reference > 0.0 ? 0.9 / reference : 1.0;
+  std::sort(lit.begin(), lit.end());
+  double reference = lit.back().first;
+  double below = 0.0;
+  for (const auto& [value, area] : lit) {
+    below += area;
+    if (below >= kPercentile * totalArea) {
+      reference = value;
+      break;
+    }
+  }
+  // Early in a solve most of the area is still dark: fall back to the brightest triangle.
+  if (reference <= 0.0) reference = lit.back().first;
+  return reference > 0.0 ? kShownAs / reference : 1.0;
 }
 
 }  // namespace radmesh

@@ -2,13 +2,17 @@
 // From radiosity (W/m^2) to display: the exposure factor applied before sRGB encoding.
 #include <vector>
 
-#include "solver/scene/scene.h"
+#include "solver/bake/display_radiosity.h"
 
 namespace radmesh {
 
-// The factor that maps the 95th-percentile vertex luminance (the solver's luminance(), in
-// solver/io/mgf_color.h) to 0.9 (near white): lamps may clip,
-// the room stays readable. 1 when nothing is lit yet.
-double autoExposure(const std::vector<Rgb>& vertexB);
+// The factor that maps the 95th percentile of luminance (the solver's luminance(), in
+// solver/io/mgf_color.h), weighted by surface area, to 0.7 (below white). Weighing by area, not
+// by vertex, keeps the many small polygons of a detailed scene (books, a keyboard) from setting
+// the exposure of its walls; the lights, a few per cent of the area, stay above the percentile and
+// clip, and nearly nothing else does. The same for every view, so that it does not pump while
+// walking. Early in a solve, while most is dark, the brightest triangle sets it; 1 when nothing is
+// lit yet.
+double autoExposure(const DisplayMesh& mesh, const std::vector<Rgb>& vertexB);
 
 }  // namespace radmesh

@@ -9,7 +9,7 @@
 namespace radmesh {
 
 OffscreenRenderer::OffscreenRenderer(const DisplayMesh& mesh, glm::ivec2 size)
-    : context_(std::make_unique<OsMesaContext>(size)), renderer_(std::make_unique<Renderer>()) {
+    : mesh_(mesh), context_(std::make_unique<OsMesaContext>(size)), renderer_(std::make_unique<Renderer>()) {
   renderer_->setMesh(mesh);
 }
 
@@ -25,7 +25,7 @@ Image OffscreenRenderer::render(const std::vector<Rgb>& vertexB, const RenderVie
   renderer_->setVertexRadiosity(vertexB);
   renderer_->setHighlightedPatches(shading.highlightedPatches);
   const glm::ivec2 size = context_->framebufferSize();
-  const double exposure = shading.exposure ? *shading.exposure : autoExposure(vertexB);
+  const double exposure = shading.exposure ? *shading.exposure : autoExposure(mesh_, vertexB);
   renderer_->draw(view, size, Shading{exposure, true});
   glFinish();
   return captureFramebuffer(size);

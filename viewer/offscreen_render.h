@@ -34,6 +34,7 @@ class OffscreenRenderer {
                const OffscreenShading& shading = {});
 
  private:
+  DisplayMesh mesh_;  // for the automatic exposure
   std::unique_ptr<OsMesaContext> context_;
   std::unique_ptr<Renderer> renderer_;
 };

@@ -175,19 +175,33 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
     ImGui::TextWrapped("solve failed: %s", snapshot.error.c_str());
     ImGui::PopStyleColor();
   }
-  const char* state = snapshot.done ? "converged" : snapshot.playing ? "playing" : "paused";
+  const double unshot = snapshot.ledger.unshotFraction();
+  const bool farFromConverged = unshot > kFarFromConvergedUnshot;
+  const char* state = snapshot.exhausted                  ? "nothing left to shoot"
+                      : snapshot.done && farFromConverged ? "stopped"
+                      : snapshot.done                     ? "converged"
+                      : snapshot.playing                  ? "playing"
+                                                          : "paused";
   if (!snapshot.mesh && snapshot.error.empty()) state = "meshing";
-  ImGui::Text("%s: iteration %d, C = %.4f (until %.3f)", state, snapshot.iteration(), snapshot.convergence(),
-              snapshot.setup.options.until);
-  const double unshotPercent = 100.0 * snapshot.ledger.unshotFraction();
-  if (snapshot.setup.options.untilUnshot > 0.0)
-    ImGui::Text("unshot power: %.2f%% of the emitted (until %.2f%%)", unshotPercent,
-                100.0 * snapshot.setup.options.untilUnshot);
+  const SolveOptions& o = snapshot.setup.options;
+  ImGui::Text("%s: iteration %d", state, snapshot.iteration());
+  if (o.untilUnshot > 0.0)
+    ImGui::Text("unshot power: %.2f%% of the emitted (until %.2f%%)", 100.0 * unshot, 100.0 * o.untilUnshot);
   else
-    ImGui::Text("unshot power: %.2f%% of the emitted", unshotPercent);
-  ImGui::Text("%s back end, %s %dx%d, k = %d, %zu patches", toString(snapshot.setup.options.backend),
-              toString(snapshot.setup.options.projection), snapshot.setup.options.resolution,
-              snapshot.setup.options.resolution, snapshot.setup.options.shooters, snapshot.summary.patches);
+    ImGui::Text("unshot power: %.2f%% of the emitted", 100.0 * unshot);
+  if (o.until < 1.0)
+    ImGui::Text("C = %.4f (until %.3f)", snapshot.convergence(), o.until);
+  else
+    ImGui::Text("C = %.4f", snapshot.convergence());
+  if (snapshot.done && farFromConverged) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    ImGui::TextWrapped("stopped with %.0f%% of the power unshot: the light is far from converged. Step on, or "
+                       "stop on the unshot power (Parameters)",
+                       100.0 * unshot);
+    ImGui::PopStyleColor();
+  }
+  ImGui::Text("%s back end, %s %dx%d, k = %d, %zu patches", toString(o.backend), toString(o.projection),
+              o.resolution, o.resolution, o.shooters, snapshot.summary.patches);
   if (ImGui::Button(snapshot.playing ? "Pause" : "Play")) snapshot.playing ? solver.pause() : solver.play();
   ImGui::SameLine();
   if (ImGui::Button("Step 1")) solver.step(1);
@@ -209,16 +223,17 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
 }
 
 void Panel::drawProgress(const SolverSnapshot& snapshot) {
-  std::vector<double> iterations, seconds, c;
+  std::vector<double> iterations, seconds, c, unshot;
   for (const ConvergencePoint& p : snapshot.curve) {
     iterations.push_back(p.iteration);
     seconds.push_back(p.hostSeconds);
     c.push_back(p.convergence);
+    unshot.push_back(p.unshotFraction);
   }
-  ImGui::TextUnformatted("convergence C over iterations");
-  plotXY("c-iterations", iterations, c, {"iteration", 0.0, 1.0}, 90.0f);
-  ImGui::TextUnformatted("convergence C over host seconds");
-  plotXY("c-seconds", seconds, c, {"host s", 0.0, 1.0}, 90.0f);
+  ImGui::TextUnformatted("C (blue) and unshot power (orange) over iterations");
+  plotXY("c-iterations", iterations, c, {"iteration", 0.0, 1.0}, 90.0f, unshot);
+  ImGui::TextUnformatted("C and unshot power over host seconds");
+  plotXY("c-seconds", seconds, c, {"host s", 0.0, 1.0}, 90.0f, unshot);
   const double lastSeconds = snapshot.curve.size() >= 2
                                  ? snapshot.curve.back().hostSeconds - snapshot.curve.end()[-2].hostSeconds
                                  : snapshot.hostSeconds();
@@ -259,13 +274,14 @@ void Panel::drawMachineCost(const SolverSnapshot& snapshot) {
   const ShotStats& shot = *snapshot.lastShotStats;
   const double total = snapshot.curve.empty() ? 0.0 : snapshot.curve.back().machineSeconds;
   ImGui::Text("%s: %.3f s, last shot %.1f ms", shot.machine.c_str(), total, 1e3 * shot.machineSeconds);
-  std::vector<double> machineSeconds, c;
+  std::vector<double> machineSeconds, c, unshot;
   for (const ConvergencePoint& p : snapshot.curve) {
     machineSeconds.push_back(p.machineSeconds);
     c.push_back(p.convergence);
+    unshot.push_back(p.unshotFraction);
   }
-  ImGui::Text("convergence C over %s seconds", shot.machine.c_str());
-  plotXY("c-machine", machineSeconds, c, {"machine s", 0.0, 1.0}, 70.0f);
+  ImGui::Text("C and unshot power over %s seconds", shot.machine.c_str());
+  plotXY("c-machine", machineSeconds, c, {"machine s", 0.0, 1.0}, 70.0f, unshot);
   for (const auto& [key, value] : shot.figures.items())
     if (isTable(value)) figureTable(key, value);
 }
@@ -337,20 +353,24 @@ void Panel::drawParameters(SolverThread& solver) {
   changed |= released();
   sliderDouble("cell m", &edited_.cellM, 0.02, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic);
   changed |= released();
-  sliderDouble("until C", &o.until, 0.1, 1.0, "%.3f");
-  changed |= released();
-  sliderDouble("until unshot (0: off)", &o.untilUnshot, 0.0, 0.5, "%.3f");
-  changed |= released();
   ImGui::SliderInt("host threads", &o.threads, 0, 64);
   changed |= released();
   changed |= ImGui::Checkbox("ambient term (display only)", &o.ambient);
+  // The stopping rule applies to the solve under way: no restart.
+  sliderDouble("until unshot (0: off)", &o.untilUnshot, 0.0, 0.5, "%.3f", ImGuiSliderFlags_Logarithmic);
+  bool stoppingRuleChanged = released();
+  sliderDouble("until C (1: off)", &o.until, 0.1, 1.0, "%.4f");
+  stoppingRuleChanged |= released();
   ImGui::PopItemWidth();
-  note("a change restarts the solve");
-  if (changed) {
+  note("the stopping rule applies to the solve under way; any other change restarts it");
+  if (changed || stoppingRuleChanged) {
     try {
       validateOptions(o);
       parameterError_.clear();
-      solver.restart(edited_);
+      if (changed)
+        solver.restart(edited_);
+      else
+        solver.setStoppingRule(o.until, o.untilUnshot);
     } catch (const OptionError& e) {
       parameterError_ = e.what();
     }

@@ -9,7 +9,7 @@
 namespace radmesh {
 
 void plotXY(const char* id, std::span<const double> x, std::span<const double> y, const PlotAxes& axes,
-            float heightPx) {
+            float heightPx, std::span<const double> y2) {
   ImGui::PushID(id);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size(ImGui::GetContentRegionAvail().x, heightPx);
@@ -28,12 +28,16 @@ void plotXY(const char* id, std::span<const double> x, std::span<const double> y
     return ImVec2(origin.x + float(u) * size.x, end.y - float(v) * size.y);
   };
   // At most one vertex per pixel column: long solves stay cheap to draw.
-  std::vector<ImVec2> points;
   const size_t stride = std::max<size_t>(1, n / std::max<size_t>(1, size_t(size.x)));
-  for (size_t i = 0; i < n; i += stride) points.push_back(toScreen(x[i], y[i]));
-  if (n > 0 && (n - 1) % stride != 0) points.push_back(toScreen(x[n - 1], y[n - 1]));
-  if (points.size() >= 2)
-    draw->AddPolyline(points.data(), int(points.size()), IM_COL32(110, 200, 255, 255), 0, 1.5f);
+  auto line = [&](std::span<const double> values, ImU32 colour) {
+    if (values.size() < n) return;
+    std::vector<ImVec2> points;
+    for (size_t i = 0; i < n; i += stride) points.push_back(toScreen(x[i], values[i]));
+    if (n > 0 && (n - 1) % stride != 0) points.push_back(toScreen(x[n - 1], values[n - 1]));
+    if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), colour, 0, 1.5f);
+  };
+  line(y, IM_COL32(110, 200, 255, 255));
+  if (!y2.empty()) line(y2, IM_COL32(255, 170, 70, 255));
 
   char label[96];
   std::snprintf(label, sizeof label, "%g", axes.yMax);

@@ -12,8 +12,9 @@ struct PlotAxes {
   double yMax = 1.0;
 };
 
-// Draws in the current ImGui window at the cursor, full width, `heightPx` tall.
+// Draws y (blue) and, when given, y2 (orange) over x in the current ImGui window at the cursor,
+// full width, `heightPx` tall.
 void plotXY(const char* id, std::span<const double> x, std::span<const double> y, const PlotAxes& axes,
-            float heightPx = 110.0f);
+            float heightPx = 110.0f, std::span<const double> y2 = {});
 
 }  // namespace radmesh

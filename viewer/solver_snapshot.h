@@ -25,6 +25,7 @@ struct SolveSetup {
 struct ConvergencePoint {
   int iteration = 0;
   double convergence = 0.0;      // C after this iteration
+  double unshotFraction = 0.0;   // unshot power / emitted after this iteration
   double hostSeconds = 0.0;      // solve time up to and including this iteration
   double machineSeconds = 0.0;   // the back end's machine time so far (ShotStats; else 0)
   std::shared_ptr<const ShotStats> shot;  // this iteration's; null without figures or on a cache hit
@@ -49,7 +50,8 @@ struct SolverSnapshot {
   // histograms at stages (a), (b) and emulated phase costs.
   std::shared_ptr<const ShotStats> lastShotStats;
   bool playing = false;
-  bool done = false;
+  bool done = false;       // the stopping rule is met (steps may still go past it)
+  bool exhausted = false;  // nothing is left to shoot
   std::string error;                         // why the last restart failed, else empty
   std::string checkpointMessage;             // the last checkpoint saved (or resumed from), or why not
 

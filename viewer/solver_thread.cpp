@@ -29,6 +29,7 @@ ConvergencePoint nextPoint(const std::vector<ConvergencePoint>& curve, const Ite
   ConvergencePoint point = curve.empty() ? ConvergencePoint{} : curve.back();
   point.iteration = record.iteration;
   point.convergence = record.convergence;
+  point.unshotFraction = record.ledger.unshotFraction();
   point.hostSeconds += record.seconds;
   point.shot = record.shotStats;
   if (record.shotStats) point.machineSeconds += record.shotStats->machineSeconds;
@@ -114,6 +115,19 @@ void SolverThread::saveCheckpoint(const std::string& path) {
   wake_.notify_all();
 }
 
+void SolverThread::setStoppingRule(double until, double untilUnshot) {
+  {
+    std::lock_guard lock(mutex_);
+    SolveOptions checked = pendingSetup_.options;
+    checked.until = until;
+    checked.untilUnshot = untilUnshot;
+    validateOptions(checked);
+    pendingSetup_.options = checked;
+    stoppingRulePending_ = true;
+  }
+  wake_.notify_all();
+}
+
 void SolverThread::setItemBufferWanted(bool wanted) {
   {
     std::lock_guard lock(mutex_);
@@ -131,7 +145,7 @@ void SolverThread::loop() {
   std::unique_ptr<Run> run;
   Clock::time_point lastPublish{};
   for (;;) {
-    enum class Work { Restart, Step, ItemBuffer, Checkpoint } work = Work::Step;
+    enum class Work { Restart, StoppingRule, Checkpoint, Step, ItemBuffer } work = Work::Step;
     SolveSetup setup;
     std::string resumePath, checkpointPath;
     std::uint64_t generation = 0;
@@ -141,22 +155,30 @@ void SolverThread::loop() {
       auto itemBufferMissing = [&] {
         return run && itemBufferWanted_ && lastShooter(*run->solver) != run->itemBufferShooter;
       };
+      // Playing stops at the stopping rule; a step asked for goes past it, until nothing is left.
+      auto canStep = [&] {
+        return run && ((playing_ && !run->solver->done()) || (pendingSteps_ > 0 && !run->solver->exhausted()));
+      };
       wake_.wait(lock, [&] {
-        const bool canStep = run && !run->solver->done();
-        return stop_ || restartPending_ || (run && !pendingCheckpoint_.empty()) ||
-               (canStep && (playing_ || pendingSteps_ > 0)) || itemBufferMissing();
+        return stop_ || restartPending_ || (run && stoppingRulePending_) || (run && !pendingCheckpoint_.empty()) ||
+               canStep() || itemBufferMissing();
       });
       if (stop_) return;
       if (restartPending_) {
         work = Work::Restart;
         restartPending_ = false;
+        stoppingRulePending_ = false;  // the new setup carries it
         setup = pendingSetup_;
         resumePath = std::exchange(pendingResume_, {});
         generation = ++generation_;
+      } else if (stoppingRulePending_) {
+        work = Work::StoppingRule;
+        stoppingRulePending_ = false;
+        setup = pendingSetup_;
       } else if (run && !pendingCheckpoint_.empty()) {
         work = Work::Checkpoint;
         checkpointPath = std::exchange(pendingCheckpoint_, {});
-      } else if (run && !run->solver->done() && (playing_ || pendingSteps_ > 0)) {
+      } else if (canStep()) {
         if (pendingSteps_ > 0) --pendingSteps_;
       } else {
         work = Work::ItemBuffer;
@@ -171,6 +193,13 @@ void SolverThread::loop() {
     }
     if (work == Work::Checkpoint) {
       save(*run, checkpointPath);
+      publish(*run);
+      continue;
+    }
+    if (work == Work::StoppingRule) {
+      run->setup.options.until = setup.options.until;
+      run->setup.options.untilUnshot = setup.options.untilUnshot;
+      run->solver->setStoppingRule(setup.options.until, setup.options.untilUnshot);  // validated by the caller
       publish(*run);
       continue;
     }
@@ -189,10 +218,10 @@ void SolverThread::loop() {
     bool moreToDo = false;
     {
       std::lock_guard lock(mutex_);
-      moreToDo = (playing_ || pendingSteps_ > 0) && !restartPending_;
+      moreToDo = ((playing_ && !run->solver->done()) || pendingSteps_ > 0) && !restartPending_;
     }
     // While iterating, publish at the UI's pace; the last iteration before a pause always.
-    const bool finished = !moreToDo || run->solver->done();
+    const bool finished = !moreToDo || run->solver->exhausted();
     if (finished || Clock::now() - lastPublish >= kPublishInterval) {
       refreshItemBuffer(*run, finished);
       publish(*run);
@@ -270,6 +299,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->ledger = run.solver->ledger();
   snapshot->done = run.solver->done();
   snapshot->checkpointMessage = run.checkpointMessage;
+  snapshot->exhausted = run.solver->exhausted();
   std::lock_guard lock(mutex_);
   snapshot->playing = playing_;
   latest_ = std::move(snapshot);

@@ -23,7 +23,10 @@ class SolverThread {
 
   void play();
   void pause();               // also cancels pending steps
-  void step(int iterations);  // this many more iterations, then pause
+  void step(int iterations);  // this many more iterations, then pause; also past the stopping rule
+  // Changes the stopping rule of the solve under way (and of later restarts), without restarting
+  // it: a stricter rule lets a stopped solve play on. Throws OptionError on values out of range.
+  void setStoppingRule(double until, double untilUnshot);
   void restart(const SolveSetup& setup);  // remesh and solve from scratch, keeping play/pause
   // Saves the solve to a checkpoint after the iteration under way; the snapshots' checkpointMessage
   // then says where, or why not.
@@ -51,6 +54,7 @@ class SolverThread {
   bool playing_ = false;
   int pendingSteps_ = 0;
   bool restartPending_ = true;
+  bool stoppingRulePending_ = false;
   bool itemBufferWanted_ = false;
   SolveSetup pendingSetup_;
   std::string pendingResume_;      // for the first run only: a restart solves from scratch

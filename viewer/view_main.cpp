@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
   app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();
   app.add_option("--cell", args.setup.cellM, "Grid cell size for meshing, metres")->capture_default_str();
-  app.add_option("--until", o.until, "Stop at this convergence C (0..1]")->capture_default_str();
+  app.add_option("--until", o.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")
+      ->capture_default_str();
   app.add_option("--until-unshot", o.untilUnshot,
                  "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: off)")
       ->capture_default_str();

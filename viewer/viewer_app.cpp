@@ -33,7 +33,7 @@ class SnapshotFeed {
     if (snapshot->mesh) {
       renderer.setVertexRadiosity(snapshot->vertexB);
       renderer.setHighlightedPatches(snapshot->lastShooters);
-      if (view.autoExposure) view.exposureStops = std::log2(autoExposure(snapshot->vertexB));
+      if (view.autoExposure) view.exposureStops = std::log2(autoExposure(*snapshot->mesh, snapshot->vertexB));
     }
     shown_ = snapshot;
   }
@@ -77,6 +77,15 @@ class FrameStats {
 };
 
 }  // namespace
+
+SolveSetup viewerSetup() {
+  SolveSetup setup;
+  applyPreset(Preset::Paper, setup.options);
+  setup.options.backend = Backend::Mesh;
+  setup.options.until = 1.0;
+  setup.options.untilUnshot = 0.01;
+  return setup;
+}
 
 int runViewer(const ViewerArgs& args) {
   std::vector<std::string> warnings;

@@ -228,7 +228,7 @@ void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& po
 
 const IterationRecord& ProgressiveSolver::step() {
   State& s = *state_;
-  if (done() && !s.history.empty()) return s.history.back();
+  if (s.exhausted && !s.history.empty()) return s.history.back();
   const auto start = std::chrono::steady_clock::now();
 
   IterationRecord record;
@@ -259,6 +259,16 @@ bool ProgressiveSolver::done() const {
   const bool littleLeft = s.options.untilUnshot > 0.0 && s.ledger.unshotFraction() <= s.options.untilUnshot;
   return s.exhausted || s.convergence >= s.options.until || littleLeft ||
          static_cast<int>(s.history.size()) >= s.options.maxIterations;
+}
+
+bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
+
+void ProgressiveSolver::setStoppingRule(double until, double untilUnshot) {
+  SolveOptions changed = state_->options;
+  changed.until = until;
+  changed.untilUnshot = untilUnshot;
+  validateOptions(changed);
+  state_->options = changed;
 }
 
 double ProgressiveSolver::convergence() const { return state_->convergence; }

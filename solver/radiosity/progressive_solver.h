@@ -28,6 +28,11 @@ struct Ledger {
   double unshotFraction() const;  // unshot / emitted: what is left to distribute (0 if nothing emits)
 };
 
+// A solve that stops with more than this fraction of the emitted power unshot is far from
+// converged (docs/accuracy.md: its reflected light is tens of per cent wrong); the CLI and the
+// viewer's panel say so.
+constexpr double kFarFromConvergedUnshot = 0.10;
+
 struct IterationRecord {
   int iteration = 0;               // 1-based
   std::vector<int> shooters;       // patch indices shot this iteration
@@ -69,8 +74,13 @@ class ProgressiveSolver {
   ProgressiveSolver(const ProgressiveSolver&) = delete;
   ProgressiveSolver& operator=(const ProgressiveSolver&) = delete;
 
-  const IterationRecord& step();  // one iteration: shoot k patches
+  // One iteration: shoot k patches. It steps past the stopping rule (done()) when asked; once
+  // nothing is left to shoot (exhausted()), it returns the last record.
+  const IterationRecord& step();
   bool done() const;              // convergence >= until, max iterations, or nothing left to shoot
+  bool exhausted() const;         // no patch has unshot power: the solution is exact
+  // Changes options().until and untilUnshot of the solve under way (throws OptionError).
+  void setStoppingRule(double until, double untilUnshot);
   double convergence() const;
 
   const Scene& scene() const;

@@ -69,6 +69,25 @@ Backend parseBackend(const std::string& text) {
   throw OptionError("--backend '" + text + "' is unknown: give native or mesh");
 }
 
+void applyPreset(Preset preset, SolveOptions& o) {
+  const bool bake = preset == Preset::Bake;
+  o.projection = bake ? Projection::Hemicube : Projection::Plane;
+  o.resolution = bake ? 256 : 128;
+  o.ratio = 3.0;
+  o.shooters = 1;
+  o.until = bake ? 1.0 : 0.95;  // the bake stops on the unshot power alone
+  o.untilUnshot = bake ? 0.01 : 0.0;
+}
+
+const char* toString(Preset preset) { return preset == Preset::Bake ? "bake" : "paper"; }
+
+Preset parsePreset(const std::string& text) {
+  for (Preset p : {Preset::Bake, Preset::Paper})
+    if (text == toString(p)) return p;
+  throw OptionError("--preset '" + text + "' is unknown: give bake (hemicube 256, until 1 % unshot) or paper "
+                    "(single plane 128, ratio 3, until C = 0.95)");
+}
+
 const char* toString(EffectsMode mode) { return mode == EffectsMode::All ? "all" : "auto"; }
 
 EffectsMode parseEffects(const std::string& text) {

@@ -36,6 +36,15 @@ struct SolveOptions {
   EffectsMode effects = EffectsMode::All;
 };
 
+// Named settings (docs/accuracy.md): Bake, what a user can trust (the CLI's default: the
+// hemicube at 256², until 1 % of the emitted power is unshot); Paper, Varshney & Prins's (the
+// single plane at ratio 3 and 128², k = 1, until C = 0.95). Both mesh on the paper's 15-inch grid.
+// A preset sets the projection, resolution, ratio, shooters and stopping rule, nothing else.
+enum class Preset { Bake, Paper };
+void applyPreset(Preset preset, SolveOptions& options);
+const char* toString(Preset preset);
+Preset parsePreset(const std::string& text);  // throws OptionError
+
 // Throws OptionError naming the option and the accepted range.
 void validateOptions(const SolveOptions& options);
 

@@ -17,7 +17,7 @@ std::string readBytes(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-const std::string kSolve = "solve cornell --quiet --resolution 64 --shooters 2 --until 1 ";
+const std::string kSolve = "solve cornell --quiet --resolution 64 --shooters 2 --until 1 --until-unshot 0 ";
 
 void expectResumedBakeIsTheStraightOne(const std::string& backend) {
   const std::string straight = tempPath("straight-" + backend + ".glb");

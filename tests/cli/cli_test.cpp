@@ -36,7 +36,7 @@ TEST(Cli, InfoJsonGivesTheFurnaceFigures) {
 
 TEST(Cli, SolveWritesStatsWithTheDocumentedKeysAndABalancedLedger) {
   const std::string stats = tempPath("stats.json");
-  const CommandRun run = radmesh("solve cornell --cell 0.1 --resolution 64 --until 0.9 --stats " + stats);
+  const CommandRun run = radmesh("solve cornell --preset paper --cell 0.1 --resolution 64 --until 0.9 --stats " + stats);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   std::ifstream in(stats);
   const auto j = nlohmann::json::parse(in);
@@ -44,11 +44,12 @@ TEST(Cli, SolveWritesStatsWithTheDocumentedKeysAndABalancedLedger) {
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_GE(j["convergence"].get<double>(), 0.9);
   ASSERT_EQ(j["per_iteration"].size(), j["iterations"].get<size_t>());
-  for (const char* key : {"iteration", "shooter", "shot_power", "convergence", "seconds"})
+  for (const char* key : {"iteration", "shooter", "shot_power", "convergence", "unshot_fraction", "seconds"})
     EXPECT_TRUE(j["per_iteration"][0].contains(key)) << key;
   // The native back end has no machine of its own: no shot figures, no machine seconds printed.
   EXPECT_FALSE(j["per_iteration"][0].contains("emulated_seconds"));
   EXPECT_EQ(run.output.find("emulated"), std::string::npos) << run.output;
+  EXPECT_EQ(j["per_iteration"].back()["unshot_fraction"], j["unshot_fraction"]);
   const auto& l = j["ledger"];
   const double accounted = l["absorbed"].get<double>() + l["unshot"].get<double>() +
                            l["not_captured"].get<double>() + l["escaped"].get<double>();
@@ -184,7 +185,7 @@ namespace {
 TEST(Cli, MeshBackendStatsCarryDepthsEmulatedTimeAndOpCountsForEveryMapping) {
   for (const std::string mapping : {"hierarchical", "cut-and-stack", "adaptive"}) {
     const std::string stats = tempPath("mesh-" + mapping + ".json");
-    const CommandRun run = radmesh("solve cornell --cell 0.1 --backend mesh --mapping " + mapping +
+    const CommandRun run = radmesh("solve cornell --preset paper --cell 0.1 --backend mesh --mapping " + mapping +
                                    " --resolution 64 --max-iterations 5 --until 1 --stats " + stats);
     ASSERT_EQ(run.exitCode, 0) << run.output;
     std::ifstream in(stats);
@@ -211,7 +212,7 @@ TEST(Cli, MeshBackendStatsCarryDepthsEmulatedTimeAndOpCountsForEveryMapping) {
 TEST(Cli, SolveStatsCarryTheEffectsPlanTheSolverApplied) {
   const std::string stats = tempPath("stats.json");
   for (const char* mode : {"auto", "all"}) {
-    const CommandRun run = radmesh(std::string("solve furnace --quiet --until 0.5 --effects ") + mode + " --stats " + stats);
+    const CommandRun run = radmesh(std::string("solve furnace --preset paper --quiet --until 0.5 --effects ") + mode + " --stats " + stats);
     ASSERT_EQ(run.exitCode, 0) << run.output;
     std::ifstream in(stats);
     const auto j = nlohmann::json::parse(in);
@@ -257,15 +258,23 @@ TEST(Cli, RenderSolvesOrReadsABakeAndWritesThePictureOfTheAskedSize) {
   const CommandRun probe = radmesh("render --help");
   if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
   const std::string solved = tempPath("solved.png"), bake = tempPath("bake.glb"), fromBake = tempPath("bake.png");
-  const CommandRun run = radmesh("render cornell --cell 0.1 --resolution 64 --iterations 5 --size 160x120 --out " + solved);
+  const CommandRun run =
+      radmesh("render cornell --cell 0.1 --resolution 64 --iterations 5 --size 160x120 --quiet --out " + solved);
   ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("it/s"), std::string::npos) << run.output;  // --quiet: no progress
+  // The exposure it chose, so that --exposure is not guesswork.
+  EXPECT_NE(run.output.find(" EV (automatic; --exposure sets it)"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("5 iterations"), std::string::npos) << run.output;
   EXPECT_EQ(pngSize(solved), std::make_pair(160, 120));
 
   ASSERT_EQ(radmesh("solve cornell --cell 0.1 --resolution 64 --until 0.9 --quiet --out " + bake).exitCode, 0);
-  const CommandRun read = radmesh("render " + bake + " --size 96x64 --out " + fromBake);
+  // Solver options do not apply to a bake: each gets a warning, not silence.
+  const CommandRun read = radmesh("render " + bake + " --resolution 64 --preset paper --size 96x64 --out " + fromBake);
   ASSERT_EQ(read.exitCode, 0) << read.output;
   EXPECT_NE(read.output.find("read bake"), std::string::npos) << read.output;
+  EXPECT_NE(read.output.find("warning: --resolution does not apply"), std::string::npos) << read.output;
+  EXPECT_NE(read.output.find("warning: --preset does not apply"), std::string::npos) << read.output;
+  EXPECT_EQ(read.output.find("--cell does not apply"), std::string::npos) << read.output;
   EXPECT_EQ(pngSize(fromBake), std::make_pair(96, 64));
 }
 
@@ -364,6 +373,94 @@ TEST(Cli, BenchSolveTimesEveryShooterCountOnEitherBackEnd) {
       EXPECT_GT(row["ms_per_iteration"].get<double>(), 0.0);
       EXPECT_EQ(row["emulated_seconds_per_iteration"].get<double>() > 0.0, backend == "mesh") << row.dump();
     }
+  }
+}
+
+}  // namespace
+}  // namespace radmesh
+
+namespace radmesh {
+namespace {
+
+// With no options, `solve` gives what docs/accuracy.md recommends for a bake: the hemicube at
+// 256², until at most 1 % of the emitted power is unshot, and the unshot power at every iteration.
+TEST(Cli, SolveByDefaultBakesToAtMostOnePercentUnshot) {
+  const std::string stats = tempPath("stats.json");
+  const CommandRun run = radmesh("solve office --quiet --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
+  std::ifstream in(stats);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["projection"], "hemicube");
+  EXPECT_EQ(j["resolution"], 256);
+  EXPECT_EQ(j["until_unshot"], 0.01);
+  EXPECT_LE(j["unshot_fraction"].get<double>(), 0.01);
+  // The stopping rule stopped it at the first iteration at or below 1 %, not earlier or later.
+  const auto& it = j["per_iteration"];
+  ASSERT_GE(it.size(), 2u);
+  EXPECT_GT(it[it.size() - 2]["unshot_fraction"].get<double>(), 0.01);
+  EXPECT_EQ(it.back()["unshot_fraction"], j["unshot_fraction"]);
+  for (size_t i = 1; i < it.size(); ++i)  // shooting only ever passes on part of what was unshot
+    ASSERT_LT(it[i]["unshot_fraction"].get<double>(), it[i - 1]["unshot_fraction"].get<double>()) << i;
+}
+
+TEST(Cli, PresetPaperGivesThePapersSettingsAndExplicitFlagsWin) {
+  const std::string stats = tempPath("stats.json");
+  CommandRun run = radmesh("solve cornell --cell 0.1 --quiet --preset paper --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  auto j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["projection"], "plane");
+  EXPECT_EQ(j["resolution"], 128);
+  EXPECT_EQ(j["ratio"], 3.0);
+  EXPECT_EQ(j["shooters"], 1);
+  EXPECT_EQ(j["until"], 0.95);
+  EXPECT_EQ(j["until_unshot"], 0.0);
+  // C = 0.95 leaves most of the Cornell box's light unshot, and the solve says so.
+  EXPECT_GT(j["unshot_fraction"].get<double>(), 0.1);
+  EXPECT_NE(run.output.find("warning: the solve stopped with"), std::string::npos) << run.output;
+  // Flags beside the preset win, before or after it.
+  run = radmesh("solve cornell --cell 0.1 --quiet --until 0.5 --preset paper --resolution 64 --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["projection"], "plane");
+  EXPECT_EQ(j["resolution"], 64);
+  EXPECT_EQ(j["until"], 0.5);
+  // The mesh back end runs the single plane alone: the default bake takes it rather than failing,
+  // while an explicit hemicube is still refused.
+  run = radmesh("solve cornell --cell 0.1 --quiet --backend mesh --max-iterations 2 --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(stats))["projection"], "plane");
+  run = radmesh("solve cornell --quiet --backend mesh --projection hemicube --max-iterations 2");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("is native only"), std::string::npos) << run.output;
+  run = radmesh("solve cornell --preset fast");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--preset 'fast' is unknown"), std::string::npos) << run.output;
+}
+
+// A path that would fail after a long solve is refused before it starts, naming the option and the fix.
+TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
+  const std::string missing = tempPath("no-such-folder") + "/x";
+  const std::map<std::string, std::string> cases = {
+      {"solve office --out " + missing + ".glb", "--out '" + missing + ".glb': the folder"},
+      {"solve office --out " + tempPath("x.png"), "give a path ending in .glb"},
+      {"solve office --stats " + missing + ".json", "--stats '" + missing + ".json': the folder"},
+      {"solve office --stats " + tempPath("x.txt"), "give a path ending in .json"},
+      {"bench solve office --json " + missing + ".json", "--json '" + missing + ".json': the folder"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
+    EXPECT_EQ(run.output.find("solving"), std::string::npos) << arguments << ": " << run.output;
+  }
+  EXPECT_NE(radmesh("solve office --out " + missing + ".glb").output.find("mkdir -p"), std::string::npos);
+  if (radmesh("render --help").output.find("not built") != std::string::npos) return;
+  for (const std::string& out : {missing + ".png", tempPath("x.jpg")}) {
+    const CommandRun run = radmesh("render office --out " + out);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("--out '" + out + "'"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("solved"), std::string::npos) << run.output;
   }
 }
 

@@ -14,6 +14,8 @@
 
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
+#include "solver/scene/scene_error.h"
+#include "viewer/viewer_app.h"
 
 namespace radmesh {
 namespace {
@@ -224,6 +226,71 @@ TEST(SolverThread, SavesACheckpointAndReopensItWhereItStood) {
   const Snapshot failed = waitFor(refused, [](const SolverSnapshot& s) { return !s.error.empty(); });
   EXPECT_NE(failed->error.find("--backend mesh there, native here"), std::string::npos) << failed->error;
   std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace radmesh
+
+namespace radmesh {
+namespace {
+
+SolveSetup stopAtHalfUnshot() {
+  SolveSetup setup;
+  setup.cellM = 0.1;
+  setup.options.until = 1.0;
+  setup.options.untilUnshot = 0.5;
+  setup.options.threads = 1;
+  return setup;
+}
+
+TEST(SolverThreadStoppingRule, StepsGoOnPastTheStoppingRule) {
+  SolverThread thread(loadScene("cornell"), stopAtHalfUnshot(), /*playing=*/true);
+  const Snapshot stopped = waitFor(thread, [](const SolverSnapshot& s) { return s.done; });
+  ASSERT_TRUE(stopped->done);
+  EXPECT_LE(stopped->ledger.unshotFraction(), 0.5);
+  thread.step(1);
+  const Snapshot one = waitFor(thread, [&](const SolverSnapshot& s) { return s.iteration() > stopped->iteration(); });
+  EXPECT_EQ(one->iteration(), stopped->iteration() + 1);
+  thread.step(5);
+  const Snapshot six = waitFor(thread, [&](const SolverSnapshot& s) { return s.iteration() >= one->iteration() + 5; });
+  EXPECT_EQ(six->iteration(), stopped->iteration() + 6);
+  EXPECT_TRUE(six->done);
+  EXPECT_FALSE(six->playing);
+  EXPECT_LT(six->ledger.unshotFraction(), stopped->ledger.unshotFraction());
+  EXPECT_EQ(six->generation, stopped->generation);  // the same solve, stepped on
+}
+
+TEST(SolverThreadStoppingRule, ChangingItGoesOnWithTheSolveUnderWay) {
+  SolverThread thread(loadScene("cornell"), stopAtHalfUnshot(), /*playing=*/true);
+  const Snapshot stopped = waitFor(thread, [](const SolverSnapshot& s) { return s.done; });
+  ASSERT_TRUE(stopped->done);
+  thread.setStoppingRule(1.0, 0.2);
+  const Snapshot further = waitFor(thread, [&](const SolverSnapshot& s) {
+    return s.done && s.setup.options.untilUnshot == 0.2;
+  });
+  ASSERT_TRUE(further->done);
+  EXPECT_EQ(further->generation, stopped->generation);  // not restarted
+  EXPECT_EQ(further->curve.front().iteration, 1);
+  EXPECT_GT(further->iteration(), stopped->iteration());
+  EXPECT_LE(further->ledger.unshotFraction(), 0.2);
+  // It stopped at the first iteration the new rule holds.
+  EXPECT_GT(further->curve.end()[-2].unshotFraction, 0.2);
+  EXPECT_DOUBLE_EQ(further->curve.back().unshotFraction, further->ledger.unshotFraction());
+  EXPECT_THROW(thread.setStoppingRule(1.0, 1.5), OptionError);
+}
+
+// radmesh-view's default, tried as a new user would: on two-rooms it stopped at iteration 9 with
+// 47 % of the power unshot when it stopped at C = 0.95. On the unshot power it goes on to 1 %.
+TEST(SolverThreadStoppingRule, TheViewersDefaultStopsOnTheUnshotPower) {
+  SolveSetup setup = viewerSetup();
+  EXPECT_EQ(setup.options.backend, Backend::Mesh);
+  EXPECT_EQ(setup.options.projection, Projection::Plane);
+  setup.options.backend = Backend::Native;  // the same solution, in a fraction of the emulated MP-1's time
+  SolverThread thread(loadScene("two-rooms"), setup, /*playing=*/true);
+  const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.done; });
+  EXPECT_LE(s->ledger.unshotFraction(), 0.01);
+  EXPECT_GT(s->iteration(), 9);
+  EXPECT_GT(s->curve.end()[-2].unshotFraction, 0.01);
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ TEST(Streaming, FramesAtIterations1_10_100GrowInTotalLight) {
   }
   // One exposure for all three (the last frame's, halved so little clips): light is comparable.
   OffscreenShading shading;
-  shading.exposure = 0.5 * autoExposure(snapshots.back()->vertexB);
+  shading.exposure = 0.5 * autoExposure(*snapshots.back()->mesh, snapshots.back()->vertexB);
   OffscreenRenderer renderer(*snapshots.back()->mesh, {320, 240});
   std::vector<double> light;
   for (const auto& s : snapshots) light.push_back(test::totalLinearLight(renderer.render(s->vertexB, view, shading)));

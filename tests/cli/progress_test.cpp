@@ -1,0 +1,82 @@
+// Progress lines a person can read: bounded in a log, one redrawn line on a terminal. The clock
+// is injected (elapsed seconds per report), so nothing here depends on timing.
+#include "cli/progress.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace radmesh::cli {
+namespace {
+
+// What `reports` iterations print, iteration i at i/1024 s (exact in binary).
+std::string progressText(Progress::Mode mode, int reports) {
+  SolveOptions stop;
+  stop.until = 1.0;
+  stop.untilUnshot = 0.01;
+  std::FILE* out = std::tmpfile();
+  Progress progress(stop, out, mode);
+  IterationRecord r;
+  r.ledger.emitted = 1.0;
+  for (int i = 1; i <= reports; ++i) {
+    r.iteration = i;
+    r.convergence = 1.0 - 1.0 / i;
+    r.ledger.unshot = 1.0 / i;
+    progress.report(r, i / 1024.0);
+  }
+  progress.finish(r, reports / 1024.0);
+  std::string text(static_cast<size_t>(std::ftell(out)), '\0');
+  std::rewind(out);
+  text.resize(std::fread(text.data(), 1, text.size(), out));
+  std::fclose(out);
+  return text;
+}
+
+TEST(Progress, LogPrintsALineASecondAndTheFinalOne) {
+  // 10240 iterations in 10 s: the first, one a second after it (iterations 1025 ... 9217), the last.
+  const std::string text = progressText(Progress::Mode::Log, 10240);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 11) << text;
+  EXPECT_EQ(text.find('\r'), std::string::npos);
+  EXPECT_NE(text.find("iteration 1025 "), std::string::npos) << text;
+  EXPECT_NE(text.find("iteration 10240 "), std::string::npos) << text;
+  // Each line carries the unshot power against its target and C.
+  EXPECT_NE(text.find("unshot 0.01% (until 1%)  C 0.9999  iteration 10240  1024.0 it/s"), std::string::npos)
+      << text;
+}
+
+TEST(Progress, TerminalRedrawsOneLineAndEndsIt) {
+  const std::string text = progressText(Progress::Mode::Terminal, 10240);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1);
+  EXPECT_EQ(text.back(), '\n');
+  // At most 20 redraws a second over 10 s, and the last one shows the last iteration, bar full.
+  const auto redraws = std::count(text.begin(), text.end(), '\r');
+  EXPECT_GE(redraws, 100);
+  EXPECT_LE(redraws, 202);
+  const size_t last = text.rfind('\r');
+  EXPECT_EQ(text.substr(last), "\r[############] unshot 0.01%  C 0.9999  10240 it  1024 it/s" + std::string(21, ' ') + "\n");
+  EXPECT_EQ(text.size() - last, 1u + 15u + 64u + 1u);  // 79 columns: within a terminal of 80
+}
+
+TEST(Progress, EstimatesTheTimeLeftFromTheUnshotPowerOnALogScale) {
+  // Halfway on a log scale (10 % unshot of a 1 % target) after 2 s: about 2 s left.
+  SolveOptions stop;
+  stop.until = 1.0;
+  stop.untilUnshot = 0.01;
+  std::FILE* out = std::tmpfile();
+  Progress progress(stop, out, Progress::Mode::Log);
+  IterationRecord r;
+  r.iteration = 100;
+  r.ledger.emitted = 1.0;
+  r.ledger.unshot = 0.1;
+  progress.report(r, 2.0);
+  std::string text(200, '\0');
+  std::rewind(out);
+  text.resize(std::fread(text.data(), 1, text.size(), out));
+  std::fclose(out);
+  EXPECT_NE(text.find("~2 s left"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace radmesh::cli
