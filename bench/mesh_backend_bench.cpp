@@ -130,5 +130,3 @@ BENCHMARK(BM_Mapping)
 
 }  // namespace
 }  // namespace radmesh
-
-BENCHMARK_MAIN();

@@ -148,8 +148,8 @@ void SolverThread::loop() {
       point.convergence = record.convergence;
       point.hostSeconds += record.seconds;
       point.depthAMax = point.depthBMax = -1;
-      if (record.meshShot) {
-        point.emulatedSeconds += record.meshShot->emulatedSeconds;
+      if (record.meshShot) point.emulatedSeconds += record.meshShot->emulatedSeconds;
+      if (record.meshShot && !record.meshShot->depthAHist.empty()) {  // a shot, not a cache hit
         point.depthAMax = record.meshShot->depthAMax;
         point.depthBMax = record.meshShot->depthBMax;
         run->lastMeshShot = record.meshShot;

@@ -38,13 +38,20 @@ struct IterationRecord {
   int cacheHits = 0;        // rows served by the form-factor cache this iteration
   Ledger ledger;            // after this iteration
   // Mesh backend only: depths at stages (a) and (b) (histograms; per-PE lists dropped) and the
-  // emulated cost of this iteration's shot. Null on the native backend or a cache hit.
+  // emulated cost of this iteration: shooter selection, the shot and the radiosity update. Null
+  // on the native backend; no depths (empty histograms) on a cache hit, where nothing is projected.
   std::shared_ptr<const MeshShotStats> meshShot;
 };
 
+// Throws SceneError for input it cannot solve (NaN or infinite coordinates or emittance, an area
+// that is not positive, rho outside [0, 1], an unknown material), naming the element and value;
+// step() throws SolveError when the energy ledger stops balancing, naming the iteration and terms.
 class ProgressiveSolver {
  public:
   ProgressiveSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options);
+  // With the given back end instead of the one options.backend names (tests inject faults).
+  ProgressiveSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
+                    std::unique_ptr<FormFactorBackend> backend);
   ~ProgressiveSolver();
   ProgressiveSolver(const ProgressiveSolver&) = delete;
   ProgressiveSolver& operator=(const ProgressiveSolver&) = delete;
