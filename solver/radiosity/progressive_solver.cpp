@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 
 #include "solver/formfactors/form_factor_cache.h"
 #include "solver/formfactors/near_field.h"
