@@ -50,7 +50,7 @@ struct SolverSnapshot {
   std::shared_ptr<const MeshShotStats> lastMeshShot;
   bool playing = false;
   bool done = false;
-  std::string error;                         // why the last restart failed, else empty
+  std::string error;  // why the last restart or step failed (nothing of that solve is shown), else empty
 
   int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }
   double convergence() const { return curve.empty() ? 0.0 : curve.back().convergence; }
