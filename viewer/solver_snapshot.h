@@ -50,7 +50,8 @@ struct SolverSnapshot {
   std::shared_ptr<const MeshShotStats> lastMeshShot;
   bool playing = false;
   bool done = false;
-  std::string error;  // why the last restart or step failed (nothing of that solve is shown), else empty
+  // Why the last restart or iteration failed (nothing of that solve is shown), else empty.
+  std::string error;
 
   int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }
   double convergence() const { return curve.empty() ? 0.0 : curve.back().convergence; }
