@@ -106,5 +106,3 @@ const bool kRegistered = [] {
 
 }  // namespace
 }  // namespace radmesh
-
-BENCHMARK_MAIN();

@@ -88,5 +88,3 @@ BENCHMARK(BM_SortPairs)->Arg(1)->Arg(4)->Arg(16)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace radmesh::emu
-
-BENCHMARK_MAIN();

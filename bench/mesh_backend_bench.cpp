@@ -128,5 +128,3 @@ BENCHMARK(BM_Mapping)
 
 }  // namespace
 }  // namespace radmesh
-
-BENCHMARK_MAIN();

@@ -87,5 +87,3 @@ BENCHMARK(BM_PatchScaling)
 
 }  // namespace
 }  // namespace radmesh
-
-BENCHMARK_MAIN();

@@ -52,8 +52,9 @@ struct SolverSnapshot {
   bool playing = false;
   bool done = false;       // the stopping rule is met (steps may still go past it)
   bool exhausted = false;  // nothing is left to shoot
-  std::string error;                         // why the last restart failed, else empty
-  std::string checkpointMessage;             // the last checkpoint saved (or resumed from), or why not
+  // Why the last restart or iteration failed (nothing of that solve is shown), else empty.
+  std::string error;
+  std::string checkpointMessage;  // the last checkpoint saved (or resumed from), or why not
 
   int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }
   double convergence() const { return curve.empty() ? 0.0 : curve.back().convergence; }

@@ -2,6 +2,8 @@
 // The one interface between progressive refinement and whatever computes form factors: rows
 // F_ij for given shooters. The native back end (host CPU) and the mesh back end (the emulated
 // SIMD machine) implement it, as pbrt's cpu/ and gpu/ implement one integrator.
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <span>
@@ -31,7 +33,9 @@ class FormFactorBackend {
   // The single plane's item buffer for a shooter, at the options' resolution and ratio, whatever
   // the projection in use: what the viewer shows, and where the back ends must agree pixel for pixel.
   virtual ItemBuffer singlePlaneItemBuffer(int shooter) = 0;
-  // What the last computeRows did on the back end's machine, on a back end that reports it.
+  // What the last iteration did on the back end's machine (shooter selection, the shot and the
+  // radiosity update; the last computeRows alone when called outside one), on a back end that
+  // reports it.
   virtual std::shared_ptr<const ShotStats> lastShotStats() const { return nullptr; }
   // The state a back end carries from shot to shot beyond the solver's, as opaque bytes for a
   // checkpoint (the mesh back end: the emulated machine's running cost counts, of which each
@@ -40,7 +44,24 @@ class FormFactorBackend {
   virtual std::string machineState() const { return {}; }
   // Restores what machineState() gave; throws std::invalid_argument for bytes it did not write.
   virtual void restoreMachineState(const std::string& state);
+
+  // The shooting-patch selection (the paper's reduceMax, k at a time): the k patches with the
+  // most unshot power, strongest first, ties to the lower tie rank; patches without unshot power
+  // are never chosen. Throws SolveError for a NaN power. Here on the host; the mesh back end
+  // runs it on the machine and begins an iteration's record with it.
+  virtual std::vector<int> selectShooters(std::span<const double> unshotPowerW, std::span<const int> tieRank,
+                                          int k);
+  // The radiosity update of one row: runs update(r) for every receiver r of the row and returns
+  // the sum of what the calls return (the power they absorbed). Here in receiver order on the
+  // host; the mesh back end runs each update on the PE holding the receiver, flopsPerUpdate
+  // floating-point operations each, and sums by reduceAdd.
+  virtual double updateReceivers(const FormFactorRow& row, double flopsPerUpdate,
+                                 const std::function<double(std::size_t)>& update);
 };
+
+// Throws SolveError naming the first patch whose unshot power is NaN: such a patch can neither be
+// shot nor passed over without losing its power from the ledger.
+void refuseNaNUnshotPower(std::span<const double> unshotPowerW);
 
 // The back end options.backend names. Throws OptionError for one that is not available.
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,

@@ -1,13 +1,12 @@
 #include "solver/radiosity/progressive_solver.h"
 
 #include <algorithm>
-#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
-#include <queue>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "solver/formfactors/form_factor_cache.h"
 #include "solver/formfactors/near_field.h"
@@ -34,17 +33,47 @@ template <typename Value> Value channels(const Rgb& c);
 template <> Rgb channels<Rgb>(const Rgb& c) { return c; }
 template <> double channels<double>(const Rgb& c) { return c.r; }
 
-// Patches come from the mesher; a bad one would turn into NaN radiosity, so refuse it by name.
-void checkPatches(const Scene& scene, const std::vector<Patch>& patches) {
+void requireFinite(const Scene& scene, const std::string& element, const char* what, const Vec3& v) {
+  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
+    throw SceneError(scene.source, element, fmt::format("has a NaN or infinite {} ({}, {}, {})", what, v.x, v.y, v.z),
+                     "give every vertex finite coordinates in metres");
+}
+
+// The solver checks what it is handed as the loaders check files: a scene built in code or a
+// patch list from elsewhere would otherwise turn into NaN radiosity or light from nowhere.
+void validateSolverInput(const Scene& scene, const std::vector<Patch>& patches) {
+  for (const Material& m : scene.materials) {
+    const std::string element = fmt::format("material '{}'", m.name);
+    for (int c = 0; c < 3; ++c) {
+      if (!(m.rho[c] >= 0.0 && m.rho[c] <= 1.0))
+        throw SceneError(scene.source, element, fmt::format("reflectance {} is outside [0, 1]", m.rho[c]),
+                         "give each reflectance channel a value from 0 to 1");
+      if (!(std::isfinite(m.emittance[c]) && m.emittance[c] >= 0.0))
+        throw SceneError(scene.source, element, fmt::format("emittance {} is negative or not finite", m.emittance[c]),
+                         "give emittance as a finite, non-negative exitance in W/m^2");
+    }
+  }
+  for (size_t i = 0; i < scene.polygons.size(); ++i) {
+    const Polygon& polygon = scene.polygons[i];
+    const std::string element =
+        fmt::format("polygon {}", i) + (polygon.origin.empty() ? "" : " (" + polygon.origin + ")");
+    for (const Vec3& v : polygon.vertices) requireFinite(scene, element, "vertex", v);
+  }
   for (size_t i = 0; i < patches.size(); ++i) {
     const Patch& p = patches[i];
-    const bool ok = (p.vertexCount == 3 || p.vertexCount == 4) && std::isfinite(p.areaM2) &&
-                    p.areaM2 > 0.0 && p.material >= 0 &&
-                    p.material < static_cast<int>(scene.materials.size());
-    if (!ok)
-      throw SceneError(scene.source, fmt::format("patch {} (of polygon {})", i, p.polygon),
-                       "has no area, a vertex count other than 3 or 4, or an unknown material",
+    const std::string element = fmt::format("patch {} (of polygon {})", i, p.polygon);
+    if (p.vertexCount != 3 && p.vertexCount != 4)
+      throw SceneError(scene.source, element, fmt::format("has {} vertices, not 3 or 4", p.vertexCount),
+                       "mesh the polygon it came from into triangles and convex quads");
+    if (!(std::isfinite(p.areaM2) && p.areaM2 > 0.0))
+      throw SceneError(scene.source, element, fmt::format("has area {} m^2", p.areaM2),
                        "fix the polygon it came from, or mesh with another --cell");
+    for (int k = 0; k < p.vertexCount; ++k) requireFinite(scene, element, "vertex", p.vertices[k]);
+    requireFinite(scene, element, "centroid", p.centroid);
+    requireFinite(scene, element, "normal", p.normal);
+    if (p.material < 0 || p.material >= static_cast<int>(scene.materials.size()))
+      throw SceneError(scene.source, element, fmt::format("refers to material {}, which does not exist", p.material),
+                       "give the polygon it came from a defined material");
   }
   if (patches.empty())
     throw SceneError(scene.source, "the scene", "meshed into no patches", "give it polygons");
@@ -61,6 +90,19 @@ bool fitsPatches(const SolverProgress& p, size_t n) {
   return p.radiosity.size() == n && p.unshotRadiosity.size() == n && p.unshotPowerW.size() == n &&
          p.timesShot.size() == n && std::all_of(p.cachedRows.begin(), p.cachedRows.end(), rowFits) &&
          std::all_of(p.history.begin(), p.history.end(), recordFits);
+}
+
+// Every iteration, in every build: numbers that do not balance are never shown or written.
+void checkLedger(const Ledger& l, int iteration) {
+  constexpr double kTolerance = 1e-9;  // of the emitted power: rounding over millions of updates stays far below
+  if (l.imbalance() <= kTolerance) return;
+  throw SolveError(fmt::format(
+      "iteration {}: the energy ledger does not balance: emitted {:.17g} W, absorbed {:.17g} W + unshot {:.17g} W "
+      "+ not captured {:.17g} W + escaped {:.17g} W (absorbed by back faces {:.17g} W); imbalance {:.3g} of the "
+      "emitted power, above {:.0e}. This is a fault in radmesh or its form-factor back end; the solve stops and "
+      "nothing of it is written",
+      iteration, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, l.imbalance(),
+      kTolerance));
 }
 
 }  // namespace
@@ -88,7 +130,7 @@ struct ProgressiveSolver::State {
   State(const Scene& s, std::vector<Patch> p, const SolveOptions& o)
       : scene(s), patches(std::move(p)), options(o), cache(o.formFactorCacheBytes) {}
 
-  std::vector<int> pickShooters() const;
+  std::vector<int> pickShooters();
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   template <typename Value> void receive(const FormFactorRow& row, const Value& power);
@@ -96,10 +138,14 @@ struct ProgressiveSolver::State {
 
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
                                      const SolveOptions& options)
+    : ProgressiveSolver(scene, std::move(patches), options, nullptr) {}
+
+ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
+                                     std::unique_ptr<FormFactorBackend> backend)
     : state_(std::make_unique<State>(scene, std::move(patches), options)) {
   validateOptions(options);
   State& s = *state_;
-  checkPatches(s.scene, s.patches);
+  validateSolverInput(s.scene, s.patches);
   s.plan = planEffects(s.scene, s.patches, options.effects);
   // No occlusion: exact analytic form factors replace the item buffer (the mesh back end keeps its
   // plane, being the machine under study).
@@ -120,35 +166,17 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   s.ledger.unshot = s.ledger.emitted;
   s.exhausted = !(s.ledger.emitted > 0.0);
   s.tieRank = depthTieRanks(s.patches);
-  s.backend = makeFormFactorBackend(s.scene, s.patches, s.options);
+  s.backend = backend ? std::move(backend) : makeFormFactorBackend(s.scene, s.patches, s.options);
 }
 
 ProgressiveSolver::~ProgressiveSolver() = default;
 
-// The k patches with the most unshot power (the paper's reduceMax, k at a time). Without
+// The k patches with the most unshot power, on the back end (the mesh's reduceMax). Without
 // interreflection, every emitter at once: nothing comes back, so one shot each from the first
 // state is the whole solution.
-std::vector<int> ProgressiveSolver::State::pickShooters() const {
+std::vector<int> ProgressiveSolver::State::pickShooters() {
   const int k = plan.interreflection ? options.shooters : static_cast<int>(patches.size());
-  auto before = [&](int a, int b) {  // a shoots before b
-    if (unshotPowerW[a] != unshotPowerW[b]) return unshotPowerW[a] > unshotPowerW[b];
-    return tieRank[a] < tieRank[b];
-  };
-  // A heap of the best k so far whose top is the weakest of them.
-  std::priority_queue<int, std::vector<int>, decltype(before)> best(before);
-  for (int j = 0; j < static_cast<int>(patches.size()); ++j) {
-    if (!(unshotPowerW[j] > 0.0)) continue;
-    if (static_cast<int>(best.size()) < k) {
-      best.push(j);
-    } else if (before(j, best.top())) {
-      best.pop();
-      best.push(j);
-    }
-  }
-  std::vector<int> shooters;
-  for (; !best.empty(); best.pop()) shooters.push_back(best.top());
-  std::reverse(shooters.begin(), shooters.end());  // strongest first
-  return shooters;
+  return backend->selectShooters(unshotPowerW, tieRank, k);
 }
 
 void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, IterationRecord& record) {
@@ -171,7 +199,6 @@ void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, Itera
   backend->computeRows(missing, computed);
   if (plan.nearField)
     for (FormFactorRow& row : computed) correctNearField(row, patches, plan.nearReceivers[row.shooter]);
-  record.shotStats = backend->lastShotStats();
   for (size_t m = 0; m < missing.size(); ++m) {
     if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
     rows[missingSlot[m]] = std::move(computed[m]);
@@ -211,19 +238,25 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
   record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
 }
 
-// Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double).
+// Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double), each
+// receiver updated where the back end keeps it.
 template <typename Value>
 void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& power) {
-  for (size_t r = 0; r < row.receivers.size(); ++r) {
+  // Per channel: incident, reflected, absorbed, gain, B, dB (6 flops); then the unshot power (a
+  // channel sum and the area), the absorbed power (a channel sum) and the running sum (1). A grey
+  // scene's channel sums are one multiply each.
+  constexpr bool kColour = std::is_same_v<Value, Rgb>;
+  constexpr double kFlops = kColour ? 3 * 6 + (2 + 1) + 2 + 1 : 6 + (1 + 1) + 1 + 1;
+  ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
     const int j = row.receivers[r];
     const Value incident = power * row.formFactors[r];
     const Value reflected = channels<Value>(rho[j]) * incident;
-    ledger.absorbed += channelSum(incident - reflected);
     const Value gain = reflected / patches[j].areaM2;
     radiosity[j] += Rgb(gain);
     unshotRadiosity[j] += Rgb(gain);
     unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
-  }
+    return channelSum(incident - reflected);
+  });
 }
 
 const IterationRecord& ProgressiveSolver::step() {
@@ -248,7 +281,8 @@ const IterationRecord& ProgressiveSolver::step() {
   record.reusedRowsTotal = record.reusedRows + (s.history.empty() ? 0 : s.history.back().reusedRowsTotal);
   record.convergence = s.convergence;
   record.ledger = s.ledger;
-  assert(s.ledger.imbalance() <= 1e-9);
+  checkLedger(s.ledger, record.iteration);
+  record.shotStats = s.backend->lastShotStats();
   record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   s.history.push_back(std::move(record));
   return s.history.back();

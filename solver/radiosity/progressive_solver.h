@@ -44,8 +44,9 @@ struct IterationRecord {
   int reusedRowsTotal = 0;  // the same, over all iterations so far
   int cacheHits = 0;        // rows served by the form-factor cache this iteration
   Ledger ledger;            // after this iteration
-  // What this iteration's shot did on the back end's machine (the mesh back end: its emulated
-  // cost and item-buffer depths). Null on a back end without figures or a cache hit.
+  // What this iteration did on the back end's machine (the mesh back end: the emulated cost of
+  // shooter selection, the shot and the radiosity update, and the item-buffer depths, none on a
+  // cache hit, where nothing is projected). Null on a back end without figures.
   std::shared_ptr<const ShotStats> shotStats;
 };
 
@@ -67,9 +68,15 @@ struct SolverProgress {
   std::vector<FormFactorRow> cachedRows;
 };
 
+// Throws SceneError for input it cannot solve (NaN or infinite coordinates or emittance, an area
+// that is not positive, rho outside [0, 1], an unknown material), naming the element and value;
+// step() throws SolveError when the energy ledger stops balancing, naming the iteration and terms.
 class ProgressiveSolver {
  public:
   ProgressiveSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options);
+  // With the given back end instead of the one options.backend names (tests inject faults).
+  ProgressiveSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
+                    std::unique_ptr<FormFactorBackend> backend);
   ~ProgressiveSolver();
   ProgressiveSolver(const ProgressiveSolver&) = delete;
   ProgressiveSolver& operator=(const ProgressiveSolver&) = delete;

@@ -1,6 +1,6 @@
 #pragma once
 // Bad input is the user's to fix: a SceneError names the file, the element and the fix.
-// Broken invariants inside radmesh are not SceneErrors (they are bugs).
+// Broken invariants inside radmesh are not SceneErrors (they are bugs, reported as SolveErrors).
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +22,13 @@ class SceneError : public std::runtime_error {
 
 // Refused options (an impossible --cell, --resolution out of range, ...): named option and fix.
 class OptionError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The solve's own numbers went wrong (the energy ledger stopped balancing, an unshot power became
+// NaN): a fault in radmesh or a back end, not in the input. Nothing computed from them is written.
+class SolveError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <thread>
 
 #include "solver/io/scene_loader.h"
 #include "tests/viewer/image_compare.h"
+#include "tests/viewer/solver_thread_wait.h"
 #include "viewer/camera.h"
 #include "viewer/exposure.h"
 #include "viewer/offscreen_render.h"
@@ -16,14 +16,11 @@
 namespace radmesh {
 namespace {
 
-std::shared_ptr<const SolverSnapshot> snapshotAt(SolverThread& thread, int iteration) {
+test::Snapshot snapshotAt(SolverThread& thread, int iteration) {
   thread.step(iteration - thread.latest()->iteration());
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-  for (;;) {
-    auto s = thread.latest();
-    if (s->iteration() >= iteration || !s->error.empty() || std::chrono::steady_clock::now() > deadline) return s;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  return test::waitFor(
+      thread, [&](const SolverSnapshot& s) { return s.iteration() >= iteration || !s.error.empty(); },
+      std::chrono::minutes(5));
 }
 
 TEST(Streaming, FramesAtIterations1_10_100GrowInTotalLight) {
@@ -33,11 +30,9 @@ TEST(Streaming, FramesAtIterations1_10_100GrowInTotalLight) {
   setup.options.ambient = false;
   setup.options.until = 1.0;
   SolverThread thread(scene, setup, /*playing=*/false);
-  while (!thread.latest()->mesh && thread.latest()->error.empty())
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ASSERT_EQ(thread.latest()->error, "");
+  ASSERT_EQ(test::waitFor(thread, [](const SolverSnapshot& s) { return s.mesh || !s.error.empty(); })->error, "");
 
-  std::vector<std::shared_ptr<const SolverSnapshot>> snapshots;
+  std::vector<test::Snapshot> snapshots;
   for (int iteration : {1, 10, 100}) {
     snapshots.push_back(snapshotAt(thread, iteration));
     ASSERT_EQ(snapshots.back()->iteration(), iteration) << snapshots.back()->error;

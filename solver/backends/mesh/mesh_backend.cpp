@@ -70,12 +70,37 @@ ProjectionSummary MeshBackend::projectionSummary() const {
   return {surface_.capturedFraction, surface_.tableSum};
 }
 
-MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
-                              std::vector<std::vector<double>>* pixelFormFactors) {
-  const auto start = std::chrono::steady_clock::now();
-  const emu::CostCounts before = machine_.costs();
+std::shared_ptr<const ShotStats> MeshBackend::lastShotStats() const {
+  return std::make_shared<const ShotStats>(shotStats(lastShot_));
+}
+
+void MeshBackend::beginIteration() {
   machine_.resetPeaks();
-  MeshShotStats stats;
+  lastShot_ = {};
+  iterationStart_ = machine_.costs();
+  iterationHostStart_ = std::chrono::steady_clock::now();
+}
+
+void MeshBackend::totalIteration() {
+  lastShot_.counts = machine_.costs() - iterationStart_;
+  lastShot_.emulatedSeconds = emu::emulatedSeconds(lastShot_.counts).total();
+  lastShot_.hostSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - iterationHostStart_).count();
+}
+
+template <class Work>
+auto MeshBackend::inPhase(const char* name, Work&& work) {
+  decltype(work()) result;
+  {
+    PhaseClock clock(machine_, lastShot_, name);
+    result = work();
+  }
+  totalIteration();
+  return result;
+}
+
+MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
+                              std::vector<std::vector<double>>* pixelFormFactors, MeshShotStats& stats) {
   MeshShot shot;
   shot.shooters.assign(shooters.begin(), shooters.end());
   shot.mapping = PlaneMapping::uniform(mesh_.mapping, options_.resolution, mesh_.peRows, mesh_.peCols);
@@ -99,19 +124,17 @@ MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
   stats.depthBMax = *std::max_element(stats.depthB.begin(), stats.depthB.end());
   stats.depthAHist = depthHistogram(stats.depthA);
   stats.depthBHist = depthHistogram(stats.depthB);
-  stats.counts = machine_.costs() - before;
-  stats.emulatedSeconds = emu::emulatedSeconds(stats.counts).total();
-  stats.hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  lastShot_ = std::move(stats);
-  lastShotStats_ = std::make_shared<const ShotStats>(shotStats(lastShot_));
   return shot;
 }
 
 void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) {
   rows.clear();
   if (shooters.empty()) return;
+  if (!shotPending_) beginIteration();  // called on its own: the record is of this shot alone
+  shotPending_ = false;
   std::vector<std::vector<double>> formFactors;
-  const MeshShot shot = runShot(shooters, true, &formFactors);
+  const MeshShot shot = runShot(shooters, true, &formFactors, lastShot_);
+  totalIteration();
   for (int q = 0; q < static_cast<int>(shooters.size()); ++q)
     rows.push_back(assembleRow(shot, q, std::move(formFactors[q])));
 }
@@ -146,33 +169,54 @@ void MeshBackend::restoreMachineState(const std::string& state) {
 
 ItemBuffer MeshBackend::singlePlaneItemBuffer(int shooter) {
   const int shooters[] = {shooter};
-  const MeshShot shot = runShot(shooters, false, nullptr);
+  MeshShotStats stats;  // not part of any iteration
+  const MeshShot shot = runShot(shooters, false, nullptr, stats);
   return scan_->gatherItemBuffer(shot, 0);
 }
 
 std::vector<int> MeshBackend::selectShooters(std::span<const double> unshotPowerW,
                                              std::span<const int> tieRank, int k) {
-  emu::Plural<ShooterClaim> best(machine_, {}, "strongest claim");
-  emu::Plural<int> bestPatch(machine_, -1, "strongest patch");
-  std::vector<char> chosen(layout_.patches, 0);
-  std::vector<int> shooters;
-  for (int round = 0; round < k; ++round) {
-    // Each PE finds its strongest patch not yet chosen, then one reduceMax over the mesh.
-    emu::Plural<bool> has(machine_, false, "has a claim");
-    machine_.compute({static_cast<double>(layout_.slotsPerPe()), 2.0 * layout_.slotsPerPe()}, [&](int pe) {
-      for (const PatchRecord& r : patchesOnPe_.list(pe)) {
-        const ShooterClaim claim{unshotPowerW[r.patch], tieRank[r.patch]};
-        if (chosen[r.patch] || !(claim.powerW > 0.0)) continue;
-        if (!has[pe] || best[pe] < claim) best[pe] = claim, bestPatch[pe] = r.patch, has[pe] = true;
-      }
+  refuseNaNUnshotPower(unshotPowerW);
+  beginIteration();
+  shotPending_ = true;
+  return inPhase("shooter selection", [&] {
+    emu::Plural<ShooterClaim> best(machine_, {}, "strongest claim");
+    emu::Plural<int> bestPatch(machine_, -1, "strongest patch");
+    std::vector<char> chosen(layout_.patches, 0);
+    std::vector<int> shooters;
+    for (int round = 0; round < k; ++round) {
+      // Each PE finds its strongest patch not yet chosen, then one reduceMax over the mesh.
+      emu::Plural<bool> has(machine_, false, "has a claim");
+      machine_.compute({static_cast<double>(layout_.slotsPerPe()), 2.0 * layout_.slotsPerPe()}, [&](int pe) {
+        for (const PatchRecord& r : patchesOnPe_.list(pe)) {
+          const ShooterClaim claim{unshotPowerW[r.patch], tieRank[r.patch]};
+          if (chosen[r.patch] || !(claim.powerW > 0.0)) continue;
+          if (!has[pe] || best[pe] < claim) best[pe] = claim, bestPatch[pe] = r.patch, has[pe] = true;
+        }
+      });
+      emu::ActiveScope scope(machine_, has);
+      const emu::Located<ShooterClaim> top = emu::reduceMax(machine_, best);
+      if (top.pe < 0) break;
+      shooters.push_back(bestPatch[top.pe]);
+      chosen[bestPatch[top.pe]] = 1;
+    }
+    return shooters;
+  });
+}
+
+double MeshBackend::updateReceivers(const FormFactorRow& row, double flopsPerUpdate,
+                                    const std::function<double(std::size_t)>& update) {
+  return inPhase("radiosity update", [&] {
+    std::vector<int> receiverOf(layout_.patches, -1);  // where a PE finds its patch's F_ij
+    for (std::size_t r = 0; r < row.receivers.size(); ++r) receiverOf[row.receivers[r]] = static_cast<int>(r);
+    emu::Plural<double> absorbed(machine_, 0.0, "absorbed power");
+    const double slots = layout_.slotsPerPe();
+    machine_.compute({flopsPerUpdate * slots, 2.0 * slots}, [&](int pe) {
+      for (const PatchRecord& p : patchesOnPe_.list(pe))
+        if (receiverOf[p.patch] >= 0) absorbed[pe] += update(receiverOf[p.patch]);
     });
-    emu::ActiveScope scope(machine_, has);
-    const emu::Located<ShooterClaim> top = emu::reduceMax(machine_, best);
-    if (top.pe < 0) break;
-    shooters.push_back(bestPatch[top.pe]);
-    chosen[bestPatch[top.pe]] = 1;
-  }
-  return shooters;
+    return emu::reduceAdd(machine_, absorbed);
+  });
 }
 
 }  // namespace radmesh

@@ -3,6 +3,7 @@
 // as mesh programs, phase by phase, with the MP-1's costs and the item-buffer depths of section
 // 1.6.1 recorded per shot. Agrees with the native back end: the same item buffers, and form
 // factors equal up to the order of summation.
+#include <chrono>
 #include <memory>
 #include <span>
 
@@ -37,22 +38,34 @@ class MeshBackend final : public FormFactorBackend {
   void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
   ProjectionSummary projectionSummary() const override;
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
-  std::shared_ptr<const ShotStats> lastShotStats() const override { return lastShotStats_; }
+  // The last iteration's record (selection, shot, update) for every consumer.
+  std::shared_ptr<const ShotStats> lastShotStats() const override;
   std::string machineState() const override;
   void restoreMachineState(const std::string& state) override;
 
-  // The shooting-patch selection phase on the mesh: k reduceMax over the patches' unshot power,
-  // ties to the lower tie rank; patches without unshot power are never chosen. Strongest first.
-  std::vector<int> selectShooters(std::span<const double> unshotPowerW, std::span<const int> tieRank, int k);
+  // The shooting-patch selection phase on the mesh: k reduceMax over the patches' unshot power.
+  // Begins the iteration's record: the next computeRows and updateReceivers add to it.
+  std::vector<int> selectShooters(std::span<const double> unshotPowerW, std::span<const int> tieRank,
+                                  int k) override;
+  // Each PE updates the receivers it holds (SIMD: every PE steps through all its patch slots),
+  // then one reduceAdd sums the absorbed power.
+  double updateReceivers(const FormFactorRow& row, double flopsPerUpdate,
+                         const std::function<double(std::size_t)>& update) override;
 
   const MeshShotStats& lastShot() const { return lastShot_; }
   const emu::MeshMachine& machine() const { return machine_; }
   const MeshBackendOptions& meshOptions() const { return mesh_; }
 
  private:
-  // Runs the phases up to the z-buffer (and the form factors when asked) for the shooters.
+  // Runs the phases up to the z-buffer (and the form factors when asked) for the shooters,
+  // adding their phases and depths to stats.
   MeshShot runShot(std::span<const int> shooters, bool formFactors,
-                   std::vector<std::vector<double>>* pixelFormFactors);
+                   std::vector<std::vector<double>>* pixelFormFactors, MeshShotStats& stats);
+  // lastShot_ as a new iteration's record from now; totalIteration() brings its totals up to now.
+  void beginIteration();
+  void totalIteration();
+  // Runs work() as the iteration's phase `name` (its cost added to lastShot_) and totals.
+  template <class Work> auto inPhase(const char* name, Work&& work);
   FormFactorRow assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors);
 
   const std::vector<Patch>& patches_;
@@ -65,7 +78,9 @@ class MeshBackend final : public FormFactorBackend {
   std::unique_ptr<MeshScanConversion> scan_;
   ThreadPool hostPool_;  // the sub-pixel refinement (solver/formfactors/sub_pixel_receivers.h) runs on the host
   MeshShotStats lastShot_;
-  std::shared_ptr<const ShotStats> lastShotStats_;  // lastShot_ for every consumer
+  emu::CostCounts iterationStart_;  // the machine's counts when lastShot_ began
+  std::chrono::steady_clock::time_point iterationHostStart_;
+  bool shotPending_ = false;  // shooters were selected: the next computeRows is their shot
 };
 
 }  // namespace radmesh

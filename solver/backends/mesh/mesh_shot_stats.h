@@ -1,7 +1,8 @@
 #pragma once
-// What one shot of the mesh back end did: the item-buffer depths at the paper's points (a) and
-// (b) of section 1.6.1, counted from what actually arrived at each PE, and the emulated machine's
-// counts and MP-1 seconds per phase of section 1.5.
+// What one shot of the mesh back end did (in a solve, one iteration: the shooter selection, the
+// shot and the radiosity update): the item-buffer depths at the paper's points (a) and (b) of
+// section 1.6.1, counted from what actually arrived at each PE, and the emulated machine's counts
+// and MP-1 seconds per phase of section 1.5.
 #include <chrono>
 #include <string>
 #include <vector>

@@ -2,8 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <fmt/format.h>
+#include <functional>
+#include <limits>
 
+#include "solver/backends/native/native_backend.h"
 #include "solver/scene/scene_error.h"
 #include "solver/projection/single_plane.h"
 #include "tests/solver/solver_test_helpers.h"
@@ -283,6 +288,117 @@ TEST(ProgressiveSolver, RefusesBadPatchesByName) {
   SolveOptions bad = optionsFor(Projection::Plane);
   bad.resolution = 4;
   EXPECT_THROW(ProgressiveSolver(box.scene, box.patches, bad), OptionError);
+}
+
+// A faulty back end: native rows, but from the given shot on every form factor is tripled, so the
+// receivers get more light than the shooter sent.
+class LightMakingBackend final : public FormFactorBackend {
+ public:
+  LightMakingBackend(const TestScene& t, const SolveOptions& o, int faultyShot)
+      : patches_(t.patches), native_(t.scene, patches_, o), faultyShot_(faultyShot) {}
+  void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override {
+    native_.computeRows(shooters, rows);
+    if (++shots_ < faultyShot_) return;
+    for (FormFactorRow& row : rows)
+      for (double& f : row.formFactors) f *= 3.0;
+  }
+  ProjectionSummary projectionSummary() const override { return native_.projectionSummary(); }
+  ItemBuffer singlePlaneItemBuffer(int shooter) override { return native_.singlePlaneItemBuffer(shooter); }
+
+ private:
+  std::vector<Patch> patches_;
+  NativeBackend native_;
+  int faultyShot_;
+  int shots_ = 0;
+};
+
+TEST(ProgressiveSolver, ImbalancedLedgerStopsTheSolveNamingIterationAndTerms) {
+  const TestScene box = furnace(2);
+  const SolveOptions o = optionsFor(Projection::Plane);
+  ProgressiveSolver solver(box.scene, box.patches, o, std::make_unique<LightMakingBackend>(box, o, 3));
+  solver.step();
+  solver.step();
+  ASSERT_EQ(solver.history().size(), 2u);
+  try {
+    solver.step();
+    FAIL() << "a row that creates light went through";
+  } catch (const SolveError& e) {
+    const std::string message = e.what();
+    const Ledger& l = solver.ledger();  // as the faulty iteration left it
+    EXPECT_GT(l.imbalance(), 1e-3);
+    EXPECT_NE(message.find("iteration 3:"), std::string::npos) << message;
+    for (const auto& [term, value] : {std::pair{"emitted", l.emitted}, {"absorbed", l.absorbed}, {"unshot", l.unshot},
+                                      {"not captured", l.notCaptured}, {"escaped", l.escaped}})
+      EXPECT_NE(message.find(fmt::format("{} {:.17g} W", term, value)), std::string::npos) << term << ": " << message;
+  }
+  EXPECT_EQ(solver.history().size(), 2u);  // the iteration that did not balance is not recorded
+}
+
+TEST(ProgressiveSolver, BalancedLedgerPassesTheCheckEveryIteration) {
+  const TestScene box = furnace(2);
+  const SolveOptions o = optionsFor(Projection::Plane);
+  ProgressiveSolver solver(box.scene, box.patches, o, std::make_unique<LightMakingBackend>(box, o, 1000000));
+  for (int i = 0; i < 10; ++i) EXPECT_LE(solver.step().ledger.imbalance(), 1e-9);
+}
+
+// The message for bad input to the solver: the element and the value, as the loaders give them.
+std::string refusal(const TestScene& t) {
+  try {
+    ProgressiveSolver solver(t.scene, t.patches, optionsFor(Projection::Plane));
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(ProgressiveSolver, RefusesNonFiniteOrOutOfRangeInputNamingElementAndValue) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Case {
+    const char* what;
+    std::function<void(TestScene&)> spoil;
+    std::vector<std::string> named;
+  };
+  const std::vector<Case> cases = {
+      {"NaN polygon vertex", [&](TestScene& t) { t.scene.polygons[1].vertices[2].y = nan; }, {"polygon 1", "vertex (1, nan, 0.9)"}},
+      {"infinite patch vertex", [&](TestScene& t) { t.patches[5].vertices[0].x = inf; }, {"patch 5", "vertex (inf"}},
+      {"NaN centroid", [&](TestScene& t) { t.patches[2].centroid.z = nan; }, {"patch 2", "centroid", "nan)"}},
+      {"infinite emittance", [&](TestScene& t) { t.scene.materials[0].emittance.g = inf; },
+       {"material 'grey'", "emittance inf"}},
+      {"NaN emittance", [&](TestScene& t) { t.scene.materials[0].emittance.b = nan; }, {"material 'grey'", "emittance nan"}},
+      {"negative emittance", [&](TestScene& t) { t.scene.materials[0].emittance.r = -1.0; }, {"emittance -1"}},
+      {"negative area", [&](TestScene& t) { t.patches[4].areaM2 = -0.25; }, {"patch 4", "area -0.25"}},
+      {"zero area", [&](TestScene& t) { t.patches[3].areaM2 = 0.0; }, {"patch 3", "area 0 "}},
+      {"NaN area", [&](TestScene& t) { t.patches[7].areaM2 = nan; }, {"patch 7", "area nan"}},
+      {"rho above 1", [&](TestScene& t) { t.scene.materials[0].rho.g = 1.5; }, {"material 'grey'", "reflectance 1.5"}},
+      {"negative rho", [&](TestScene& t) { t.scene.materials[0].rho.r = -0.1; }, {"reflectance -0.1"}},
+      {"NaN rho", [&](TestScene& t) { t.scene.materials[0].rho.b = nan; }, {"reflectance nan"}},
+      {"unknown material", [&](TestScene& t) { t.patches[6].material = 9; }, {"patch 6", "material 9"}},
+  };
+  for (const Case& c : cases) {
+    TestScene t = furnace(2);
+    c.spoil(t);
+    const std::string message = refusal(t);
+    for (const std::string& name : c.named) EXPECT_NE(message.find(name), std::string::npos) << c.what << ": " << message;
+  }
+  // A reflectance of exactly 1 (a perfect mirror of diffuse light) is solvable.
+  TestScene white = furnace(2);
+  white.scene.materials[0].rho = Rgb(1.0);
+  EXPECT_EQ(refusal(white), "accepted");
+}
+
+TEST(ProgressiveSolver, NaNUnshotPowerIsAnErrorNotAPatchPassedOver) {
+  const TestScene box = furnace(2);
+  NativeBackend native(box.scene, box.patches, optionsFor(Projection::Plane));
+  const std::vector<int> rank = {0, 1, 2, 3};
+  const std::vector<double> power = {1.0, std::numeric_limits<double>::quiet_NaN(), 3.0, 0.0};
+  try {
+    native.selectShooters(power, rank, 2);
+    FAIL() << "a NaN unshot power was passed over";
+  } catch (const SolveError& e) {
+    EXPECT_NE(std::string(e.what()).find("patch 1 has a NaN unshot power"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(native.selectShooters(std::vector<double>{1.0, 2.0, 3.0, 0.0}, rank, 2), (std::vector<int>{2, 1}));
 }
 
 }  // namespace

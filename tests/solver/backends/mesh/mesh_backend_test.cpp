@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -14,6 +16,7 @@
 #include "solver/radiosity/progressive_solver.h"
 #include "solver/scene/scene_error.h"
 #include "tests/solver/backends/mesh/mesh_agreement.h"
+#include "tests/solver/patch_fixtures.h"
 
 namespace radmesh {
 namespace {
@@ -86,38 +89,80 @@ TEST(MeshBackend, SeveralPlanesAtOnceGiveTheRowsOfOneAtATime) {
   }
 }
 
+// A shooter on the floor looking up at quads facing down (one partly off the plane, one wholly
+// off it, one hiding part of another): their projections are rectangles the test computes itself.
+struct Ceiling {
+  Scene scene{"ceiling", {test::grey(0.5, 1.0)}, {}};
+  std::vector<Patch> patches;
+  Ceiling() {
+    patches.push_back(test::makePatch({{-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0}, {-0.05, 0.05, 0}}));
+    auto quad = [&](double x0, double x1, double y0, double y1, double z) {  // facing down
+      patches.push_back(test::makePatch({{x0, y0, z}, {x0, y1, z}, {x1, y1, z}, {x1, y0, z}}));
+    };
+    quad(0.2, 0.5, 0.1, 0.3, 1.0);
+    quad(-1.0, -0.4, -2.0, -1.0, 1.0);
+    quad(0.25, 0.4, 0.0, 0.2, 0.8);   // in front of the first
+    quad(2.5, 3.5, -0.5, 0.5, 1.0);   // partly beyond the plane's edge (a = 3)
+    quad(3.7, 4.2, 0.0, 0.5, 1.0);    // wholly beyond it: never projected
+    quad(-2.0, 2.0, 1.0, 2.5, 1.2);   // a tall strip
+  }
+};
+
 TEST(MeshBackend, DepthsCountWhatArrivedAtEachPe) {
-  const Meshed& m = builtin("office");
+  const Ceiling c;
   const SolveOptions o = planeOptions(128);
-  MeshBackend mesh(m.scene, m.patches, o);
-  NativeBackend native(m.scene, m.patches, o);
-  const int shooter = someShooters(m, 1)[0];
+  MeshBackend mesh(c.scene, c.patches, o);
   std::vector<FormFactorRow> rows;
-  const int one[] = {shooter};
+  const int one[] = {0};
   mesh.computeRows(one, rows);
   const MeshShotStats& s = mesh.lastShot();
-  // Recount from the native item buffer's patches: every projected patch arrives once at (a),
-  // and at (b) once per PE row its strip covers (128 pixel rows in blocks of 2 per PE row).
-  ASSERT_EQ(s.depthA.size(), 4096u);
-  long long arrivedA = 0, arrivedB = 0;
-  for (int d : s.depthA) arrivedA += d;
-  for (int d : s.depthB) arrivedB += d;
-  EXPECT_GT(arrivedA, 100);
-  EXPECT_GT(arrivedB, arrivedA);
-  EXPECT_EQ(s.depthAMax, *std::max_element(s.depthA.begin(), s.depthA.end()));
-  EXPECT_EQ(static_cast<int>(s.depthAHist.size()), s.depthAMax + 1);
-  int pes = 0;
-  for (int h : s.depthBHist) pes += h;
-  EXPECT_EQ(pes, 4096);
-  // The same projected patches the native back end rasterised, counted from the form factors of
-  // the phases: a patch that shows anywhere was projected, so arrived at (a).
-  EXPECT_GE(arrivedA, static_cast<long long>(rows[0].receivers.size()));
+  // Recount: each quad's pixel bounding box (the pixels whose centres it may cover, widened by
+  // one pixel and clipped to the plane: scan_conversion.cpp's rule) under the hierarchical mapping
+  // of 128 pixels onto 64 PEs per axis (2 x 2 pixels a PE). Stage (a) puts a quad on the PE of its
+  // upper-left pixel; stage (b) on every PE of that PE column down to its last pixel row.
+  const int resolution = 128;
+  const double pixelsPerUnit = resolution / (2.0 * o.ratio);
+  auto pixelRange = [&](double low, double high) {
+    const double begin = std::clamp(std::ceil(low - 0.5) - 1.0, 0.0, double(resolution));
+    const double end = std::clamp(std::floor(high - 0.5) + 2.0, 0.0, double(resolution));
+    return std::pair{int(begin), int(end)};
+  };
+  std::vector<int> depthA(4096, 0), depthB(4096, 0);
+  int projected = 0;
+  for (std::size_t j = 1; j < c.patches.size(); ++j) {
+    glm::dvec2 low(1e300), high(-1e300);
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 v = c.patches[j].vertices[k];  // the shooter's frame is the world's, at the origin
+      const glm::dvec2 pixel = (glm::dvec2(v.x, v.y) / v.z + o.ratio) * pixelsPerUnit;
+      for (double x : {pixel.x, pixel.y}) ASSERT_GT(std::abs(x - std::floor(x) - 0.5), 1e-6) << "on a centre line";
+      low = glm::min(low, pixel);
+      high = glm::max(high, pixel);
+    }
+    const auto [columnBegin, columnEnd] = pixelRange(low.x, high.x);
+    const auto [rowBegin, rowEnd] = pixelRange(low.y, high.y);
+    if (columnBegin >= columnEnd || rowBegin >= rowEnd) continue;
+    ++projected;
+    const int column = columnBegin / 2;
+    ++depthA[rowBegin / 2 * 64 + column];
+    for (int row = rowBegin / 2; row <= (rowEnd - 1) / 2; ++row) ++depthB[row * 64 + column];
+  }
+  ASSERT_EQ(projected, 5);
+  EXPECT_EQ(s.depthA, depthA);
+  EXPECT_EQ(s.depthB, depthB);
+  EXPECT_EQ(s.depthAMax, *std::max_element(depthA.begin(), depthA.end()));
+  EXPECT_EQ(s.depthBMax, *std::max_element(depthB.begin(), depthB.end()));
+  EXPECT_EQ(s.depthBHist, depthHistogram(depthB));
+  EXPECT_EQ(s.depthBHist[0], 4096 - std::count_if(depthB.begin(), depthB.end(), [](int d) { return d > 0; }));
+  // The shot's cost is the sum of its phases.
   EXPECT_GT(s.emulatedSeconds, 0.0);
   double phaseSum = 0.0;
   for (const MeshPhaseCost& p : s.phases) phaseSum += p.emulatedSeconds;
   EXPECT_NEAR(phaseSum, s.emulatedSeconds, 1e-9 * s.emulatedSeconds);
   EXPECT_GT(s.counts.router.messages, 0);
   EXPECT_GT(s.counts.sort.ops, 0);
+  const auto routeA = std::find_if(s.phases.begin(), s.phases.end(), [](const auto& p) { return p.name == "route (a)"; });
+  ASSERT_NE(routeA, s.phases.end());
+  EXPECT_EQ(routeA->counts.router.messages, projected);  // one description each
   // Every consumer gets the same through the generic channel, the per-PE lists left out; the
   // native back end has no machine of its own to report on.
   const std::shared_ptr<const ShotStats> generic = mesh.lastShotStats();
@@ -130,7 +175,7 @@ TEST(MeshBackend, DepthsCountWhatArrivedAtEachPe) {
   EXPECT_EQ(generic->figures.at("phases").size(), s.phases.size());
   EXPECT_EQ(generic->figures.at("op_counts").at("router").at("messages").get<std::int64_t>(), s.counts.router.messages);
   EXPECT_FALSE(generic->figures.contains("depth_a"));
-  EXPECT_EQ(native.lastShotStats(), nullptr);
+  EXPECT_EQ(NativeBackend(c.scene, c.patches, o).lastShotStats(), nullptr);
 }
 
 TEST(MeshBackend, ThreadCountDoesNotChangeABit) {
@@ -165,7 +210,51 @@ TEST(MeshBackend, SelectsShootersAsTheSolverDoesWithReduceMax) {
   });
   expected.resize(5);
   EXPECT_EQ(mesh.selectShooters(power, rank, 5), expected);
+  NativeBackend native(m.scene, m.patches, planeOptions(64));
+  EXPECT_EQ(native.selectShooters(power, rank, 5), expected);
+  // Charged, and the start of the iteration's record.
   EXPECT_GT(mesh.machine().costs().reduce.ops, 0);
+  ASSERT_EQ(mesh.lastShot().phases.size(), 1u);
+  EXPECT_EQ(mesh.lastShot().phases[0].name, "shooter selection");
+  EXPECT_EQ(mesh.lastShot().counts.reduce.ops, 5);
+  EXPECT_GT(mesh.lastShot().emulatedSeconds, 0.0);
+  // A NaN power is an error on the mesh as on the host, not a patch passed over.
+  power[7] = std::numeric_limits<double>::quiet_NaN();
+  for (FormFactorBackend* backend : {static_cast<FormFactorBackend*>(&mesh), static_cast<FormFactorBackend*>(&native)})
+    try {
+      backend->selectShooters(power, rank, 5);
+      ADD_FAILURE() << "a NaN unshot power was passed over";
+    } catch (const SolveError& e) {
+      EXPECT_NE(std::string(e.what()).find("patch 7 has a NaN unshot power"), std::string::npos) << e.what();
+    }
+}
+
+// The emulated time of a solver iteration covers all of it: the reduceMax that picks the
+// shooters, the shot, and the radiosity update on the PEs holding the receivers.
+TEST(MeshBackend, AnIterationIsChargedForSelectionShotAndUpdate) {
+  const Meshed& m = builtin("cornell");
+  SolveOptions o = planeOptions(64);
+  o.shooters = 2;
+  o.maxIterations = 3;
+  ProgressiveSolver solver(m.scene, m.patches, o);
+  while (!solver.done()) {
+    const IterationRecord& record = solver.step();
+    ASSERT_NE(record.meshShot, nullptr);
+    const std::vector<MeshPhaseCost>& phases = record.meshShot->phases;
+    const auto shooters = static_cast<std::int64_t>(record.shooters.size());
+    ASSERT_GE(phases.size(), 3u);
+    EXPECT_EQ(phases.front().name, "shooter selection");
+    // One reduceMax per shooter, and one more that finds none when fewer than k have power.
+    EXPECT_EQ(phases.front().counts.reduce.ops, shooters + (shooters < o.shooters ? 1 : 0));
+    EXPECT_EQ(phases.back().name, "radiosity update");
+    EXPECT_EQ(phases.back().counts.reduce.ops, shooters);  // one reduceAdd of absorbed power per row
+    EXPECT_GT(phases.back().counts.alu.flops, 0.0);
+    EXPECT_GT(phases.back().emulatedSeconds, 0.0);
+    double sum = 0.0;
+    for (const MeshPhaseCost& p : phases) sum += p.emulatedSeconds;
+    EXPECT_NEAR(sum, record.meshShot->emulatedSeconds, 1e-9 * sum) << "iteration " << record.iteration;
+  }
+  EXPECT_EQ(solver.history().back().shooters.size(), 2u);
 }
 
 TEST(MeshBackend, RefusesOtherProjectionsAndMeshesThatCannotSort) {
