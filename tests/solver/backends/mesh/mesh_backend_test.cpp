@@ -239,8 +239,10 @@ TEST(MeshBackend, AnIterationIsChargedForSelectionShotAndUpdate) {
   ProgressiveSolver solver(m.scene, m.patches, o);
   while (!solver.done()) {
     const IterationRecord& record = solver.step();
-    ASSERT_NE(record.meshShot, nullptr);
-    const std::vector<MeshPhaseCost>& phases = record.meshShot->phases;
+    const MeshShotStats& shot = dynamic_cast<MeshBackend&>(solver.backend()).lastShot();
+    ASSERT_NE(record.shotStats, nullptr);
+    EXPECT_EQ(record.shotStats->machineSeconds, shot.emulatedSeconds);  // the record is the iteration's
+    const std::vector<MeshPhaseCost>& phases = shot.phases;
     const auto shooters = static_cast<std::int64_t>(record.shooters.size());
     ASSERT_GE(phases.size(), 3u);
     EXPECT_EQ(phases.front().name, "shooter selection");
@@ -252,7 +254,7 @@ TEST(MeshBackend, AnIterationIsChargedForSelectionShotAndUpdate) {
     EXPECT_GT(phases.back().emulatedSeconds, 0.0);
     double sum = 0.0;
     for (const MeshPhaseCost& p : phases) sum += p.emulatedSeconds;
-    EXPECT_NEAR(sum, record.meshShot->emulatedSeconds, 1e-9 * sum) << "iteration " << record.iteration;
+    EXPECT_NEAR(sum, shot.emulatedSeconds, 1e-9 * sum) << "iteration " << record.iteration;
   }
   EXPECT_EQ(solver.history().back().shooters.size(), 2u);
 }
