@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/scene_input.h"
 #include "cli/stats_json.h"
 #include "cli/effects_text.h"
 #include "solver/radiosity/effects_plan.h"
@@ -19,6 +20,7 @@ struct InfoArgs {
   std::string scene = kDefaultScene;
   double cellM = kDefaultCellM;
   bool json = false;
+  bool strict = false;
   EffectsMode effects = EffectsMode::Auto;
 };
 
@@ -66,12 +68,13 @@ void addInfoCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres")->capture_default_str();
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
+  cmd->add_flag("--strict", args->strict, "Refuse a scene that needed any repair (each warning an error)");
   cmd->add_option_function<std::string>(
       "--effects", [args](const std::string& v) { args->effects = parseEffects(v); },
       "auto (simulate only what the scene calls for) or all");
   cmd->callback([args] {
     std::vector<std::string> warnings;
-    const Scene scene = loadScene(args->scene, &warnings);
+    const Scene scene = loadCommandScene(args->scene, args->strict, warnings);
     const std::vector<Patch> patches = meshScene(scene, args->cellM);
     const SceneSummary summary = summarizeScene(scene, patches, args->cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/scene_input.h"
 #include "solver/scene/scene_error.h"
 
 #if RADMESH_HAS_VIEWER
@@ -93,9 +94,7 @@ Solved solveScene(const RenderArgs& args) {
     options.untilUnshot = 0.0;
     options.maxIterations = args.iterations;
   }
-  std::vector<std::string> warnings;
-  const Scene scene = loadScene(args.flags.scene, &warnings);
-  for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
   solveWithProgress(solver, args.quiet);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/scene_input.h"
 #include "cli/effects_text.h"
 #include "cli/output_path.h"
 #include "cli/progress.h"
@@ -55,9 +56,7 @@ void run(const SolveArgs& args) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
-  std::vector<std::string> warnings;
-  const Scene scene = loadScene(args.flags.scene, &warnings);
-  for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
   options.effects = parseEffects(args.effects);
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);

@@ -15,6 +15,7 @@ struct SolveFlags {
   std::string backend = "native";
   std::string projection;
   std::string mapping = "hierarchical";
+  bool strict = false;  // --strict: a scene that needed any repair is refused
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 

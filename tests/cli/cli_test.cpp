@@ -438,6 +438,23 @@ TEST(Cli, PresetPaperGivesThePapersSettingsAndExplicitFlagsWin) {
   EXPECT_NE(run.output.find("--preset 'fast' is unknown"), std::string::npos) << run.output;
 }
 
+// What the reader repaired is listed by info, and --strict makes each repair an error on every command.
+TEST(Cli, StrictRefusesAFileThatNeededRepairs) {
+  const std::string file = "tests/data/repaired/mgf_unknown_entity.mgf";
+  CommandRun run = radmesh("info " + file + " --json");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto warnings = nlohmann::json::parse(run.output.substr(run.output.find('{')))["warnings"];
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].get<std::string>().find("unknown entity"), std::string::npos) << warnings;
+  for (const std::string& command : {"info " + file + " --strict", "solve " + file + " --strict --quiet",
+                                     "render " + file + " --strict --quiet --out " + tempPath("strict.png")}) {
+    run = radmesh(command);
+    EXPECT_EQ(run.exitCode, 2) << command << run.output;
+    EXPECT_NE(run.output.find("--strict: needed 2 kind(s) of repair"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("drop --strict"), std::string::npos) << run.output;
+  }
+}
+
 // A path that would fail after a long solve is refused before it starts, naming the option and the fix.
 TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
   const std::string missing = tempPath("no-such-folder") + "/x";
