@@ -3,7 +3,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -12,6 +11,7 @@
 
 #include "solver/scene/scene_error.h"
 #include "viewer/item_buffer_image.h"
+#include "viewer/panel_figures.h"
 #include "viewer/panel_plot.h"
 
 namespace radmesh {
@@ -54,60 +54,6 @@ void row(const char* name, const char* format, double value) {
   ImGui::TextUnformatted(name);
   ImGui::TableNextColumn();
   ImGui::Text(format, value);
-}
-
-// A shot figure that is a histogram: an array of counts.
-bool isHistogram(const nlohmann::json& value) {
-  return value.is_array() && !value.empty() &&
-         std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_number(); });
-}
-
-// A shot figure that is a table: an array of objects, one a row, the first's keys the columns.
-bool isTable(const nlohmann::json& value) {
-  return value.is_array() && !value.empty() &&
-         std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_object(); });
-}
-
-void figureHistogram(const std::string& key, const nlohmann::json& counts) {
-  ImGui::Text("%s, 0 .. %zu", key.c_str(), counts.empty() ? size_t{0} : counts.size() - 1);
-  std::vector<float> values;
-  for (const auto& v : counts) values.push_back(v.get<float>());
-  ImGui::PushID(key.c_str());
-  ImGui::PlotHistogram("##histogram", values.data(), int(values.size()), 0, nullptr, 0.0f, FLT_MAX,
-                       ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
-  ImGui::PopID();
-}
-
-// Its columns: the first row's keys, the names (strings) before the numbers.
-void figureTable(const std::string& key, const nlohmann::json& rows) {
-  std::vector<std::string> columns;
-  for (const auto& [column, value] : rows.front().items()) columns.push_back(column);
-  std::stable_partition(columns.begin(), columns.end(),
-                        [&](const std::string& c) { return rows.front()[c].is_string(); });
-  if (!ImGui::BeginTable(key.c_str(), int(columns.size()), ImGuiTableFlags_SizingFixedFit)) return;
-  for (const std::string& c : columns)
-    ImGui::TableSetupColumn(c.c_str(), c == columns.front() ? ImGuiTableColumnFlags_WidthStretch : 0);
-  ImGui::TableHeadersRow();
-  for (const nlohmann::json& r : rows) {
-    ImGui::TableNextRow();
-    for (const std::string& c : columns) {
-      ImGui::TableNextColumn();
-      const nlohmann::json cell = r.value(c, nlohmann::json());
-      if (cell.is_string()) ImGui::TextUnformatted(cell.get<std::string>().c_str());
-      if (cell.is_number()) ImGui::Text("%.4g", cell.get<double>());
-    }
-  }
-  ImGui::EndTable();
-}
-
-// A group of figures (an object), folded: its numbers, and its groups inside.
-void figureGroup(const std::string& key, const nlohmann::json& group) {
-  if (!ImGui::TreeNode(key.c_str())) return;
-  for (const auto& [k, v] : group.items()) {
-    if (v.is_number()) ImGui::Text("%s %.6g", k.c_str(), v.get<double>());
-    if (v.is_object()) figureGroup(k, v);
-  }
-  ImGui::TreePop();
 }
 
 }  // namespace
