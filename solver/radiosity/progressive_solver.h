@@ -4,7 +4,6 @@
 // It plans the effects the scene calls for (options.effects) and skips the rest, exactly.
 #include <memory>
 #include <string>
-#include <optional>
 #include <vector>
 
 #include "solver/radiosity/effects_plan.h"
