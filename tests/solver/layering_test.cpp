@@ -18,8 +18,8 @@ namespace radmesh {
 namespace {
 
 // The stages in data-flow order (docs/architecture.md).
-const std::vector<std::string> kStages = {"scene",       "geometry", "io",        "meshing", "projection",
-                                          "formfactors", "backends", "radiosity", "bake"};
+const std::vector<std::string> kStages = {"scene",      "geometry",    "io",       "meshing",   "cells",
+                                          "projection", "formfactors", "backends", "radiosity", "bake"};
 
 struct Include {
   std::string file;    // relative to the project root, e.g. solver/io/mgf_import.cpp
