@@ -11,6 +11,7 @@
 
 #include "solver/geometry/coplanar_merge.h"
 #include "solver/io/gltf_accessor.h"
+#include "solver/io/gltf_lights.h"
 #include "solver/io/gltf_load.h"
 #include "solver/io/gltf_material.h"
 #include "solver/scene/scene_error.h"
@@ -76,11 +77,15 @@ class TriangleCollector {
       throw SceneError(file_, element, "has a NaN or infinite transform", "give the node a finite transform");
     onPath_[node] = true;
     if (model_.nodes[node].mesh >= 0) addMesh(model_.nodes[node].mesh, world, element);
+    if (const int light = gltfNodeLight(model_.nodes[node]); light >= 0)
+      lights_.push_back(gltfLight(model_, light, world, file_, element, &rangeIgnored_));
     for (int child : model_.nodes[node].children) visit(child, world, "children of " + element);
     onPath_[node] = false;
   }
 
   std::vector<Polygon>& triangles() { return triangles_; }
+  const std::vector<Light>& lights() const { return lights_; }
+  int rangeIgnored() const { return rangeIgnored_; }
   int defaultMaterialUsers() const { return defaultMaterialUsers_; }
 
  private:
@@ -180,6 +185,8 @@ class TriangleCollector {
   std::vector<std::string>* warnings_;
   std::vector<bool> onPath_;  // nodes on the current root-to-node path, to refuse cycles
   std::vector<Polygon> triangles_;
+  std::vector<Light> lights_;
+  int rangeIgnored_ = 0;
   int defaultMaterialUsers_ = 0;
 };
 
@@ -248,6 +255,11 @@ Scene importGltf(const std::string& path, std::vector<std::string>* warnings) {
       warnings->push_back(path + ": " + std::to_string(collector.defaultMaterialUsers()) +
                           " primitive(s) without a material get the material '" + scene.materials.back().name + "'");
   }
+  scene.lights = collector.lights();
+  if (collector.rangeIgnored() > 0 && warnings)
+    warnings->push_back(path + ": " + std::to_string(collector.rangeIgnored()) +
+                        " KHR_lights_punctual light(s) with a range: ignored, their light falls off with the inverse "
+                        "square of distance all the way, as physical light does");
   addBackFaces(model, collector.triangles());
   MergeReport report;
   scene.polygons = mergeCoplanarTriangles(collector.triangles(), &report);

@@ -11,7 +11,8 @@ namespace radmesh {
 // (or every scene's, or every root node's), in world space through the node transforms (matrix or
 // TRS); points and lines, which have no area, are warned about and skipped. Materials: rho = baseColorFactor x the
 // baseColorTexture's texel average, E = emissiveFactor x KHR_materials_emissive_strength (W/m^2);
-// see gltf_material.h. Primitives without a material get a grey default (warned about). Coplanar
+// see gltf_material.h. KHR_lights_punctual lights on the nodes become the scene's lights
+// (gltf_lights.h; a `range` is warned about and not applied). Primitives without a material get a grey default (warned about). Coplanar
 // adjacent triangles of one material are merged into polygons (coplanar_merge.h). Throws
 // SceneError naming the file and the element (JSON, GLB container, buffer, accessor, node, mesh
 // primitive, material) on bad input; the scene is not validated here (loadScene does that).

@@ -63,6 +63,22 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes) {
   const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
   if (doc.is_discarded())
     return {"JSON", "", "repair the JSON text (a truncated file ends mid-object)"};
+  // tinygltf refuses a light without a type (or a spot without its cone) without naming it.
+  nlohmann::json lights = nlohmann::json::array();
+  if (doc.is_object() && doc.contains("extensions") && doc["extensions"].is_object() &&
+      doc["extensions"].contains("KHR_lights_punctual") && doc["extensions"]["KHR_lights_punctual"].is_object())
+    lights = doc["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
+  for (size_t i = 0; lights.is_array() && i < lights.size(); ++i) {
+    if (!lights[i].is_object()) continue;
+    const std::string element = "KHR_lights_punctual light " + std::to_string(i) +
+                                (lights[i].contains("name") && lights[i]["name"].is_string()
+                                     ? " '" + lights[i]["name"].get<std::string>() + "'"
+                                     : "");
+    if (!lights[i].contains("type") || !lights[i]["type"].is_string())
+      return {element, "it has no type", "give it \"type\": \"point\", \"spot\" or \"directional\""};
+    if (lights[i]["type"] == "spot" && !(lights[i].contains("spot") && lights[i]["spot"].is_object()))
+      return {element, "a spot light without its \"spot\" object", "give it \"spot\": {\"outerConeAngle\": ...}"};
+  }
   const auto buffers = doc.find("buffers");
   if (buffers != doc.end() && buffers->is_array()) {
     for (size_t i = 0; i < buffers->size(); ++i) {

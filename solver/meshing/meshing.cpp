@@ -55,13 +55,8 @@ std::string describe(const Scene& scene, size_t index) {
 // The projection frame of section 1.5: n is the normal, u the world axis least aligned with it,
 // projected into the plane (deterministic, and the same for every patch of a polygon).
 Frame frameFor(const Vec3& normal) {
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(normal[k]) < std::abs(normal[axis])) axis = k;
-  Vec3 u{0.0};
-  u[axis] = 1.0;
-  u = glm::normalize(u - normal * glm::dot(u, normal));
-  return {u, glm::cross(normal, u), normal};
+  const auto [u, v] = perpendicularAxes(normal);
+  return {u, v, normal};
 }
 
 PreparedPolygon prepare(const Scene& scene, size_t index, double cellM) {

@@ -36,8 +36,8 @@ EnvironmentProjection::EnvironmentProjection(const std::vector<Patch>& patches,
   chunkSetups_.assign(chunks, std::vector<std::vector<PolygonSetup>>(faces));
 }
 
-void EnvironmentProjection::setUpPatches(int shooter) {
-  const Patch& from = patches_[shooter];
+void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
+  const bool parallel = surface_.faces.front().parallel;
   const int n = static_cast<int>(patches_.size());
   pool_.parallelFor(static_cast<int>(chunkSetups_.size()), [&](int chunk, int) {
     auto& out = chunkSetups_[chunk];
@@ -46,10 +46,12 @@ void EnvironmentProjection::setUpPatches(int shooter) {
     for (int j = chunk * kChunkPatches; j < end; ++j) {
       projectedArea_[j] = 0.0;
       seenFromFront_[j] = 0;
-      if (j == shooter) continue;
-      const std::optional<LocalPolygon> local = inShooterView(from, patches_[j]);
+      if (j == skip) continue;
+      const std::optional<LocalPolygon> local =
+          surface_.wholeSphere ? toShooterFrame(from, patches_[j]) : inShooterView(from, patches_[j]);
       if (!local) continue;
-      seenFromFront_[j] = local->seenFromFront();
+      // A parallel beam meets a front that faces against it, wherever the patch lies.
+      seenFromFront_[j] = parallel ? local->normal.z < 0.0 : local->seenFromFront();
       for (size_t f = 0; f < out.size(); ++f) {
         PolygonSetup& setup = out[f].emplace_back();  // set up in place: it is a few hundred bytes
         if (setUpProjection(*local, surface_.faces[f], nearDepth_, j, rank_[j], setup))
@@ -93,8 +95,10 @@ void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
   for (const auto& [id, sum] : band.sums) slot[id] = -1;
 }
 
-void EnvironmentProjection::project(int shooter) {
-  setUpPatches(shooter);
+void EnvironmentProjection::project(int shooter) { projectFrom(patches_[shooter], shooter); }
+
+void EnvironmentProjection::projectFrom(const Patch& viewpoint, int skip) {
+  setUpPatches(viewpoint, skip);
   pool_.parallelFor(static_cast<int>(bands_.size()),
                     [&](int b, int worker) { rasteriseBand(bands_[b], worker); });
   // Bands are summed in a fixed order: the same bits whatever thread did which band.

@@ -21,6 +21,9 @@ class EnvironmentProjection {
                         double nearDepth, ThreadPool& pool);
 
   void project(int shooter);
+  // From a viewpoint that is no patch (a light: its position and frame), every patch but `skip`
+  // (-1: none) projected.
+  void projectFrom(const Patch& viewpoint, int skip);
 
   const ProjectionSurface& surface() const { return surface_; }
   const std::vector<ItemBuffer>& itemBuffers() const { return buffers_; }
@@ -40,7 +43,7 @@ class EnvironmentProjection {
     std::vector<std::pair<int, double>> sums;    // per patch seen in the band, in first-seen order
   };
 
-  void setUpPatches(int shooter);
+  void setUpPatches(const Patch& from, int skip);
   void rasteriseBand(Band& band, int worker);
 
   const std::vector<Patch>& patches_;

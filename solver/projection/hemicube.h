@@ -11,4 +11,9 @@ double hemicubeSideDeltaFormFactor(double y, double z, double pixelArea);
 
 ProjectionSurface makeHemicube(int resolution);
 
+// The hemicube's faces: the top (N x N over [-1, 1]^2) and the upper halves of the four sides.
+std::vector<ProjectionFace> hemicubeFaces(int resolution);
+// A whole cube around a point, every face N x N: the top, the four full sides and the bottom.
+std::vector<ProjectionFace> cubeFaces(int resolution);
+
 }  // namespace radmesh

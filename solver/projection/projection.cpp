@@ -11,6 +11,13 @@ glm::dvec2 ProjectionFace::pixelCentre(int column, int row) const {
   return {a0 + (column + 0.5) * pixelWidth(), b0 + (row + 0.5) * pixelHeight()};
 }
 
+Vec3 ProjectionFace::toLocal(glm::dvec2 faceAB) const {
+  const Vec3 onFace{faceAB.x, faceAB.y, 1.0};
+  Vec3 local{0.0};
+  for (int k = 0; k < 3; ++k) local[axis[k]] = sign[k] * onFace[k];
+  return local;
+}
+
 Vec3 toShooterFrame(const Patch& shooter, const Vec3& point) {
   // Differences first: a scene far from the origin keeps its precision near the shooter.
   const Vec3 d = point - shooter.centroid;
@@ -60,10 +67,29 @@ Vec3 nearCrossing(const Vec3& p, const Vec3& q, double nearDepth) {
   return crossing;
 }
 
+// A parallel projection: nothing to clip (the frame starts behind the scene), (a, b) map linearly,
+// and -depth = (m.x a + m.y b - planeOffset) / m.z on the patch's plane.
+bool projectParallel(const LocalPolygon& patch, const ProjectionFace& face, ScreenPolygon& out) {
+  const Vec3 m = toFace(face, patch.normal);
+  if (!(std::abs(m.z) > 1e-9)) return false;  // edge-on to the beam: no area
+  const double scaleA = face.width / (face.a1 - face.a0);
+  const double scaleB = face.height / (face.b1 - face.b0);
+  out.vertexCount = patch.vertexCount;
+  for (int k = 0; k < patch.vertexCount; ++k) {
+    const Vec3 f = toFace(face, patch.vertices[k]);
+    out.vertices[k] = {(f.x - face.a0) * scaleA, (f.y - face.b0) * scaleB};
+  }
+  out.inverseDepthX = m.x / (m.z * scaleA);
+  out.inverseDepthY = m.y / (m.z * scaleB);
+  out.inverseDepthC = (m.x * face.a0 + m.y * face.b0 - patch.planeOffset) / m.z;
+  return true;
+}
+
 }  // namespace
 
 bool projectOntoFace(const LocalPolygon& patch, const ProjectionFace& face, double nearDepth,
                      ScreenPolygon& out) {
+  if (face.parallel) return projectParallel(patch, face, out);
   if (std::abs(patch.planeOffset) <= nearDepth) return false;  // edge-on: a line, no area
 
   std::array<Vec3, 4> faceVertices;

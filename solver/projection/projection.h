@@ -22,11 +22,17 @@ struct ProjectionFace {
   double b0 = -1.0, b1 = 1.0;
   int width = 0;                            // pixels along a
   int height = 0;                           // pixels along b
+  // A parallel projection along depth (a directional light's beam): the window is in metres of
+  // the frame, and the item buffer's "inverse depth" holds the negated depth, which like 1/depth
+  // grows toward the viewer and is affine over a plane.
+  bool parallel = false;
 
   double pixelWidth() const { return (a1 - a0) / width; }
   double pixelHeight() const { return (b1 - b0) / height; }
   // Face coordinates (a, b) at depth 1 of the centre of pixel (column, row).
   glm::dvec2 pixelCentre(int column, int row) const;
+  // The shooter-frame direction of the face point (a, b) at depth 1.
+  Vec3 toLocal(glm::dvec2 faceAB) const;
 };
 
 // A patch in a shooter's frame: origin at the shooter's centroid, axes (u, v, n).

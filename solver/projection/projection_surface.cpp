@@ -2,7 +2,7 @@
 
 namespace radmesh {
 
-void addFace(ProjectionSurface& surface, const ProjectionFace& face, DeltaFormFactorFn df) {
+void addFace(ProjectionSurface& surface, const ProjectionFace& face, const DeltaFormFactorFn& df) {
   const double pixelArea = face.pixelWidth() * face.pixelHeight();
   std::vector<double> table(static_cast<size_t>(face.width) * face.height);
   for (int row = 0; row < face.height; ++row)

@@ -1,6 +1,7 @@
 #pragma once
 // A projection surface (the paper's section 1.2): planar faces above the shooter, each split into
 // pixels that carry a delta form factor. The single plane has one face, the hemicube five.
+#include <functional>
 #include <vector>
 
 #include "solver/projection/projection.h"
@@ -14,13 +15,15 @@ struct ProjectionSurface {
   std::vector<std::vector<double>> deltaFormFactors;
   double capturedFraction = 1.0;  // closed form: the fraction of a diffuse shooter's power caught
   double tableSum = 1.0;          // the delta form factors' sum as sampled, before that scaling
+  // The faces see all around a point (a point light's cube), not only above the shooter's plane.
+  bool wholeSphere = false;
 };
 
 // Delta form factor of a pixel centred at face coordinates (a, b), of area pixelArea at depth 1.
-using DeltaFormFactorFn = double (*)(double a, double b, double pixelArea);
+using DeltaFormFactorFn = std::function<double(double a, double b, double pixelArea)>;
 
 // Adds a face whose pixels carry df at their centres.
-void addFace(ProjectionSurface& surface, const ProjectionFace& face, DeltaFormFactorFn df);
+void addFace(ProjectionSurface& surface, const ProjectionFace& face, const DeltaFormFactorFn& df);
 // Records the sampled sum and scales every delta form factor so that they sum to capturedFraction.
 void scaleToCapturedFraction(ProjectionSurface& surface, double capturedFraction);
 

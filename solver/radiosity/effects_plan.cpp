@@ -96,7 +96,9 @@ EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, E
              : "some polygon has scene geometry behind its plane, so patches can hide one another";
 
   const bool allGrey = std::all_of(scene.materials.begin(), scene.materials.end(),
-                                   [](const Material& m) { return grey(m.rho) && grey(m.emittance); });
+                                   [](const Material& m) { return grey(m.rho) && grey(m.emittance); }) &&
+                       std::all_of(scene.lights.begin(), scene.lights.end(),
+                                   [](const Light& l) { return grey(l.intensity); });
   plan.colour = !allGrey;
   const std::string colourWhy = allGrey ? "every material and emitter is grey: one channel stands for three"
                                         : "some material or emitter has colour: three channels";

@@ -8,7 +8,9 @@
 #include <string>
 #include <type_traits>
 
+#include "parallel/thread_pool.h"
 #include "solver/formfactors/form_factor_cache.h"
+#include "solver/formfactors/light_rows.h"
 #include "solver/formfactors/near_field.h"
 #include "solver/projection/scan_conversion.h"
 #include "solver/scene/scene_error.h"
@@ -118,6 +120,7 @@ struct ProgressiveSolver::State {
   std::vector<double> unshotPowerW;    // dB * A summed over RGB, what shooter selection compares
   std::vector<int> timesShot;
   std::vector<int> tieRank;            // shooters of equal power go in geometric order
+  std::vector<Rgb> lightPower;         // per scene light, W per channel: all shot in iteration 1
   std::unique_ptr<FormFactorBackend> backend;
   FormFactorCache cache;
   Ledger ledger;
@@ -133,6 +136,9 @@ struct ProgressiveSolver::State {
   std::vector<int> pickShooters();
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
+  void shootLights(IterationRecord& record);
+  void deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape);
+  void updateUnshot();
   template <typename Value> void receive(const FormFactorRow& row, const Value& power);
 };
 
@@ -162,6 +168,10 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
     s.radiosity[j] = s.unshotRadiosity[j] = m.emittance;
     s.unshotPowerW[j] = channelSum(m.emittance) * s.patches[j].areaM2;
     s.ledger.emitted += s.unshotPowerW[j];
+  }
+  for (const Light& light : s.scene.lights) {
+    s.lightPower.push_back(lightPower(s.scene, light));
+    s.ledger.emitted += channelSum(s.lightPower.back());
   }
   s.ledger.unshot = s.ledger.emitted;
   s.exhausted = !(s.ledger.emitted > 0.0);
@@ -216,26 +226,48 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
     ++timesShot[i];
     record.shotPowerW += channelSum(shotPower[s]);
   }
-  for (size_t s = 0; s < shooters.size(); ++s) {
-    const FormFactorRow& row = rows[s];
-    const double powerW = channelSum(shotPower[s]);
-    ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
-    if (plan.escape) ledger.escaped += powerW * row.escapedFraction();
-    ledger.absorbed += powerW * row.backFaces;
-    ledger.absorbedByBackFaces += powerW * row.backFaces;
-    if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
-      double received = 0.0;
-      for (double f : row.formFactors) received += f;
-      ledger.absorbed += powerW * received;
-    } else if (plan.colour) {
-      receive(row, shotPower[s]);
-    } else {
-      receive(row, shotPower[s].r);
-    }
+  for (size_t s = 0; s < shooters.size(); ++s) deliver(rows[s], shotPower[s], plan.escape);
+  updateUnshot();
+  record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
+}
+
+// Iteration 1 of a scene with lights: each light's one shot, all from the first state. Their rows
+// are computed on the host for every back end (solver/formfactors/light_rows.h); what escapes is
+// booked even in a closed scene, since a light (the sun) may shine on it from outside.
+void ProgressiveSolver::State::shootLights(IterationRecord& record) {
+  ThreadPool pool(options.threads);
+  const double nearDepth = sceneNearDepth(patches);
+  for (size_t k = 0; k < scene.lights.size(); ++k) {
+    if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
+    deliver(lightRow(scene, scene.lights[k], patches, options.resolution, nearDepth, pool), lightPower[k], true);
+    record.shotPowerW += channelSum(lightPower[k]);
   }
+  updateUnshot();
+  record.capturedFraction = 1.0;
+}
+
+// Where one row's power goes: not captured, escaped, the backs of one-sided patches, and the
+// receivers (eq. 1.2, or absorbed outright when nothing reflects).
+void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape) {
+  const double powerW = channelSum(power);
+  ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
+  if (bookEscape) ledger.escaped += powerW * row.escapedFraction();
+  ledger.absorbed += powerW * row.backFaces;
+  ledger.absorbedByBackFaces += powerW * row.backFaces;
+  if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
+    double received = 0.0;
+    for (double f : row.formFactors) received += f;
+    ledger.absorbed += powerW * received;
+  } else if (plan.colour) {
+    receive(row, power);
+  } else {
+    receive(row, power.r);
+  }
+}
+
+void ProgressiveSolver::State::updateUnshot() {
   ledger.unshot = 0.0;
   for (double p : unshotPowerW) ledger.unshot += p;
-  record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
 }
 
 // Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double), each
@@ -266,11 +298,16 @@ const IterationRecord& ProgressiveSolver::step() {
 
   IterationRecord record;
   record.iteration = static_cast<int>(s.history.size()) + 1;
-  record.shooters = s.pickShooters();
-  if (!record.shooters.empty()) {
+  if (s.history.empty() && !s.scene.lights.empty()) {
+    // The lights shoot first, once: C is measured against the strongest of them and the emitters.
+    s.firstShotPowerW = *std::max_element(s.unshotPowerW.begin(), s.unshotPowerW.end());
+    for (const Rgb& power : s.lightPower) s.firstShotPowerW = std::max(s.firstShotPowerW, channelSum(power));
+    s.shootLights(record);
+    s.convergence = 0.0;
+  } else if (record.shooters = s.pickShooters(); !record.shooters.empty()) {
     // C_i = 1 - s_i / s_1 (the paper's section 1.6), s_i the strongest shooter's power.
     const double strongestW = s.unshotPowerW[record.shooters.front()];
-    if (s.history.empty()) s.firstShotPowerW = strongestW;
+    if (s.firstShotPowerW == 0.0) s.firstShotPowerW = strongestW;
     s.fetchRows(record.shooters, record);
     s.shoot(record.shooters, record);
     s.convergence = 1.0 - strongestW / s.firstShotPowerW;

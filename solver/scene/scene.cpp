@@ -1,7 +1,12 @@
 #include "solver/scene/scene.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <string>
+#include <tuple>
 
 #include "solver/scene/scene_error.h"
 
@@ -20,6 +25,57 @@ Vec3 newellNormal(const std::vector<Vec3>& v) {
 
 double polygonArea(const std::vector<Vec3>& vertices) {
   return 0.5 * glm::length(newellNormal(vertices));
+}
+
+std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(n[k]) < std::abs(n[axis])) axis = k;
+  Vec3 u{0.0};
+  u[axis] = 1.0;
+  u = glm::normalize(u - n * glm::dot(u, n));
+  return {u, glm::cross(n, u)};
+}
+
+double spotFalloff(const Light& spot, double cosTheta) {
+  const double cosOuter = std::cos(spot.outerConeRad);
+  const double band = std::cos(spot.innerConeRad) - cosOuter;
+  const double t = std::clamp((cosTheta - cosOuter) / band, 0.0, 1.0);
+  return t * t;
+}
+
+ParallelWindow parallelWindow(const Scene& scene, const Vec3& direction) {
+  Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
+  for (const Polygon& p : scene.polygons)
+    for (const Vec3& v : p.vertices) {
+      low = glm::min(low, v);
+      high = glm::max(high, v);
+    }
+  ParallelWindow w;
+  std::tie(w.u, w.v) = perpendicularAxes(direction);
+  w.a0 = w.b0 = std::numeric_limits<double>::max();
+  w.a1 = w.b1 = -std::numeric_limits<double>::max();
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 c{corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y, corner & 4 ? high.z : low.z};
+    w.a0 = std::min(w.a0, glm::dot(c, w.u));
+    w.a1 = std::max(w.a1, glm::dot(c, w.u));
+    w.b0 = std::min(w.b0, glm::dot(c, w.v));
+    w.b1 = std::max(w.b1, glm::dot(c, w.v));
+  }
+  return w;
+}
+
+Rgb lightPower(const Scene& scene, const Light& light) {
+  switch (light.type) {
+    case LightType::Point: return 4.0 * std::numbers::pi * light.intensity;
+    case LightType::Spot: {
+      const double cosInner = std::cos(light.innerConeRad);
+      const double cosOuter = std::cos(light.outerConeRad);
+      return 2.0 * std::numbers::pi * ((1.0 - cosInner) + (cosInner - cosOuter) / 3.0) * light.intensity;
+    }
+    case LightType::Directional: return parallelWindow(scene, light.direction).areaM2() * light.intensity;
+  }
+  return Rgb(0.0);
 }
 
 namespace {
@@ -76,6 +132,30 @@ void validatePolygon(const Scene& scene, size_t index) {
                      "split it into triangles or flatten it");
 }
 
+bool finiteNonNegative(const Rgb& c) { return finite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0; }
+
+void validateLight(const Scene& scene, const Light& light) {
+  if (!finiteNonNegative(light.intensity))
+    throw SceneError(scene.source, light.name,
+                     "has a negative, NaN or infinite intensity (" + std::to_string(light.intensity.r) + ", " +
+                         std::to_string(light.intensity.g) + ", " + std::to_string(light.intensity.b) + ")",
+                     "give the light a finite, non-negative intensity and colour");
+  if (light.type != LightType::Directional && !finite(light.position))
+    throw SceneError(scene.source, light.name, "has a NaN or infinite position",
+                     "give its node a finite transform");
+  if (light.type != LightType::Point &&
+      !(finite(light.direction) && std::abs(glm::length(light.direction) - 1.0) < 1e-9))
+    throw SceneError(scene.source, light.name, "has no direction (zero, NaN or not a unit vector)",
+                     "give its node a rotation, not a zero scale");
+  if (light.type == LightType::Spot &&
+      !(light.innerConeRad >= 0.0 && light.innerConeRad < light.outerConeRad &&
+        light.outerConeRad <= std::numbers::pi / 2))
+    throw SceneError(scene.source, light.name,
+                     "has cone angles inner " + std::to_string(light.innerConeRad) + ", outer " +
+                         std::to_string(light.outerConeRad) + " rad",
+                     "give 0 <= innerConeAngle < outerConeAngle <= pi/2");
+}
+
 }  // namespace
 
 void validateScene(const Scene& scene) {
@@ -83,6 +163,7 @@ void validateScene(const Scene& scene) {
     throw SceneError(scene.source, "", "contains no polygons", "check that the file holds surfaces");
   for (const Material& m : scene.materials) validateMaterial(scene, m);
   for (size_t i = 0; i < scene.polygons.size(); ++i) validatePolygon(scene, i);
+  for (const Light& light : scene.lights) validateLight(scene, light);
   if (!(emittedPowerW(scene) > 0.0))
     throw SceneError(scene.source, "", "has no emitter, so every radiosity would be zero",
                      "give at least one material a positive emittance");
@@ -93,6 +174,10 @@ double emittedPowerW(const Scene& scene) {
   for (const Polygon& p : scene.polygons) {
     const Rgb& e = scene.materials.at(p.material).emittance;
     power += polygonArea(p.vertices) * (e.r + e.g + e.b);
+  }
+  for (const Light& light : scene.lights) {
+    const Rgb p = lightPower(scene, light);
+    power += p.r + p.g + p.b;
   }
   return power;
 }

@@ -3,7 +3,9 @@
 // mesher consumes; nothing here knows about patches or light transport.
 #include <glm/glm.hpp>
 
+#include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace radmesh {
@@ -28,22 +30,65 @@ struct Polygon {
   std::string origin;          // where it came from, for messages: "line 120: f", "mesh 'desk'"
 };
 
+// A light without a patch (glTF's KHR_lights_punctual, the sun): its first shot is a projection
+// from the light itself (solver/formfactors/light_rows.h), after which it is done.
+enum class LightType { Point, Spot, Directional };
+
+struct Light {
+  std::string name;  // for messages: "light 0 'lamp' (node 3)", "--sun"
+  LightType type = LightType::Point;
+  Vec3 position{0.0};           // point and spot, metres
+  Vec3 direction{0.0, 0.0, -1.0};  // spot and directional: the unit direction the light travels
+  // Point and spot: radiant intensity, W/sr per channel (on the spot's axis). Directional:
+  // irradiance on a surface normal to the light, W/m^2 per channel.
+  Rgb intensity{0.0};
+  double innerConeRad = 0.0;    // spot: full intensity within this angle of the axis
+  double outerConeRad = std::numbers::pi / 4;  // spot: none beyond it (glTF's default), at most pi / 2
+};
+
 struct Scene {
   std::string source;  // file path or built-in name, for messages
   std::vector<Material> materials;
   std::vector<Polygon> polygons;
+  std::vector<Light> lights;
 };
 
 // Newell's normal: its length is twice the polygon's area, robust for non-convex polygons.
 Vec3 newellNormal(const std::vector<Vec3>& vertices);
 double polygonArea(const std::vector<Vec3>& vertices);
 
+// Unit axes u, v such that (u, v, n) is right-handed and orthonormal, for a unit n: u is the world
+// axis least aligned with n, projected into the plane normal to n (deterministic).
+std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n);
+
 // Throws SceneError for input that cannot be solved: no polygons, NaN or infinite coordinates,
 // fewer than 3 vertices, zero area, non-planar polygons, rho outside [0,1), negative or non-finite
-// emittance, a material index out of range, or no emitter at all.
+// emittance, a material index out of range, a light with a non-finite or negative intensity, a
+// zero direction or cone angles outside 0 <= inner < outer <= pi/2, or no emitter at all (neither
+// an emitting material nor a light).
 void validateScene(const Scene& scene);
 
-// Total emitted power in watts, summed over RGB: sum of area * (E_r + E_g + E_b).
+// A spot's relative intensity at cosTheta (the cosine of the angle from its axis):
+// KHR_lights_punctual's smooth falloff, t^2 with t = (cosTheta - cos outer) / (cos inner - cos outer)
+// clamped to [0, 1].
+double spotFalloff(const Light& spot, double cosTheta);
+
+// The window a directional light's parallel beam covers: the rectangle, normal to its direction,
+// that the scene's bounding box projects onto (u, v orthonormal, normal to the direction).
+struct ParallelWindow {
+  Vec3 u{1.0, 0.0, 0.0}, v{0.0, 1.0, 0.0};
+  double a0 = 0.0, a1 = 0.0;  // along u, metres
+  double b0 = 0.0, b1 = 0.0;  // along v
+  double areaM2() const { return (a1 - a0) * (b1 - b0); }
+};
+ParallelWindow parallelWindow(const Scene& scene, const Vec3& direction);
+
+// A light's power in watts per channel: point 4 pi I; spot I times the integral of its falloff
+// over the sphere, 2 pi I [(1 - cos inner) + (cos inner - cos outer) / 3]; directional E times the
+// area of its parallel window (all it sends into the scene's bounding box).
+Rgb lightPower(const Scene& scene, const Light& light);
+
+// Total emitted power in watts, summed over RGB: sum of area * (E_r + E_g + E_b), plus the lights'.
 double emittedPowerW(const Scene& scene);
 
 }  // namespace radmesh

@@ -1,0 +1,76 @@
+#include "solver/formfactors/light_rows.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "solver/projection/environment_projection.h"
+#include "solver/projection/hemicube.h"
+
+namespace radmesh {
+
+namespace {
+
+// A directional light's window in its viewpoint's frame: centred on the origin.
+ProjectionFace parallelFace(const ParallelWindow& w, int resolution) {
+  ProjectionFace face;
+  face.parallel = true;
+  face.a1 = 0.5 * (w.a1 - w.a0);
+  face.a0 = -face.a1;
+  face.b1 = 0.5 * (w.b1 - w.b0);
+  face.b0 = -face.b1;
+  face.width = face.height = resolution;
+  return face;
+}
+
+}  // namespace
+
+ProjectionSurface lightSurface(const Scene& scene, const Light& light, int resolution) {
+  ProjectionSurface surface;
+  if (light.type == LightType::Directional) {
+    // Every pixel of the window carries the same irradiance times the same area.
+    addFace(surface, parallelFace(parallelWindow(scene, light.direction), resolution),
+            [](double, double, double) { return 1.0; });
+  } else {
+    const bool point = light.type == LightType::Point;
+    for (const ProjectionFace& face : point ? cubeFaces(resolution) : hemicubeFaces(resolution))
+      addFace(surface, face, [&](double a, double b, double pixelArea) {
+        const Vec3 d = face.toLocal({a, b});
+        const double r = glm::length(d);
+        const double solidAngle = pixelArea / (r * r * r);  // dA cos(theta) / r^2, cos(theta) = 1 / r
+        return point ? solidAngle : solidAngle * spotFalloff(light, d.z / r);
+      });
+    surface.wholeSphere = point;
+  }
+  scaleToCapturedFraction(surface, 1.0);  // all the light's power leaves through its surface
+  return surface;
+}
+
+Patch lightViewpoint(const Scene& scene, const Light& light, const std::vector<Patch>& patches) {
+  Patch viewpoint;
+  if (light.type != LightType::Directional) {
+    const Vec3 n = light.type == LightType::Spot ? light.direction : Vec3(0.0, 0.0, 1.0);
+    const auto [u, v] = perpendicularAxes(n);
+    viewpoint.frame = {u, v, n};
+    viewpoint.centroid = light.position;
+    return viewpoint;
+  }
+  const ParallelWindow w = parallelWindow(scene, light.direction);
+  const Vec3& n = light.direction;
+  double nearest = std::numeric_limits<double>::max();
+  for (const Patch& p : patches)
+    for (int k = 0; k < p.vertexCount; ++k) nearest = std::min(nearest, glm::dot(p.vertices[k], n));
+  // Behind every patch by the window's size, so that depths are of the scene's scale.
+  const double setBack = std::max(w.a1 - w.a0, w.b1 - w.b0);
+  viewpoint.frame = {w.u, w.v, n};
+  viewpoint.centroid = 0.5 * (w.a0 + w.a1) * w.u + 0.5 * (w.b0 + w.b1) * w.v + (nearest - setBack) * n;
+  return viewpoint;
+}
+
+FormFactorRow lightRow(const Scene& scene, const Light& light, const std::vector<Patch>& patches, int resolution,
+                       double nearDepth, ThreadPool& pool) {
+  EnvironmentProjection projection(patches, lightSurface(scene, light, resolution), nearDepth, pool);
+  projection.projectFrom(lightViewpoint(scene, light, patches), -1);
+  return assembleRow(-1, 1.0, projection.pixelFormFactors(), projection.seenFromFront());
+}
+
+}  // namespace radmesh
