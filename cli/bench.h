@@ -4,10 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "solver/scene/scene.h"
+
 namespace radmesh::cli {
 
 struct BenchSolveArgs {
   std::string scene = "office";
+  std::vector<Light> sun;  // --sun
   double cellM = 0.381;
   std::vector<std::string> projections{"plane", "hemicube"};
   std::vector<int> resolutions{64, 128, 256, 512};

@@ -7,6 +7,7 @@
 #include "cli/bench.h"
 #include "cli/commands.h"
 #include "cli/output_path.h"
+#include "cli/solve_flags.h"
 #include "cli/stats_json.h"
 
 namespace radmesh::cli {
@@ -23,6 +24,7 @@ void addBenchSolve(CLI::App* bench) {
   CLI::App* cmd = bench->add_subcommand("solve", "Time per iteration and to convergence by projection and resolution");
   cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
   cmd->add_option("--cell", args->cellM, "Grid cell size, metres")->capture_default_str();
+  addSunFlag(cmd, args->sun);
   cmd->add_option("--projections", args->projections, "Projections to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--shooters", args->shooters, "Shooters k per iteration to time")->delimiter(',')->capture_default_str();

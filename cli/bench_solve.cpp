@@ -58,7 +58,7 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
 }  // namespace
 
 nlohmann::json benchSolve(const BenchSolveArgs& args) {
-  const Scene scene = loadScene(args.scene);
+  const Scene scene = loadScene(args.scene, nullptr, args.sun);
   const std::vector<Patch> patches = meshScene(scene, args.cellM);
   nlohmann::json rows = nlohmann::json::array();
   fmt::print("scene {}: {} patches, threads {}, until C={:.2f}; times are {}\n", scene.source, patches.size(),

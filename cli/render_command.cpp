@@ -94,7 +94,7 @@ Solved solveScene(const RenderArgs& args) {
     options.untilUnshot = 0.0;
     options.maxIterations = args.iterations;
   }
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.sun);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
   solveWithProgress(solver, args.quiet);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,

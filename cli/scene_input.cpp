@@ -7,8 +7,9 @@
 
 namespace radmesh::cli {
 
-Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<std::string>& warnings) {
-  Scene scene = loadScene(pathOrName, &warnings);
+Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<std::string>& warnings,
+                       const std::vector<Light>& addedLights) {
+  Scene scene = loadScene(pathOrName, &warnings, addedLights);
   if (strict && !warnings.empty()) {
     std::string list;
     for (const std::string& w : warnings) list += "\n  " + w;
@@ -19,9 +20,9 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<s
   return scene;
 }
 
-Scene loadCommandScene(const std::string& pathOrName, bool strict) {
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const std::vector<Light>& addedLights) {
   std::vector<std::string> warnings;
-  Scene scene = loadCommandScene(pathOrName, strict, warnings);
+  Scene scene = loadCommandScene(pathOrName, strict, warnings, addedLights);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
   return scene;
 }

@@ -9,9 +9,11 @@ namespace radmesh::cli {
 
 // Loads pathOrName, with what the reader repaired (an unknown entity skipped, `rd 1` lowered...) in
 // `warnings`. With `strict`, a scene that needed any repair is refused: SceneError listing them.
-Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<std::string>& warnings);
+// `addedLights` (--sun) join the scene's own lights.
+Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<std::string>& warnings,
+                       const std::vector<Light>& addedLights = {});
 
 // The same for a command that only prints the warnings, on stderr.
-Scene loadCommandScene(const std::string& pathOrName, bool strict);
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const std::vector<Light>& addedLights = {});
 
 }  // namespace radmesh::cli

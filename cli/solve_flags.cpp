@@ -5,6 +5,7 @@
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
 #include "solver/io/scene_loader.h"
+#include "solver/scene/sun.h"
 
 namespace radmesh::cli {
 
@@ -16,6 +17,13 @@ void applyPresetFlags(Preset preset, SolveFlags& f) {
 }
 
 }  // namespace
+
+void addSunFlag(CLI::App* cmd, std::vector<Light>& sun) {
+  cmd->add_option_function<std::string>(
+      "--sun", [&sun](const std::string& text) { sun = {parseSun(text)}; },
+      "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north (+y) and above the horizon (z up); LUX "
+      "defaults to 100000, clear-sky direct sun. Combines with the scene's own lights");
+}
 
 SolveFlags::SolveFlags() { applyPresetFlags(Preset::Bake, *this); }
 
@@ -70,6 +78,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
            f.options.formFactorCacheBytes = static_cast<std::size_t>(mb * 1024 * 1024);
          },
          "Form-factor row cache budget in MiB (0: none)");
+  addSunFlag(cmd, f.sun);
   const std::vector<CLI::Option*> options = cmd->get_options();
   f.solverOptions.assign(options.begin() + static_cast<std::ptrdiff_t>(first), options.end());
 }

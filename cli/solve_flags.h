@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/scene/scene.h"
 #include "solver/scene/solve_options.h"
 
 namespace radmesh::cli {
@@ -16,6 +17,7 @@ struct SolveFlags {
   std::string projection;
   std::string mapping = "hierarchical";
   bool strict = false;  // --strict: a scene that needed any repair is refused
+  std::vector<Light> sun;  // --sun AZIMUTH,ELEVATION[,LUX]: the sun's directional light, if given
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
@@ -27,8 +29,11 @@ struct SolveFlags {
 };
 
 // Adds SCENE and --preset --backend --cell --projection --resolution --ratio --shooters --until
-// --until-unshot --max-iterations --threads --cache-mb to a subcommand. --preset is applied as it
+// --until-unshot --max-iterations --threads --cache-mb --sun to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
+
+// --sun alone, for a command without the other solve flags (bench).
+void addSunFlag(CLI::App* cmd, std::vector<Light>& sun);
 
 }  // namespace radmesh::cli

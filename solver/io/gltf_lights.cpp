@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "solver/io/mgf_color.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {

@@ -38,7 +38,6 @@ Xyz xyzFromTemperature(double kelvin);
 // cmix: colours (each at Y = 1) summed with weights that are relative luminances, scaled to Y = 1.
 Xyz mixColors(const std::vector<double>& weights, const std::vector<Xyz>& colors);
 
-inline constexpr double kWhiteEfficacyLmPerW = 179.0;
 // rho for `rd` in [0, 1) of colour `xyz`: luminance rd, channels in [0, max(rd,
 // kHighestReflectance)] (where a saturated colour pushes one up, it stops there).
 Rgb mgfReflectance(double rd, const Xyz& xyz, bool* desaturated);

@@ -39,8 +39,10 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
 
 }  // namespace
 
-Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings) {
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings,
+                const std::vector<Light>& addedLights) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
+  scene.lights.insert(scene.lights.end(), addedLights.begin(), addedLights.end());
   validateScene(scene);
   return scene;
 }

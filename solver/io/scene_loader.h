@@ -9,7 +9,9 @@ namespace radmesh {
 
 inline constexpr const char* kDefaultScene = "office";
 
-// Loads and validates; throws SceneError with file, element and fix on anything unusable.
-Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr);
+// Loads and validates, with `addedLights` (--sun) among the scene's own, so that a scene they
+// alone light is accepted; throws SceneError with file, element and fix on anything unusable.
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr,
+                const std::vector<Light>& addedLights = {});
 
 }  // namespace radmesh

@@ -13,6 +13,11 @@ namespace radmesh {
 using Vec3 = glm::dvec3;
 using Rgb = glm::dvec3;  // linear RGB, one value per channel
 
+// Photometric to radiometric, in every reader and option that takes lumens, candela or lux (MGF's
+// `ed`, IES luminaires, glTF lights, --sun): 179 lm/W, the luminous efficacy of equal-energy white
+// that Radiance (MGF's origin) uses. One white watt per channel per 179 lm (docs/scene-formats.md).
+inline constexpr double kWhiteEfficacyLmPerW = 179.0;
+
 // What a reflectance of 1 or more is lowered to, in every reader: rho = 1 would never let light
 // die out, and exporters write 1 for white.
 inline constexpr double kHighestReflectance = 0.99;

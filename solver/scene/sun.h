@@ -1,0 +1,29 @@
+#pragma once
+// The sun as a directional light (--sun AZIMUTH,ELEVATION[,LUX]): parallel light of a given
+// illuminance normal to its direction, placed by azimuth and elevation.
+#include <string>
+
+#include "solver/scene/scene.h"
+
+namespace radmesh {
+
+// Clear-sky direct sun at a high elevation, in lux on a surface facing it.
+inline constexpr double kClearSkySunLux = 100000.0;
+
+// Which way is up and which is north in a scene. One place, so that an up-axis option can change it.
+struct Compass {
+  Vec3 up{0.0, 0.0, 1.0};
+  Vec3 north{0.0, 1.0, 0.0};
+};
+Compass sceneCompass();  // z up, y north
+
+// The sun at azimuth (degrees clockwise from north, seen from above) and elevation (degrees above
+// the horizon) giving `lux` on a surface facing it: irradiance lux / kWhiteEfficacyLmPerW W/m^2
+// per channel (white). Throws OptionError naming --sun for an elevation outside (0, 90], a
+// non-finite azimuth, or a lux that is not finite and positive.
+Light sunLight(double azimuthDeg, double elevationDeg, double lux, const Compass& compass = sceneCompass());
+
+// "AZIMUTH,ELEVATION[,LUX]" (LUX defaults to kClearSkySunLux). Throws OptionError naming --sun.
+Light parseSun(const std::string& text, const Compass& compass = sceneCompass());
+
+}  // namespace radmesh
