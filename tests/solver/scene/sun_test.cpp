@@ -1,0 +1,37 @@
+// --sun AZIMUTH,ELEVATION[,LUX]: the sun's direction and irradiance, and what is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solver/scene/scene_error.h"
+#include "solver/scene/sun.h"
+
+namespace radmesh {
+namespace {
+
+TEST(Sun, AzimuthIsClockwiseFromNorthAndElevationAboveTheHorizon) {
+  const Light east = parseSun("90,30");  // in the east, 30 degrees up: its light travels west and down
+  EXPECT_EQ(east.type, LightType::Directional);
+  EXPECT_NEAR(east.direction.x, -std::cos(M_PI / 6), 1e-15);
+  EXPECT_NEAR(east.direction.y, 0.0, 1e-15);
+  EXPECT_NEAR(east.direction.z, -0.5, 1e-15);
+  EXPECT_DOUBLE_EQ(east.intensity.r, kClearSkySunLux / kWhiteEfficacyLmPerW);  // 100000 lux by default
+  const Light north = parseSun("0,45,50000");
+  EXPECT_NEAR(north.direction.y, -std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(north.direction.x, 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(north.intensity.g, 50000 / 179.0);
+}
+
+TEST(Sun, ImpossibleValuesAreRefusedNamingTheOption) {
+  for (const char* bad : {"10,0", "10,-5", "10,91", "a,45", "10", "10,45,0", "10,45,nan", "", "10,45,1,2", "10,,45"}) {
+    try {
+      parseSun(bad);
+      ADD_FAILURE() << "--sun " << bad << " accepted";
+    } catch (const OptionError& e) {
+      EXPECT_NE(std::string(e.what()).find("--sun"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace radmesh
