@@ -193,15 +193,14 @@ Labels labelVoxels(const Grid& g, const std::vector<std::uint8_t>& solid, int ra
       ++out.cells;
     seeds.insert(seeds.end(), queue.begin(), queue.end());
   }
-  // Grown in voxel order, so that ties go the same way every time; the cells kOutsideHandicap
-  // layers ahead of the outside, so that the passage of a window belongs to its room.
-  std::sort(seeds.begin(), seeds.end());
+  // Grown a layer at a time from the cores in the order found, so that ties go the same way every
+  // time (to the lower cell); the cells kOutsideHandicap layers ahead of the outside, so that the
+  // passage of a window belongs to its room.
   std::vector<long> frontier, outside;
   for (long i : seeds) (out.label[i] == kOutsideCell ? outside : frontier).push_back(i);
   for (int layer = 0; !frontier.empty() || !outside.empty(); ++layer) {
     if (layer == kOutsideHandicap) {
       frontier.insert(frontier.end(), outside.begin(), outside.end());
-      std::sort(frontier.begin(), frontier.end());
       outside.clear();
     }
     std::vector<long> next;
@@ -576,13 +575,16 @@ CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches) {
 
   out.cells.resize(cells);
   std::vector<Vec3> lo(cells, Vec3(kInf)), hi(cells, Vec3(-kInf));
-  for (long i = 0; i < g.size(); ++i) {
-    const std::int32_t l = labels.label[i];
-    if (l < 0) continue;
-    const Vec3 corner = g.corner(g.coords(i));
-    lo[l] = glm::min(lo[l], corner);
-    hi[l] = glm::max(hi[l], corner + g.voxel);
-  }
+  long i = 0;
+  for (int z = 0; z < g.n[2]; ++z)
+    for (int y = 0; y < g.n[1]; ++y)
+      for (int x = 0; x < g.n[0]; ++x, ++i) {
+        const std::int32_t l = labels.label[i];
+        if (l < 0) continue;
+        const Vec3 corner = g.corner({x, y, z});
+        lo[l] = glm::min(lo[l], corner);
+        hi[l] = glm::max(hi[l], corner + g.voxel);
+      }
   // Names: the group (room, MGF object) holding most of a cell's patch area, else "cell N".
   std::vector<std::map<std::string, double>> groupArea(cells);
   for (size_t i = 0; i < patches.size(); ++i) {
