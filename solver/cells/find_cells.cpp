@@ -255,6 +255,62 @@ std::vector<int> cellsFaced(const VoxelGrid& g, const VoxelLabels& labels, const
   return out;
 }
 
+// The group holding most of each cell's patch area, "" for a cell with none.
+std::vector<std::string> mainGroups(const Scene& scene, const std::vector<Patch>& patches,
+                                    const std::vector<int>& cellOfPatch, int cells) {
+  std::vector<std::map<std::string, double>> area(cells);
+  for (size_t i = 0; i < patches.size(); ++i) {
+    const std::string group = groupOfOrigin(scene.polygons[patches[i].polygon].origin);
+    if (cellOfPatch[i] >= 0 && !group.empty()) area[cellOfPatch[i]][group] += patches[i].areaM2;
+  }
+  std::vector<std::string> out(cells);
+  for (int c = 0; c < cells; ++c) {
+    double most = 0.0;
+    for (const auto& [group, a] : area[c])
+      if (a > most) {
+        most = a;
+        out[c] = group;
+      }
+  }
+  return out;
+}
+
+// Cells with the same main group made one (at the first one's place in the order, its bounds
+// grown to hold them all), the portals between them dropped.
+void joinByGroup(CellPartition& p, const std::vector<std::string>& group) {
+  std::vector<int> to(p.cells.size());
+  std::map<std::string, int> first;
+  std::vector<Cell> cells;
+  for (size_t c = 0; c < p.cells.size(); ++c) {
+    const auto it = group[c].empty() ? first.end() : first.find(group[c]);
+    if (it == first.end()) {
+      to[c] = int(cells.size());
+      if (!group[c].empty()) first[group[c]] = to[c];
+      cells.push_back(p.cells[c]);
+      continue;
+    }
+    to[c] = it->second;
+    Cell& joined = cells[to[c]];
+    joined.boundsMin = glm::min(joined.boundsMin, p.cells[c].boundsMin);
+    joined.boundsMax = glm::max(joined.boundsMax, p.cells[c].boundsMax);
+  }
+  for (int& c : p.cellOfPatch)
+    if (c >= 0) c = to[c];
+  std::vector<Portal> portals;
+  for (Portal q : p.portals) {
+    q.cellA = to[q.cellA];
+    q.cellB = to[q.cellB];
+    if (q.cellA == q.cellB) continue;
+    if (q.cellA > q.cellB) {  // keep cellA the lower, the normal pointing into cellB
+      std::swap(q.cellA, q.cellB);
+      std::reverse(q.vertices.begin(), q.vertices.end());
+    }
+    portals.push_back(std::move(q));
+  }
+  p.cells = std::move(cells);
+  p.portals = std::move(portals);
+}
+
 }  // namespace
 
 std::string groupOfOrigin(const std::string& origin) {
@@ -269,6 +325,10 @@ std::string groupOfOrigin(const std::string& origin) {
 }
 
 CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches) {
+  return findCells(scene, patches, CellGroups::Name);
+}
+
+CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches, CellGroups groups) {
   CellPartition out;
   if (patches.empty()) return out;
   int pad = 0;
@@ -294,29 +354,14 @@ CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches) {
         lo[l] = glm::min(lo[l], corner);
         hi[l] = glm::max(hi[l], corner + g.voxel);
       }
-  // Names: the group (room, MGF object) holding most of a cell's patch area, else "cell N".
-  std::vector<std::map<std::string, double>> groupArea(cells);
-  for (size_t i = 0; i < patches.size(); ++i) {
-    const int c = out.cellOfPatch[i];
-    const std::string group = groupOfOrigin(scene.polygons[patches[i].polygon].origin);
-    if (c >= 0 && !group.empty()) groupArea[c][group] += patches[i].areaM2;
-  }
+  if (labels.cells == 0) std::tie(lo[0], hi[0]) = boundsOf(patches);  // the scene's bounds
+  const std::vector<std::string> group = mainGroups(scene, patches, out.cellOfPatch, cells);
   std::map<std::string, int> used;
   for (int c = 0; c < cells; ++c) {
-    std::string name;
-    double most = 0.0;
-    for (const auto& [group, area] : groupArea[c])
-      if (area > most) {
-        most = area;
-        name = group;
-      }
-    if (name.empty() || used[name]++ > 0) name = "cell " + std::to_string(c);
-    Cell& cell = out.cells[c];
-    cell.name = name;
-    if (labels.cells == 0) std::tie(lo[0], hi[0]) = boundsOf(patches);  // the scene's bounds
-    cell.boundsMin = lo[c];
-    cell.boundsMax = hi[c];
+    const bool named = !group[c].empty() && used[group[c]]++ == 0;
+    out.cells[c] = {named ? group[c] : "cell " + std::to_string(c), lo[c], hi[c]};
   }
+  if (groups == CellGroups::Join) joinByGroup(out, group);
   return out;
 }
 

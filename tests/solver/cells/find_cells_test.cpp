@@ -187,16 +187,16 @@ TEST(FindCells, AFaceTowardsTheOutsideHasNoCell) {
 
 // Two rooms sharing a wall of no thickness (each room's own face, back to back, as files often
 // have them), joined by an opening `width` m wide and 2.1 m high.
-Scene abuttingRooms(double width) {
+Scene abuttingRooms(double width, const std::string& west = "west", const std::string& east = "east") {
   SceneBuilder b("test");
   const int grey = b.addMaterial("grey", Rgb(0.5)), light = b.addMaterial("light", Rgb(0.5), Rgb(1.0));
   const double y0 = 2.0 - width / 2, y1 = 2.0 + width / 2;
   b.addRoom({0, 0, 0}, {4, 4, 2.7}, {grey, grey, grey},
             {{kXMax, {4, y0, 0}, {4, y1, 2.1}, 0.0, -1, -1, "opening"},
              {kZMax, {1, 1, 0}, {2, 2, 0}, 0.0, -1, light, "light"}},
-            "west");
+            west);
   b.addRoom({4, 0, 0}, {8, 4, 2.7}, {grey, grey, grey}, {{kXMin, {4, y0, 0}, {4, y1, 2.1}, 0.0, -1, -1, "opening"}},
-            "east");
+            east);
   return b.take();
 }
 
@@ -218,6 +218,28 @@ TEST(FindCells, ThinWallsAndWideOpenings) {
   const CellPartition one = findCells(arch, meshScene(arch));
   EXPECT_EQ(one.cells.size(), 1u);
   EXPECT_TRUE(one.portals.empty());
+}
+
+// Two rooms the file names as one ("hall"): by default two cells (the second named "cell 1"), with
+// CellGroups::Join one cell named "hall" holding every patch, and no portal.
+TEST(FindCells, NamedGroupsJoinCellsWhenAsked) {
+  const Scene hall = abuttingRooms(0.9, "hall", "hall");
+  const std::vector<Patch> patches = meshScene(hall);
+  const CellPartition two = findCells(hall, patches);
+  ASSERT_EQ(two.cells.size(), 2u);
+  EXPECT_EQ(two.cells[0].name, "hall");
+  EXPECT_EQ(two.cells[1].name, "cell 1");
+  EXPECT_EQ(two.portals.size(), 1u);
+  const CellPartition one = findCells(hall, patches, CellGroups::Join);
+  ASSERT_EQ(one.cells.size(), 1u);
+  EXPECT_EQ(one.cells[0].name, "hall");
+  EXPECT_TRUE(one.portals.empty());
+  EXPECT_EQ(std::count(one.cellOfPatch.begin(), one.cellOfPatch.end(), 0), long(patches.size()));
+  EXPECT_NEAR(one.cells[0].boundsMin.x, two.cells[0].boundsMin.x, 1e-12);
+  EXPECT_NEAR(one.cells[0].boundsMax.x, two.cells[1].boundsMax.x, 1e-12);
+  // Rooms of different names stay apart.
+  const Scene apart = abuttingRooms(0.9);
+  EXPECT_EQ(findCells(apart, meshScene(apart), CellGroups::Join).cells.size(), 2u);
 }
 
 TEST(FindCells, GroupOfOriginReadsRoomsAndObjects) {
