@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "solver/io/builtin_building.h"
 #include "solver/io/builtin_office.h"
 #include "solver/io/gltf_import.h"
 #include "solver/io/scene_builder.h"
@@ -71,9 +72,15 @@ const std::vector<std::string>& builtinSceneNames() {
   return names;
 }
 
+std::string builtinSceneForms() {
+  std::string known;
+  for (const std::string& n : builtinSceneNames()) known += n + ", ";
+  return known + std::string(kBuildingPrefix) + "COLSxROWS";
+}
+
 bool isBuiltinScene(const std::string& name) {
   const auto& names = builtinSceneNames();
-  return std::find(names.begin(), names.end(), name) != names.end();
+  return std::find(names.begin(), names.end(), name) != names.end() || name.rfind(kBuildingPrefix, 0) == 0;
 }
 
 Scene builtinScene(const std::string& name) {
@@ -81,10 +88,9 @@ Scene builtinScene(const std::string& name) {
   if (name == "cornell") return cornellScene();
   if (name == "furnace") return furnaceScene();
   if (name == "two-rooms") return twoRoomsScene();
-  std::string known;
-  for (const std::string& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
+  if (name.rfind(kBuildingPrefix, 0) == 0) return buildingScene(parseBuildingName(name));
   throw SceneError(name, "", "is not a built-in scene",
-                   "use one of " + known + ", or a .gltf, .glb or .mgf file");
+                   "use one of " + builtinSceneForms() + ", or a .gltf, .glb or .mgf file");
 }
 
 }  // namespace radmesh

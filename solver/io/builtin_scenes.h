@@ -1,5 +1,6 @@
 #pragma once
-// The built-in scenes: office (the default), cornell, furnace, two-rooms.
+// The built-in scenes: office (the default), cornell, furnace, two-rooms, and the generated
+// building:COLSxROWS.
 #include <string>
 #include <vector>
 
@@ -7,8 +8,9 @@
 
 namespace radmesh {
 
-const std::vector<std::string>& builtinSceneNames();
-bool isBuiltinScene(const std::string& name);
+const std::vector<std::string>& builtinSceneNames();  // the fixed ones, not building:COLSxROWS
+std::string builtinSceneForms();                       // every form, for messages: "office, ..., building:COLSxROWS"
+bool isBuiltinScene(const std::string& name);          // true for any "building:..." (a bad size throws)
 Scene builtinScene(const std::string& name);  // throws SceneError for an unknown name
 
 }  // namespace radmesh

@@ -15,9 +15,7 @@ namespace radmesh {
 namespace {
 
 std::string acceptedForms() {
-  std::string names;
-  for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
-  return "give a .gltf, .glb or .mgf file, or a built-in scene name (" + names + ")";
+  return "give a .gltf, .glb or .mgf file, or a built-in scene name (" + builtinSceneForms() + ")";
 }
 
 Scene importFile(const std::string& path, std::vector<std::string>* warnings) {

@@ -1,0 +1,169 @@
+#include "solver/cells/find_cells.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+#include "solver/io/builtin_building.h"
+#include "solver/io/builtin_scenes.h"
+#include "solver/meshing/meshing.h"
+
+namespace radmesh {
+namespace {
+
+struct Found {
+  Scene scene;
+  std::vector<Patch> patches;
+  CellPartition cells;
+};
+
+Found find(const std::string& name) {
+  Found f{builtinScene(name), {}, {}};
+  f.patches = meshScene(f.scene);
+  f.cells = findCells(f.scene, f.patches);
+  return f;
+}
+
+std::map<std::string, int> cellIndexByName(const CellPartition& p) {
+  std::map<std::string, int> out;
+  for (size_t c = 0; c < p.cells.size(); ++c) out[p.cells[c].name] = int(c);
+  return out;
+}
+
+Vec3 portalNormal(const Portal& p) { return glm::normalize(newellNormal(p.vertices)); }
+
+// Does segment [a, b] lie on segment [c, d] (collinear, inside it)?
+bool segmentOn(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 u = d - c;
+  const double length = glm::length(u);
+  if (length < 1e-12) return false;
+  for (const Vec3& p : {a, b}) {
+    const double along = glm::dot(p - c, u) / length;
+    if (glm::length(p - c - u * (along / length)) > 1e-6 || along < -1e-6 || along > length + 1e-6) return false;
+  }
+  return true;
+}
+
+// Every edge of the portal runs along an edge of some polygon of the scene: the portal is framed
+// by the wall, the floor and the reveals of its opening, not placed beside it.
+void expectFramedByGeometry(const Scene& scene, const Portal& portal) {
+  const size_t n = portal.vertices.size();
+  for (size_t k = 0; k < n; ++k) {
+    const Vec3 a = portal.vertices[k], b = portal.vertices[(k + 1) % n];
+    bool framed = false;
+    for (const Polygon& poly : scene.polygons) {
+      const size_t m = poly.vertices.size();
+      for (size_t j = 0; j < m && !framed; ++j) framed = segmentOn(a, b, poly.vertices[j], poly.vertices[(j + 1) % m]);
+      if (framed) break;
+    }
+    EXPECT_TRUE(framed) << "portal " << portal.cellA << "-" << portal.cellB << " edge " << k << " lies on no polygon edge";
+  }
+}
+
+TEST(FindCells, OneRoomIsOneCellWithoutPortals) {
+  for (const std::string name : {"office", "cornell", "furnace"}) {
+    SCOPED_TRACE(name);
+    const Found f = find(name);
+    ASSERT_EQ(f.cells.cells.size(), 1u);
+    EXPECT_TRUE(f.cells.portals.empty());
+    ASSERT_EQ(f.cells.cellOfPatch.size(), f.patches.size());
+    EXPECT_EQ(std::count(f.cells.cellOfPatch.begin(), f.cells.cellOfPatch.end(), 0), long(f.patches.size()))
+        << "every patch of a closed room faces into it";
+  }
+  EXPECT_EQ(find("office").cells.cells[0].name, "office");
+}
+
+TEST(FindCells, TwoRoomsAreTwoCellsJoinedByTheDoorway) {
+  const Found f = find("two-rooms");
+  ASSERT_EQ(f.cells.cells.size(), 2u);
+  ASSERT_EQ(f.cells.portals.size(), 1u);
+  const auto index = cellIndexByName(f.cells);
+  ASSERT_TRUE(index.count("first") && index.count("second"));
+  const Portal& p = f.cells.portals[0];
+  EXPECT_EQ(std::set<int>({p.cellA, p.cellB}), std::set<int>({0, 1}));
+  EXPECT_LT(p.cellA, p.cellB);
+  // The doorway, 0.9 m x 2.1 m, in one of the wall's two faces (x = 4 or x = 4.2).
+  EXPECT_NEAR(p.areaM2, 0.9 * 2.1, 1e-6);
+  EXPECT_NEAR(polygonArea(p.vertices), 0.9 * 2.1, 1e-6);
+  const double x = p.vertices[0].x;
+  EXPECT_TRUE(std::abs(x - 4.0) < 1e-9 || std::abs(x - 4.2) < 1e-9) << x;
+  for (const Vec3& v : p.vertices) {
+    EXPECT_NEAR(v.x, x, 1e-12);
+    EXPECT_TRUE(std::abs(v.y - 1.55) < 1e-9 || std::abs(v.y - 2.45) < 1e-9) << v.y;
+    EXPECT_TRUE(std::abs(v.z) < 1e-9 || std::abs(v.z - 2.1) < 1e-9) << v.z;
+  }
+  // Oriented from cellA into cellB: "first" lies at x < 4.
+  const double towardsSecond = p.cellB == index.at("second") ? 1.0 : -1.0;
+  EXPECT_NEAR(portalNormal(p).x, towardsSecond, 1e-12);
+  expectFramedByGeometry(f.scene, p);
+  // Each room's floor, walls and ceiling in its own cell.
+  for (size_t i = 0; i < f.patches.size(); ++i) {
+    const std::string group = groupOfOrigin(f.scene.polygons[f.patches[i].polygon].origin);
+    const std::string& origin = f.scene.polygons[f.patches[i].polygon].origin;
+    if (origin.find("opening") != std::string::npos) continue;  // the doorway's reveals lie between the two
+    EXPECT_EQ(f.cells.cellOfPatch[i], index.at(group)) << origin;
+  }
+}
+
+// The generator's rooms and corridors, each its own cell named for it, and each door one portal
+// between the room and its corridor (or a wing's corridor and the spine).
+void expectBuildingCells(const std::string& name) {
+  SCOPED_TRACE(name);
+  const BuildingLayout layout = parseBuildingName(name);
+  const Found f = find(name);
+  EXPECT_EQ(int(f.cells.cells.size()), layout.rooms() + layout.corridors());
+  ASSERT_EQ(int(f.cells.portals.size()), layout.doors());
+  const auto index = cellIndexByName(f.cells);
+  std::set<std::pair<int, int>> expected;
+  auto join = [&](const std::string& a, const std::string& b) {
+    ASSERT_TRUE(index.count(a)) << a;
+    ASSERT_TRUE(index.count(b)) << b;
+    expected.insert({std::min(index.at(a), index.at(b)), std::max(index.at(a), index.at(b))});
+  };
+  for (int w = 0; w < layout.wings(); ++w) {
+    join(buildingCorridorName(w), kBuildingSpineName);
+    for (int row = 2 * w; row < std::min(2 * w + 2, layout.rows); ++row)
+      for (int col = 0; col < layout.cols; ++col) join(buildingRoomName(col, row), buildingCorridorName(w));
+  }
+  std::set<std::pair<int, int>> found;
+  for (const Portal& p : f.cells.portals) {
+    EXPECT_LT(p.cellA, p.cellB);
+    found.insert({p.cellA, p.cellB});
+    EXPECT_NEAR(p.areaM2, 0.9 * 2.1, 1e-6);
+    EXPECT_NEAR(polygonArea(p.vertices), 0.9 * 2.1, 1e-6);
+    expectFramedByGeometry(f.scene, p);
+    // Its normal points from cellA's side into cellB's: cellB's bounds lie ahead of the portal.
+    const Vec3 n = portalNormal(p), mid = 0.5 * (f.cells.cells[p.cellB].boundsMin + f.cells.cells[p.cellB].boundsMax);
+    EXPECT_GT(glm::dot(mid - p.vertices[0], n), 0.0);
+  }
+  EXPECT_EQ(found, expected);
+  // Every floor patch in the cell of its room or corridor; the counts add up.
+  long inCells = 0;
+  for (size_t i = 0; i < f.patches.size(); ++i) {
+    const std::string& origin = f.scene.polygons[f.patches[i].polygon].origin;
+    if (origin.find(" floor") != std::string::npos)
+      EXPECT_EQ(f.cells.cellOfPatch[i], index.at(groupOfOrigin(origin))) << origin;
+    inCells += f.cells.cellOfPatch[i] >= 0 ? 1 : 0;
+  }
+  const long outside = std::count(f.cells.cellOfPatch.begin(), f.cells.cellOfPatch.end(), kOutsideCell);
+  EXPECT_EQ(inCells + outside, long(f.patches.size()));
+}
+
+TEST(FindCells, BuildingGivesTheGeneratorsRoomsAndDoors) {
+  expectBuildingCells("building:1x1");
+  expectBuildingCells("building:2x2");
+  expectBuildingCells("building:3x1");
+}
+
+TEST(FindCells, GroupOfOriginReadsRoomsAndObjects) {
+  EXPECT_EQ(groupOfOrigin("room 'r1c2' wall -x"), "r1c2");
+  EXPECT_EQ(groupOfOrigin("house.mgf line 7: f (object 'kitchen/table')"), "kitchen");
+  EXPECT_EQ(groupOfOrigin("box 'desk' +z"), "");
+}
+
+}  // namespace
+}  // namespace radmesh
