@@ -14,6 +14,7 @@
 #include "solver/scene/scene_error.h"
 
 #if RADMESH_HAS_VIEWER
+#include "cli/cell_solve.h"
 #include "cli/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
@@ -95,13 +96,23 @@ Solved solveScene(const RenderArgs& args) {
     options.maxIterations = args.iterations;
   }
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
+  Solved solved{{}, {}, sceneFrame(scene)};
+  if (args.flags.cellsOn()) {
+    std::unique_ptr<CellSolver> solver = makeCellSolver(scene, meshScene(scene, args.flags.cellM), options,
+                                                        {args.flags.cellM, args.flags.exchangeShots});
+    printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
+    if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
+    solved.mesh = buildDisplayMesh(solver->patches());
+    solved.vertexB = vertexRadiosity(solved.mesh, solver->displayRadiosity());
+    return solved;
+  }
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
   solveWithProgress(solver, args.quiet);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
-  if (args.iterations == 0) warnIfFarFromConverged(solver);
-  Solved solved{buildDisplayMesh(solver.patches()), {}, sceneFrame(scene)};
+  if (args.iterations == 0) warnIfFarFromConverged(solver.ledger());
+  solved.mesh = buildDisplayMesh(solver.patches());
   solved.vertexB = vertexRadiosity(solved.mesh, solver.displayRadiosity());
   return solved;
 }
