@@ -3,14 +3,23 @@
 
 #include <nlohmann/json.hpp>
 
+#include <ctime>
+
 #include "cli/commands.h"
+#include "cli/output_path.h"
 #include "cli/scene_input.h"
 #include "cli/stats_json.h"
 #include "cli/effects_text.h"
+#include "solver/cells/find_cells.h"
 #include "solver/radiosity/effects_plan.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/scene_summary.h"
+#include "solver/scene/scene_error.h"
+
+#if RADMESH_HAS_VIEWER
+#include "viewer/cell_plan.h"
+#endif
 
 namespace radmesh::cli {
 
@@ -22,7 +31,85 @@ struct InfoArgs {
   bool json = false;
   bool strict = false;
   EffectsMode effects = EffectsMode::Auto;
+  bool cells = false;
+  std::string planPath;  // --plan FILE.png
 };
+
+// Per cell what a cell solve would hold: its patches, their area, its emitting patches and power.
+struct CellFigures {
+  long patches = 0;
+  double areaM2 = 0.0;
+  long emitters = 0;
+  double emittedW = 0.0;
+};
+
+std::vector<CellFigures> cellFigures(const Scene& scene, const std::vector<Patch>& patches,
+                                     const CellPartition& cells, CellFigures& outside) {
+  std::vector<CellFigures> out(cells.cells.size());
+  for (size_t i = 0; i < patches.size(); ++i) {
+    const int c = cells.cellOfPatch[i];
+    CellFigures& f = c >= 0 ? out[c] : outside;
+    const Material& m = scene.materials[patches[i].material];
+    ++f.patches;
+    f.areaM2 += patches[i].areaM2;
+    f.emitters += m.emits() ? 1 : 0;
+    f.emittedW += patches[i].areaM2 * (m.emittance.r + m.emittance.g + m.emittance.b);
+  }
+  return out;
+}
+
+nlohmann::json cellsJson(const CellPartition& cells, const std::vector<CellFigures>& figures,
+                         const CellFigures& outside, double seconds) {
+  nlohmann::json list = nlohmann::json::array(), portals = nlohmann::json::array();
+  for (size_t c = 0; c < cells.cells.size(); ++c) {
+    const Cell& cell = cells.cells[c];
+    const CellFigures& f = figures[c];
+    list.push_back({{"name", cell.name},
+                    {"patches", f.patches},
+                    {"area_m2", f.areaM2},
+                    {"emitters", f.emitters},
+                    {"emitted_w", f.emittedW},
+                    {"bounds_min", {cell.boundsMin.x, cell.boundsMin.y, cell.boundsMin.z}},
+                    {"bounds_max", {cell.boundsMax.x, cell.boundsMax.y, cell.boundsMax.z}}});
+  }
+  for (const Portal& p : cells.portals) {
+    nlohmann::json vertices = nlohmann::json::array();
+    for (const Vec3& v : p.vertices) vertices.push_back({v.x, v.y, v.z});
+    portals.push_back({{"cells", {p.cellA, p.cellB}}, {"area_m2", p.areaM2}, {"vertices", vertices}});
+  }
+  return {{"cells", list},
+          {"portals", portals},
+          {"outside_patches", outside.patches},
+          {"cells_cpu_seconds", seconds}};
+}
+
+void printCells(const CellPartition& cells, const std::vector<CellFigures>& figures, const CellFigures& outside,
+                double seconds) {
+  fmt::print("cells           {} (found in {:.3g} s of CPU), {} portals, {} patches facing no cell\n",
+             cells.cells.size(), seconds, cells.portals.size(), outside.patches);
+  fmt::print("  {:>5}  {:<16} {:>8} {:>10} {:>9} {:>10}\n", "cell", "name", "patches", "area m^2", "emitters",
+             "emitted W");
+  for (size_t c = 0; c < cells.cells.size(); ++c) {
+    const CellFigures& f = figures[c];
+    fmt::print("  {:>5}  {:<16} {:>8} {:>10.4g} {:>9} {:>10.4g}\n", c, cells.cells[c].name, f.patches, f.areaM2,
+               f.emitters, f.emittedW);
+  }
+  fmt::print("  {:>6}  {:<14} {:>10}\n", "portal", "cells", "area m^2");
+  for (size_t k = 0; k < cells.portals.size(); ++k) {
+    const Portal& p = cells.portals[k];
+    fmt::print("  {:>6}  {:<14} {:>10.4g}\n", k, fmt::format("{} -> {}", p.cellA, p.cellB), p.areaM2);
+  }
+}
+
+void writePlan(const std::vector<Patch>& patches, const CellPartition& cells, const std::string& path) {
+#if RADMESH_HAS_VIEWER
+  writePng(drawCellPlan(patches, cells), path);
+#else
+  (void)patches, (void)cells;
+  throw SceneError(path, "", "--plan needs the PNG writer of the viewer, which this radmesh was built without",
+                   "rebuild with -DRADMESH_BUILD_VIEWER=ON, or leave out --plan");
+#endif
+}
 
 nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
   nlohmann::json materials = nlohmann::json::array();
@@ -64,7 +151,7 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
 void addInfoCommand(CLI::App& app) {
   auto args = std::make_shared<InfoArgs>();
   CLI::App* cmd = app.add_subcommand("info", "Print a scene's polygons, patches, materials, emitters, bounds, area and power");
-  cmd->add_option("scene", args->scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
+  cmd->add_option("scene", args->scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres")->capture_default_str();
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
@@ -72,20 +159,38 @@ void addInfoCommand(CLI::App& app) {
   cmd->add_option_function<std::string>(
       "--effects", [args](const std::string& v) { args->effects = parseEffects(v); },
       "auto (simulate only what the scene calls for) or all");
+  cmd->add_flag("--cells", args->cells,
+                "Also list the visibility cells (rooms) and the portals (openings) joining them (docs/cells.md)");
+  cmd->add_option("--plan", args->planPath, "Draw the cells' floor plan to this PNG (implies --cells)");
   cmd->callback([args] {
+    checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
     std::vector<std::string> warnings;
     const Scene scene = loadCommandScene(args->scene, args->strict, warnings);
     const std::vector<Patch> patches = meshScene(scene, args->cellM);
     const SceneSummary summary = summarizeScene(scene, patches, args->cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
+    const bool cells = args->cells || !args->planPath.empty();
+    CellPartition partition;
+    CellFigures outside;
+    std::vector<CellFigures> figures;
+    double seconds = 0.0;
+    if (cells) {
+      const std::clock_t start = std::clock();  // CPU time: findCells runs on one thread
+      partition = findCells(scene, patches);
+      seconds = double(std::clock() - start) / CLOCKS_PER_SEC;
+      figures = cellFigures(scene, patches, partition, outside);
+      if (!args->planPath.empty()) writePlan(patches, partition, args->planPath);
+    }
     if (args->json) {
       nlohmann::json j = toJson(summary, scene);
       j["effects"] = effectsJson(plan);
       j["warnings"] = warnings;
+      if (cells) j.update(cellsJson(partition, figures, outside, seconds));
       fmt::print("{}\n", j.dump(2));
     } else {
       printText(summary, scene, warnings);
       printEffects(plan);
+      if (cells) printCells(partition, figures, outside, seconds);
     }
   });
 }

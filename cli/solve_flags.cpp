@@ -47,7 +47,7 @@ bool SolveFlags::cellsOn() const {
 }
 
 void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
-  cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
+  cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
   const size_t first = cmd->get_options().size();

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress";
   radmesh::SolveOptions& o = args.setup.options;
   CLI::App app{"radmesh-view: walk through a scene while its radiosity converges"};
-  app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
+  app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here) or native (host CPU)")
       ->capture_default_str();

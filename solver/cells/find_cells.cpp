@@ -8,6 +8,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <tuple>
 #include <unordered_map>
 
 #include "solver/geometry/polygon_2d.h"
@@ -50,15 +51,29 @@ struct Grid {
   Vec3 corner(const Index3& v) const { return origin + voxel * Vec3(v[0], v[1], v[2]); }
 };
 
+std::pair<Vec3, Vec3> boundsOf(const Patch& p) {
+  Vec3 lo(kInf), hi(-kInf);
+  for (int k = 0; k < p.vertexCount; ++k) {
+    lo = glm::min(lo, p.vertices[k]);
+    hi = glm::max(hi, p.vertices[k]);
+  }
+  return {lo, hi};
+}
+
+std::pair<Vec3, Vec3> boundsOf(const std::vector<Patch>& patches) {
+  Vec3 lo(kInf), hi(-kInf);
+  for (const Patch& p : patches) {
+    const auto [a, b] = boundsOf(p);
+    lo = glm::min(lo, a);
+    hi = glm::max(hi, b);
+  }
+  return {lo, hi};
+}
+
 // The grid over the patches' bounds with `pad` free voxels around, its voxel enlarged from
 // kVoxelM only where the building would take more than kMaxVoxels.
 Grid makeGrid(const std::vector<Patch>& patches, int& pad) {
-  Vec3 lo(kInf), hi(-kInf);
-  for (const Patch& p : patches)
-    for (int k = 0; k < p.vertexCount; ++k) {
-      lo = glm::min(lo, p.vertices[k]);
-      hi = glm::max(hi, p.vertices[k]);
-    }
+  const auto [lo, hi] = boundsOf(patches);
   Grid g;
   const Vec3 size = hi - lo;
   g.voxel = std::max(kVoxelM, std::cbrt(size.x * size.y * size.z / kMaxVoxels));
@@ -98,11 +113,7 @@ bool patchTouchesBox(const Patch& p, const Vec3& lo, const Vec3& hi) {
 std::vector<std::uint8_t> voxelise(const Grid& g, const std::vector<Patch>& patches) {
   std::vector<std::uint8_t> solid(g.size(), 0);
   for (const Patch& p : patches) {
-    Vec3 lo(kInf), hi(-kInf);
-    for (int k = 0; k < p.vertexCount; ++k) {
-      lo = glm::min(lo, p.vertices[k]);
-      hi = glm::max(hi, p.vertices[k]);
-    }
+    const auto [lo, hi] = boundsOf(p);
     const double e = 1e-9;
     const Index3 a = g.voxelOf(lo - Vec3(e)), b = g.voxelOf(hi + Vec3(e));
     for (int z = a[2]; z <= b[2]; ++z)
@@ -182,15 +193,14 @@ Labels labelVoxels(const Grid& g, const std::vector<std::uint8_t>& solid, int ra
       ++out.cells;
     seeds.insert(seeds.end(), queue.begin(), queue.end());
   }
-  // Grown in voxel order, so that ties go the same way every time; the cells kOutsideHandicap
-  // layers ahead of the outside, so that the passage of a window belongs to its room.
-  std::sort(seeds.begin(), seeds.end());
+  // Grown a layer at a time from the cores in the order found, so that ties go the same way every
+  // time (to the lower cell); the cells kOutsideHandicap layers ahead of the outside, so that the
+  // passage of a window belongs to its room.
   std::vector<long> frontier, outside;
   for (long i : seeds) (out.label[i] == kOutsideCell ? outside : frontier).push_back(i);
   for (int layer = 0; !frontier.empty() || !outside.empty(); ++layer) {
     if (layer == kOutsideHandicap) {
       frontier.insert(frontier.end(), outside.begin(), outside.end());
-      std::sort(frontier.begin(), frontier.end());
       outside.clear();
     }
     std::vector<long> next;
@@ -236,6 +246,35 @@ struct Polygons {
   }
 };
 
+// Whether p lies inside the polygon seen along `axis` (the even-odd rule).
+bool containsPoint(const std::vector<Vec3>& vs, int axis, const Vec3& p) {
+  const int s = (axis + 1) % 3, t = (axis + 2) % 3;
+  bool inside = false;
+  for (size_t k = 0, j = vs.size() - 1; k < vs.size(); j = k++) {
+    const Vec3 &a = vs[k], &b = vs[j];
+    if ((a[t] > p[t]) != (b[t] > p[t]) && p[s] < a[s] + (b[s] - a[s]) * (p[t] - a[t]) / (b[t] - a[t])) inside = !inside;
+  }
+  return inside;
+}
+
+// Whether the segment a..b passes through a polygon other than `own`.
+bool segmentBlocked(const Polygons& polys, int own, const Vec3& a, const Vec3& b) {
+  const Vec3 lo = glm::min(a, b), hi = glm::max(a, b);
+  for (size_t i = 0; i < polys.bounds.size(); ++i) {
+    const auto& [plo, phi] = polys.bounds[i];
+    if (int(i) == own || glm::any(glm::greaterThan(plo, hi)) || glm::any(glm::lessThan(phi, lo))) continue;
+    const std::vector<Vec3>& vs = polys.scene.polygons[i].vertices;
+    const Vec3 n = newellNormal(vs);
+    const double da = glm::dot(n, a - vs[0]), db = glm::dot(n, b - vs[0]);
+    if ((da > 0.0) == (db > 0.0) || da == db) continue;
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+    if (containsPoint(vs, axis, a + (b - a) * (da / (da - db)))) return true;
+  }
+  return false;
+}
+
 // How far rays from p along +s, -s, +t, -t run in the plane coordinate[axis] = c before they meet
 // a polygon (one lying in the plane, or one crossing it); nullopt when p is inside a polygon in the
 // plane or a ray runs free.
@@ -272,13 +311,12 @@ std::optional<Rect> openingAround(const Polygons& polys, const std::vector<int>&
     bool coplanar = true;
     for (const Vec3& v : vs) coplanar = coplanar && std::abs(v[axis] - c) <= eps;
     if (coplanar) {
-      bool inside = false;  // even-odd rule
-      for (size_t k = 0, j = n - 1; k < n; j = k++) {
-        const Vec2 a = in2d(vs[k]), b = in2d(vs[j]);
-        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y)) inside = !inside;
-        hitSegment(a, b);
-      }
-      if (inside) return std::nullopt;
+      Vec3 p3;
+      p3[axis] = c;
+      p3[s] = p.x;
+      p3[t] = p.y;
+      if (containsPoint(vs, axis, p3)) return std::nullopt;
+      for (size_t k = 0; k < n; ++k) hitSegment(in2d(vs[k]), in2d(vs[(k + 1) % n]));
       continue;
     }
     std::vector<Vec2> cut;  // where the polygon meets the plane
@@ -444,8 +482,9 @@ std::vector<Portal> findPortals(const Grid& g, const Labels& labels, const Polyg
 }
 
 // The label of the voxel next to the patch's own along its normal's main axis; kUnreached when it
-// is solid (a face in a gap narrower than a voxel, or within a voxel of a wall across it).
-std::int32_t labelAhead(const Grid& g, const Labels& labels, const Patch& p) {
+// is solid (a face in a gap narrower than a voxel, or within a voxel of a wall across it), or
+// when it is outside but a polygon lies between (the back of a cabinet 2 cm from an exterior wall).
+std::int32_t labelAhead(const Grid& g, const Labels& labels, const Polygons& polys, const Patch& p) {
   int axis = 0;
   for (int a = 1; a < 3; ++a)
     if (std::abs(p.normal[a]) > std::abs(p.normal[axis])) axis = a;
@@ -454,6 +493,7 @@ std::int32_t labelAhead(const Grid& g, const Labels& labels, const Patch& p) {
   v[axis] += p.normal[axis] > 0 ? 1 : -1;
   if (!g.inside(v)) return kOutsideCell;
   const std::int32_t l = labels.label[g.index(v)];
+  if (l == kOutsideCell && segmentBlocked(polys, p.polygon, p.centroid, g.corner(v) + 0.5 * g.voxel)) return kUnreached;
   return l >= kOutsideCell ? l : kUnreached;
 }
 
@@ -485,12 +525,12 @@ int nearestCell(const Grid& g, const Labels& labels, const Patch& p, int reach) 
 // Each patch's cell: the voxel ahead of it; else that of the nearest patch of its own polygon
 // whose voxel ahead was free (the same surface, a little further from the wall it runs into);
 // else the nearest cell.
-std::vector<int> cellsFaced(const Grid& g, const Labels& labels, const Scene& scene, const std::vector<Patch>& patches,
-                            int reach) {
+std::vector<int> cellsFaced(const Grid& g, const Labels& labels, const Polygons& polys,
+                            const std::vector<Patch>& patches, int reach) {
   std::vector<int> out(patches.size());
-  std::vector<std::vector<int>> seen(scene.polygons.size());  // per polygon, its patches with a label
+  std::vector<std::vector<int>> seen(polys.bounds.size());  // per polygon, its patches with a label
   for (size_t i = 0; i < patches.size(); ++i) {
-    out[i] = labelAhead(g, labels, patches[i]);
+    out[i] = labelAhead(g, labels, polys, patches[i]);
     if (out[i] != kUnreached) seen[patches[i].polygon].push_back(int(i));
   }
   for (size_t i = 0; i < patches.size(); ++i) {
@@ -528,19 +568,23 @@ CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches) {
   const Labels labels = labelVoxels(g, voxelise(g, patches), radius);
 
   const int cells = std::max(labels.cells, 1);  // no enclosed room at all: the whole scene is one
+  const Polygons polys(scene);
   out.cellOfPatch = labels.cells == 0 ? std::vector<int>(patches.size(), 0)
-                                       : cellsFaced(g, labels, scene, patches, 2 * radius);
-  if (labels.cells > 0) out.portals = findPortals(g, labels, Polygons(scene), radius);
+                                       : cellsFaced(g, labels, polys, patches, 2 * radius);
+  if (labels.cells > 0) out.portals = findPortals(g, labels, polys, radius);
 
   out.cells.resize(cells);
   std::vector<Vec3> lo(cells, Vec3(kInf)), hi(cells, Vec3(-kInf));
-  for (long i = 0; i < g.size(); ++i) {
-    const std::int32_t l = labels.label[i];
-    if (l < 0) continue;
-    const Vec3 corner = g.corner(g.coords(i));
-    lo[l] = glm::min(lo[l], corner);
-    hi[l] = glm::max(hi[l], corner + g.voxel);
-  }
+  long i = 0;
+  for (int z = 0; z < g.n[2]; ++z)
+    for (int y = 0; y < g.n[1]; ++y)
+      for (int x = 0; x < g.n[0]; ++x, ++i) {
+        const std::int32_t l = labels.label[i];
+        if (l < 0) continue;
+        const Vec3 corner = g.corner({x, y, z});
+        lo[l] = glm::min(lo[l], corner);
+        hi[l] = glm::max(hi[l], corner + g.voxel);
+      }
   // Names: the group (room, MGF object) holding most of a cell's patch area, else "cell N".
   std::vector<std::map<std::string, double>> groupArea(cells);
   for (size_t i = 0; i < patches.size(); ++i) {
@@ -560,13 +604,7 @@ CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches) {
     if (name.empty() || used[name]++ > 0) name = "cell " + std::to_string(c);
     Cell& cell = out.cells[c];
     cell.name = name;
-    if (labels.cells == 0) {  // the scene's bounds
-      for (const Patch& p : patches)
-        for (int k = 0; k < p.vertexCount; ++k) {
-          lo[0] = glm::min(lo[0], p.vertices[k]);
-          hi[0] = glm::max(hi[0], p.vertices[k]);
-        }
-    }
+    if (labels.cells == 0) std::tie(lo[0], hi[0]) = boundsOf(patches);  // the scene's bounds
     cell.boundsMin = lo[c];
     cell.boundsMax = hi[c];
   }

@@ -515,6 +515,54 @@ TEST(Cli, StrictRefusesAFileThatNeededRepairs) {
 }
 
 // A path that would fail after a long solve is refused before it starts, naming the option and the fix.
+TEST(Cli, InfoCellsListsTheRoomsAndThePortalsAsJson) {
+  const CommandRun run = radmesh("info two-rooms --cells --json");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto j = nlohmann::json::parse(run.output);
+  ASSERT_EQ(j["cells"].size(), 2u) << j["cells"].dump();
+  ASSERT_EQ(j["portals"].size(), 1u) << j["portals"].dump();
+  long patches = j["outside_patches"].get<long>(), emitters = 0;
+  double emitted = 0.0;
+  for (const auto& cell : j["cells"]) {
+    for (const char* key : {"name", "patches", "area_m2", "emitters", "emitted_w"})
+      EXPECT_TRUE(cell.contains(key)) << key << " in " << cell.dump();
+    patches += cell["patches"].get<long>();
+    emitters += cell["emitters"].get<long>();
+    emitted += cell["emitted_w"].get<double>();
+  }
+  EXPECT_EQ(patches, j["patches"].get<long>());
+  EXPECT_EQ(emitters, j["emitter_patches"].get<long>());
+  EXPECT_NEAR(emitted, j["emitted_power"].get<double>(), 1e-9);
+  EXPECT_EQ(j["portals"][0]["cells"], nlohmann::json::array({0, 1}));
+  EXPECT_NEAR(j["portals"][0]["area_m2"].get<double>(), 0.9 * 2.1, 1e-9);
+
+  const CommandRun text = radmesh("info building:1x1 --cells");
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_NE(text.output.find("3 (found in"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("2 portals"), std::string::npos) << text.output;
+  for (const char* name : {"r0c0", "corridor 0", "spine"}) EXPECT_NE(text.output.find(name), std::string::npos) << name;
+}
+
+TEST(Cli, InfoPlanDrawsThePlanOrSaysWhatIsWrong) {
+  const std::string plan = tempPath("plan.png");
+  const CommandRun run = radmesh("info building:1x1 --plan " + plan + " --json");
+  if (run.output.find("built without") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto j = nlohmann::json::parse(run.output);
+  EXPECT_EQ(j["cells"].size(), 3u);
+  // The long side 1000 px, the other in proportion, 20 px margins (viewer/cell_plan.h).
+  const double dx = j["bounds_max"][0].get<double>() - j["bounds_min"][0].get<double>();
+  const double dy = j["bounds_max"][1].get<double>() - j["bounds_min"][1].get<double>();
+  const double scale = 1000.0 / std::max(dx, dy);
+  EXPECT_EQ(pngSize(plan), std::make_pair(int(std::lround(dx * scale)) + 40, int(std::lround(dy * scale)) + 40));
+  const CommandRun bad = radmesh("info two-rooms --plan " + tempPath("plan.jpg"));
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--plan"), std::string::npos) << bad.output;
+  const CommandRun size = radmesh("info building:0x3");
+  EXPECT_EQ(size.exitCode, 2) << size.output;
+  EXPECT_NE(size.output.find("building:COLSxROWS"), std::string::npos) << size.output;
+}
+
 TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
   const std::string missing = tempPath("no-such-folder") + "/x";
   const std::map<std::string, std::string> cases = {

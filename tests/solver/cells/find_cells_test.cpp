@@ -10,6 +10,7 @@
 
 #include "solver/io/builtin_building.h"
 #include "solver/io/builtin_scenes.h"
+#include "solver/io/scene_builder.h"
 #include "solver/meshing/meshing.h"
 
 namespace radmesh {
@@ -48,9 +49,9 @@ bool segmentOn(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return true;
 }
 
-// Every edge of the portal runs along an edge of some polygon of the scene: the portal is framed
-// by the wall, the floor and the reveals of its opening, not placed beside it.
-void expectFramedByGeometry(const Scene& scene, const Portal& portal) {
+// Whether every edge of the portal runs along an edge of some polygon of the scene: the portal is
+// framed by the wall, the floor and the reveals of its opening, not placed beside it.
+bool framedByGeometry(const Scene& scene, const Portal& portal) {
   const size_t n = portal.vertices.size();
   for (size_t k = 0; k < n; ++k) {
     const Vec3 a = portal.vertices[k], b = portal.vertices[(k + 1) % n];
@@ -60,8 +61,9 @@ void expectFramedByGeometry(const Scene& scene, const Portal& portal) {
       for (size_t j = 0; j < m && !framed; ++j) framed = segmentOn(a, b, poly.vertices[j], poly.vertices[(j + 1) % m]);
       if (framed) break;
     }
-    EXPECT_TRUE(framed) << "portal " << portal.cellA << "-" << portal.cellB << " edge " << k << " lies on no polygon edge";
+    if (!framed) return false;
   }
+  return true;
 }
 
 TEST(FindCells, OneRoomIsOneCellWithoutPortals) {
@@ -99,7 +101,10 @@ TEST(FindCells, TwoRoomsAreTwoCellsJoinedByTheDoorway) {
   // Oriented from cellA into cellB: "first" lies at x < 4.
   const double towardsSecond = p.cellB == index.at("second") ? 1.0 : -1.0;
   EXPECT_NEAR(portalNormal(p).x, towardsSecond, 1e-12);
-  expectFramedByGeometry(f.scene, p);
+  EXPECT_TRUE(framedByGeometry(f.scene, p));
+  Portal beside = p;  // the same rectangle 10 cm along the wall is not framed
+  for (Vec3& v : beside.vertices) v.y += 0.1;
+  EXPECT_FALSE(framedByGeometry(f.scene, beside));
   // Each room's floor, walls and ceiling in its own cell.
   for (size_t i = 0; i < f.patches.size(); ++i) {
     const std::string group = groupOfOrigin(f.scene.polygons[f.patches[i].polygon].origin);
@@ -135,7 +140,7 @@ void expectBuildingCells(const std::string& name) {
     found.insert({p.cellA, p.cellB});
     EXPECT_NEAR(p.areaM2, 0.9 * 2.1, 1e-6);
     EXPECT_NEAR(polygonArea(p.vertices), 0.9 * 2.1, 1e-6);
-    expectFramedByGeometry(f.scene, p);
+    EXPECT_TRUE(framedByGeometry(f.scene, p)) << "portal " << p.cellA << "-" << p.cellB;
     // Its normal points from cellA's side into cellB's: cellB's bounds lie ahead of the portal.
     const Vec3 n = portalNormal(p), mid = 0.5 * (f.cells.cells[p.cellB].boundsMin + f.cells.cells[p.cellB].boundsMax);
     EXPECT_GT(glm::dot(mid - p.vertices[0], n), 0.0);
@@ -145,8 +150,9 @@ void expectBuildingCells(const std::string& name) {
   long inCells = 0;
   for (size_t i = 0; i < f.patches.size(); ++i) {
     const std::string& origin = f.scene.polygons[f.patches[i].polygon].origin;
-    if (origin.find(" floor") != std::string::npos)
+    if (origin.find(" floor") != std::string::npos) {
       EXPECT_EQ(f.cells.cellOfPatch[i], index.at(groupOfOrigin(origin))) << origin;
+    }
     inCells += f.cells.cellOfPatch[i] >= 0 ? 1 : 0;
   }
   const long outside = std::count(f.cells.cellOfPatch.begin(), f.cells.cellOfPatch.end(), kOutsideCell);
@@ -157,6 +163,26 @@ TEST(FindCells, BuildingGivesTheGeneratorsRoomsAndDoors) {
   expectBuildingCells("building:1x1");
   expectBuildingCells("building:2x2");
   expectBuildingCells("building:3x1");
+}
+
+// A box standing outside a closed room faces no cell; the room's own faces, and a cabinet 2 cm
+// from its wall with nothing but the outside behind that wall, face the room.
+TEST(FindCells, AFaceTowardsTheOutsideHasNoCell) {
+  SceneBuilder b("test");
+  const int grey = b.addMaterial("grey", Rgb(0.5)), light = b.addMaterial("light", Rgb(0.5), Rgb(1.0));
+  b.addRoom({0, 0, 0}, {4, 4, 2.7}, {grey, grey, grey}, {{kZMax, {1, 1, 0}, {2, 2, 0}, 0.0, -1, light, "light"}},
+            "room");
+  b.addBox({3.38, 1, 0}, {3.98, 1.5, 1.3}, grey, "cabinet", kZMin);
+  b.addBox({6, 1, 0}, {7, 2, 1}, grey, "shed", kZMin);
+  const Scene scene = b.take();
+  const std::vector<Patch> patches = meshScene(scene);
+  const CellPartition cells = findCells(scene, patches);
+  ASSERT_EQ(cells.cells.size(), 1u);
+  EXPECT_EQ(cells.cells[0].name, "room");
+  for (size_t i = 0; i < patches.size(); ++i) {
+    const std::string& origin = scene.polygons[patches[i].polygon].origin;
+    EXPECT_EQ(cells.cellOfPatch[i], origin.find("shed") != std::string::npos ? kOutsideCell : 0) << origin;
+  }
 }
 
 TEST(FindCells, GroupOfOriginReadsRoomsAndObjects) {

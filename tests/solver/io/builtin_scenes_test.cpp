@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "solver/io/builtin_building.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_builder.h"
 #include "solver/scene/scene_error.h"
@@ -150,6 +151,36 @@ TEST(BuiltinScenes, TwoRoomsJoinedByADoorWithOneLight) {
   }
 }
 
+// building:COLSxROWS: three lights a room, one a room width in each corridor, one per wing in the
+// spine; every door 0.9 m x 2.1 m; a size it cannot make refused naming the form.
+TEST(BuiltinScenes, BuildingHasTheLayoutsLightsAndDoors) {
+  for (const std::string name : {"building:1x1", "building:2x3", "building:3x2"}) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(isBuiltinScene(name));
+    const Scene s = builtinScene(name);
+    EXPECT_NO_THROW(validateScene(s));
+    const BuildingLayout layout = parseBuildingName(name);
+    const int lights = 3 * layout.rooms() + layout.wings() * layout.cols + layout.wings();
+    EXPECT_EQ(emitterCount(s), lights);
+    EXPECT_NEAR(emittedPowerW(s), lights * 1.2 * 0.6 * (10.0 + 9.6 + 8.8), 1e-9);
+    EXPECT_EQ(s.source, name);
+  }
+  EXPECT_EQ(builtinScene("building:1x1").polygons.size(), 236u);
+  EXPECT_EQ(meshScene(builtinScene("building:1x1")).size(), 3735u);
+  EXPECT_EQ(parseBuildingName("building:10x10").doors(), 105);
+  for (const std::string bad : {"building:", "building:0x3", "building:3", "building:3x", "building:101x1",
+                                "building:2x2x2", "building:-1x2"}) {
+    SCOPED_TRACE(bad);
+    EXPECT_TRUE(isBuiltinScene(bad));
+    try {
+      builtinScene(bad);
+      ADD_FAILURE() << "accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("building:COLSxROWS"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(BuiltinScenes, UnknownNameListsTheKnownOnes) {
   try {
     builtinScene("ofice");
@@ -158,6 +189,7 @@ TEST(BuiltinScenes, UnknownNameListsTheKnownOnes) {
     const std::string message = e.what();
     for (const std::string& name : builtinSceneNames())
       EXPECT_NE(message.find(name), std::string::npos) << message;
+    EXPECT_NE(message.find("building:COLSxROWS"), std::string::npos) << message;
   }
   EXPECT_FALSE(isBuiltinScene("ofice"));
 }
