@@ -96,15 +96,17 @@ Solved solveScene(const RenderArgs& args) {
     options.maxIterations = args.iterations;
   }
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
-  Solved solved{{}, {}, sceneFrame(scene)};
+  auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
+    Solved solved{buildDisplayMesh(patches), {}, sceneFrame(scene)};
+    solved.vertexB = vertexRadiosity(solved.mesh, displayRadiosity);
+    return solved;
+  };
   if (args.flags.cellsOn()) {
     std::unique_ptr<CellSolver> solver = makeCellSolver(scene, meshScene(scene, args.flags.cellM), options,
                                                         {args.flags.cellM, args.flags.exchangeShots});
     printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
     if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
-    solved.mesh = buildDisplayMesh(solver->patches());
-    solved.vertexB = vertexRadiosity(solved.mesh, solver->displayRadiosity());
-    return solved;
+    return solvedFrom(solver->patches(), solver->displayRadiosity());
   }
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
   solveWithProgress(solver, args.quiet);
@@ -112,9 +114,7 @@ Solved solveScene(const RenderArgs& args) {
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
   if (args.iterations == 0) warnIfFarFromConverged(solver.ledger());
-  solved.mesh = buildDisplayMesh(solver.patches());
-  solved.vertexB = vertexRadiosity(solved.mesh, solver.displayRadiosity());
-  return solved;
+  return solvedFrom(solver.patches(), solver.displayRadiosity());
 }
 
 std::optional<Solved> readBake(const RenderArgs& args) {

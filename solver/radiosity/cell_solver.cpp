@@ -1,6 +1,7 @@
 #include "solver/radiosity/cell_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <deque>
 #include <fmt/format.h>
 
@@ -126,7 +127,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
 
   // Per cell: a scene of the polygons its patches came from (in the building's order) and its
   // portals, the building's materials and a black "portal" one (the solver passes portal light on).
-  std::vector<std::vector<int>> portalFirstPatch(partition.portals.size(), std::vector<int>(2, -1));
+  std::vector<std::array<int, 2>> portalFirstPatch(partition.portals.size(), {-1, -1});  // per side: A, B
   SolveOptions cellOptions = options;
   cellOptions.threads = 1;  // the cells run in parallel, each on one thread
   s.cells.resize(cellCount);
@@ -137,10 +138,11 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     Scene sub{scene.source, scene.materials, {}};
     sub.materials.push_back(portalMaterial);
     const int portalMaterialIndex = static_cast<int>(sub.materials.size()) - 1;
+    std::vector<char> used(scene.polygons.size(), 0);
+    for (int j : own[c]) used[s.patches[j].polygon] = 1;
     std::vector<int> polygonIndex(scene.polygons.size(), -1);
-    for (int j : own[c]) polygonIndex[s.patches[j].polygon] = 0;
     for (size_t i = 0; i < scene.polygons.size(); ++i)
-      if (polygonIndex[i] == 0) polygonIndex[i] = static_cast<int>(sub.polygons.size()), sub.polygons.push_back(scene.polygons[i]);
+      if (used[i]) polygonIndex[i] = static_cast<int>(sub.polygons.size()), sub.polygons.push_back(scene.polygons[i]);
     std::vector<Patch> local;
     for (int j : own[c]) {
       local.push_back(s.patches[j]);
