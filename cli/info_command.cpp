@@ -32,6 +32,7 @@ struct InfoArgs {
   bool strict = false;
   EffectsMode effects = EffectsMode::Auto;
   bool cells = false;
+  CellGroups cellGroups = CellGroups::Name;
   std::string planPath;  // --plan FILE.png
 };
 
@@ -162,6 +163,12 @@ void addInfoCommand(CLI::App& app) {
   cmd->add_flag("--cells", args->cells,
                 "Also list the visibility cells (rooms) and the portals (openings) joining them (docs/cells.md)");
   cmd->add_option("--plan", args->planPath, "Draw the cells' floor plan to this PNG (implies --cells)");
+  cmd->add_option_function<std::string>(
+         "--cell-groups",
+         [args](const std::string& v) { args->cellGroups = v == "join" ? CellGroups::Join : CellGroups::Name; },
+         "What the file's named groups (MGF o, built-in rooms) do: name (name the cells) or join (also "
+         "make the cells of one group one cell)")
+      ->check(CLI::IsMember({"name", "join"}));
   cmd->callback([args] {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
     std::vector<std::string> warnings;
@@ -176,7 +183,7 @@ void addInfoCommand(CLI::App& app) {
     double seconds = 0.0;
     if (cells) {
       const std::clock_t start = std::clock();  // CPU time: findCells runs on one thread
-      partition = findCells(scene, patches);
+      partition = findCells(scene, patches, args->cellGroups);
       seconds = double(std::clock() - start) / CLOCKS_PER_SEC;
       figures = cellFigures(scene, patches, partition, outside);
       if (!args->planPath.empty()) writePlan(patches, partition, args->planPath);

@@ -112,10 +112,12 @@ std::pair<int, int> cellPlanSize(const Vec3& lo, const Vec3& hi) {
           int(std::lround((hi.y - lo.y) * scale)) + 2 * kPlanMarginPx};
 }
 
-// Hues a golden angle apart, pale enough for the walls and portals to stand out.
+// Hues a golden angle apart, the saturation stepping with the index too (cells 21 apart, the
+// golden angle's near-return, differ in it), pale enough for the walls and portals to stand out.
 std::array<std::uint8_t, 3> cellPlanColour(int cell) {
   if (cell < 0) return {170, 170, 170};
-  const double h = std::fmod(cell * 0.618033988749895, 1.0) * 6.0, s = 0.55, v = 0.95;
+  static constexpr double kSaturation[4] = {0.55, 0.35, 0.7, 0.45};
+  const double h = std::fmod(cell * 0.618033988749895, 1.0) * 6.0, s = kSaturation[cell % 4], v = 0.95;
   const int sector = int(h);
   const double f = h - sector, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
   const std::array<std::array<double, 3>, 6> rgb{{{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}}};

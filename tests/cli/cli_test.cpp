@@ -541,6 +541,14 @@ TEST(Cli, InfoCellsListsTheRoomsAndThePortalsAsJson) {
   EXPECT_NE(text.output.find("3 (found in"), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("2 portals"), std::string::npos) << text.output;
   for (const char* name : {"r0c0", "corridor 0", "spine"}) EXPECT_NE(text.output.find(name), std::string::npos) << name;
+
+  // Rooms of different names stay apart when groups join; a value it does not know is refused.
+  const CommandRun join = radmesh("info two-rooms --cells --cell-groups join --json");
+  ASSERT_EQ(join.exitCode, 0) << join.output;
+  EXPECT_EQ(nlohmann::json::parse(join.output)["cells"].size(), 2u);
+  const CommandRun bad = radmesh("info two-rooms --cells --cell-groups merge");
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_NE(bad.output.find("--cell-groups"), std::string::npos) << bad.output;
 }
 
 TEST(Cli, InfoPlanDrawsThePlanOrSaysWhatIsWrong) {

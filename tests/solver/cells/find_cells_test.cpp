@@ -185,6 +185,63 @@ TEST(FindCells, AFaceTowardsTheOutsideHasNoCell) {
   }
 }
 
+// Two rooms sharing a wall of no thickness (each room's own face, back to back, as files often
+// have them), joined by an opening `width` m wide and 2.1 m high.
+Scene abuttingRooms(double width, const std::string& west = "west", const std::string& east = "east") {
+  SceneBuilder b("test");
+  const int grey = b.addMaterial("grey", Rgb(0.5)), light = b.addMaterial("light", Rgb(0.5), Rgb(1.0));
+  const double y0 = 2.0 - width / 2, y1 = 2.0 + width / 2;
+  b.addRoom({0, 0, 0}, {4, 4, 2.7}, {grey, grey, grey},
+            {{kXMax, {4, y0, 0}, {4, y1, 2.1}, 0.0, -1, -1, "opening"},
+             {kZMax, {1, 1, 0}, {2, 2, 0}, 0.0, -1, light, "light"}},
+            west);
+  b.addRoom({4, 0, 0}, {8, 4, 2.7}, {grey, grey, grey}, {{kXMin, {4, y0, 0}, {4, y1, 2.1}, 0.0, -1, -1, "opening"}},
+            east);
+  return b.take();
+}
+
+// A door in a wall of no thickness is cut and its portal lies in the wall's plane; an opening
+// wider than the cut (2 m) joins the two rooms into one cell, as docs/cells.md says.
+TEST(FindCells, ThinWallsAndWideOpenings) {
+  const Scene door = abuttingRooms(0.9);
+  const CellPartition cells = findCells(door, meshScene(door));
+  ASSERT_EQ(cells.cells.size(), 2u);
+  ASSERT_EQ(cells.portals.size(), 1u);
+  const Portal& p = cells.portals[0];
+  EXPECT_NEAR(p.areaM2, 0.9 * 2.1, 1e-9);
+  for (const Vec3& v : p.vertices) EXPECT_NEAR(v.x, 4.0, 1e-12);
+  EXPECT_TRUE(framedByGeometry(door, p));
+  EXPECT_EQ(cells.cells[p.cellA].name, "west");
+  EXPECT_NEAR(portalNormal(p).x, 1.0, 1e-12) << "from the west room into the east";
+
+  const Scene arch = abuttingRooms(2.0);
+  const CellPartition one = findCells(arch, meshScene(arch));
+  EXPECT_EQ(one.cells.size(), 1u);
+  EXPECT_TRUE(one.portals.empty());
+}
+
+// Two rooms the file names as one ("hall"): by default two cells (the second named "cell 1"), with
+// CellGroups::Join one cell named "hall" holding every patch, and no portal.
+TEST(FindCells, NamedGroupsJoinCellsWhenAsked) {
+  const Scene hall = abuttingRooms(0.9, "hall", "hall");
+  const std::vector<Patch> patches = meshScene(hall);
+  const CellPartition two = findCells(hall, patches);
+  ASSERT_EQ(two.cells.size(), 2u);
+  EXPECT_EQ(two.cells[0].name, "hall");
+  EXPECT_EQ(two.cells[1].name, "cell 1");
+  EXPECT_EQ(two.portals.size(), 1u);
+  const CellPartition one = findCells(hall, patches, CellGroups::Join);
+  ASSERT_EQ(one.cells.size(), 1u);
+  EXPECT_EQ(one.cells[0].name, "hall");
+  EXPECT_TRUE(one.portals.empty());
+  EXPECT_EQ(std::count(one.cellOfPatch.begin(), one.cellOfPatch.end(), 0), long(patches.size()));
+  EXPECT_NEAR(one.cells[0].boundsMin.x, two.cells[0].boundsMin.x, 1e-12);
+  EXPECT_NEAR(one.cells[0].boundsMax.x, two.cells[1].boundsMax.x, 1e-12);
+  // Rooms of different names stay apart.
+  const Scene apart = abuttingRooms(0.9);
+  EXPECT_EQ(findCells(apart, meshScene(apart), CellGroups::Join).cells.size(), 2u);
+}
+
 TEST(FindCells, GroupOfOriginReadsRoomsAndObjects) {
   EXPECT_EQ(groupOfOrigin("room 'r1c2' wall -x"), "r1c2");
   EXPECT_EQ(groupOfOrigin("house.mgf line 7: f (object 'kitchen/table')"), "kitchen");
