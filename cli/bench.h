@@ -45,6 +45,22 @@ AccuracyArgs quickAccuracyArgs(AccuracyArgs args);
 nlohmann::json benchAccuracy(const AccuracyArgs& args);
 // The plots of docs/accuracy.md, STEM-*.png, drawn from STEM.csv and STEM-traces.csv.
 void drawAccuracyFigures(const std::string& stem, const std::string& sceneName);
+struct BenchCellsArgs {
+  std::vector<std::string> scenes{"two-rooms", "building:3x3"};
+  double cellM = 0.381;
+  std::string projection = "hemicube";
+  int resolution = 128;
+  double untilUnshot = 0.01;   // both solves, the whole building's and the cells'
+  double focusUnshot = 0.05;   // the focus cell: its unshot power against the light it has had
+  int exchangeShots = 16;
+  int focusCell = 0;           // the camera's cell
+  int maxIterations = 1'000'000;
+};
+
+// The cells solve beside the whole building's (docs/cells.md): time, iterations, the error of the
+// reflected light per room; on one thread and on two; and the focus cell's time to focusUnshot.
+nlohmann::json benchCells(const BenchCellsArgs& args);
+
 // "plane r3", "plane r5", "hemicube": a setting as the tables and plots name it.
 std::string settingLabel(const std::string& projection, double ratio);
 

@@ -66,6 +66,28 @@ void addBenchAccuracy(CLI::App* bench) {
   });
 }
 
+void addBenchCells(CLI::App* bench) {
+  auto args = std::make_shared<BenchCellsArgs>();
+  auto json = std::make_shared<std::string>();
+  CLI::App* cmd = bench->add_subcommand("cells", "The cells solve beside the whole building's: time and error per room");
+  cmd->add_option("scenes", args->scenes, "Scenes (names or files)")->capture_default_str();
+  cmd->add_option("--cell", args->cellM, "Grid cell size, metres")->capture_default_str();
+  cmd->add_option("--projection", args->projection, "plane, hemicube or analytic")->capture_default_str();
+  cmd->add_option("--resolution", args->resolution, "N of the projection")->capture_default_str();
+  cmd->add_option("--until-unshot", args->untilUnshot, "Both solves stop at this unshot fraction")->capture_default_str();
+  cmd->add_option("--exchange-shots", args->exchangeShots, "Iterations per cell between portal exchanges")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--focus-cell", args->focusCell, "The camera's cell, solved first")->capture_default_str();
+  cmd->add_option("--focus-unshot", args->focusUnshot, "The focus cell's unshot fraction to time to")->capture_default_str();
+  cmd->add_option("--max-iterations", args->maxIterations, "Cap per solve")->capture_default_str();
+  cmd->add_option("--json", *json, "Also write the figures as JSON");
+  cmd->callback([args, json] {
+    checkOutputPath("--json", *json, ".json", "the figures are JSON");
+    writeJsonIfAsked(*json, benchCells(*args));
+  });
+}
+
 }  // namespace
 
 void addBenchCommand(CLI::App& app) {
@@ -73,6 +95,7 @@ void addBenchCommand(CLI::App& app) {
   bench->require_subcommand(1);
   addBenchSolve(bench);
   addBenchAccuracy(bench);
+  addBenchCells(bench);
 }
 
 }  // namespace radmesh::cli

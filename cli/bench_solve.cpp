@@ -2,7 +2,6 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <chrono>
 #include <nlohmann/json.hpp>
 
 #include "cli/bench.h"
@@ -25,30 +24,24 @@ struct Timing {
   double emulatedSecondsPerIteration = 0.0;  // mesh back end: mean emulated MP-1 time
 };
 
-// One thread: the solve's own CPU time. More: wall time, the only clock that sees every thread.
-double now(int threads) {
-  return threads == 1 ? threadCpuSeconds()
-                      : std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 // Solves until `until` (or the cap), timing every iteration; the median is robust to the noise of
 // a shared machine.
 Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOptions options, int maxIterations) {
   options.maxIterations = maxIterations;
-  const double start = now(options.threads);
+  const double start = benchSeconds(options.threads);
   ProgressiveSolver solver(scene, patches, options);
   std::vector<double> perIteration;
   double emulated = 0.0;
   while (!solver.done()) {
-    const double before = now(options.threads);
+    const double before = benchSeconds(options.threads);
     const IterationRecord& r = solver.step();
-    perIteration.push_back(now(options.threads) - before);
+    perIteration.push_back(benchSeconds(options.threads) - before);
     if (r.shotStats) emulated += r.shotStats->machineSeconds;
   }
   Timing t;
   t.unshotFraction = solver.ledger().unshotFraction();
   t.emulatedSecondsPerIteration = perIteration.empty() ? 0.0 : emulated / double(perIteration.size());
-  t.secondsToUntil = now(options.threads) - start;
+  t.secondsToUntil = benchSeconds(options.threads) - start;
   t.msPerIteration = 1e3 * median(perIteration);
   t.iterationsToUntil = static_cast<int>(perIteration.size());
   t.reached = solver.convergence() >= options.until;

@@ -3,6 +3,7 @@
 // times the work itself: other load on a shared machine stretches wall time by whatever the
 // scheduler gives, not this. Medians of per-iteration times are robust to the rest of the noise.
 #include <algorithm>
+#include <chrono>
 #include <ctime>
 #include <vector>
 
@@ -12,6 +13,12 @@ inline double threadCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// One thread: the solve's own CPU time. More: wall time, the only clock that sees every thread.
+inline double benchSeconds(int threads) {
+  return threads == 1 ? threadCpuSeconds()
+                      : std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 inline double median(std::vector<double> v) {

@@ -88,8 +88,8 @@ double solveWithProgress(ProgressiveSolver& solver, bool quiet, const std::funct
   return elapsed();
 }
 
-void warnIfFarFromConverged(const ProgressiveSolver& solver) {
-  const double unshot = solver.ledger().unshotFraction();
+void warnIfFarFromConverged(const Ledger& ledger) {
+  const double unshot = ledger.unshotFraction();
   if (unshot <= kFarFromConvergedUnshot) return;
   fmt::print(stderr,
              "radmesh: warning: the solve stopped with {:.1f}% of the emitted power unshot, so its reflected light is "

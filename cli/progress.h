@@ -36,6 +36,6 @@ double solveWithProgress(ProgressiveSolver& solver, bool quiet,
                          const std::function<void(double seconds)>& afterStep = {});
 
 // On stderr, when the solve stopped with more than kFarFromConvergedUnshot of the power unshot.
-void warnIfFarFromConverged(const ProgressiveSolver& solver);
+void warnIfFarFromConverged(const Ledger& ledger);
 
 }  // namespace radmesh::cli

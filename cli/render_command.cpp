@@ -14,6 +14,7 @@
 #include "solver/scene/scene_error.h"
 
 #if RADMESH_HAS_VIEWER
+#include "cli/cell_solve.h"
 #include "cli/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
@@ -95,15 +96,25 @@ Solved solveScene(const RenderArgs& args) {
     options.maxIterations = args.iterations;
   }
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.sun);
+  auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
+    Solved solved{buildDisplayMesh(patches), {}, sceneFrame(scene)};
+    solved.vertexB = vertexRadiosity(solved.mesh, displayRadiosity);
+    return solved;
+  };
+  if (args.flags.cellsOn()) {
+    std::unique_ptr<CellSolver> solver = makeCellSolver(scene, meshScene(scene, args.flags.cellM), options,
+                                                        {args.flags.cellM, args.flags.exchangeShots});
+    printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
+    if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
+    return solvedFrom(solver->patches(), solver->displayRadiosity());
+  }
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
   solveWithProgress(solver, args.quiet);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
-  if (args.iterations == 0) warnIfFarFromConverged(solver);
-  Solved solved{buildDisplayMesh(solver.patches()), {}, sceneFrame(scene)};
-  solved.vertexB = vertexRadiosity(solved.mesh, solver.displayRadiosity());
-  return solved;
+  if (args.iterations == 0) warnIfFarFromConverged(solver.ledger());
+  return solvedFrom(solver.patches(), solver.displayRadiosity());
 }
 
 std::optional<Solved> readBake(const RenderArgs& args) {

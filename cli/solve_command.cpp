@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/cell_solve.h"
 #include "cli/commands.h"
 #include "cli/scene_input.h"
 #include "cli/effects_text.h"
@@ -17,6 +18,7 @@
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
 #include "solver/radiosity/checkpoint.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
 
@@ -52,12 +54,39 @@ void printSummary(const ProgressiveSolver& solver, double seconds) {
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
 }
 
+void writeBake(const std::string& path, const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
+  if (path.empty()) return;
+  const DisplayMesh mesh = buildDisplayMesh(patches);
+  writeBakeGlb(path, mesh, vertexRadiosity(mesh, displayRadiosity));
+  fmt::print("wrote {}\n", path);
+}
+
+// --cells auto: the rooms solved cell by cell (no checkpoints: the state is one solve per cell).
+void runCells(const SolveArgs& args, const Scene& scene, const SolveOptions& options) {
+  if (!args.checkpointPath.empty() || !args.resumePath.empty())
+    throw OptionError("--checkpoint and --resume save and restore one solve, not a cells solve: give --cells off");
+  std::unique_ptr<CellSolver> solver =
+      makeCellSolver(scene, meshScene(scene, args.flags.cellM), options, {args.flags.cellM, args.flags.exchangeShots});
+  fmt::print("solving {} cell by cell: {} patches, {} {}x{}, k={}, until {:g}% unshot\n", scene.source,
+             solver->patches().size(), toString(options.projection), options.resolution, options.resolution,
+             options.shooters, 100.0 * options.untilUnshot);
+  const double seconds = solveCellsWithProgress(*solver, args.quiet);
+  printCellsSummary(*solver, seconds);
+  warnIfFarFromConverged(solver->ledger());
+  if (!args.statsPath.empty()) {
+    writeJson(args.statsPath, cellsStats(*solver, scene.source, seconds));
+    fmt::print("wrote {}\n", args.statsPath);
+  }
+  writeBake(args.outPath, solver->patches(), solver->displayRadiosity());
+}
+
 void run(const SolveArgs& args) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.sun);
   options.effects = parseEffects(args.effects);
+  if (args.flags.cellsOn()) return runCells(args, scene, options);
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
   if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
@@ -93,17 +122,13 @@ void run(const SolveArgs& args) {
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
   printSummary(solver, seconds);
-  warnIfFarFromConverged(solver);
+  warnIfFarFromConverged(solver.ledger());
 
   if (!args.statsPath.empty()) {
     writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
     fmt::print("wrote {}\n", args.statsPath);
   }
-  if (!args.outPath.empty()) {
-    const DisplayMesh mesh = buildDisplayMesh(solver.patches());
-    writeBakeGlb(args.outPath, mesh, vertexRadiosity(mesh, solver.displayRadiosity()));
-    fmt::print("wrote {}\n", args.outPath);
-  }
+  writeBake(args.outPath, solver.patches(), solver.displayRadiosity());
 }
 
 }  // namespace

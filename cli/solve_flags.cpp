@@ -48,6 +48,12 @@ SolveOptions SolveFlags::resolved() const {
   return o;
 }
 
+bool SolveFlags::cellsOn() const {
+  if (cells != "auto" && cells != "off")
+    throw OptionError("--cells '" + cells + "' is unknown: give auto (find the rooms and solve them cell by cell) or off");
+  return cells == "auto";
+}
+
 void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
@@ -79,6 +85,12 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
          },
          "Form-factor row cache budget in MiB (0: none)");
   addSunFlag(cmd, f.sun);
+  cmd->add_option("--cells", f.cells,
+                  "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
+      ->capture_default_str();
+  cmd->add_option("--exchange-shots", f.exchangeShots, "With --cells auto: iterations per cell between portal exchanges")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   const std::vector<CLI::Option*> options = cmd->get_options();
   f.solverOptions.assign(options.begin() + static_cast<std::ptrdiff_t>(first), options.end());
 }

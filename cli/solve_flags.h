@@ -18,18 +18,21 @@ struct SolveFlags {
   std::string mapping = "hierarchical";
   bool strict = false;  // --strict: a scene that needed any repair is refused
   std::vector<Light> sun;  // --sun AZIMUTH,ELEVATION[,LUX]: the sun's directional light, if given
+  std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
+  int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
   // Parses the text flags into options and validates them (throws OptionError). With --backend mesh
   // and no --projection, the projection is the single plane, the only one the mesh runs.
   SolveOptions resolved() const;
+  bool cellsOn() const;  // --cells auto (throws OptionError for what is neither auto nor off)
   // The solver flags given on the command line, e.g. {"--resolution", "--preset"}.
   std::vector<std::string> given() const;
 };
 
 // Adds SCENE and --preset --backend --cell --projection --resolution --ratio --shooters --until
-// --until-unshot --max-iterations --threads --cache-mb --sun to a subcommand. --preset is applied as it
+// --until-unshot --max-iterations --threads --cache-mb --sun --cells --exchange-shots to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
 

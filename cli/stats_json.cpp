@@ -8,11 +8,6 @@ namespace radmesh::cli {
 
 namespace {
 
-nlohmann::json ledgerJson(const Ledger& l) {
-  return {{"emitted", l.emitted},       {"absorbed", l.absorbed}, {"unshot", l.unshot},
-          {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"imbalance", l.imbalance()}};
-}
-
 nlohmann::json iterationJson(const IterationRecord& r) {
   nlohmann::json j = {{"iteration", r.iteration},
           {"shooter", r.shooters.empty() ? -1 : r.shooters.front()},
@@ -30,6 +25,13 @@ nlohmann::json iterationJson(const IterationRecord& r) {
 }
 
 }  // namespace
+
+nlohmann::json ledgerJson(const Ledger& l) {
+  nlohmann::json j = {{"emitted", l.emitted},       {"absorbed", l.absorbed}, {"unshot", l.unshot},
+                      {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"imbalance", l.imbalance()}};
+  if (l.portalIn > 0.0 || l.portalOut > 0.0) j.update({{"portal_in", l.portalIn}, {"portal_out", l.portalOut}});
+  return j;
+}
 
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
   const SolveOptions& o = solver.options();

@@ -10,6 +10,8 @@ namespace radmesh::cli {
 
 // With "effects": the solver's plan.
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
+// {"emitted": W, "absorbed": W, ..., "imbalance": x}, with "portal_in" and "portal_out" for a cell.
+nlohmann::json ledgerJson(const Ledger& ledger);
 // {"occlusion": {"on": false, "reason": "..."}, ...}
 nlohmann::json effectsJson(const EffectsPlan& plan);
 // Compact, one line; makes the folder. Throws on I/O failure.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "parallel/thread_pool.h"
 #include "solver/formfactors/form_factor_cache.h"
@@ -17,12 +18,14 @@
 
 namespace radmesh {
 
+double Ledger::input() const { return emitted + portalIn; }
+
 double Ledger::imbalance() const {
-  const double accounted = absorbed + unshot + notCaptured + escaped;
-  return emitted > 0.0 ? std::abs(emitted - accounted) / emitted : std::abs(accounted);
+  const double accounted = absorbed + unshot + notCaptured + escaped + portalOut;
+  return input() > 0.0 ? std::abs(input() - accounted) / input() : std::abs(accounted);
 }
 
-double Ledger::unshotFraction() const { return emitted > 0.0 ? unshot / emitted : 0.0; }
+double Ledger::unshotFraction() const { return input() > 0.0 ? unshot / input() : 0.0; }
 
 namespace {
 
@@ -94,20 +97,21 @@ bool fitsPatches(const SolverProgress& p, size_t n) {
          std::all_of(p.history.begin(), p.history.end(), recordFits);
 }
 
-// Every iteration, in every build: numbers that do not balance are never shown or written.
+}  // namespace
+
 void checkLedger(const Ledger& l, int iteration) {
   constexpr double kTolerance = 1e-9;  // of the emitted power: rounding over millions of updates stays far below
   if (l.imbalance() <= kTolerance) return;
+  const std::string portals = l.portalIn > 0.0 || l.portalOut > 0.0
+      ? fmt::format(" (a cell: portal in {:.17g} W, portal out {:.17g} W)", l.portalIn, l.portalOut) : "";
   throw SolveError(fmt::format(
       "iteration {}: the energy ledger does not balance: emitted {:.17g} W, absorbed {:.17g} W + unshot {:.17g} W "
-      "+ not captured {:.17g} W + escaped {:.17g} W (absorbed by back faces {:.17g} W); imbalance {:.3g} of the "
+      "+ not captured {:.17g} W + escaped {:.17g} W (absorbed by back faces {:.17g} W){}; imbalance {:.3g} of the "
       "emitted power, above {:.0e}. This is a fault in radmesh or its form-factor back end; the solve stops and "
       "nothing of it is written",
-      iteration, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, l.imbalance(),
-      kTolerance));
+      iteration, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, portals,
+      l.imbalance(), kTolerance));
 }
-
-}  // namespace
 
 struct ProgressiveSolver::State {
   Scene scene;
@@ -121,6 +125,8 @@ struct ProgressiveSolver::State {
   std::vector<int> timesShot;
   std::vector<int> tieRank;            // shooters of equal power go in geometric order
   std::vector<Rgb> lightPower;         // per scene light, W per channel: all shot in iteration 1
+  std::vector<char> isPortal;          // per patch (setPortalPatches)
+  std::vector<Rgb> portalPower;        // per patch: arrived on a portal patch, waiting to be taken
   std::unique_ptr<FormFactorBackend> backend;
   FormFactorCache cache;
   Ledger ledger;
@@ -140,6 +146,7 @@ struct ProgressiveSolver::State {
   void deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape);
   void updateUnshot();
   template <typename Value> void receive(const FormFactorRow& row, const Value& power);
+  void passToPortals(const FormFactorRow& row, const Rgb& power);
 };
 
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
@@ -162,6 +169,8 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   s.unshotRadiosity.resize(n);
   s.unshotPowerW.resize(n);
   s.timesShot.assign(n, 0);
+  s.isPortal.assign(n, 0);
+  s.portalPower.assign(n, Rgb(0.0));
   for (size_t j = 0; j < n; ++j) {
     const Material& m = s.scene.materials[s.patches[j].material];
     s.rho[j] = m.rho;
@@ -254,9 +263,11 @@ void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& powe
   if (bookEscape) ledger.escaped += powerW * row.escapedFraction();
   ledger.absorbed += powerW * row.backFaces;
   ledger.absorbedByBackFaces += powerW * row.backFaces;
+  passToPortals(row, power);
   if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
     double received = 0.0;
-    for (double f : row.formFactors) received += f;
+    for (size_t r = 0; r < row.receivers.size(); ++r)
+      if (!isPortal[row.receivers[r]]) received += row.formFactors[r];
     ledger.absorbed += powerW * received;
   } else if (plan.colour) {
     receive(row, power);
@@ -281,6 +292,7 @@ void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& po
   constexpr double kFlops = kColour ? 3 * 6 + (2 + 1) + 2 + 1 : 6 + (1 + 1) + 1 + 1;
   ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
     const int j = row.receivers[r];
+    if (isPortal[j]) return 0.0;  // passToPortals took it
     const Value incident = power * row.formFactors[r];
     const Value reflected = channels<Value>(rho[j]) * incident;
     const Value gain = reflected / patches[j].areaM2;
@@ -289,6 +301,17 @@ void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& po
     unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
     return channelSum(incident - reflected);
   });
+}
+
+// What reaches a portal patch waits there for the neighbour cell, in receiver order.
+void ProgressiveSolver::State::passToPortals(const FormFactorRow& row, const Rgb& power) {
+  for (size_t r = 0; r < row.receivers.size(); ++r) {
+    const int j = row.receivers[r];
+    if (!isPortal[j]) continue;
+    const Rgb incident = power * row.formFactors[r];
+    portalPower[j] += incident;
+    ledger.portalOut += channelSum(incident);
+  }
 }
 
 const IterationRecord& ProgressiveSolver::step() {
@@ -333,6 +356,34 @@ bool ProgressiveSolver::done() const {
 }
 
 bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
+
+void ProgressiveSolver::setPortalPatches(const std::vector<int>& portalPatches) {
+  State& s = *state_;
+  for (int j : portalPatches) {
+    if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
+      throw std::invalid_argument(fmt::format("portal patch {} is not one of the {} patches", j, s.patches.size()));
+    s.isPortal[j] = 1;
+  }
+}
+
+const Rgb& ProgressiveSolver::portalPower(int patch) const { return state_->portalPower.at(static_cast<size_t>(patch)); }
+
+Rgb ProgressiveSolver::takePortalPower(int patch) {
+  return std::exchange(state_->portalPower.at(static_cast<size_t>(patch)), Rgb(0.0));
+}
+
+void ProgressiveSolver::addPortalPower(int patch, const Rgb& power) {
+  State& s = *state_;
+  const size_t j = static_cast<size_t>(patch);
+  const double powerW = channelSum(power);
+  if (!(powerW > 0.0)) return;
+  s.unshotRadiosity.at(j) += power / s.patches[j].areaM2;
+  const double before = s.unshotPowerW[j];
+  s.unshotPowerW[j] = channelSum(s.unshotRadiosity[j]) * s.patches[j].areaM2;
+  s.ledger.portalIn += powerW;
+  s.ledger.unshot += s.unshotPowerW[j] - before;
+  s.exhausted = false;
+}
 
 void ProgressiveSolver::setStoppingRule(double until, double untilUnshot) {
   SolveOptions changed = state_->options;
@@ -395,8 +446,10 @@ std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
     area += s.patches[j].areaM2;
   }
   const Ledger& l = s.ledger;
-  const double shot = l.emitted - l.unshot;  // = absorbed + not captured + escaped
-  const double kept = shot > 0.0 ? std::clamp(1.0 - (l.escaped + l.notCaptured) / shot, 0.0, 1.0) : 1.0;
+  // A cell's light leaving through its portals is lost to it as escaped light is.
+  const double shot = l.input() - l.unshot;  // = absorbed + not captured + escaped + portal out
+  const double lost = l.escaped + l.notCaptured + l.portalOut;
+  const double kept = shot > 0.0 ? std::clamp(1.0 - lost / shot, 0.0, 1.0) : 1.0;
   const Rgb averageRho = rhoArea / area;
   const Rgb ambient = unshotPower * kept / area / (Rgb(1.0) - averageRho * kept);
   std::vector<Rgb> shown(s.radiosity);

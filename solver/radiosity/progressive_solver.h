@@ -15,7 +15,9 @@
 namespace radmesh {
 
 // Where the emitted power went, in watts summed over RGB. Balances:
-// emitted = absorbed + unshot + notCaptured + escaped.
+// emitted + portalIn = absorbed + unshot + notCaptured + escaped + portalOut
+// (the portal terms are those of one cell of a cells solve, solver/radiosity/cell_solver.h; zero
+// otherwise).
 struct Ledger {
   double emitted = 0.0;
   double absorbed = 0.0;     // absorbed by patches: (1 - rho) of what reached them
@@ -23,9 +25,16 @@ struct Ledger {
   double notCaptured = 0.0;  // left the shooter outside the projection surface (the plane's miss)
   double escaped = 0.0;      // captured but hit no patch: light leaving an open scene
   double absorbedByBackFaces = 0.0;  // part of absorbed: reached the unlit back of a one-sided patch
-  double imbalance() const;  // |emitted - (absorbed + unshot + notCaptured + escaped)| / emitted
-  double unshotFraction() const;  // unshot / emitted: what is left to distribute (0 if nothing emits)
+  double portalOut = 0.0;    // reached the cell's portal patches: leaves for the neighbour cells
+  double portalIn = 0.0;     // arrived from the neighbour cells, to be shot from the portal patches
+  double input() const;      // emitted + portalIn: all the power the solve has had to distribute
+  double imbalance() const;  // |input - (absorbed + unshot + notCaptured + escaped + portalOut)| / input
+  double unshotFraction() const;  // unshot / input: what is left to distribute (0 if nothing came in)
 };
+
+// Throws SolveError when the ledger does not balance to 1e-9 of its input, naming `iteration` and
+// every term. Every iteration, in every build: numbers that do not balance are never shown or written.
+void checkLedger(const Ledger& ledger, int iteration);
 
 // A solve that stops with more than this fraction of the emitted power unshot is far from
 // converged (docs/accuracy.md: its reflected light is tens of per cent wrong); the CLI and the
@@ -85,6 +94,14 @@ class ProgressiveSolver {
   const IterationRecord& step();
   bool done() const;              // convergence >= until, max iterations, or nothing left to shoot
   bool exhausted() const;         // no patch has unshot power: the solution is exact
+  // Portal patches (a cell of a cells solve): light reaching their front is neither reflected nor
+  // absorbed but waits on them (ledger portalOut) until takePortalPower() moves it to the
+  // neighbour cell, whose solve receives it with addPortalPower() (ledger portalIn) as unshot
+  // power of its twin patch. Call before the first step.
+  void setPortalPatches(const std::vector<int>& portalPatches);
+  const Rgb& portalPower(int patch) const;  // what waits on the portal patch
+  Rgb takePortalPower(int patch);  // the same, leaving it empty
+  void addPortalPower(int patch, const Rgb& power);
   // Changes options().until and untilUnshot of the solve under way (throws OptionError).
   void setStoppingRule(double until, double untilUnshot);
   double convergence() const;

@@ -62,6 +62,65 @@ TEST(Cli, SolveWritesStatsWithTheDocumentedKeysAndABalancedLedger) {
   EXPECT_NEAR(j["unshot_fraction"].get<double>(), l["unshot"].get<double>() / l["emitted"].get<double>(), 1e-12);
 }
 
+TEST(Cli, SolveCellsAutoWritesPerCellStatsThatBalance) {
+  const std::string stats = tempPath("stats.json");
+  const CommandRun run = radmesh("solve two-rooms --cells auto --resolution 32 --until-unshot 0.05 --quiet --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("2 cells, 1 portals"), std::string::npos) << run.output;
+  std::ifstream in(stats);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["cells"], 2);
+  EXPECT_EQ(j["portals"], 1);
+  EXPECT_LE(j["unshot_fraction"].get<double>(), 0.05);
+  const auto& l = j["ledger"];
+  const double emitted = l["emitted"].get<double>();
+  EXPECT_LE(l["imbalance"].get<double>(), 1e-9);
+  double sumEmitted = 0.0, portalIn = 0.0, portalOut = 0.0;
+  int iterations = 0;
+  ASSERT_EQ(j["per_cell"].size(), 2u);
+  for (const auto& cell : j["per_cell"]) {
+    const auto& c = cell["ledger"];
+    const double in = c["emitted"].get<double>() + c["portal_in"].get<double>();
+    const double accounted = c["absorbed"].get<double>() + c["unshot"].get<double>() + c["not_captured"].get<double>() +
+                             c["escaped"].get<double>() + c["portal_out"].get<double>();
+    EXPECT_NEAR(accounted, in, 1e-9 * in) << cell.dump();
+    sumEmitted += c["emitted"].get<double>(), portalIn += c["portal_in"].get<double>();
+    portalOut += c["portal_out"].get<double>(), iterations += cell["iterations"].get<int>();
+  }
+  EXPECT_NEAR(sumEmitted, emitted, 1e-12 * emitted);
+  EXPECT_GT(portalIn, 0.0);
+  EXPECT_NEAR(portalIn, portalOut, 1e-9 * emitted);  // nothing waits after the last exchange
+  EXPECT_EQ(j["iterations"], iterations);
+}
+
+TEST(Cli, BenchCellsComparesTheCellsSolveWithTheWholeBuilding) {
+  const std::string json = tempPath("cells.json");
+  const CommandRun run = radmesh("bench cells two-rooms --resolution 16 --until-unshot 0.1 --json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(json);
+  const auto j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["scenes"].size(), 1u);
+  const auto& scene = j["scenes"][0];
+  EXPECT_EQ(scene["cells"], 2);
+  EXPECT_EQ(scene["portals"], 1);
+  EXPECT_TRUE(scene["two_threads_identical"].get<bool>());
+  ASSERT_EQ(scene["rooms"].size(), 2u);  // both rooms lit
+  for (const char* key : {"whole_seconds", "cells_seconds", "focus_seconds", "largest_room_error"})
+    EXPECT_TRUE(scene.contains(key)) << key;
+}
+
+TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
+  CommandRun run = radmesh("solve two-rooms --cells some");
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("--cells 'some' is unknown"), std::string::npos) << run.output;
+  run = radmesh("solve two-rooms --cells auto --checkpoint " + tempPath("x.ckpt"));
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("--cells off"), std::string::npos) << run.output;
+  run = radmesh("solve two-rooms --cells auto --preset paper");
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("--until-unshot"), std::string::npos) << run.output;
+}
+
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve furnace --resolution 8");
   EXPECT_EQ(run.exitCode, 2);

@@ -1,0 +1,83 @@
+#include "cli/cell_solve.h"
+
+#include <fmt/core.h>
+
+#include <chrono>
+
+#include "cli/progress.h"
+#include "cli/stats_json.h"
+#include "solver/cells/find_cells.h"
+#include "solver/scene/scene_error.h"
+
+namespace radmesh::cli {
+
+std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
+                                           const CellSolveSettings& settings) {
+  if (options.backend != Backend::Native)
+    throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
+  const CellPartition partition = findCells(scene, patches);
+  auto solver = std::make_unique<CellSolver>(scene, std::move(patches), partition, options, settings);
+  fmt::print("cells: {} cells, {} portals, exchanging portal light every {} iterations per cell\n",
+             solver->cellCount(), solver->portalCount(), settings.exchangeShots);
+  return solver;
+}
+
+double solveCellsWithProgress(CellSolver& solver, bool quiet) {
+  Progress progress(solver.options());
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  IterationRecord record;  // the building's, as Progress reads a solve's
+  while (!solver.done()) {
+    solver.round();
+    record.iteration = solver.iterations();
+    record.ledger = solver.ledger();
+    if (!quiet) progress.report(record, elapsed());
+  }
+  if (!quiet && record.iteration > 0) progress.finish(record, elapsed());
+  return elapsed();
+}
+
+void printCellsSummary(const CellSolver& solver, double seconds) {
+  const Ledger l = solver.ledger();
+  double portalTransfers = 0.0;
+  for (const CellFigures& cell : solver.cellFigures()) portalTransfers += cell.ledger.portalIn;
+  fmt::print("solved: {} patches in {} cells ({} portals), {} iterations in {} rounds, unshot {:.2f}%, {:.3f} s\n",
+             solver.patches().size(), solver.cellCount(), solver.portalCount(), solver.iterations(), solver.rounds(),
+             100.0 * l.unshotFraction(), seconds);
+  fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} (with what waits on portals) + not captured "
+             "{:.6g} + escaped {:.6g}  (imbalance {:.1e}); {:.6g} W crossed portals\n",
+             l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance(), portalTransfers);
+}
+
+nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds) {
+  const SolveOptions& o = solver.options();
+  nlohmann::json perCell = nlohmann::json::array();
+  for (const CellFigures& cell : solver.cellFigures())
+    perCell.push_back({{"name", cell.name},
+                       {"patches", cell.patches},
+                       {"portal_patches", cell.portalPatches},
+                       {"iterations", cell.iterations},
+                       {"unshot_fraction", cell.ledger.unshotFraction()},
+                       {"waiting", cell.waitingW},
+                       {"ledger", ledgerJson(cell.ledger)}});
+  return {{"scene", scene},
+          {"patches", solver.patches().size()},
+          {"backend", toString(o.backend)},
+          {"projection", toString(o.projection)},
+          {"resolution", o.resolution},
+          {"ratio", o.ratio},
+          {"shooters", o.shooters},
+          {"threads", o.threads},
+          {"until", o.until},
+          {"until_unshot", o.untilUnshot},
+          {"cells", solver.cellCount()},
+          {"portals", solver.portalCount()},
+          {"rounds", solver.rounds()},
+          {"iterations", solver.iterations()},
+          {"unshot_fraction", solver.ledger().unshotFraction()},
+          {"seconds", seconds},
+          {"ledger", ledgerJson(solver.ledger())},
+          {"per_cell", std::move(perCell)}};
+}
+
+}  // namespace radmesh::cli

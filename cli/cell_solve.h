@@ -1,0 +1,23 @@
+#pragma once
+// `--cells auto` (docs/cells.md): the building's rooms found from its geometry and solved cell by
+// cell, for solve, render and bench.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "solver/radiosity/cell_solver.h"
+
+namespace radmesh::cli {
+
+// The cells of the meshed scene (findCells) and their solver; prints how many cells and portals.
+std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
+                                           const CellSolveSettings& settings);
+// Rounds until done(), with progress on stdout unless `quiet`; returns the wall seconds.
+double solveCellsWithProgress(CellSolver& solver, bool quiet);
+// The summary lines of a cells solve: patches, cells, portals, iterations, the building's ledger.
+void printCellsSummary(const CellSolver& solver, double seconds);
+// The `--stats` document of a cells solve: "cells", "portals", the building's ledger and "per_cell".
+nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds);
+
+}  // namespace radmesh::cli

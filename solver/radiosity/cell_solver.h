@@ -1,0 +1,76 @@
+#pragma once
+// The cells solve (the paper's section 1.7, docs/cells.md): one ProgressiveSolver per cell, over
+// the cell's patches and its portal patches (each portal meshed like a wall and turned to face
+// into the cell). A shot projects only its cell. Light reaching a portal patch waits there; at
+// fixed exchange points it moves to the twin patch facing into the neighbour cell, which shoots
+// it on diffusely like any unshot power. Between exchanges the cells shoot in parallel, each on
+// its own, so results are bitwise the same for any number of threads.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "parallel/thread_pool.h"
+#include "solver/cells/cell_partition.h"
+#include "solver/radiosity/progressive_solver.h"
+
+namespace radmesh {
+
+struct CellSolveSettings {
+  double cellM = 0.381;    // the grid the portals are meshed on: the scene's (meshScene's cellM)
+  int exchangeShots = 16;  // iterations each cell shoots between two portal exchanges
+};
+
+struct CellFigures {
+  std::string name;
+  int patches = 0;        // the cell's own
+  int portalPatches = 0;  // facing into it
+  int iterations = 0;
+  Ledger ledger;          // the cell's: portalOut counts what reached its portals, waiting or moved
+  double waitingW = 0.0;  // reached its portals since the last exchange, not yet moved
+};
+
+// Throws SceneError for a partition that does not fit the patches (a cell index out of range, a
+// portal joining a cell to itself, a portal that is not a polygon), and what ProgressiveSolver
+// throws. A patch of kOutsideCell goes into a cell "outside" of its own, without portals.
+class CellSolver {
+ public:
+  CellSolver(const Scene& scene, std::vector<Patch> patches, const CellPartition& partition,
+             const SolveOptions& options, const CellSolveSettings& settings);
+  ~CellSolver();
+  CellSolver(const CellSolver&) = delete;
+  CellSolver& operator=(const CellSolver&) = delete;
+
+  // Every cell with unshot power shoots up to its shots this round (exchangeShots; with a focus,
+  // fewer the farther from it), the cells in parallel on options.threads; then the power waiting
+  // on portals moves to the twins, in cell and patch order. The building's ledger is checked
+  // before and after the exchange.
+  void round();
+  // The building's unshot power (with what waits on portals) at most options.untilUnshot of the
+  // emitted, options.maxIterations shot (checked between rounds), or nothing left anywhere.
+  bool done() const;
+  bool exhausted() const;
+  // The camera's cell: it shoots exchangeShots a round, its neighbours at portal distance d
+  // exchangeShots >> d (at least 1), and the cells are started in that order. -1: no focus.
+  void focus(int cell);
+  int portalDistance(int cell) const;  // from the focus (0 without one); -1 where no portal leads
+
+  // The building's: unshot includes the power waiting on portals, portalIn and portalOut are 0
+  // (inside the building they cancel), so emitted = absorbed + unshot + notCaptured + escaped.
+  Ledger ledger() const;
+  int iterations() const;  // over all cells
+  int rounds() const;
+  std::vector<Rgb> radiosity() const;         // per patch of the building, W/m^2
+  std::vector<Rgb> displayRadiosity() const;  // with each cell's display-only ambient term
+  const std::vector<Patch>& patches() const;
+  int cellCount() const;  // with the outside cell, if any patch faces no cell
+  int portalCount() const;
+  std::vector<CellFigures> cellFigures() const;
+  const ProgressiveSolver& cellSolver(int cell) const;
+  const SolveOptions& options() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace radmesh
