@@ -3,13 +3,16 @@
 #include <string>
 #include <vector>
 
+#include "solver/io/daylight.h"
 #include "solver/scene/scene.h"
 
 namespace radmesh {
 
 inline constexpr const char* kDefaultScene = "office";
 
-// Loads and validates; throws SceneError with file, element and fix on anything unusable.
-Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr);
+// Loads, lights by `daylight` if it has a sky (what that added, a line each, in `notes`), and
+// validates; throws SceneError with file, element and fix on anything unusable.
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr,
+                const Daylight& daylight = {}, std::vector<std::string>* notes = nullptr);
 
 }  // namespace radmesh

@@ -78,14 +78,19 @@ void validatePolygon(const Scene& scene, size_t index) {
 
 }  // namespace
 
-void validateScene(const Scene& scene) {
+void validateGeometry(const Scene& scene) {
   if (scene.polygons.empty())
     throw SceneError(scene.source, "", "contains no polygons", "check that the file holds surfaces");
   for (const Material& m : scene.materials) validateMaterial(scene, m);
   for (size_t i = 0; i < scene.polygons.size(); ++i) validatePolygon(scene, i);
+}
+
+void validateScene(const Scene& scene) {
+  validateGeometry(scene);
   if (!(emittedPowerW(scene) > 0.0))
     throw SceneError(scene.source, "", "has no emitter, so every radiosity would be zero",
-                     "give at least one material a positive emittance");
+                     "give at least one material a positive emittance, or light it by daylight through its "
+                     "openings: --sky LUX, --sun AZIMUTH,ELEVATION[,LUX]");
 }
 
 double emittedPowerW(const Scene& scene) {

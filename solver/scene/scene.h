@@ -40,7 +40,9 @@ double polygonArea(const std::vector<Vec3>& vertices);
 
 // Throws SceneError for input that cannot be solved: no polygons, NaN or infinite coordinates,
 // fewer than 3 vertices, zero area, non-planar polygons, rho outside [0,1), negative or non-finite
-// emittance, a material index out of range, or no emitter at all.
+// emittance, a material index out of range.
+void validateGeometry(const Scene& scene);
+// The same, and no emitter at all (the message points to daylight).
 void validateScene(const Scene& scene);
 
 // Total emitted power in watts, summed over RGB: sum of area * (E_r + E_g + E_b).
