@@ -7,6 +7,7 @@
 #include "cli/scene_input.h"
 #include "cli/stats_json.h"
 #include "cli/effects_text.h"
+#include "cli/solve_flags.h"
 #include "solver/radiosity/effects_plan.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
@@ -18,7 +19,8 @@ namespace {
 
 struct InfoArgs {
   std::string scene = kDefaultScene;
-  double cellM = kDefaultCellM;
+  double cellM = kDefaultCellM;  // with --cell; else chooseCell's
+  Daylight daylight;
   bool json = false;
   bool strict = false;
   EffectsMode effects = EffectsMode::Auto;
@@ -44,8 +46,11 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"emitted_power", s.emittedPowerW}};
 }
 
-void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings) {
+void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings,
+               const std::vector<std::string>& notes, const CellChoice& cell) {
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  for (const std::string& n : notes) fmt::print("{}\n", n);
+  fmt::print("{}\n", cell.why);
   const Vec3 size = s.boundsMax - s.boundsMin;
   fmt::print("scene           {}\n", scene.source);
   fmt::print("polygons        {}\n", s.polygons);
@@ -66,25 +71,30 @@ void addInfoCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("info", "Print a scene's polygons, patches, materials, emitters, bounds, area and power");
   cmd->add_option("scene", args->scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
-  cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres")->capture_default_str();
+  cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size)");
+  addDaylightFlags(cmd, args->daylight);
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
   cmd->add_flag("--strict", args->strict, "Refuse a scene that needed any repair (each warning an error)");
   cmd->add_option_function<std::string>(
       "--effects", [args](const std::string& v) { args->effects = parseEffects(v); },
       "auto (simulate only what the scene calls for) or all");
-  cmd->callback([args] {
-    std::vector<std::string> warnings;
-    const Scene scene = loadCommandScene(args->scene, args->strict, warnings);
-    const std::vector<Patch> patches = meshScene(scene, args->cellM);
-    const SceneSummary summary = summarizeScene(scene, patches, args->cellM);
+  cmd->callback([args, cmd] {
+    std::vector<std::string> warnings, notes;
+    const Scene scene = loadCommandScene(args->scene, args->strict, args->daylight, warnings, notes);
+    const CellChoice cell = commandCell(scene, args->cellM, cmd->count("--cell") > 0);
+    const std::vector<Patch> patches = meshScene(scene, cell.cellM);
+    const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
     if (args->json) {
       nlohmann::json j = toJson(summary, scene);
+      j["cell_m"] = cell.cellM;
+      j["cell_why"] = cell.why;
       j["effects"] = effectsJson(plan);
       j["warnings"] = warnings;
+      j["daylight"] = notes;
       fmt::print("{}\n", j.dump(2));
     } else {
-      printText(summary, scene, warnings);
+      printText(summary, scene, warnings, notes, cell);
       printEffects(plan);
     }
   });

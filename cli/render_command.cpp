@@ -94,8 +94,10 @@ Solved solveScene(const RenderArgs& args) {
     options.untilUnshot = 0.0;
     options.maxIterations = args.iterations;
   }
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
-  ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight);
+  const CellChoice cell = args.flags.cell(scene);
+  fmt::print("{}\n", cell.why);
+  ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   solveWithProgress(solver, args.quiet);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
              solver.patches().size(), solver.history().size(), solver.convergence(),

@@ -56,10 +56,12 @@ void run(const SolveArgs& args) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight);
   options.effects = parseEffects(args.effects);
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
-  ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  const CellChoice cell = args.flags.cell(scene);
+  fmt::print("{}\n", cell.why);
+  ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
     resumeFromCheckpoint(args.resumePath, solver);
     fmt::print("resumed from {} after iteration {}\n", args.resumePath, solver.history().size());

@@ -1,5 +1,7 @@
 #include "cli/solve_flags.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 
 #include "solver/meshing/meshing.h"
@@ -26,6 +28,28 @@ std::vector<std::string> SolveFlags::given() const {
   return names;
 }
 
+CellChoice SolveFlags::cell(const Scene& scene) const {
+  const std::vector<std::string> flags = given();
+  return commandCell(scene, cellM, std::find(flags.begin(), flags.end(), "--cell") != flags.end());
+}
+
+CellChoice commandCell(const Scene& scene, double cellM, bool given) {
+  return given ? CellChoice{cellM, fmt::format("cell {:.4g} m, as --cell gives", cellM)} : chooseCell(scene);
+}
+
+void addDaylightFlags(CLI::App* cmd, Daylight& daylight) {
+  cmd->add_option_function<double>(
+      "--sky",
+      [&daylight](double lux) {
+        checkSkyLux(lux);
+        daylight.skyLux = lux;
+      },
+      "Light the scene by a sky of this horizontal illuminance (lux) through its openings");
+  cmd->add_option_function<std::string>(
+      "--sky-model", [&daylight](const std::string& name) { daylight.sky = parseSkyModel(name); },
+      "The sky's luminance: uniform (the default) or cie-overcast (three times brighter at the zenith)");
+}
+
 SolveOptions SolveFlags::resolved() const {
   SolveOptions o = options;
   o.backend = parseBackend(backend);
@@ -45,13 +69,14 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
       ->capture_default_str();
   cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
   const size_t first = cmd->get_options().size();
+  addDaylightFlags(cmd, f.daylight);
   cmd->add_option_function<std::string>(
          "--preset", [&f](const std::string& name) { applyPresetFlags(parsePreset(name), f); },
          "bake (the default: hemicube 256, until 1 % of the power is unshot) or paper (Varshney & Prins: single "
          "plane 128, ratio 3, until C = 0.95); flags given beside it win")
       ->trigger_on_parse();
   cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
-  cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (the paper: 15 in)")->capture_default_str();
+  cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size; the paper: 0.381)");
   cmd->add_option("--mapping", f.mapping, "Mesh backend: hierarchical, cut-and-stack or adaptive")->capture_default_str();
   cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")->capture_default_str();
   cmd->add_option("--resolution", f.options.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();

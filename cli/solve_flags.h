@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "solver/io/daylight.h"
+#include "solver/meshing/meshing.h"
 #include "solver/scene/solve_options.h"
 
 namespace radmesh::cli {
@@ -11,11 +13,12 @@ namespace radmesh::cli {
 struct SolveFlags {
   SolveFlags();  // the bake preset (docs/accuracy.md)
   std::string scene = "office";
-  double cellM = 0.381;
+  double cellM = kDefaultCellM;  // used when --cell is given; else chooseCell's (cell())
   std::string backend = "native";
   std::string projection;
   std::string mapping = "hierarchical";
   bool strict = false;  // --strict: a scene that needed any repair is refused
+  Daylight daylight;    // --sky, --sky-model
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
@@ -24,9 +27,17 @@ struct SolveFlags {
   SolveOptions resolved() const;
   // The solver flags given on the command line, e.g. {"--resolution", "--preset"}.
   std::vector<std::string> given() const;
+  // The cell to mesh `scene` with: --cell when given, else the one chosen from the scene's size.
+  CellChoice cell(const Scene& scene) const;
 };
 
-// Adds SCENE and --preset --backend --cell --projection --resolution --ratio --shooters --until
+// --cell's value when the user gave it, else chooseCell(scene); `why` says which.
+CellChoice commandCell(const Scene& scene, double cellM, bool given);
+
+// Adds --sky LUX and --sky-model uniform|cie-overcast (docs/scene-formats.md#daylight).
+void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
+
+// Adds SCENE, --strict, --sky, --sky-model and --preset --backend --cell --projection --resolution --ratio --shooters --until
 // --until-unshot --max-iterations --threads --cache-mb to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
