@@ -4,14 +4,15 @@
 #include <string>
 #include <vector>
 
-#include "solver/scene/scene.h"
+#include "solver/io/daylight.h"
 
 namespace radmesh::cli {
 
 struct BenchSolveArgs {
   std::string scene = "office";
-  std::vector<Light> sun;  // --sun
   double cellM = 0.381;
+  bool cellGiven = false;  // else the cell is chosen from the scene's size
+  Daylight daylight;
   std::vector<std::string> projections{"plane", "hemicube"};
   std::vector<int> resolutions{64, 128, 256, 512};
   std::vector<int> shooters{1};    // k per iteration
@@ -30,6 +31,7 @@ struct AccuracyArgs {
   std::string scene = "office";
   std::string name = "office";   // file stem of the outputs
   std::string outDir;            // CSV and plots go here; empty: table only
+  Daylight daylight;
   std::vector<double> cells{0.5, 0.381, 0.25};
   std::vector<int> resolutions{32, 64, 128, 256, 512, 1024};
   int referenceResolution = 1024;

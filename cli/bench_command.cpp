@@ -23,8 +23,8 @@ void addBenchSolve(CLI::App* bench) {
   auto json = std::make_shared<std::string>();
   CLI::App* cmd = bench->add_subcommand("solve", "Time per iteration and to convergence by projection and resolution");
   cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
-  cmd->add_option("--cell", args->cellM, "Grid cell size, metres")->capture_default_str();
-  addSunFlag(cmd, args->sun);
+  cmd->add_option("--cell", args->cellM, "Grid cell size, metres (default: chosen from the scene's size)");
+  addDaylightFlags(cmd, args->daylight);
   cmd->add_option("--projections", args->projections, "Projections to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--shooters", args->shooters, "Shooters k per iteration to time")->delimiter(',')->capture_default_str();
@@ -35,8 +35,9 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
-  cmd->callback([args, json] {
+  cmd->callback([args, json, cmd] {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");
+    args->cellGiven = cmd->count("--cell") > 0;
     writeJsonIfAsked(*json, benchSolve(*args));
   });
 }
@@ -50,6 +51,7 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--name", args->name, "File stem of the outputs (default: the scene's)");
   cmd->add_option("--out-dir", args->outDir, "Write the CSV (NAME.csv, NAME-traces.csv) and the PNG plots here");
   cmd->add_option("--json", *json, "Also write every figure, with the traces of every iteration, as JSON");
+  addDaylightFlags(cmd, args->daylight);
   cmd->add_option("--cells", args->cells, "Cell sizes, metres")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
   cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();

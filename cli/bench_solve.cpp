@@ -9,7 +9,8 @@
 #include "cli/stats_json.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/progressive_solver.h"
-#include "solver/io/scene_loader.h"
+#include "cli/scene_input.h"
+#include "cli/solve_flags.h"
 
 namespace radmesh::cli {
 
@@ -51,8 +52,10 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
 }  // namespace
 
 nlohmann::json benchSolve(const BenchSolveArgs& args) {
-  const Scene scene = loadScene(args.scene, nullptr, args.sun);
-  const std::vector<Patch> patches = meshScene(scene, args.cellM);
+  const Scene scene = loadCommandScene(args.scene, false, args.daylight);
+  const CellChoice cell = commandCell(scene, args.cellM, args.cellGiven);
+  fmt::print("{}\n", cell.why);
+  const std::vector<Patch> patches = meshScene(scene, cell.cellM);
   nlohmann::json rows = nlohmann::json::array();
   fmt::print("scene {}: {} patches, threads {}, until C={:.2f}; times are {}\n", scene.source, patches.size(),
              args.threads, args.until,

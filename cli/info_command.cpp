@@ -11,6 +11,7 @@
 #include "cli/stats_json.h"
 #include "cli/effects_text.h"
 #include "solver/cells/find_cells.h"
+#include "cli/solve_flags.h"
 #include "solver/radiosity/effects_plan.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
@@ -27,7 +28,8 @@ namespace {
 
 struct InfoArgs {
   std::string scene = kDefaultScene;
-  double cellM = kDefaultCellM;
+  double cellM = kDefaultCellM;  // with --cell; else chooseCell's
+  Daylight daylight;
   bool json = false;
   bool strict = false;
   EffectsMode effects = EffectsMode::Auto;
@@ -132,8 +134,11 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"emitted_power", s.emittedPowerW}};
 }
 
-void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings) {
+void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings,
+               const std::vector<std::string>& notes, const CellChoice& cell) {
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  for (const std::string& n : notes) fmt::print("{}\n", n);
+  fmt::print("{}\n", cell.why);
   const Vec3 size = s.boundsMax - s.boundsMin;
   fmt::print("scene           {}\n", scene.source);
   fmt::print("polygons        {}\n", s.polygons);
@@ -154,7 +159,8 @@ void addInfoCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("info", "Print a scene's polygons, patches, materials, emitters, bounds, area and power");
   cmd->add_option("scene", args->scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
-  cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres")->capture_default_str();
+  cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size)");
+  addDaylightFlags(cmd, args->daylight);
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
   cmd->add_flag("--strict", args->strict, "Refuse a scene that needed any repair (each warning an error)");
   cmd->add_option_function<std::string>(
@@ -169,12 +175,13 @@ void addInfoCommand(CLI::App& app) {
          "What the file's named groups (MGF o, built-in rooms) do: name (name the cells) or join (also "
          "make the cells of one group one cell)")
       ->check(CLI::IsMember({"name", "join"}));
-  cmd->callback([args] {
+  cmd->callback([args, cmd] {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
-    std::vector<std::string> warnings;
-    const Scene scene = loadCommandScene(args->scene, args->strict, warnings);
-    const std::vector<Patch> patches = meshScene(scene, args->cellM);
-    const SceneSummary summary = summarizeScene(scene, patches, args->cellM);
+    std::vector<std::string> warnings, notes;
+    const Scene scene = loadCommandScene(args->scene, args->strict, args->daylight, warnings, notes);
+    const CellChoice cell = commandCell(scene, args->cellM, cmd->count("--cell") > 0);
+    const std::vector<Patch> patches = meshScene(scene, cell.cellM);
+    const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
     const bool cells = args->cells || !args->planPath.empty();
     CellPartition partition;
@@ -190,12 +197,15 @@ void addInfoCommand(CLI::App& app) {
     }
     if (args->json) {
       nlohmann::json j = toJson(summary, scene);
+      j["cell_m"] = cell.cellM;
+      j["cell_why"] = cell.why;
       j["effects"] = effectsJson(plan);
       j["warnings"] = warnings;
       if (cells) j.update(cellsJson(partition, figures, outside, seconds));
+      j["daylight"] = notes;
       fmt::print("{}\n", j.dump(2));
     } else {
-      printText(summary, scene, warnings);
+      printText(summary, scene, warnings, notes, cell);
       printEffects(plan);
       if (cells) printCells(partition, figures, outside, seconds);
     }

@@ -95,20 +95,22 @@ Solved solveScene(const RenderArgs& args) {
     options.untilUnshot = 0.0;
     options.maxIterations = args.iterations;
   }
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.sun);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight);
+  const CellChoice cell = args.flags.cell(scene);
+  fmt::print("{}\n", cell.why);
   auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
     Solved solved{buildDisplayMesh(patches), {}, sceneFrame(scene)};
     solved.vertexB = vertexRadiosity(solved.mesh, displayRadiosity);
     return solved;
   };
   if (args.flags.cellsOn()) {
-    std::unique_ptr<CellSolver> solver = makeCellSolver(scene, meshScene(scene, args.flags.cellM), options,
-                                                        {args.flags.cellM, args.flags.exchangeShots});
+    std::unique_ptr<CellSolver> solver =
+        makeCellSolver(scene, meshScene(scene, cell.cellM), options, {cell.cellM, args.flags.exchangeShots});
     printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
     if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
     return solvedFrom(solver->patches(), solver->displayRadiosity());
   }
-  ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   solveWithProgress(solver, args.quiet);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
              solver.patches().size(), solver.history().size(), solver.convergence(),

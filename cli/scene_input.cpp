@@ -7,9 +7,9 @@
 
 namespace radmesh::cli {
 
-Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<std::string>& warnings,
-                       const std::vector<Light>& addedLights) {
-  Scene scene = loadScene(pathOrName, &warnings, addedLights);
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight,
+                       std::vector<std::string>& warnings, std::vector<std::string>& notes) {
+  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes);
   if (strict && !warnings.empty()) {
     std::string list;
     for (const std::string& w : warnings) list += "\n  " + w;
@@ -20,10 +20,11 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<s
   return scene;
 }
 
-Scene loadCommandScene(const std::string& pathOrName, bool strict, const std::vector<Light>& addedLights) {
-  std::vector<std::string> warnings;
-  Scene scene = loadCommandScene(pathOrName, strict, warnings, addedLights);
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight) {
+  std::vector<std::string> warnings, notes;
+  Scene scene = loadCommandScene(pathOrName, strict, daylight, warnings, notes);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+  for (const std::string& n : notes) fmt::print("{}\n", n);
   return scene;
 }
 

@@ -3,17 +3,18 @@
 #include <string>
 #include <vector>
 
+#include "solver/io/daylight.h"
 #include "solver/scene/scene.h"
 
 namespace radmesh::cli {
 
 // Loads pathOrName, with what the reader repaired (an unknown entity skipped, `rd 1` lowered...) in
-// `warnings`. With `strict`, a scene that needed any repair is refused: SceneError listing them.
-// `addedLights` (--sun) join the scene's own lights.
-Scene loadCommandScene(const std::string& pathOrName, bool strict, std::vector<std::string>& warnings,
-                       const std::vector<Light>& addedLights = {});
+// `warnings`, lit by `daylight` (--sky, --sun) (what that added in `notes`). With `strict`, a scene
+// that needed any repair is refused: SceneError listing them.
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight,
+                       std::vector<std::string>& warnings, std::vector<std::string>& notes);
 
-// The same for a command that only prints the warnings, on stderr.
-Scene loadCommandScene(const std::string& pathOrName, bool strict, const std::vector<Light>& addedLights = {});
+// The same for a command that only prints them: the warnings on stderr, the notes on stdout.
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight = {});
 
 }  // namespace radmesh::cli

@@ -62,11 +62,11 @@ void writeBake(const std::string& path, const std::vector<Patch>& patches, const
 }
 
 // --cells auto: the rooms solved cell by cell (no checkpoints: the state is one solve per cell).
-void runCells(const SolveArgs& args, const Scene& scene, const SolveOptions& options) {
+void runCells(const SolveArgs& args, const Scene& scene, double cellM, const SolveOptions& options) {
   if (!args.checkpointPath.empty() || !args.resumePath.empty())
     throw OptionError("--checkpoint and --resume save and restore one solve, not a cells solve: give --cells off");
   std::unique_ptr<CellSolver> solver =
-      makeCellSolver(scene, meshScene(scene, args.flags.cellM), options, {args.flags.cellM, args.flags.exchangeShots});
+      makeCellSolver(scene, meshScene(scene, cellM), options, {cellM, args.flags.exchangeShots});
   fmt::print("solving {} cell by cell: {} patches, {} {}x{}, k={}, until {:g}% unshot\n", scene.source,
              solver->patches().size(), toString(options.projection), options.resolution, options.resolution,
              options.shooters, 100.0 * options.untilUnshot);
@@ -84,11 +84,13 @@ void run(const SolveArgs& args) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.sun);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight);
   options.effects = parseEffects(args.effects);
-  if (args.flags.cellsOn()) return runCells(args, scene, options);
+  const CellChoice cell = args.flags.cell(scene);
+  fmt::print("{}\n", cell.why);
+  if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options);
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
-  ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
+  ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
     resumeFromCheckpoint(args.resumePath, solver);
     fmt::print("resumed from {} after iteration {}\n", args.resumePath, solver.history().size());

@@ -1,5 +1,7 @@
 #include "cli/solve_flags.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 
 #include "solver/meshing/meshing.h"
@@ -18,13 +20,6 @@ void applyPresetFlags(Preset preset, SolveFlags& f) {
 
 }  // namespace
 
-void addSunFlag(CLI::App* cmd, std::vector<Light>& sun) {
-  cmd->add_option_function<std::string>(
-      "--sun", [&sun](const std::string& text) { sun = {parseSun(text)}; },
-      "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north (+y) and above the horizon (z up); LUX "
-      "defaults to 100000, clear-sky direct sun. Combines with the scene's own lights");
-}
-
 SolveFlags::SolveFlags() { applyPresetFlags(Preset::Bake, *this); }
 
 std::vector<std::string> SolveFlags::given() const {
@@ -32,6 +27,32 @@ std::vector<std::string> SolveFlags::given() const {
   for (const CLI::Option* option : solverOptions)
     if (option->count() > 0) names.push_back(option->get_name());
   return names;
+}
+
+CellChoice SolveFlags::cell(const Scene& scene) const {
+  const std::vector<std::string> flags = given();
+  return commandCell(scene, cellM, std::find(flags.begin(), flags.end(), "--cell") != flags.end());
+}
+
+CellChoice commandCell(const Scene& scene, double cellM, bool given) {
+  return given ? CellChoice{cellM, fmt::format("cell {:.4g} m, as --cell gives", cellM)} : chooseCell(scene);
+}
+
+void addDaylightFlags(CLI::App* cmd, Daylight& daylight) {
+  cmd->add_option_function<double>(
+      "--sky",
+      [&daylight](double lux) {
+        checkSkyLux(lux);
+        daylight.skyLux = lux;
+      },
+      "Light the scene by a sky of this horizontal illuminance (lux) through its openings");
+  cmd->add_option_function<std::string>(
+      "--sky-model", [&daylight](const std::string& name) { daylight.sky = parseSkyModel(name); },
+      "The sky's luminance: uniform (the default) or cie-overcast (three times brighter at the zenith)");
+  cmd->add_option_function<std::string>(
+      "--sun", [&daylight](const std::string& text) { daylight.sun = {parseSun(text)}; },
+      "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north (+y) and above the horizon (z up); LUX "
+      "defaults to 100000, clear-sky direct sun. Combines with the scene's own lights and the sky");
 }
 
 SolveOptions SolveFlags::resolved() const {
@@ -59,13 +80,14 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
       ->capture_default_str();
   cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
   const size_t first = cmd->get_options().size();
+  addDaylightFlags(cmd, f.daylight);
   cmd->add_option_function<std::string>(
          "--preset", [&f](const std::string& name) { applyPresetFlags(parsePreset(name), f); },
          "bake (the default: hemicube 256, until 1 % of the power is unshot) or paper (Varshney & Prins: single "
          "plane 128, ratio 3, until C = 0.95); flags given beside it win")
       ->trigger_on_parse();
   cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
-  cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (the paper: 15 in)")->capture_default_str();
+  cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size; the paper: 0.381)");
   cmd->add_option("--mapping", f.mapping, "Mesh backend: hierarchical, cut-and-stack or adaptive")->capture_default_str();
   cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")->capture_default_str();
   cmd->add_option("--resolution", f.options.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
@@ -84,7 +106,6 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
            f.options.formFactorCacheBytes = static_cast<std::size_t>(mb * 1024 * 1024);
          },
          "Form-factor row cache budget in MiB (0: none)");
-  addSunFlag(cmd, f.sun);
   cmd->add_option("--cells", f.cells,
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
       ->capture_default_str();

@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/scene/scene.h"
+#include "solver/io/daylight.h"
+#include "solver/meshing/meshing.h"
 #include "solver/scene/solve_options.h"
 
 namespace radmesh::cli {
@@ -12,14 +13,14 @@ namespace radmesh::cli {
 struct SolveFlags {
   SolveFlags();  // the bake preset (docs/accuracy.md)
   std::string scene = "office";
-  double cellM = 0.381;
+  double cellM = kDefaultCellM;  // used when --cell is given; else chooseCell's (cell())
   std::string backend = "native";
   std::string projection;
   std::string mapping = "hierarchical";
   bool strict = false;  // --strict: a scene that needed any repair is refused
-  std::vector<Light> sun;  // --sun AZIMUTH,ELEVATION[,LUX]: the sun's directional light, if given
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
   int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
+  Daylight daylight;          // --sky, --sky-model, --sun
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
@@ -29,14 +30,20 @@ struct SolveFlags {
   bool cellsOn() const;  // --cells auto (throws OptionError for what is neither auto nor off)
   // The solver flags given on the command line, e.g. {"--resolution", "--preset"}.
   std::vector<std::string> given() const;
+  // The cell to mesh `scene` with: --cell when given, else the one chosen from the scene's size.
+  CellChoice cell(const Scene& scene) const;
 };
 
-// Adds SCENE and --preset --backend --cell --projection --resolution --ratio --shooters --until
-// --until-unshot --max-iterations --threads --cache-mb --sun --cells --exchange-shots to a subcommand. --preset is applied as it
+// --cell's value when the user gave it, else chooseCell(scene); `why` says which.
+CellChoice commandCell(const Scene& scene, double cellM, bool given);
+
+// Adds --sky LUX, --sky-model uniform|cie-overcast and --sun AZIMUTH,ELEVATION[,LUX] (docs/scene-formats.md#daylight).
+void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
+
+// Adds SCENE, --strict, --sky, --sky-model, --sun and --preset --backend --cell --projection --resolution --ratio --shooters --until
+// --until-unshot --max-iterations --threads --cache-mb --cells --exchange-shots to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
 
-// --sun alone, for a command without the other solve flags (bench).
-void addSunFlag(CLI::App* cmd, std::vector<Light>& sun);
 
 }  // namespace radmesh::cli

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "solver/scene/scene_error.h"
+#include "solver/scene/sun.h"
 #include "viewer/viewer_app.h"
 
 int main(int argc, char** argv) {
@@ -26,7 +27,14 @@ int main(int argc, char** argv) {
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();
-  app.add_option("--cell", args.setup.cellM, "Grid cell size for meshing, metres")->capture_default_str();
+  CLI::Option* cell =
+      app.add_option("--cell", args.setup.cellM, "Grid cell size for meshing, metres (default: from the scene's size)");
+  CLI::Option* sky = app.add_option("--sky", args.daylight.skyLux,
+                                    "Light the scene by a sky of this horizontal illuminance (lux) through its openings");
+  std::string skyModel = "uniform";
+  app.add_option("--sky-model", skyModel, "The sky's luminance: uniform or cie-overcast")->capture_default_str();
+  std::string sun;
+  app.add_option("--sun", sun, "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north and above the horizon");
   app.add_option("--until", o.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")
       ->capture_default_str();
   app.add_option("--until-unshot", o.untilUnshot,
@@ -48,6 +56,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
+    args.cellGiven = cell->count() > 0;
+    if (sky->count() > 0) radmesh::checkSkyLux(args.daylight.skyLux);
+    args.daylight.sky = radmesh::parseSkyModel(skyModel);
+    if (!sun.empty()) args.daylight.sun = {radmesh::parseSun(sun)};
     if (!args.screenshot.empty() && args.steps <= 0)
       throw radmesh::OptionError("--screenshot needs --steps N (the number of iterations to run first)");
     if (std::sscanf(size.c_str(), "%dx%d", &args.windowSize.x, &args.windowSize.y) != 2 || args.windowSize.x < 64 ||

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "solver/io/scene_loader.h"
+#include "solver/meshing/meshing.h"
 #include "viewer/camera.h"
 #include "viewer/exposure.h"
 #include "viewer/imgui_layer.h"
@@ -88,9 +89,16 @@ SolveSetup viewerSetup() {
 }
 
 int runViewer(const ViewerArgs& args) {
-  std::vector<std::string> warnings;
-  Scene scene = loadScene(args.scene, &warnings);
+  std::vector<std::string> warnings, notes;
+  Scene scene = loadScene(args.scene, &warnings, args.daylight, &notes);
   for (const std::string& warning : warnings) std::fprintf(stderr, "radmesh-view: warning: %s\n", warning.c_str());
+  for (const std::string& note : notes) std::printf("radmesh-view: %s\n", note.c_str());
+  SolveSetup setup = args.setup;
+  if (!args.cellGiven) {
+    const CellChoice cell = chooseCell(scene);
+    setup.cellM = cell.cellM;
+    std::printf("radmesh-view: %s\n", cell.why.c_str());
+  }
   const std::string title = "radmesh-view: " + scene.source;
   WalkCamera camera(sceneFrame(scene));
 
@@ -98,9 +106,9 @@ int runViewer(const ViewerArgs& args) {
   ImGuiLayer imgui(window.window());
   Renderer renderer;
   const bool smokeTest = args.steps > 0;
-  SolverThread solver(std::move(scene), args.setup, !smokeTest, args.resume);
+  SolverThread solver(std::move(scene), setup, !smokeTest, args.resume);
   if (smokeTest) solver.step(args.steps);
-  Panel panel(args.setup, args.firstTab, args.checkpoint);
+  Panel panel(setup, args.firstTab, args.checkpoint);
   ViewSettings view;
   SnapshotFeed feed;
   WalkInputReader input;

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "solver/io/daylight.h"
 #include "viewer/panel.h"
 #include "viewer/solver_snapshot.h"
 
@@ -17,6 +18,8 @@ SolveSetup viewerSetup();
 struct ViewerArgs {
   std::string scene = "office";
   SolveSetup setup = viewerSetup();
+  bool cellGiven = false;  // --cell; else setup.cellM is chosen from the scene's size
+  Daylight daylight;       // --sky, --sky-model
   glm::ivec2 windowSize{1280, 720};
   PanelTab firstTab = PanelTab::Progress;
   std::string resume;                       // a checkpoint to go on from (empty: from scratch)

@@ -37,10 +37,15 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
 
 }  // namespace
 
-Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings,
-                const std::vector<Light>& addedLights) {
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings, const Daylight& daylight,
+                std::vector<std::string>* notes) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
-  scene.lights.insert(scene.lights.end(), addedLights.begin(), addedLights.end());
+  if (daylight.skyLux > 0.0) {
+    validateGeometry(scene);  // openings are looked for in sound geometry only
+    std::vector<std::string> added = addSkyEmitters(scene, daylight);
+    if (notes) notes->insert(notes->end(), added.begin(), added.end());
+  }
+  scene.lights.insert(scene.lights.end(), daylight.sun.begin(), daylight.sun.end());
   validateScene(scene);
   return scene;
 }

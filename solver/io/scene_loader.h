@@ -3,15 +3,17 @@
 #include <string>
 #include <vector>
 
+#include "solver/io/daylight.h"
 #include "solver/scene/scene.h"
 
 namespace radmesh {
 
 inline constexpr const char* kDefaultScene = "office";
 
-// Loads and validates, with `addedLights` (--sun) among the scene's own, so that a scene they
-// alone light is accepted; throws SceneError with file, element and fix on anything unusable.
+// Loads, lights by `daylight` (its sky at the openings, what that added a line each in `notes`; its
+// sun among the scene's lights), and validates; throws SceneError with file, element and fix on
+// anything unusable.
 Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr,
-                const std::vector<Light>& addedLights = {});
+                const Daylight& daylight = {}, std::vector<std::string>* notes = nullptr);
 
 }  // namespace radmesh

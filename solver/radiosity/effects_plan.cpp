@@ -2,42 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <tuple>
 
 #include <fmt/format.h>
 
 #include "solver/formfactors/near_field.h"
+#include "solver/geometry/openings.h"
 
 namespace radmesh {
 
 namespace {
 
-double sceneExtent(const Scene& scene) {
-  Vec3 lo(INFINITY), hi(-INFINITY);
-  for (const Polygon& p : scene.polygons)
-    for (const Vec3& v : p.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
-  return glm::length(hi - lo);
-}
-
 bool grey(const Rgb& c) { return c.r == c.g && c.g == c.b; }
-
-// An edge's supporting line, canonical up to sign and rounded to a tolerance, so that collinear
-// edges of different polygons fall into one bucket.
-using LineKey = std::tuple<long long, long long, long long, long long, long long, long long>;
-
-LineKey lineKey(const Vec3& a, const Vec3& b, double tolerance) {
-  Vec3 d = glm::normalize(b - a);
-  if (d.x < 0 || (d.x == 0 && (d.y < 0 || (d.y == 0 && d.z < 0)))) d = -d;
-  const Vec3 foot = a - glm::dot(a, d) * d;  // the line's point nearest the origin
-  auto q = [](double x, double step) { return static_cast<long long>(std::llround(x / step)); };
-  return {q(d.x, 1e-6), q(d.y, 1e-6), q(d.z, 1e-6), q(foot.x, tolerance), q(foot.y, tolerance), q(foot.z, tolerance)};
-}
 
 }  // namespace
 
 bool isConvexEnclosure(const Scene& scene) {
-  const double tolerance = 1e-9 * sceneExtent(scene);
+  const double tolerance = 1e-9 * sceneDiagonal(scene);
   for (const Polygon& p : scene.polygons) {
     const Vec3 n = glm::normalize(newellNormal(p.vertices));
     const Vec3 origin = p.vertices[0];
@@ -49,41 +29,7 @@ bool isConvexEnclosure(const Scene& scene) {
 }
 
 bool isClosed(const Scene& scene) {
-  struct Edge {
-    Vec3 a, b;
-    size_t polygon;
-  };
-  const double tolerance = 1e-7 * sceneExtent(scene);
-  std::map<LineKey, std::vector<Edge>> lines;
-  for (size_t i = 0; i < scene.polygons.size(); ++i) {
-    const auto& v = scene.polygons[i].vertices;
-    for (size_t k = 0; k < v.size(); ++k) {
-      const Vec3 a = v[k], b = v[(k + 1) % v.size()];
-      if (glm::length(b - a) > tolerance) lines[lineKey(a, b, tolerance)].push_back({a, b, i});
-    }
-  }
-  // Every edge must be covered along its whole length by edges of other polygons.
-  for (const auto& [key, edges] : lines) {
-    for (const Edge& e : edges) {
-      const Vec3 d = glm::normalize(e.b - e.a);
-      const double length = glm::length(e.b - e.a);
-      std::vector<std::pair<double, double>> cover;
-      for (const Edge& f : edges) {
-        if (f.polygon == e.polygon) continue;
-        double s = glm::dot(f.a - e.a, d), t = glm::dot(f.b - e.a, d);
-        if (s > t) std::swap(s, t);
-        cover.emplace_back(s, t);
-      }
-      std::sort(cover.begin(), cover.end());
-      double reached = 0.0;
-      for (const auto& [s, t] : cover) {
-        if (s > reached + tolerance) break;
-        reached = std::max(reached, t);
-      }
-      if (reached < length - tolerance) return false;
-    }
-  }
-  return true;
+  return boundarySegments(scene, 1e-7 * sceneDiagonal(scene)).empty();
 }
 
 EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, EffectsMode mode) {

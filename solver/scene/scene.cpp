@@ -158,15 +158,20 @@ void validateLight(const Scene& scene, const Light& light) {
 
 }  // namespace
 
-void validateScene(const Scene& scene) {
+void validateGeometry(const Scene& scene) {
   if (scene.polygons.empty())
     throw SceneError(scene.source, "", "contains no polygons", "check that the file holds surfaces");
   for (const Material& m : scene.materials) validateMaterial(scene, m);
   for (size_t i = 0; i < scene.polygons.size(); ++i) validatePolygon(scene, i);
   for (const Light& light : scene.lights) validateLight(scene, light);
+}
+
+void validateScene(const Scene& scene) {
+  validateGeometry(scene);
   if (!(emittedPowerW(scene) > 0.0))
     throw SceneError(scene.source, "", "has no emitter, so every radiosity would be zero",
-                     "give at least one material a positive emittance");
+                     "give at least one material a positive emittance, or light it by daylight through its "
+                     "openings: --sky LUX, --sun AZIMUTH,ELEVATION[,LUX]");
 }
 
 double emittedPowerW(const Scene& scene) {

@@ -69,8 +69,10 @@ std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n);
 // Throws SceneError for input that cannot be solved: no polygons, NaN or infinite coordinates,
 // fewer than 3 vertices, zero area, non-planar polygons, rho outside [0,1), negative or non-finite
 // emittance, a material index out of range, a light with a non-finite or negative intensity, a
-// zero direction or cone angles outside 0 <= inner < outer <= pi/2, or no emitter at all (neither
-// an emitting material nor a light).
+// zero direction or cone angles outside 0 <= inner < outer <= pi/2.
+void validateGeometry(const Scene& scene);
+// The same, and no emitter at all, neither an emitting material nor a light (the message points to
+// daylight).
 void validateScene(const Scene& scene);
 
 // A spot's relative intensity at cosTheta (the cosine of the angle from its axis):

@@ -1,0 +1,230 @@
+#include "solver/geometry/openings.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "solver/geometry/polygon_triangulate.h"
+
+namespace radmesh {
+
+namespace {
+
+// An edge's supporting line, canonical up to sign and rounded to a tolerance, so that collinear
+// edges of different polygons fall into one bucket.
+using LineKey = std::tuple<long long, long long, long long, long long, long long, long long>;
+
+LineKey lineKey(const Vec3& a, const Vec3& b, double tolerance) {
+  Vec3 d = glm::normalize(b - a);
+  if (d.x < 0 || (d.x == 0 && (d.y < 0 || (d.y == 0 && d.z < 0)))) d = -d;
+  const Vec3 foot = a - glm::dot(a, d) * d;  // the line's point nearest the origin
+  auto q = [](double x, double step) { return static_cast<long long>(std::llround(x / step)); };
+  return {q(d.x, 1e-6), q(d.y, 1e-6), q(d.z, 1e-6), q(foot.x, tolerance), q(foot.y, tolerance), q(foot.z, tolerance)};
+}
+
+// Points within a tolerance of one another get one index (the first such point stands for all).
+class Welder {
+ public:
+  explicit Welder(double tolerance) : tolerance_(tolerance) {}
+  int id(const Vec3& p) {
+    const Cell c = cellOf(p);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto found = cells_.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (found == cells_.end()) continue;
+          for (int i : found->second)
+            if (glm::length(points_[i] - p) <= tolerance_) return i;
+        }
+    points_.push_back(p);
+    cells_[c].push_back(static_cast<int>(points_.size() - 1));
+    return static_cast<int>(points_.size() - 1);
+  }
+  const Vec3& point(int id) const { return points_[id]; }
+
+ private:
+  using Cell = std::array<long long, 3>;
+  Cell cellOf(const Vec3& p) const {
+    return {std::llround(p.x / tolerance_), std::llround(p.y / tolerance_), std::llround(p.z / tolerance_)};
+  }
+  double tolerance_;
+  std::vector<Vec3> points_;
+  std::map<Cell, std::vector<int>> cells_;
+};
+
+// The two world axes of the plane a normal is most nearly perpendicular to.
+std::pair<int, int> dominantPlane(const Vec3& normal) {
+  const Vec3 a = glm::abs(normal);
+  const int drop = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+  return {(drop + 1) % 3, (drop + 2) % 3};
+}
+
+bool insidePolygon(const std::vector<Vec3>& vertices, const Vec3& normal, const Vec3& p) {
+  const auto [u, v] = dominantPlane(normal);
+  bool inside = false;  // crossing number of a ray along +u
+  for (size_t i = 0, j = vertices.size() - 1; i < vertices.size(); j = i++) {
+    const Vec3& a = vertices[i];
+    const Vec3& b = vertices[j];
+    if ((a[v] > p[v]) != (b[v] > p[v]) && p[u] < a[u] + (p[v] - a[v]) * (b[u] - a[u]) / (b[v] - a[v]))
+      inside = !inside;
+  }
+  return inside;
+}
+
+std::string describeLoop(const std::vector<Vec3>& loop) {
+  Vec3 mean(0.0);
+  for (const Vec3& v : loop) mean += v;
+  mean /= double(loop.size());
+  return fmt::format("the boundary loop of {} edges around ({:.4g}, {:.4g}, {:.4g})", loop.size(), mean.x, mean.y,
+                     mean.z);
+}
+
+// Drops every vertex that lies on the line through its neighbours: a wall cut into pieces leaves
+// several collinear edges along one side of a window.
+std::vector<Vec3> mergeCollinear(std::vector<Vec3> loop, double tolerance) {
+  for (bool changed = true; changed && loop.size() > 3;) {
+    changed = false;
+    for (size_t i = 0; i < loop.size() && loop.size() > 3; ++i) {
+      const Vec3& prev = loop[(i + loop.size() - 1) % loop.size()];
+      const Vec3& next = loop[(i + 1) % loop.size()];
+      const Vec3 d = next - prev;
+      const double off = glm::length(glm::cross(loop[i] - prev, d)) / std::max(glm::length(d), tolerance);
+      if (off <= tolerance) loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(i)), changed = true;
+    }
+  }
+  return loop;
+}
+
+// A point inside a planar loop: the centroid of its largest triangle (the loop may be concave).
+bool insidePoint(const std::vector<Vec3>& loop, const Vec3& normal, double tolerance, Vec3& inside) {
+  const auto [u, v] = dominantPlane(normal);
+  std::vector<Vec2> flat;
+  for (const Vec3& p : loop) flat.emplace_back(p[u], p[v]);
+  const bool reversed = signedArea(flat) < 0.0;
+  if (reversed) std::reverse(flat.begin(), flat.end());
+  double best = 0.0;
+  for (const auto& t : triangulatePolygon(flat, tolerance)) {
+    const double area = cross2(flat[t[1]] - flat[t[0]], flat[t[2]] - flat[t[0]]);
+    if (area <= best) continue;
+    best = area;
+    inside = Vec3(0.0);
+    for (int k : t) inside += loop[reversed ? loop.size() - 1 - size_t(k) : size_t(k)] / 3.0;
+  }
+  return best > 0.0;
+}
+
+}  // namespace
+
+double sceneDiagonal(const Scene& scene) {
+  Vec3 lo(INFINITY), hi(-INFINITY);
+  for (const Polygon& p : scene.polygons)
+    for (const Vec3& v : p.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  return scene.polygons.empty() ? 0.0 : glm::length(hi - lo);
+}
+
+std::vector<BoundarySegment> boundarySegments(const Scene& scene, double tolerance) {
+  std::map<LineKey, std::vector<BoundarySegment>> lines;
+  for (const Polygon& polygon : scene.polygons) {
+    const auto& v = polygon.vertices;
+    for (size_t k = 0; k < v.size(); ++k) {
+      const Vec3 a = v[k], b = v[(k + 1) % v.size()];
+      if (glm::length(b - a) > tolerance) lines[lineKey(a, b, tolerance)].push_back({a, b});
+    }
+  }
+  std::vector<BoundarySegment> open;
+  for (const auto& [key, edges] : lines) {
+    for (size_t i = 0; i < edges.size(); ++i) {
+      const BoundarySegment& e = edges[i];
+      const Vec3 d = glm::normalize(e.b - e.a);
+      const double length = glm::length(e.b - e.a);
+      auto at = [&](double s) { return s <= 0.0 ? e.a : s >= length ? e.b : e.a + s * d; };
+      std::vector<std::pair<double, double>> cover;
+      for (size_t j = 0; j < edges.size(); ++j) {
+        if (j == i) continue;
+        double s = glm::dot(edges[j].a - e.a, d), t = glm::dot(edges[j].b - e.a, d);
+        if (s > t) std::swap(s, t);
+        cover.emplace_back(s, t);
+      }
+      std::sort(cover.begin(), cover.end());
+      double reached = 0.0;
+      for (const auto& [s, t] : cover) {
+        if (reached >= length - tolerance) break;
+        if (s > reached + tolerance) open.push_back({at(reached), at(std::min(s, length))});
+        reached = std::max(reached, t);
+      }
+      if (reached < length - tolerance) open.push_back({at(reached), e.b});
+    }
+  }
+  return open;
+}
+
+OpeningSearch findOpenings(const Scene& scene) {
+  const double tolerance = 1e-7 * sceneDiagonal(scene);
+  const std::vector<BoundarySegment> segments = boundarySegments(scene, tolerance);
+  Welder welder(tolerance);
+  std::vector<std::pair<int, int>> ends;  // welded start and end of each segment
+  std::map<int, std::vector<size_t>> leaving;
+  for (size_t s = 0; s < segments.size(); ++s) {
+    ends.emplace_back(welder.id(segments[s].a), welder.id(segments[s].b));
+    leaving[ends.back().first].push_back(s);
+  }
+  OpeningSearch search;
+  std::vector<bool> used(segments.size(), false);
+  for (size_t first = 0; first < segments.size(); ++first) {
+    if (used[first]) continue;
+    std::vector<Vec3> loop;
+    bool closed = false;
+    for (size_t s = first;;) {
+      used[s] = true;
+      loop.push_back(welder.point(ends[s].first));
+      if (ends[s].second == ends[first].first) {
+        closed = true;
+        break;
+      }
+      const auto next = leaving.find(ends[s].second);
+      if (next == leaving.end()) break;
+      const auto free = std::find_if(next->second.begin(), next->second.end(), [&](size_t n) { return !used[n]; });
+      if (free == next->second.end()) break;
+      s = *free;
+    }
+    if (!closed) {
+      search.skipped.push_back(describeLoop(loop) + " does not close: it is not an opening");
+      continue;
+    }
+    // The loop runs as its polygons' edges do, around the hole clockwise seen from their front.
+    std::reverse(loop.begin(), loop.end());
+    loop = mergeCollinear(std::move(loop), tolerance);
+    const Vec3 n = newellNormal(loop);
+    const double area = 0.5 * glm::length(n);
+    double extent = 0.0, off = 0.0;
+    for (const Vec3& v : loop) extent = std::max(extent, glm::length(v - loop[0]));
+    for (const Vec3& v : loop) off = std::max(off, area > 0.0 ? std::abs(glm::dot(v - loop[0], n / (2.0 * area))) : 0.0);
+    Vec3 inside(0.0);
+    if (loop.size() < 3 || !(area > 1e-12 * extent * extent) || !insidePoint(loop, n, tolerance, inside)) {
+      search.skipped.push_back(describeLoop(loop) + " encloses no area: it is not an opening");
+    } else if (off > 1e-3 * extent) {
+      search.skipped.push_back(describeLoop(loop) + fmt::format(" is not planar (a vertex {:.3g} m off its plane): "
+                                                                "not an opening; close it with a polygon", off));
+    } else {
+      search.openings.push_back({std::move(loop), inside});
+    }
+  }
+  return search;
+}
+
+bool rayHitsScene(const Scene& scene, const Vec3& origin, const Vec3& direction, double fromM) {
+  for (const Polygon& p : scene.polygons) {
+    const Vec3 n = newellNormal(p.vertices);
+    const double along = glm::dot(direction, n);
+    if (std::abs(along) <= 1e-12 * glm::length(n)) continue;  // parallel to its plane
+    const double t = glm::dot(p.vertices[0] - origin, n) / along;
+    if (t > fromM && insidePolygon(p.vertices, n, origin + t * direction)) return true;
+  }
+  return false;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,101 @@
+// Daylight and the default cell as a user meets them: a room lit only by --sky through one window
+// converges and renders; a closed one is refused; without --cell the cell follows the scene.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/cli/cli_run.h"
+#ifdef RADMESH_HAS_VIEWER
+#include "viewer/image.h"
+#endif
+
+namespace radmesh {
+namespace {
+
+const std::string kRoom = (test::dataPath("daylight") / "room_one_window.mgf").string();
+const std::string kClosedRoom = (test::dataPath("daylight") / "room_closed.mgf").string();
+// A 1.2 x 1.2 m vertical window under a uniform sky of 10 000 lux, the ground black: half the
+// horizontal illuminance, at 179 lm/W, summed over R, G, B.
+const double kWindowW = 3.0 * 1.44 * 5000.0 / 179.0;
+
+TEST(Cli, SkyLightsARoomThroughOneWindow) {
+  const CommandRun info = radmesh("info " + kRoom + " --sky 10000 --json");
+  ASSERT_EQ(info.exitCode, 0) << info.output;
+  const auto j = nlohmann::json::parse(info.output);
+  EXPECT_EQ(j["emitters"], 1);
+  EXPECT_NEAR(j["emitted_power"].get<double>(), kWindowW, 1e-9 * kWindowW);
+  EXPECT_EQ(j["material_list"].back()["name"], "sky (opening 1)");
+  ASSERT_EQ(j["daylight"].size(), 1u) << j["daylight"].dump();
+  EXPECT_NE(j["daylight"][0].get<std::string>().find("through 1 opening(s), 1.44 m^2"), std::string::npos);
+
+  const std::string stats = tempPath("stats.json");
+  const CommandRun solve = radmesh("solve " + kRoom + " --sky 10000 --resolution 64 --quiet --stats " + stats);
+  ASSERT_EQ(solve.exitCode, 0) << solve.output;
+  const auto s = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_LE(s["unshot_fraction"].get<double>(), 0.01);
+  const auto& l = s["ledger"];
+  EXPECT_NEAR(l["emitted"].get<double>(), kWindowW, 1e-9 * kWindowW);
+  const double accounted = l["absorbed"].get<double>() + l["unshot"].get<double>() +
+                           l["not_captured"].get<double>() + l["escaped"].get<double>();
+  EXPECT_NEAR(accounted, l["emitted"].get<double>(), 1e-9 * kWindowW);
+  // The window closes the room: nothing escapes, what leaves through the window is absorbed by it.
+  EXPECT_EQ(l["escaped"].get<double>(), 0.0);
+
+#ifdef RADMESH_HAS_VIEWER
+  const std::string png = tempPath("room.png");
+  // At a fixed exposure (white at B = 1 W/m^2), so that the bound measures the light: the room
+  // under 10 000 lux measured a mean of 203 of 255, under 1000 lux 69.
+  const CommandRun render = radmesh("render " + kRoom +
+                                    " --sky 10000 --sky-model cie-overcast --resolution 64 --size 160x120 --exposure 0 "
+                                    "--quiet --out " + png);
+  ASSERT_EQ(render.exitCode, 0) << render.output;
+  const Image picture = readPng(png);
+  double sum = 0.0;
+  for (size_t i = 0; i < picture.rgba.size(); ++i)
+    if (i % 4 != 3) sum += picture.rgba[i];
+  const double mean = sum / (3.0 * picture.width * picture.height);
+  EXPECT_GT(mean, 150.0) << "the room is dark in " << png;
+#endif
+}
+
+TEST(Cli, SkyNeedsAnOpeningAndASceneWithoutLightPointsToIt) {
+  CommandRun run = radmesh("solve " + kClosedRoom + " --sky 10000 --quiet");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("has no opening to let daylight in"), std::string::npos) << run.output;
+  run = radmesh("info " + kRoom);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--sky LUX"), std::string::npos) << run.output;
+  run = radmesh("info " + kRoom + " --sky -5");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--sky must be"), std::string::npos) << run.output;
+  run = radmesh("info " + kRoom + " --sky 10000 --sky-model clear");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--sky-model must be"), std::string::npos) << run.output;
+}
+
+TEST(Cli, WithoutCellTheCellFollowsTheScenesSizeAndCellWins) {
+  auto info = [](const std::string& arguments) {
+    const CommandRun run = radmesh("info " + arguments + " --json");
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    return nlohmann::json::parse(run.output);
+  };
+  // The 0.55 m Cornell box: a sixteenth of its smallest extent, not the paper's 47 patches.
+  const auto chosen = info("cornell");
+  EXPECT_NEAR(chosen["cell_m"].get<double>(), 0.5488 / 16.0, 1e-4) << chosen["cell_why"];
+  EXPECT_EQ(chosen["cell"], chosen["cell_m"]);
+  EXPECT_NE(chosen["cell_why"].get<std::string>().find("a sixteenth of the model's smallest extent"), std::string::npos);
+  EXPECT_GT(chosen["patches"].get<int>(), 1000);
+  const auto given = info("cornell --cell 0.381");
+  EXPECT_EQ(given["cell_m"], 0.381);
+  EXPECT_EQ(given["patches"], 47);
+  // A room keeps the paper's 15 inches; solve says what it chose.
+  EXPECT_EQ(info("office")["cell_m"], 0.381);
+  const CommandRun solve = radmesh("solve cornell --max-iterations 1 --resolution 16 --quiet");
+  ASSERT_EQ(solve.exitCode, 0) << solve.output;
+  EXPECT_NE(solve.output.find("a sixteenth of the model's smallest extent"), std::string::npos) << solve.output;
+}
+
+}  // namespace
+}  // namespace radmesh
