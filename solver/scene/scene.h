@@ -72,6 +72,8 @@ std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n);
 // zero direction or cone angles outside 0 <= inner < outer <= pi/2, or no emitter at all (neither
 // an emitting material nor a light).
 void validateScene(const Scene& scene);
+// The lights' part of validateScene (the solver checks what it is handed with it).
+void validateLights(const Scene& scene);
 
 // A spot's relative intensity at cosTheta (the cosine of the angle from its axis):
 // KHR_lights_punctual's smooth falloff, t^2 with t = (cosTheta - cos outer) / (cos inner - cos outer)
