@@ -128,6 +128,7 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"material_list", materials},
           {"emitters", s.emitterPolygons},
           {"emitter_patches", s.emitterPatches},
+          {"lights", s.lights},
           {"bounds_min", {s.boundsMin.x, s.boundsMin.y, s.boundsMin.z}},
           {"bounds_max", {s.boundsMax.x, s.boundsMax.y, s.boundsMax.z}},
           {"total_area", s.totalAreaM2},
@@ -145,6 +146,7 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
   fmt::print("patches         {} (cell {:.4g} m)\n", s.patches, s.cellM);
   fmt::print("materials       {}\n", s.materials);
   fmt::print("emitters        {} polygons, {} patches\n", s.emitterPolygons, s.emitterPatches);
+  if (s.lights > 0) fmt::print("lights          {} (no patch: each shoots once, first)\n", s.lights);
   fmt::print("bounding box    ({:.4g}, {:.4g}, {:.4g}) .. ({:.4g}, {:.4g}, {:.4g}) m, size {:.4g} x {:.4g} x {:.4g} m\n",
              s.boundsMin.x, s.boundsMin.y, s.boundsMin.z, s.boundsMax.x, s.boundsMax.y, s.boundsMax.z,
              size.x, size.y, size.z);

@@ -22,6 +22,7 @@ SceneSummary summarizeScene(const Scene& scene, const std::vector<Patch>& patche
   }
   for (const Patch& p : patches)
     if (scene.materials[p.material].emits()) ++s.emitterPatches;
+  s.lights = scene.lights.size();
   s.emittedPowerW = emittedPowerW(scene);
   return s;
 }

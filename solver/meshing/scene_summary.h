@@ -14,6 +14,7 @@ struct SceneSummary {
   std::size_t materials = 0;
   std::size_t emitterPolygons = 0;
   std::size_t emitterPatches = 0;
+  std::size_t lights = 0;  // lights without a patch (glTF's KHR_lights_punctual, --sun)
   Vec3 boundsMin{0.0};
   Vec3 boundsMax{0.0};
   double totalAreaM2 = 0.0;

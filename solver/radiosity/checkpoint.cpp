@@ -272,6 +272,13 @@ std::uint64_t meshedSceneHash(const Scene& scene, const std::vector<Patch>& patc
     for (int c = 0; c < 3; ++c) add(m.rho[c]);
     for (int c = 0; c < 3; ++c) add(m.emittance[c]);
   }
+  // The lights (none: the hash of a scene without them, as before they existed).
+  for (const Light& l : scene.lights) {
+    add(static_cast<int>(l.type));
+    for (int axis = 0; axis < 3; ++axis) add(l.position[axis]), add(l.direction[axis]), add(l.intensity[axis]);
+    add(l.innerConeRad);
+    add(l.outerConeRad);
+  }
   return hash;
 }
 

@@ -29,7 +29,7 @@ void checkCheckpointWritable(const std::string& path);
 // then untouched.
 void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver);
 
-// FNV-1a 64 over the patches' vertices and their materials' reflectance and emission, bitwise.
+// FNV-1a 64 over the patches' vertices, their materials' reflectance and emission, and the lights, bitwise.
 std::uint64_t meshedSceneHash(const Scene& scene, const std::vector<Patch>& patches);
 
 }  // namespace radmesh

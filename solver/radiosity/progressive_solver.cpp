@@ -82,6 +82,7 @@ void validateSolverInput(const Scene& scene, const std::vector<Patch>& patches) 
   }
   if (patches.empty())
     throw SceneError(scene.source, "the scene", "meshed into no patches", "give it polygons");
+  validateLights(scene);
 }
 
 // Whether a progress has n patches and names no others (a row's, a record's shooters).

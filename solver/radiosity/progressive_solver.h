@@ -77,7 +77,8 @@ struct SolverProgress {
 };
 
 // Throws SceneError for input it cannot solve (NaN or infinite coordinates or emittance, an area
-// that is not positive, rho outside [0, 1], an unknown material), naming the element and value;
+// that is not positive, rho outside [0, 1], an unknown material, a light validateScene refuses),
+// naming the element and value;
 // step() throws SolveError when the energy ledger stops balancing, naming the iteration and terms.
 class ProgressiveSolver {
  public:

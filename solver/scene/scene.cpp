@@ -163,7 +163,7 @@ void validateGeometry(const Scene& scene) {
     throw SceneError(scene.source, "", "contains no polygons", "check that the file holds surfaces");
   for (const Material& m : scene.materials) validateMaterial(scene, m);
   for (size_t i = 0; i < scene.polygons.size(); ++i) validatePolygon(scene, i);
-  for (const Light& light : scene.lights) validateLight(scene, light);
+  validateLights(scene);
 }
 
 void validateScene(const Scene& scene) {
@@ -172,6 +172,10 @@ void validateScene(const Scene& scene) {
     throw SceneError(scene.source, "", "has no emitter, so every radiosity would be zero",
                      "give at least one material a positive emittance, or light it by daylight through its "
                      "openings: --sky LUX, --sun AZIMUTH,ELEVATION[,LUX]");
+}
+
+void validateLights(const Scene& scene) {
+  for (const Light& light : scene.lights) validateLight(scene, light);
 }
 
 double emittedPowerW(const Scene& scene) {

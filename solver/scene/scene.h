@@ -74,6 +74,8 @@ void validateGeometry(const Scene& scene);
 // The same, and no emitter at all, neither an emitting material nor a light (the message points to
 // daylight).
 void validateScene(const Scene& scene);
+// The lights' part of validateScene (the solver checks what it is handed with it).
+void validateLights(const Scene& scene);
 
 // A spot's relative intensity at cosTheta (the cosine of the angle from its axis):
 // KHR_lights_punctual's smooth falloff, t^2 with t = (cosTheta - cos outer) / (cos inner - cos outer)
