@@ -4,10 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "solver/scene/up_axis.h"
+
 namespace radmesh::cli {
 
 struct BenchSolveArgs {
   std::string scene = "office";
+  UpChoice up = UpChoice::Format;
   double cellM = 0.381;
   std::vector<std::string> projections{"plane", "hemicube"};
   std::vector<int> resolutions{64, 128, 256, 512};
@@ -25,6 +28,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args);
 
 struct AccuracyArgs {
   std::string scene = "office";
+  UpChoice up = UpChoice::Format;
   std::string name = "office";   // file stem of the outputs
   std::string outDir;            // CSV and plots go here; empty: table only
   std::vector<double> cells{0.5, 0.381, 0.25};

@@ -17,7 +17,7 @@
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/progressive_solver.h"
 #include "solver/scene/scene_error.h"
-#include "solver/io/scene_loader.h"
+#include "cli/scene_input.h"
 
 namespace radmesh::cli {
 
@@ -289,7 +289,7 @@ AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
 }
 
 nlohmann::json benchAccuracy(const AccuracyArgs& args) {
-  const Scene scene = loadScene(args.scene);
+  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.up);
   const std::vector<Setting> settings = {
       {Projection::Plane, 3.0}, {Projection::Plane, 5.0}, {Projection::Hemicube, 3.0}};
   if (args.cells.empty() || args.resolutions.empty())

@@ -10,7 +10,7 @@
 #include "cli/stats_json.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/progressive_solver.h"
-#include "solver/io/scene_loader.h"
+#include "cli/scene_input.h"
 
 namespace radmesh::cli {
 
@@ -58,7 +58,7 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
 }  // namespace
 
 nlohmann::json benchSolve(const BenchSolveArgs& args) {
-  const Scene scene = loadScene(args.scene);
+  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.up);
   const std::vector<Patch> patches = meshScene(scene, args.cellM);
   nlohmann::json rows = nlohmann::json::array();
   fmt::print("scene {}: {} patches, threads {}, until C={:.2f}; times are {}\n", scene.source, patches.size(),

@@ -56,7 +56,7 @@ void run(const SolveArgs& args) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.up);
   options.effects = parseEffects(args.effects);
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
   ProgressiveSolver solver(scene, meshScene(scene, args.flags.cellM), options);
@@ -101,7 +101,7 @@ void run(const SolveArgs& args) {
   }
   if (!args.outPath.empty()) {
     const DisplayMesh mesh = buildDisplayMesh(solver.patches());
-    writeBakeGlb(args.outPath, mesh, vertexRadiosity(mesh, solver.displayRadiosity()));
+    writeBakeGlb(args.outPath, mesh, vertexRadiosity(mesh, solver.displayRadiosity()), scene.upAxis);
     fmt::print("wrote {}\n", args.outPath);
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "cli/scene_input.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
 #include "solver/io/scene_loader.h"
@@ -44,6 +45,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
+  addUpOption(cmd, f.up);
   const size_t first = cmd->get_options().size();
   cmd->add_option_function<std::string>(
          "--preset", [&f](const std::string& name) { applyPresetFlags(parsePreset(name), f); },

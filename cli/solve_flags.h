@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "solver/scene/solve_options.h"
+#include "solver/scene/up_axis.h"
 
 namespace radmesh::cli {
 
@@ -16,6 +17,7 @@ struct SolveFlags {
   std::string projection;
   std::string mapping = "hierarchical";
   bool strict = false;  // --strict: a scene that needed any repair is refused
+  UpChoice up = UpChoice::Format;  // --up
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
@@ -26,7 +28,7 @@ struct SolveFlags {
   std::vector<std::string> given() const;
 };
 
-// Adds SCENE and --preset --backend --cell --projection --resolution --ratio --shooters --until
+// Adds SCENE, --strict, --up and --preset --backend --cell --projection --resolution --ratio --shooters --until
 // --until-unshot --max-iterations --threads --cache-mb to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "solver/scene/up_axis.h"
 #include "viewer/panel.h"
 #include "viewer/solver_snapshot.h"
 
@@ -15,7 +16,8 @@ namespace radmesh {
 SolveSetup viewerSetup();
 
 struct ViewerArgs {
-  std::string scene = "office";
+  std::string scene = "office";  // or a bake (solver/bake/bake_reader.h), walked with no solve
+  UpChoice up = UpChoice::Format;
   SolveSetup setup = viewerSetup();
   glm::ivec2 windowSize{1280, 720};
   PanelTab firstTab = PanelTab::Progress;

@@ -27,9 +27,7 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
     throw SceneError(path, "", "no such file, and not a built-in scene name", acceptedForms());
   if (std::filesystem::is_directory(p, error))
     throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
-  std::string extension = p.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lowerCaseExtension(path);
   if (extension == ".gltf" || extension == ".glb") return importGltf(path, warnings);
   if (extension == ".mgf") return importMgf(path, warnings);
   throw SceneError(path, "",
@@ -39,9 +37,24 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
 
 }  // namespace
 
-Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings) {
+std::string lowerCaseExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings, UpChoice up,
+                std::string* upNote) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
   validateScene(scene);
+  // MGF does not say which axis is up, and files differ: office3 stands on y, the others on z.
+  const bool silent = up == UpChoice::Format && lowerCaseExtension(pathOrName) == ".mgf";
+  std::string note = applyUpChoice(scene, silent ? UpChoice::Auto : up);
+  if (silent)
+    note = std::string("MGF does not say which axis is up: ") + upAxisName(scene.upAxis) +
+           ", from the geometry as --up auto decides (--up sets it)";
+  if (upNote) *upNote = note;
   return scene;
 }
 

@@ -4,12 +4,19 @@
 #include <vector>
 
 #include "solver/scene/scene.h"
+#include "solver/scene/up_axis.h"
 
 namespace radmesh {
 
 inline constexpr const char* kDefaultScene = "office";
 
-// Loads and validates; throws SceneError with file, element and fix on anything unusable.
-Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr);
+// ".glb" for "Office.GLB": the extension, with its dot, in lower case ("" for none).
+std::string lowerCaseExtension(const std::string& path);
+
+// Loads and validates; throws SceneError with file, element and fix on anything unusable. The up
+// axis is as `up` says; by default the format's, and for MGF, which does not say, --up auto's
+// guess (solver/scene/up_axis.h). `upNote` gets the line to print when the axis was guessed.
+Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr,
+                UpChoice up = UpChoice::Format, std::string* upNote = nullptr);
 
 }  // namespace radmesh

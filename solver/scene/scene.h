@@ -32,6 +32,9 @@ struct Scene {
   std::string source;  // file path or built-in name, for messages
   std::vector<Material> materials;
   std::vector<Polygon> polygons;
+  // 0 x, 1 y, 2 z: set by the importer (MGF and the built-in rooms z, glTF y as it defines) or by
+  // --up (solver/scene/up_axis.h).
+  int upAxis = 2;
 };
 
 // Newell's normal: its length is twice the polygon's area, robust for non-convex polygons.
