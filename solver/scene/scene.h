@@ -32,8 +32,8 @@ struct Scene {
   std::string source;  // file path or built-in name, for messages
   std::vector<Material> materials;
   std::vector<Polygon> polygons;
-  // 0 x, 1 y, 2 z: set by the importer (MGF and the built-in rooms z, glTF y as it defines) or by
-  // --up (solver/scene/up_axis.h).
+  // 0 x, 1 y, 2 z: glTF's y as it defines, the built-in rooms' z; MGF's, which it does not say, and
+  // --up's are set by loadScene (solver/io/scene_loader.h, solver/scene/up_axis.h).
   int upAxis = 2;
 };
 
