@@ -12,11 +12,13 @@
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
+#include "solver/bake/bake_reader.h"
 #include "solver/bake/display_radiosity.h"
 #include "solver/bake/gltf_export.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
 #include "solver/radiosity/checkpoint.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
 
@@ -56,6 +58,9 @@ void run(const SolveArgs& args) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
+  if (readBake(args.flags.scene))  // else refused as a scene with no emitter
+    throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",
+                     "walk it with radmesh-view, describe it with radmesh info, or draw it with radmesh render");
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.up);
   options.effects = parseEffects(args.effects);
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);

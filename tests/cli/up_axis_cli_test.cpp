@@ -75,6 +75,11 @@ TEST(UpAxisCli, TheOfficesBakeIsYUpAndInfoDescribesItAsABake) {
   EXPECT_NE(text.output.find("bake            " + bake + " (by radmesh;"), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("up              y (the scene's z turned onto glTF's y)"), std::string::npos) << text.output;
   EXPECT_EQ(text.output.find("emitter"), std::string::npos) << text.output;
+
+  const CommandRun again = radmesh("solve " + bake);
+  EXPECT_EQ(again.exitCode, 2) << again.output;
+  EXPECT_NE(again.output.find("is a bake, already solved: there is nothing to solve"), std::string::npos)
+      << again.output;
 }
 
 TEST(UpAxisCli, TheViewerWalksABakeWithNoSolve) {
