@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -37,9 +38,11 @@ inline CommandRun radmesh(const std::string& arguments) {
   return runCommand((test::binaryDir() / "cli" / "radmesh").string() + " " + arguments);
 }
 
+// A folder per test and process: other checkouts may run the same tests at the same time.
 inline std::string tempPath(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
-                   ("radmesh-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+                   ("radmesh-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                    "-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }

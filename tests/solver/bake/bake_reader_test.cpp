@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <tiny_gltf.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -25,8 +26,9 @@ DisplayMesh twoTriangles() {
   return mesh;
 }
 
+// Unique per process: other checkouts may run the same tests at the same time.
 std::string tempPath(const char* name) {
-  return (std::filesystem::temp_directory_path() / (std::string("radmesh-") + name)).string();
+  return (std::filesystem::temp_directory_path() / ("radmesh-" + std::to_string(getpid()) + "-" + name)).string();
 }
 
 TEST(BakeReader, ReadsBackTheMeshAndTheRadiosityBelowSaturationYUp) {
