@@ -5,11 +5,13 @@
 #include <vector>
 
 #include "solver/io/daylight.h"
+#include "solver/scene/up_axis.h"
 
 namespace radmesh::cli {
 
 struct BenchSolveArgs {
   std::string scene = "office";
+  UpChoice up = UpChoice::Format;
   double cellM = 0.381;
   bool cellGiven = false;  // else the cell is chosen from the scene's size
   Daylight daylight;
@@ -29,6 +31,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args);
 
 struct AccuracyArgs {
   std::string scene = "office";
+  UpChoice up = UpChoice::Format;
   std::string name = "office";   // file stem of the outputs
   std::string outDir;            // CSV and plots go here; empty: table only
   Daylight daylight;

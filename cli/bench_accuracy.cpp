@@ -289,7 +289,7 @@ AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
 }
 
 nlohmann::json benchAccuracy(const AccuracyArgs& args) {
-  const Scene scene = loadCommandScene(args.scene, false, args.daylight);
+  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up);
   const std::vector<Setting> settings = {
       {Projection::Plane, 3.0}, {Projection::Plane, 5.0}, {Projection::Hemicube, 3.0}};
   if (args.cells.empty() || args.resolutions.empty())

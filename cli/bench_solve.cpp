@@ -52,7 +52,7 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
 }  // namespace
 
 nlohmann::json benchSolve(const BenchSolveArgs& args) {
-  const Scene scene = loadCommandScene(args.scene, false, args.daylight);
+  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up);
   const CellChoice cell = commandCell(scene, args.cellM, args.cellGiven);
   fmt::print("{}\n", cell.why);
   const std::vector<Patch> patches = meshScene(scene, cell.cellM);

@@ -32,6 +32,7 @@ struct InfoArgs {
   Daylight daylight;
   bool json = false;
   bool strict = false;
+  UpChoice up = UpChoice::Format;
   EffectsMode effects = EffectsMode::Auto;
   bool cells = false;
   CellGroups cellGroups = CellGroups::Name;
@@ -121,6 +122,8 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
                          {"rho", {m.rho.r, m.rho.g, m.rho.b}},
                          {"emittance", {m.emittance.r, m.emittance.g, m.emittance.b}}});
   return {{"scene", scene.source},
+          {"kind", "scene"},
+          {"up", upAxisName(scene.upAxis)},
           {"polygons", s.polygons},
           {"patches", s.patches},
           {"cell", s.cellM},
@@ -135,36 +138,76 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"emitted_power", s.emittedPowerW}};
 }
 
+void printBounds(const Vec3& low, const Vec3& high) {
+  const Vec3 size = high - low;
+  fmt::print("bounding box    ({:.4g}, {:.4g}, {:.4g}) .. ({:.4g}, {:.4g}, {:.4g}) m, size {:.4g} x {:.4g} x {:.4g} m\n",
+             low.x, low.y, low.z, high.x, high.y, high.z, size.x, size.y, size.z);
+}
+
 void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings,
                const std::vector<std::string>& notes, const CellChoice& cell) {
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
   for (const std::string& n : notes) fmt::print("{}\n", n);
   fmt::print("{}\n", cell.why);
-  const Vec3 size = s.boundsMax - s.boundsMin;
   fmt::print("scene           {}\n", scene.source);
+  fmt::print("up              {}\n", upAxisName(scene.upAxis));
   fmt::print("polygons        {}\n", s.polygons);
   fmt::print("patches         {} (cell {:.4g} m)\n", s.patches, s.cellM);
   fmt::print("materials       {}\n", s.materials);
   fmt::print("emitters        {} polygons, {} patches\n", s.emitterPolygons, s.emitterPatches);
   if (s.lights > 0) fmt::print("lights          {} (no patch: each shoots once, first)\n", s.lights);
-  fmt::print("bounding box    ({:.4g}, {:.4g}, {:.4g}) .. ({:.4g}, {:.4g}, {:.4g}) m, size {:.4g} x {:.4g} x {:.4g} m\n",
-             s.boundsMin.x, s.boundsMin.y, s.boundsMin.z, s.boundsMax.x, s.boundsMax.y, s.boundsMax.z,
-             size.x, size.y, size.z);
+  printBounds(s.boundsMin, s.boundsMax);
   fmt::print("total area      {:.6g} m^2\n", s.totalAreaM2);
   fmt::print("emitted power   {:.6g} W (summed over RGB)\n", s.emittedPowerW);
+}
+
+// A bake has no materials, emitters or patches to tell of: its triangles, bounds, area and up axis.
+void printBake(const std::string& path, const Bake& bake, bool json) {
+  const std::vector<Polygon> triangles = bakeScene(bake, path).polygons;
+  Vec3 low(0.0), high(0.0);
+  if (!bake.mesh.positions.empty()) low = high = bake.mesh.positions[0];
+  for (const Vec3& p : bake.mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
+  double area = 0.0;
+  for (const Polygon& t : triangles) area += polygonArea(t.vertices);
+  const std::string up = upAxisName(bake.upAxis);
+  const std::string by = bake.fromRadmesh ? "radmesh" : "another tool";
+  if (json) {
+    const nlohmann::json j = {{"scene", path},
+                              {"kind", "bake"},
+                              {"made_by", by},
+                              {"up", up},
+                              {"source_up", bake.sourceUp >= 0 ? nlohmann::json(upAxisName(bake.sourceUp)) : nullptr},
+                              {"triangles", triangles.size()},
+                              {"vertices", bake.mesh.positions.size()},
+                              {"bounds_min", {low.x, low.y, low.z}},
+                              {"bounds_max", {high.x, high.y, high.z}},
+                              {"total_area", area},
+                              {"radiosity_per_color_unit", bake.radiosityPerColorUnit},
+                              {"warnings", nlohmann::json::array()}};
+    fmt::print("{}\n", j.dump(2));
+    return;
+  }
+  fmt::print("bake            {} (by {}; walk it with radmesh-view, render it with radmesh render)\n", path, by);
+  fmt::print("up              {}{}\n", up,
+             bake.sourceUp >= 0 ? fmt::format(" (the scene's {} turned onto glTF's y)", upAxisName(bake.sourceUp)) : "");
+  fmt::print("triangles       {} ({} vertices)\n", triangles.size(), bake.mesh.positions.size());
+  printBounds(low, high);
+  fmt::print("total area      {:.6g} m^2\n", area);
+  fmt::print("radiosity       COLOR_0 of 1 is {:.6g} W/m^2\n", bake.radiosityPerColorUnit);
 }
 
 }  // namespace
 
 void addInfoCommand(CLI::App& app) {
   auto args = std::make_shared<InfoArgs>();
-  CLI::App* cmd = app.add_subcommand("info", "Print a scene's polygons, patches, materials, emitters, bounds, area and power");
+  CLI::App* cmd = app.add_subcommand("info", "Print a scene's polygons, patches, materials, emitters, bounds, area, power and up axis (or a bake's triangles, bounds, area and up axis)");
   cmd->add_option("scene", args->scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size)");
   addDaylightFlags(cmd, args->daylight);
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
   cmd->add_flag("--strict", args->strict, "Refuse a scene that needed any repair (each warning an error)");
+  addUpOption(cmd, args->up);
   cmd->add_option_function<std::string>(
       "--effects", [args](const std::string& v) { args->effects = parseEffects(v); },
       "auto (simulate only what the scene calls for) or all");
@@ -179,8 +222,9 @@ void addInfoCommand(CLI::App& app) {
       ->check(CLI::IsMember({"name", "join"}));
   cmd->callback([args, cmd] {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
+    if (const std::optional<Bake> bake = readCommandBake(args->scene, args->up)) return printBake(args->scene, *bake, args->json);
     std::vector<std::string> warnings, notes;
-    const Scene scene = loadCommandScene(args->scene, args->strict, args->daylight, warnings, notes);
+    const Scene scene = loadCommandScene(args->scene, args->strict, args->daylight, args->up, warnings, notes);
     const CellChoice cell = commandCell(scene, args->cellM, cmd->count("--cell") > 0);
     const std::vector<Patch> patches = meshScene(scene, cell.cellM);
     const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);

@@ -18,10 +18,10 @@
 #include "cli/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
+#include "solver/bake/bake_reader.h"
 #include "solver/bake/display_radiosity.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
-#include "viewer/bake_reader.h"
 #include "viewer/camera.h"
 #include "viewer/exposure.h"
 #include "viewer/offscreen_render.h"
@@ -95,7 +95,7 @@ Solved solveScene(const RenderArgs& args) {
     options.untilUnshot = 0.0;
     options.maxIterations = args.iterations;
   }
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up);
   const CellChoice cell = args.flags.cell(scene);
   fmt::print("{}\n", cell.why);
   auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
@@ -119,10 +119,9 @@ Solved solveScene(const RenderArgs& args) {
   return solvedFrom(solver.patches(), solver.displayRadiosity());
 }
 
-std::optional<Solved> readBake(const RenderArgs& args) {
-  if (!hasExtension(args.flags.scene, ".glb")) return std::nullopt;
-  std::optional<Bake> bake = readBakeGlb(args.flags.scene);
-  if (!bake) return std::nullopt;  // a glTF scene to solve, not a bake
+std::optional<Solved> readBakeToRender(const RenderArgs& args) {
+  std::optional<Bake> bake = readCommandBake(args.flags.scene, args.flags.up);
+  if (!bake) return std::nullopt;  // a scene to solve, not a bake
   if (args.iterations > 0)
     throw OptionError(fmt::format("{} is a bake, already solved: --iterations applies to scenes", args.flags.scene));
   for (const std::string& flag : args.flags.given())
@@ -130,7 +129,7 @@ std::optional<Solved> readBake(const RenderArgs& args) {
                flag, args.flags.scene);
   fmt::print("read bake {}: {} vertices, {} triangles\n", args.flags.scene, bake->mesh.positions.size(),
              bake->mesh.indices.size() / 3);
-  const SceneFrame frame = bakeFrame(*bake);
+  const SceneFrame frame = sceneFrame(bakeScene(*bake, args.flags.scene));
   return Solved{std::move(bake->mesh), std::move(bake->vertexB), frame};
 }
 
@@ -138,7 +137,7 @@ void run(const RenderArgs& args) {
   const glm::ivec2 size = parseSize(args.size);
   if (!(args.fovDeg > 0.0 && args.fovDeg < 180.0)) throw OptionError("--fov must lie strictly between 0 and 180");
   checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
-  std::optional<Solved> solved = readBake(args);
+  std::optional<Solved> solved = readBakeToRender(args);
   if (!solved) solved = solveScene(args);
   const RenderView view = chooseView(args, solved->frame);
 

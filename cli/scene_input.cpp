@@ -7,9 +7,11 @@
 
 namespace radmesh::cli {
 
-Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight,
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
                        std::vector<std::string>& warnings, std::vector<std::string>& notes) {
-  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes);
+  std::string upNote;
+  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes, up, &upNote);
+  if (!upNote.empty()) fmt::print(stderr, "radmesh: {}\n", upNote);
   if (strict && !warnings.empty()) {
     std::string list;
     for (const std::string& w : warnings) list += "\n  " + w;
@@ -20,12 +22,29 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, const Dayligh
   return scene;
 }
 
-Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight) {
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up) {
   std::vector<std::string> warnings, notes;
-  Scene scene = loadCommandScene(pathOrName, strict, daylight, warnings, notes);
+  Scene scene = loadCommandScene(pathOrName, strict, daylight, up, warnings, notes);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
   for (const std::string& n : notes) fmt::print("{}\n", n);
   return scene;
+}
+
+std::optional<Bake> readCommandBake(const std::string& path, UpChoice up) {
+  std::optional<Bake> bake = readBake(path);
+  if (!bake) return std::nullopt;
+  Scene geometry = bakeScene(*bake, path);
+  const std::string chosen = applyUpChoice(geometry, up);
+  if (!chosen.empty()) fmt::print(stderr, "radmesh: {}\n", chosen);
+  bake->upAxis = geometry.upAxis;
+  return bake;
+}
+
+void addUpOption(CLI::App* cmd, UpChoice& up) {
+  cmd->add_option_function<std::string>(
+      "--up", [&up](const std::string& v) { up = parseUpChoice(v); },
+      "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's (glTF y, the "
+      "built-in rooms z; MGF, which does not say, auto)");
 }
 
 }  // namespace radmesh::cli

@@ -13,6 +13,7 @@
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
+#include "solver/bake/bake_reader.h"
 #include "solver/bake/display_radiosity.h"
 #include "solver/bake/gltf_export.h"
 #include "solver/meshing/meshing.h"
@@ -54,10 +55,11 @@ void printSummary(const ProgressiveSolver& solver, double seconds) {
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
 }
 
-void writeBake(const std::string& path, const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
+void writeBake(const std::string& path, const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity,
+               int upAxis) {
   if (path.empty()) return;
   const DisplayMesh mesh = buildDisplayMesh(patches);
-  writeBakeGlb(path, mesh, vertexRadiosity(mesh, displayRadiosity));
+  writeBakeGlb(path, mesh, vertexRadiosity(mesh, displayRadiosity), upAxis);
   fmt::print("wrote {}\n", path);
 }
 
@@ -77,14 +79,17 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
     writeJson(args.statsPath, cellsStats(*solver, scene.source, seconds));
     fmt::print("wrote {}\n", args.statsPath);
   }
-  writeBake(args.outPath, solver->patches(), solver->displayRadiosity());
+  writeBake(args.outPath, solver->patches(), solver->displayRadiosity(), scene.upAxis);
 }
 
 void run(const SolveArgs& args) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight);
+  if (readBake(args.flags.scene))  // else refused as a scene with no emitter
+    throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",
+                     "walk it with radmesh-view, describe it with radmesh info, or draw it with radmesh render");
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up);
   options.effects = parseEffects(args.effects);
   const CellChoice cell = args.flags.cell(scene);
   fmt::print("{}\n", cell.why);
@@ -130,7 +135,7 @@ void run(const SolveArgs& args) {
     writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
     fmt::print("wrote {}\n", args.statsPath);
   }
-  writeBake(args.outPath, solver.patches(), solver.displayRadiosity());
+  writeBake(args.outPath, solver.patches(), solver.displayRadiosity(), scene.upAxis);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "cli/scene_input.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
 #include "solver/io/scene_loader.h"
@@ -51,7 +52,7 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight) {
       "The sky's luminance: uniform (the default) or cie-overcast (three times brighter at the zenith)");
   cmd->add_option_function<std::string>(
       "--sun", [&daylight](const std::string& text) { daylight.sun = {parseSun(text)}; },
-      "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north (+y) and above the horizon (z up); LUX "
+      "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north and above the horizon (north +y when z is up); LUX "
       "defaults to 100000, clear-sky direct sun. Combines with the scene's own lights and the sky");
 }
 
@@ -79,6 +80,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
+  addUpOption(cmd, f.up);
   const size_t first = cmd->get_options().size();
   addDaylightFlags(cmd, f.daylight);
   cmd->add_option_function<std::string>(

@@ -7,6 +7,7 @@
 #include "solver/io/daylight.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/solve_options.h"
+#include "solver/scene/up_axis.h"
 
 namespace radmesh::cli {
 
@@ -21,6 +22,7 @@ struct SolveFlags {
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
   int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
   Daylight daylight;          // --sky, --sky-model, --sun
+  UpChoice up = UpChoice::Format;  // --up
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
@@ -42,6 +44,8 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
 
 // Adds SCENE, --strict, --sky, --sky-model, --sun and --preset --backend --cell --projection --resolution --ratio --shooters --until
 // --until-unshot --max-iterations --threads --cache-mb --cells --exchange-shots to a subcommand. --preset is applied as it
+// Adds SCENE, --strict, --up and --preset --backend --cell --projection --resolution --ratio --shooters --until
+// --until-unshot --max-iterations --threads --cache-mb to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/scene/up_axis.h"
+
 namespace radmesh {
 
 namespace {
@@ -34,9 +36,12 @@ WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
     const double distanceM = 1.05 * halfSpan / std::tan(glm::radians(0.5 * fovYDeg));
     ground_ = centre + outward * (0.5 * extent[axis] + distanceM);
   } else {
-    // Stand near the corner of the lowest bounds, looking at the centre.
+    // Stand near the corner at the least `across` and `along` of the up axis' frame, looking at
+    // the centre: a bake, turned from one frame onto another, starts where its scene does.
     eyeHeightM = std::min(1.6, 0.6 * frame.heightM());
-    ground_ = frame.boundsMin + 0.15 * horizontal(extent, up_);
+    const UpFrame axes = upFrame(frame.upAxis);
+    ground_ = centre;
+    for (const glm::dvec3& e : {axes.across, axes.along}) ground_ -= 0.35 * std::abs(glm::dot(extent, e)) * e;
   }
   forward_ = horizontal(centre - ground_, up_);
   // A point-sized or degenerate scene: look along any horizontal axis.

@@ -17,9 +17,9 @@ struct WalkInput {
 
 class WalkCamera {
  public:
-  // Starts inside the scene, near the corner of the lowest bounds, the eye 1.6 m above the lowest
-  // floor (lower in a room under 2.7 m), looking level at the centre. A scene open on one side
-  // (a Cornell box) is looked into through that side from outside instead.
+  // Starts inside the scene, near a corner of the bounds (upFrame's least across and along), the
+  // eye 1.6 m above the lowest floor (lower in a room under 2.7 m), looking level at the centre. A
+  // scene open on one side (a Cornell box) is looked into through that side from outside instead.
   explicit WalkCamera(const SceneFrame& frame);
 
   void update(const WalkInput& input, double dtSeconds);

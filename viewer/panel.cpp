@@ -72,11 +72,24 @@ Panel::Panel(const SolveSetup& setup, PanelTab firstTab, const std::string& chec
   std::strncpy(checkpointPath_.data(), checkpointPath.c_str(), checkpointPath_.size() - 1);
 }
 
-void Panel::draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamera& camera, ViewSettings& view) {
+void Panel::begin() {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - kWidthPx, viewport->WorkPos.y));
   ImGui::SetNextWindowSize(ImVec2(kWidthPx, viewport->WorkSize.y));
   ImGui::Begin("radmesh", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+}
+
+void Panel::drawBake(const std::string& description, WalkCamera& camera, ViewSettings& view) {
+  begin();
+  ImGui::TextWrapped("%s", description.c_str());
+  note("a bake: its light is already solved, so there is nothing to solve here");
+  ImGui::Separator();
+  drawView(camera, view, /*solving=*/false);
+  ImGui::End();
+}
+
+void Panel::draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamera& camera, ViewSettings& view) {
+  begin();
   drawStateAndCommands(snapshot, solver);
   bool itemBufferShown = false;
   if (ImGui::BeginTabBar("tabs")) {
@@ -98,7 +111,7 @@ void Panel::draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamer
       ImGui::EndTabItem();
     }
     if (beginTab("View", PanelTab::View)) {
-      drawView(camera, view);
+      drawView(camera, view, /*solving=*/true);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
@@ -349,13 +362,13 @@ void Panel::drawScene(const SolverSnapshot& snapshot) {
     ImGui::TextWrapped("%s %s: %s", e.name.c_str(), e.on ? "on" : "off", e.reason.c_str());
 }
 
-void Panel::drawView(WalkCamera& camera, ViewSettings& view) {
+void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
   ImGui::PushItemWidth(200.0f);
   if (sliderDouble("exposure EV", &view.exposureStops, -20.0, 20.0, "%.2f")) view.autoExposure = false;
   ImGui::SameLine();
   if (ImGui::Button("Auto")) view.autoExposure = true;
   ImGui::Checkbox("follow auto exposure", &view.autoExposure);
-  ImGui::Checkbox("highlight last shooters", &view.highlightShooters);
+  if (solving) ImGui::Checkbox("highlight last shooters", &view.highlightShooters);
   sliderDouble("speed m/s", &camera.speedMps, 0.05, 10.0, "%.2f", ImGuiSliderFlags_Logarithmic);
   sliderDouble("eye height m", &camera.eyeHeightM, 0.02, 3.0, "%.2f");
   sliderDouble("field of view", &camera.fovYDeg, 20.0, 110.0, "%.0f deg");

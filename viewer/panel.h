@@ -34,8 +34,11 @@ class Panel {
 
   void draw(const SolverSnapshot& snapshot, SolverThread& solver, WalkCamera& camera, ViewSettings& view);
   void saveCheckpoint(SolverThread& solver) const { solver.saveCheckpoint(checkpointPath_.data()); }
+  // A bake's panel: what it is, and the view settings; no solver controls (it is solved already).
+  void drawBake(const std::string& description, WalkCamera& camera, ViewSettings& view);
 
  private:
+  void begin();  // the panel's window, docked at the right
   void drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver);
   void drawProgress(const SolverSnapshot& snapshot);
   void drawMachineCost(const SolverSnapshot& snapshot);
@@ -43,7 +46,7 @@ class Panel {
   void drawShotFigures(const SolverSnapshot& snapshot);
   void drawParameters(SolverThread& solver);
   void drawScene(const SolverSnapshot& snapshot);
-  void drawView(WalkCamera& camera, ViewSettings& view);
+  void drawView(WalkCamera& camera, ViewSettings& view, bool solving);
   bool beginTab(const char* label, PanelTab tab);
 
   SolveSetup edited_;

@@ -8,16 +8,6 @@ namespace radmesh {
 
 namespace {
 
-int upAxisFromLights(const std::vector<FrameFace>& faces) {
-  Vec3 downward{0.0};  // per axis: light-giving area facing that axis' negative direction
-  for (const FrameFace& face : faces)
-    if (face.givesLight) downward += glm::max(-0.5 * newellNormal(face.vertices), Vec3(0.0));
-  int up = 2;  // ties keep z, then y
-  for (int axis : {1, 0})
-    if (downward[axis] > downward[up] * (1.0 + 1e-9)) up = axis;
-  return up;
-}
-
 // The vertical side of the bounds least covered by walls along it, if under half. A wall is a
 // face turned inward along the side's axis within 10% of the extent of the side's plane: real
 // walls are a little off square (the Cornell box's) or stand back from recessed doors and
@@ -52,9 +42,9 @@ int openSide(const std::vector<FrameFace>& faces, const SceneFrame& frame) {
 
 }  // namespace
 
-SceneFrame frameOf(const std::vector<FrameFace>& faces) {
+SceneFrame frameOf(const std::vector<FrameFace>& faces, int upAxis) {
   SceneFrame frame;
-  frame.upAxis = upAxisFromLights(faces);
+  frame.upAxis = upAxis;
   if (faces.empty()) return frame;
   frame.boundsMin = Vec3(std::numeric_limits<double>::infinity());
   frame.boundsMax = -frame.boundsMin;
@@ -71,8 +61,8 @@ SceneFrame sceneFrame(const Scene& scene) {
   std::vector<FrameFace> faces;
   faces.reserve(scene.polygons.size());
   for (const Polygon& polygon : scene.polygons)
-    faces.push_back({polygon.vertices, scene.materials.at(static_cast<size_t>(polygon.material)).emits()});
-  return frameOf(faces);
+    faces.push_back({polygon.vertices});
+  return frameOf(faces, scene.upAxis);
 }
 
 }  // namespace radmesh

@@ -21,15 +21,11 @@ struct SceneFrame {
 // A planar face of the geometry (polygon or triangle), counter-clockwise seen from its front.
 struct FrameFace {
   std::vector<Vec3> vertices;
-  bool givesLight = false;
 };
 
-// Scenes arrive z-up (MGF, the built-in office) or y-up (glTF), and nothing in the file says
-// which. Ceiling lights decide: up is the axis whose negative direction the most light-giving area
-// faces. No downward light: z.
-SceneFrame frameOf(const std::vector<FrameFace>& faces);
+SceneFrame frameOf(const std::vector<FrameFace>& faces, int upAxis);
 
-// A scene's frame: its emitters are the lights.
+// A scene's frame, with the scene's up axis.
 SceneFrame sceneFrame(const Scene& scene);
 
 }  // namespace radmesh

@@ -12,11 +12,14 @@
 
 int main(int argc, char** argv) {
   radmesh::ViewerArgs args;
+  std::string up;
   std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress";
   radmesh::SolveOptions& o = args.setup.options;
   CLI::App app{"radmesh-view: walk through a scene while its radiosity converges"};
-  app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
+  app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS), a .gltf/.glb/.mgf file, or a bake to walk")
       ->capture_default_str();
+  app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
+                 "(MGF and the built-in rooms z, glTF y)");
   app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here) or native (host CPU)")
       ->capture_default_str();
   app.add_option("--projection", projection, "plane, hemicube or analytic")->capture_default_str();
@@ -48,7 +51,7 @@ int main(int argc, char** argv) {
   app.add_option("--size", size, "Window size WxH")->capture_default_str();
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")
       ->capture_default_str();
-  app.add_option("--steps", args.steps, "Smoke test: run N iterations, save --screenshot, exit")
+  app.add_option("--steps", args.steps, "Smoke test: run N iterations (none for a bake), save --screenshot, exit")
       ->check(CLI::PositiveNumber);
   app.add_option("--min-frames", args.minFrames, "With --steps: draw at least this many frames (timing)")
       ->check(CLI::NonNegativeNumber);
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
         args.windowSize.y < 64)
       throw radmesh::OptionError("--size must be WxH with both at least 64, e.g. 1280x720");
     args.firstTab = radmesh::parsePanelTab(panel);
+    if (!up.empty()) args.up = radmesh::parseUpChoice(up);
     o.backend = radmesh::parseBackend(backend);
     o.projection = radmesh::parseProjection(projection);
     o.mapping = radmesh::parseMapping(mapping);

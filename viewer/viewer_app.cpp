@@ -6,7 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+#include <optional>
 
+#include "solver/bake/bake_reader.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
 #include "viewer/camera.h"
@@ -44,10 +47,6 @@ class SnapshotFeed {
   std::shared_ptr<const SolverSnapshot> shown_;
 };
 
-bool smokeTestReady(const ViewerArgs& args, const SolverSnapshot& snapshot) {
-  return snapshot.iteration() >= args.steps || snapshot.done || !snapshot.error.empty();
-}
-
 // Frame times, apart while the solver thread iterates and while it is idle: the cost of drawing
 // alone, and of drawing beside a busy solver.
 class FrameStats {
@@ -57,9 +56,8 @@ class FrameStats {
     ++p.frames;
     p.seconds += seconds;
   }
-  void print(glm::ivec2 size, const SolverSnapshot& snapshot) const {
-    std::printf("radmesh-view: %dx%d; solver at iteration %d, C = %.4f\n", size.x, size.y, snapshot.iteration(),
-                snapshot.convergence());
+  void print(glm::ivec2 size, const std::string& state) const {
+    std::printf("radmesh-view: %dx%d; %s\n", size.x, size.y, state.c_str());
     print("while solving", solving_);
     print("solver idle", idle_);
   }
@@ -77,6 +75,81 @@ class FrameStats {
   Phase solving_, idle_;
 };
 
+// What the window shows: a solve converging on its own thread, or a bake.
+class Shown {
+ public:
+  virtual ~Shown() = default;
+  virtual void feed(Renderer& renderer, ViewSettings& view) = 0;  // hands the renderer what changed
+  virtual void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) = 0;
+  virtual void saveCheckpoint(const Panel&) {}
+  virtual bool solving() const = 0;  // the frame statistics keep these frames apart
+  // Smoke test: ready for the screenshot, and why it failed (empty: it did not).
+  virtual bool ready() const = 0;
+  virtual std::string failure() const { return {}; }
+  virtual std::string state() const = 0;  // for the frame statistics
+};
+
+class ShownSolve : public Shown {
+ public:
+  ShownSolve(Scene scene, const SolveSetup& setup, const ViewerArgs& args)
+      : smokeTest_(args.steps > 0), steps_(args.steps), solver_(std::move(scene), setup, !smokeTest_, args.resume) {
+    if (smokeTest_) solver_.step(args.steps);
+  }
+  void feed(Renderer& renderer, ViewSettings& view) override { feed_.show(solver_.latest(), renderer, view); }
+  void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
+    panel.draw(feed_.shown(), solver_, camera, view);
+  }
+  void saveCheckpoint(const Panel& panel) override { panel.saveCheckpoint(solver_); }
+  bool solving() const override { return smokeTest_ ? !ready() : feed_.shown().playing && !feed_.shown().done; }
+  bool ready() const override {
+    const SolverSnapshot& s = feed_.shown();
+    return s.iteration() >= steps_ || s.done || !s.error.empty();
+  }
+  std::string failure() const override {
+    return feed_.shown().error.empty() ? "" : "the solve failed: " + feed_.shown().error;
+  }
+  std::string state() const override {
+    char line[96];
+    std::snprintf(line, sizeof line, "solver at iteration %d, C = %.4f", feed_.shown().iteration(),
+                  feed_.shown().convergence());
+    return line;
+  }
+
+ private:
+  bool smokeTest_;
+  int steps_;
+  SolverThread solver_;
+  SnapshotFeed feed_;
+};
+
+class ShownBake : public Shown {
+ public:
+  ShownBake(const std::string& path, Bake bake) : bake_(std::move(bake)) {
+    description_ = "bake " + path + " (by " + (bake_.fromRadmesh ? "radmesh" : "another tool") + "), " +
+                   std::to_string(bake_.mesh.indices.size() / 3) + " triangles, up " +
+                   upAxisName(bake_.upAxis);
+  }
+  void feed(Renderer& renderer, ViewSettings& view) override {
+    if (!fed_) {
+      renderer.setMesh(bake_.mesh);
+      renderer.setVertexRadiosity(bake_.vertexB);
+      fed_ = true;
+    }
+    if (view.autoExposure) view.exposureStops = std::log2(autoExposure(bake_.mesh, bake_.vertexB));
+  }
+  void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
+    panel.drawBake(description_, camera, view);
+  }
+  bool solving() const override { return false; }
+  bool ready() const override { return true; }
+  std::string state() const override { return "a bake, nothing to solve"; }
+
+ private:
+  Bake bake_;
+  std::string description_;
+  bool fed_ = false;
+};
+
 }  // namespace
 
 SolveSetup viewerSetup() {
@@ -89,12 +162,19 @@ SolveSetup viewerSetup() {
 }
 
 int runViewer(const ViewerArgs& args) {
+  // A bake is walked as it is; its geometry, as a scene's, gives the frame.
+  std::optional<Bake> bake = readBake(args.scene);
   std::vector<std::string> warnings, notes;
-  Scene scene = loadScene(args.scene, &warnings, args.daylight, &notes);
+  std::string upChosen;
+  Scene scene = bake ? bakeScene(*bake, args.scene)
+                     : loadScene(args.scene, &warnings, args.daylight, &notes, args.up, &upChosen);
   for (const std::string& warning : warnings) std::fprintf(stderr, "radmesh-view: warning: %s\n", warning.c_str());
   for (const std::string& note : notes) std::printf("radmesh-view: %s\n", note.c_str());
+  if (bake) upChosen = applyUpChoice(scene, args.up);
+  if (!upChosen.empty()) std::fprintf(stderr, "radmesh-view: %s\n", upChosen.c_str());
+  if (bake) bake->upAxis = scene.upAxis;
   SolveSetup setup = args.setup;
-  if (!args.cellGiven) {
+  if (!bake && !args.cellGiven) {
     const CellChoice cell = chooseCell(scene);
     setup.cellM = cell.cellM;
     std::printf("radmesh-view: %s\n", cell.why.c_str());
@@ -106,11 +186,13 @@ int runViewer(const ViewerArgs& args) {
   ImGuiLayer imgui(window.window());
   Renderer renderer;
   const bool smokeTest = args.steps > 0;
-  SolverThread solver(std::move(scene), setup, !smokeTest, args.resume);
-  if (smokeTest) solver.step(args.steps);
+  std::unique_ptr<Shown> shown;
+  if (bake)
+    shown = std::make_unique<ShownBake>(args.scene, std::move(*bake));
+  else
+    shown = std::make_unique<ShownSolve>(std::move(scene), setup, args);
   Panel panel(setup, args.firstTab, args.checkpoint);
   ViewSettings view;
-  SnapshotFeed feed;
   WalkInputReader input;
 
   auto lastFrame = Clock::now();
@@ -123,28 +205,28 @@ int runViewer(const ViewerArgs& args) {
     glfwPollEvents();
     if (glfwGetKey(window.window(), GLFW_KEY_ESCAPE) == GLFW_PRESS && !imgui.wantsKeyboard()) window.requestClose();
     const bool saveKeyDown = glfwGetKey(window.window(), GLFW_KEY_F5) == GLFW_PRESS;
-    if (saveKeyDown && !saveKeyWasDown && !imgui.wantsKeyboard()) panel.saveCheckpoint(solver);
+    if (saveKeyDown && !saveKeyWasDown && !imgui.wantsKeyboard()) shown->saveCheckpoint(panel);
     saveKeyWasDown = saveKeyDown;
     const auto now = Clock::now();
     const double dt = std::chrono::duration<double>(now - lastFrame).count();
     lastFrame = now;
     // dt is the previous frame's time; it counts where that frame's snapshot stood.
-    if (frames > 0) stats.add(dt, smokeTest ? !smokeTestReady(args, feed.shown()) : feed.shown().playing && !feed.shown().done);
+    if (frames > 0) stats.add(dt, shown->solving());
 
-    feed.show(solver.latest(), renderer, view);
+    shown->feed(renderer, view);
     camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
     const glm::ivec2 size = window.framebufferSize();
     const glm::ivec2 sceneSize{std::max(1, size.x - int(Panel::kWidthPx)), size.y};
     renderer.draw(camera.view(), sceneSize, Shading{std::exp2(view.exposureStops), view.highlightShooters});
     imgui.beginFrame();
-    panel.draw(feed.shown(), solver, camera, view);
+    shown->drawPanel(panel, camera, view);
     imgui.endFrame();
     ++frames;
 
     // The panel lays itself out over a couple of frames: wait for them before the screenshot.
-    if (smokeTest && smokeTestReady(args, feed.shown()) && ++framesSinceReady >= 3 && frames >= args.minFrames) {
-      if (!feed.shown().error.empty()) {
-        std::fprintf(stderr, "radmesh-view: the solve failed: %s\n", feed.shown().error.c_str());
+    if (smokeTest && shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames) {
+      if (!shown->failure().empty()) {
+        std::fprintf(stderr, "radmesh-view: %s\n", shown->failure().c_str());
         exitCode = 1;
       } else if (!args.screenshot.empty()) {
         writePng(captureFramebuffer(size), args.screenshot);
@@ -155,7 +237,7 @@ int runViewer(const ViewerArgs& args) {
     window.swapBuffers();
   }
 
-  stats.print(window.framebufferSize(), feed.shown());
+  stats.print(window.framebufferSize(), shown->state());
   return exitCode;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "solver/io/daylight.h"
+#include "solver/scene/up_axis.h"
 #include "viewer/panel.h"
 #include "viewer/solver_snapshot.h"
 
@@ -16,7 +17,8 @@ namespace radmesh {
 SolveSetup viewerSetup();
 
 struct ViewerArgs {
-  std::string scene = "office";
+  std::string scene = "office";  // or a bake (solver/bake/bake_reader.h), walked with no solve
+  UpChoice up = UpChoice::Format;
   SolveSetup setup = viewerSetup();
   bool cellGiven = false;  // --cell; else setup.cellM is chosen from the scene's size
   Daylight daylight;       // --sky, --sky-model

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "solver/scene/scene_error.h"
+#include "solver/scene/up_axis.h"
 
 namespace radmesh {
 
@@ -93,17 +94,19 @@ double bakeRadiosityPerColorUnit(const std::vector<Rgb>& vertexRadiosity) {
   return maximum > 0.0 ? maximum : 1.0;
 }
 
-void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::vector<Rgb>& vertexRadiosity) {
+void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::vector<Rgb>& vertexRadiosity,
+                  int sceneUpAxis) {
   checkInput(mesh, vertexRadiosity);
   const size_t n = mesh.positions.size();
   const double perUnit = bakeRadiosityPerColorUnit(vertexRadiosity);
-  std::vector<Vec3> normals(n), colors(n);
+  std::vector<Vec3> positions(n), normals(n), colors(n);
   for (size_t i = 0; i < n; ++i) {
+    positions[i] = rotateToYUp(mesh.positions[i], sceneUpAxis);
     const double length = glm::length(mesh.normals[i]);
-    normals[i] = length > 0.0 ? mesh.normals[i] / length : Vec3(0, 0, 1);  // glTF wants unit normals
+    normals[i] = length > 0.0 ? rotateToYUp(mesh.normals[i] / length, sceneUpAxis) : Vec3(0, 1, 0);  // glTF wants unit normals
     colors[i] = glm::min(vertexRadiosity[i] / perUnit, Rgb(1.0));
   }
-  const std::vector<float> positionData = flatten(mesh.positions);
+  const std::vector<float> positionData = flatten(positions);
 
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -141,7 +144,9 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
   bake.primitives.push_back(prim);
   bake.extras = tinygltf::Value(tinygltf::Value::Object{
       {"radiosityPerColorUnit", tinygltf::Value(perUnit)},
-      {"note", tinygltf::Value(std::string("COLOR_0 = min(1, B / radiosityPerColorUnit), B in W/m^2"))}});
+      {"sourceUp", tinygltf::Value(std::string(upAxisName(sceneUpAxis)))},
+      {"note", tinygltf::Value(std::string("COLOR_0 = min(1, B / radiosityPerColorUnit), B in W/m^2; the scene's "
+                                           "sourceUp axis turned onto glTF's +y (docs/scene-formats.md)"))}});
   model.meshes.push_back(bake);
   model.materials.push_back(unlitMaterial());
   model.extensionsUsed.push_back("KHR_materials_unlit");

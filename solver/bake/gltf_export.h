@@ -15,10 +15,13 @@ namespace radmesh {
 double bakeRadiosityPerColorUnit(const std::vector<Rgb>& vertexRadiosity);
 
 // Writes POSITION, NORMAL, COLOR_0 (linear float RGB, as above), 32-bit indices and one material
-// with KHR_materials_unlit, so viewers show COLOR_0 as it is. The mesh's extras hold
-// "radiosityPerColorUnit" (W/m^2) so that B can be recovered. Throws std::invalid_argument for
-// radiosity that does not match the mesh or is negative or not finite (never written), and
-// OptionError naming the path when the file cannot be written.
-void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::vector<Rgb>& vertexRadiosity);
+// with KHR_materials_unlit, so viewers show COLOR_0 as it is. The mesh is turned from its scene's
+// up axis onto glTF's +y (rotateToYUp, solver/scene/up_axis.h), so that glTF viewers show it
+// upright and radmesh's start view is kept. The mesh's extras hold "radiosityPerColorUnit"
+// (W/m^2) so that B can be recovered, and "sourceUp", the scene's up axis ("x", "y" or "z").
+// Throws std::invalid_argument for radiosity that does not match the mesh or is negative or not
+// finite (never written), and OptionError naming the path when the file cannot be written.
+void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::vector<Rgb>& vertexRadiosity,
+                  int sceneUpAxis);
 
 }  // namespace radmesh

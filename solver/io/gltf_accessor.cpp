@@ -105,6 +105,37 @@ std::vector<Vec3> readFloatVec3(const tinygltf::Model& model, int index, const s
   return out;
 }
 
+std::vector<Rgb> readColours(const tinygltf::Model& model, int index, const std::string& file, const std::string& use) {
+  const std::string element = accessorLabel(model, index, use);
+  const int type = index >= 0 && static_cast<size_t>(index) < model.accessors.size() ? model.accessors[index].type : 0;
+  const ElementSpan span = locate(model, index, type == TINYGLTF_TYPE_VEC4 ? type : TINYGLTF_TYPE_VEC3, file, element);
+  const int component = model.accessors[index].componentType;
+  if (component != TINYGLTF_COMPONENT_TYPE_FLOAT && component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+    throw SceneError(file, element, "holds colours of component type " + std::to_string(component),
+                     "export colours as floats or normalized unsigned bytes or shorts");
+  std::vector<Rgb> out(span.count);
+  for (size_t i = 0; i < span.count; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const unsigned char* p = span.first + i * span.stride;
+      if (component == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        float v;
+        std::memcpy(&v, p + c * sizeof v, sizeof v);
+        if (!std::isfinite(v))
+          throw SceneError(file, element, "element " + std::to_string(i) + " is NaN or infinite",
+                           "give every vertex a finite colour");
+        out[i][c] = v;
+      } else if (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+        uint16_t v;
+        std::memcpy(&v, p + c * sizeof v, sizeof v);
+        out[i][c] = v / 65535.0;
+      } else {
+        out[i][c] = p[c] / 255.0;
+      }
+    }
+  return out;
+}
+
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int index, const std::string& file,
                                   const std::string& use) {
   const std::string element = accessorLabel(model, index, use);

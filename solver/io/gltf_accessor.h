@@ -18,6 +18,10 @@ namespace radmesh {
 std::vector<Vec3> readFloatVec3(const tinygltf::Model& model, int index, const std::string& file,
                                 const std::string& use);
 
+// A colour accessor (COLOR_0): VEC3 or VEC4 (alpha dropped) of floats or of normalized unsigned
+// bytes or shorts, as glTF 2.0 allows, in linear RGB.
+std::vector<Rgb> readColours(const tinygltf::Model& model, int index, const std::string& file, const std::string& use);
+
 // An unsigned-integer SCALAR accessor (u8, u16 or u32 indices).
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int index, const std::string& file,
                                   const std::string& use);

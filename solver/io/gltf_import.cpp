@@ -86,6 +86,8 @@ class TriangleCollector {
   std::vector<Polygon>& triangles() { return triangles_; }
   const std::vector<Light>& lights() const { return lights_; }
   int rangeIgnored() const { return rangeIgnored_; }
+  // Per triangle, its vertices' COLOR_0; empty once a triangle primitive had none.
+  std::vector<std::array<Rgb, 3>> colours() const { return uncoloured_ ? std::vector<std::array<Rgb, 3>>{} : colours_; }
   int defaultMaterialUsers() const { return defaultMaterialUsers_; }
 
  private:
@@ -155,16 +157,24 @@ class TriangleCollector {
                              ", out of range for its " + std::to_string(local.size()) + " positions",
                          "keep every index below the POSITION accessor's count");
     const std::vector<uint32_t> indices = triangleList(prim.mode, vertices, file_, element);
+    const auto colour = prim.attributes.find("COLOR_0");
+    std::vector<Rgb> colours;
+    if (colour != prim.attributes.end())
+      colours = readColours(model_, colour->second, file_, "COLOR_0 of " + element);
+    if (colours.size() < local.size()) uncoloured_ = true;
     const int material = materialOf(prim, element);
     // A mirroring transform turns counter-clockwise into clockwise (glTF 2.0 spec, 3.7.4).
     const bool mirrored = glm::determinant(world) < 0.0;
     for (size_t i = 0; i < indices.size(); i += 3) {
       Polygon t{{}, material, element};
+      std::array<Rgb, 3> colour;
       for (int k = 0; k < 3; ++k) {
         const uint32_t index = indices[i + (mirrored ? 2 - k : k)];
         t.vertices.push_back(Vec3(world * glm::dvec4(local[index], 1.0)));
+        if (!uncoloured_) colour[k] = colours[index];
       }
       triangles_.push_back(std::move(t));
+      if (!uncoloured_) colours_.push_back(colour);
     }
   }
 
@@ -187,6 +197,8 @@ class TriangleCollector {
   std::vector<Polygon> triangles_;
   std::vector<Light> lights_;
   int rangeIgnored_ = 0;
+  std::vector<std::array<Rgb, 3>> colours_;
+  bool uncoloured_ = false;
   int defaultMaterialUsers_ = 0;
 };
 
@@ -242,10 +254,19 @@ void addBackFaces(const tinygltf::Model& model, std::vector<Polygon>& triangles)
 
 }  // namespace
 
+GltfColouredTriangles readGltfColouredTriangles(const tinygltf::Model& model, const std::string& path) {
+  TriangleCollector collector(model, path, nullptr);
+  for (const auto& [node, referrer] : sceneRoots(model, path)) collector.visit(node, glm::dmat4(1.0), referrer);
+  GltfColouredTriangles out{std::move(collector.triangles()), collector.colours(), false};
+  for (const Material& m : convertGltfMaterials(model, path, nullptr)) out.emits = out.emits || m.emits();
+  return out;
+}
+
 Scene importGltf(const std::string& path, std::vector<std::string>* warnings) {
   const tinygltf::Model model = loadGltfModel(path, warnings);
   Scene scene;
   scene.source = path;
+  scene.upAxis = 1;  // glTF 2.0 spec, 3.4: +Y is up
   scene.materials = convertGltfMaterials(model, path, warnings);
   TriangleCollector collector(model, path, warnings);
   for (const auto& [node, referrer] : sceneRoots(model, path)) collector.visit(node, glm::dmat4(1.0), referrer);

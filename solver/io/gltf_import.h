@@ -1,5 +1,8 @@
 #pragma once
 // glTF 2.0 (.gltf / .glb) import through tinygltf.
+#include <tiny_gltf.h>
+
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,5 +20,14 @@ namespace radmesh {
 // SceneError naming the file and the element (JSON, GLB container, buffer, accessor, node, mesh
 // primitive, material) on bad input; the scene is not validated here (loadScene does that).
 Scene importGltf(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+// What a bake made by another tool holds: the triangles importGltf reads (unmerged), with their
+// vertices' COLOR_0 when every triangle primitive has one.
+struct GltfColouredTriangles {
+  std::vector<Polygon> triangles;           // world space, counter-clockwise from the front
+  std::vector<std::array<Rgb, 3>> colours;  // per triangle; empty when a triangle primitive lacks COLOR_0
+  bool emits = false;                       // some material emits light
+};
+GltfColouredTriangles readGltfColouredTriangles(const tinygltf::Model& model, const std::string& path);
 
 }  // namespace radmesh

@@ -25,9 +25,7 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
     throw SceneError(path, "", "no such file, and not a built-in scene name", acceptedForms());
   if (std::filesystem::is_directory(p, error))
     throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
-  std::string extension = p.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lowerCaseExtension(path);
   if (extension == ".gltf" || extension == ".glb") return importGltf(path, warnings);
   if (extension == ".mgf") return importMgf(path, warnings);
   throw SceneError(path, "",
@@ -37,15 +35,36 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
 
 }  // namespace
 
+std::string lowerCaseExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
 Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings, const Daylight& daylight,
-                std::vector<std::string>* notes) {
+                std::vector<std::string>* notes, UpChoice up, std::string* upNote) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
+  // MGF does not say which axis is up, and files differ: office3 stands on y, the others on z.
+  const bool silent = up == UpChoice::Format && lowerCaseExtension(pathOrName) == ".mgf";
+  std::string note = applyUpChoice(scene, silent ? UpChoice::Auto : up);
+  if (silent)
+    note = std::string("MGF does not say which axis is up: ") + upAxisName(scene.upAxis) +
+           ", from the geometry as --up auto decides (--up sets it)";
+  if (upNote) *upNote = note;
+  const UpFrame frame = upFrame(scene.upAxis);
   if (daylight.skyLux > 0.0) {
     validateGeometry(scene);  // openings are looked for in sound geometry only
-    std::vector<std::string> added = addSkyEmitters(scene, daylight);
+    Daylight sky = daylight;
+    sky.up = frame.up;
+    std::vector<std::string> added = addSkyEmitters(scene, sky);
     if (notes) notes->insert(notes->end(), added.begin(), added.end());
   }
-  scene.lights.insert(scene.lights.end(), daylight.sun.begin(), daylight.sun.end());
+  for (Light sun : daylight.sun) {  // placed z up, y north: turned into the scene's up frame
+    const Vec3 d = sun.direction;
+    sun.direction = d.x * frame.across + d.y * frame.along + d.z * frame.up;
+    scene.lights.push_back(sun);
+  }
   validateScene(scene);
   return scene;
 }

@@ -5,15 +5,22 @@
 
 #include "solver/io/daylight.h"
 #include "solver/scene/scene.h"
+#include "solver/scene/up_axis.h"
 
 namespace radmesh {
 
 inline constexpr const char* kDefaultScene = "office";
 
-// Loads, lights by `daylight` (its sky at the openings, what that added a line each in `notes`; its
-// sun among the scene's lights), and validates; throws SceneError with file, element and fix on
-// anything unusable.
+// ".glb" for "Office.GLB": the extension, with its dot, in lower case ("" for none).
+std::string lowerCaseExtension(const std::string& path);
+
+// Loads, turns by `up` (by default the format's axis, and for MGF, which does not say, --up auto's
+// guess: solver/scene/up_axis.h; `upNote` gets the line to print when the axis was guessed), lights
+// by `daylight` (its sky at the openings, what that added a line each in `notes`; its sun among the
+// scene's lights, north along the up frame's `along`), and validates; throws SceneError with file,
+// element and fix on anything unusable.
 Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr,
-                const Daylight& daylight = {}, std::vector<std::string>* notes = nullptr);
+                const Daylight& daylight = {}, std::vector<std::string>* notes = nullptr,
+                UpChoice up = UpChoice::Format, std::string* upNote = nullptr);
 
 }  // namespace radmesh

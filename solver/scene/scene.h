@@ -56,6 +56,9 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Polygon> polygons;
   std::vector<Light> lights;
+  // 0 x, 1 y, 2 z: glTF's y as it defines, the built-in rooms' z; MGF's, which it does not say, and
+  // --up's are set by loadScene (solver/io/scene_loader.h, solver/scene/up_axis.h).
+  int upAxis = 2;
 };
 
 // Newell's normal: its length is twice the polygon's area, robust for non-convex polygons.

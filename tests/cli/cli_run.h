@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
 
 #include "tests/test_paths.h"
 
@@ -18,8 +21,9 @@ struct CommandRun {
   std::string output;  // stdout and stderr together
 };
 
-inline CommandRun radmesh(const std::string& arguments) {
-  const std::string command = (test::binaryDir() / "cli" / "radmesh").string() + " " + arguments + " 2>&1";
+// Runs a shell command line, its stderr with its stdout.
+inline CommandRun runCommand(const std::string& commandLine) {
+  const std::string command = commandLine + " 2>&1";
   CommandRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return run;
@@ -30,11 +34,27 @@ inline CommandRun radmesh(const std::string& arguments) {
   return run;
 }
 
+inline CommandRun radmesh(const std::string& arguments) {
+  return runCommand((test::binaryDir() / "cli" / "radmesh").string() + " " + arguments);
+}
+
+// A folder per test and process: other checkouts may run the same tests at the same time.
 inline std::string tempPath(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
-                   ("radmesh-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+                   ("radmesh-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                    "-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   return (dir / name).string();
+}
+
+// Width and height from a PNG's IHDR chunk (big-endian, bytes 16..23).
+inline std::pair<int, int> pngSize(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::array<unsigned char, 24> head{};
+  in.read(reinterpret_cast<char*>(head.data()), head.size());
+  if (!in || head[1] != 'P' || head[2] != 'N' || head[3] != 'G') return {-1, -1};
+  auto be = [&](int at) { return (head[at] << 24) | (head[at + 1] << 16) | (head[at + 2] << 8) | head[at + 3]; };
+  return {be(16), be(20)};
 }
 
 }  // namespace radmesh

@@ -305,16 +305,6 @@ TEST(Cli, SolveStatsCarryTheEffectsPlanTheSolverApplied) {
 namespace radmesh {
 namespace {
 
-// Width and height from a PNG's IHDR chunk (big-endian, bytes 16..23).
-std::pair<int, int> pngSize(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::array<unsigned char, 24> head{};
-  in.read(reinterpret_cast<char*>(head.data()), head.size());
-  if (!in || head[1] != 'P' || head[2] != 'N' || head[3] != 'G') return {-1, -1};
-  auto be = [&](int at) { return (head[at] << 24) | (head[at + 1] << 16) | (head[at + 2] << 8) | head[at + 3]; };
-  return {be(16), be(20)};
-}
-
 TEST(Cli, RenderSolvesOrReadsABakeAndWritesThePictureOfTheAskedSize) {
   const CommandRun probe = radmesh("render --help");
   if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";

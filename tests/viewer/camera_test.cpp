@@ -5,6 +5,10 @@
 
 #include <cmath>
 
+#include "solver/io/scene_loader.h"
+#include "solver/scene/up_axis.h"
+#include "tests/test_paths.h"
+
 namespace radmesh {
 namespace {
 
@@ -97,6 +101,37 @@ TEST(WalkCamera, YUpScenesWalkInTheXzPlane) {
   EXPECT_DOUBLE_EQ(height, 1.6);
   camera.update(WalkInput{.forward = 1.0, .right = 1.0}, 1.0);
   EXPECT_DOUBLE_EQ(camera.view().eye.y, height);
+}
+
+TEST(WalkCamera, TheYUpTestRoomStartsLevelAtEyeHeightWithYUp) {
+  const Scene scene = loadScene(test::dataPath("yup_room.gltf").string());
+  const RenderView view = WalkCamera(sceneFrame(scene)).view();
+  EXPECT_EQ(view.up, Vec3(0, 1, 0));
+  EXPECT_DOUBLE_EQ(view.eye.y, 1.5);  // 60% of its 2.5 m, under 1.6 m, above the floor at y = 0
+  EXPECT_DOUBLE_EQ(view.look.y, view.eye.y);  // level
+  // From the corner at the least x and the most z (y-up's `along` is -z), 0.15 of the way in.
+  EXPECT_DOUBLE_EQ(view.eye.x, 0.6);
+  EXPECT_DOUBLE_EQ(view.eye.z, 2.55);
+}
+
+// A scene turned onto y-up, as its bake is, starts where the scene starts, turned the same way.
+TEST(WalkCamera, TurningAClosedSceneOntoYUpTurnsItsStartView) {
+  for (int up : {2, 0}) {
+    Scene scene = loadScene("two-rooms");
+    for (Polygon& p : scene.polygons)
+      for (Vec3& v : p.vertices) v = up == 2 ? v : Vec3(v.z, v.x, v.y);  // z up, or the same turned x up
+    scene.upAxis = up;
+    const RenderView before = WalkCamera(sceneFrame(scene)).view();
+    for (Polygon& p : scene.polygons)
+      for (Vec3& v : p.vertices) v = rotateToYUp(v, up);
+    scene.upAxis = 1;
+    const RenderView after = WalkCamera(sceneFrame(scene)).view();
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(after.eye[c], rotateToYUp(before.eye, up)[c], 1e-12) << "up " << up;
+      EXPECT_NEAR(after.look[c], rotateToYUp(before.look, up)[c], 1e-12) << "up " << up;
+    }
+    EXPECT_EQ(after.up, Vec3(0, 1, 0));
+  }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Which way is up, and which side is open, for scenes that do not say.
+// A scene's bounds, up axis and open side.
 #include "viewer/scene_frame.h"
 
 #include <gtest/gtest.h>
@@ -10,9 +10,8 @@
 namespace radmesh {
 namespace {
 
-// The unit box's faces seen from inside (normals point in), minus the ones named in `missing`;
-// `light` marks the face at the top of `upAxis` as giving light.
-std::vector<FrameFace> boxFromInside(int upAxis, std::vector<int> missing = {}) {
+// The unit box's faces seen from inside (normals point in), minus the ones named in `missing`.
+std::vector<FrameFace> boxFromInside(std::vector<int> missing = {}) {
   std::vector<FrameFace> faces;
   for (int axis = 0; axis < 3; ++axis)
     for (int end = 0; end < 2; ++end) {
@@ -27,35 +26,25 @@ std::vector<FrameFace> boxFromInside(int upAxis, std::vector<int> missing = {}) 
       }
       // Counter-clockwise about +axis; the far side must face back in, -axis.
       if (end == 1) std::reverse(quad.begin(), quad.end());
-      faces.push_back({quad, axis == upAxis && end == 1});
+      faces.push_back({quad});
     }
   return faces;
 }
 
-TEST(SceneFrame, TheAxisTheCeilingLightFacesDownAlongIsUp) {
-  for (int up : {0, 1, 2}) EXPECT_EQ(frameOf(boxFromInside(up)).upAxis, up) << "light on the top of axis " << up;
-}
-
-TEST(SceneFrame, NoDownwardLightMeansZUp) {
-  std::vector<FrameFace> faces = boxFromInside(1);
-  for (FrameFace& f : faces) f.givesLight = false;
-  EXPECT_EQ(frameOf(faces).upAxis, 2);
-}
-
 TEST(SceneFrame, BoundsEncloseEveryVertex) {
-  const SceneFrame frame = frameOf(boxFromInside(2));
+  const SceneFrame frame = frameOf(boxFromInside(), 2);
   EXPECT_EQ(frame.boundsMin, Vec3(0.0));
   EXPECT_EQ(frame.boundsMax, Vec3(1.0));
 }
 
 TEST(SceneFrame, FindsTheMissingWallAndNoneInAClosedBox) {
-  EXPECT_EQ(frameOf(boxFromInside(1)).openSide, -1);
-  EXPECT_EQ(frameOf(boxFromInside(1, {4})).openSide, 4);  // z = 0 missing
-  EXPECT_EQ(frameOf(boxFromInside(2, {1})).openSide, 1);  // x = 1 missing
+  EXPECT_EQ(frameOf(boxFromInside(), 1).openSide, -1);
+  EXPECT_EQ(frameOf(boxFromInside({4}), 1).openSide, 4);  // z = 0 missing
+  EXPECT_EQ(frameOf(boxFromInside({1}), 2).openSide, 1);  // x = 1 missing
 }
 
 TEST(SceneFrame, FloorAndCeilingNeverCountAsOpenSides) {
-  EXPECT_EQ(frameOf(boxFromInside(2, {5})).openSide, -1);  // no ceiling: still no open wall
+  EXPECT_EQ(frameOf(boxFromInside({5}), 2).openSide, -1);  // no ceiling: still no open wall
 }
 
 TEST(SceneFrame, TheBuiltInCornellBoxIsYUpAndOpenAtTheFront) {

@@ -34,7 +34,7 @@ std::vector<Vec3> readVec3(const tinygltf::Model& model, int accessor) {
   return out;
 }
 
-TEST(GltfExport, BakeReadsBackWithItsGeometryColoursAndUnlitMaterial) {
+TEST(GltfExport, BakeOfAZUpSceneReadsBackYUpWithItsColoursAndUnlitMaterial) {
   TempDir dir;
   const DisplayMesh mesh = sampleMesh();
   // 7 vertices; the 90th percentile of the largest channels (1, 2, 3, 4, 5, 6, 60) is the 6th
@@ -42,7 +42,7 @@ TEST(GltfExport, BakeReadsBackWithItsGeometryColoursAndUnlitMaterial) {
   const std::vector<Rgb> b = {{1, 0.5, 0}, {2, 1, 0}, {3, 0, 0}, {0, 4, 0}, {0, 0, 5}, {6, 3, 1.5}, {60, 30, 15}};
   ASSERT_EQ(bakeRadiosityPerColorUnit(b), 6.0);
   const std::string path = (dir / "bake.glb").string();
-  writeBakeGlb(path, mesh, b);
+  writeBakeGlb(path, mesh, b, /*sceneUpAxis=*/2);
 
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
@@ -56,10 +56,14 @@ TEST(GltfExport, BakeReadsBackWithItsGeometryColoursAndUnlitMaterial) {
 
   const tinygltf::Accessor& position = model.accessors.at(prim.attributes.at("POSITION"));
   EXPECT_EQ(position.count, 7u);
-  EXPECT_EQ(position.minValues, (std::vector<double>{0, -1, 0}));
-  EXPECT_EQ(position.maxValues, (std::vector<double>{5, 1, 3}));
-  EXPECT_EQ(readVec3(model, prim.attributes.at("POSITION")), mesh.positions);
+  // (x, y, z) -> (x, z, -y): the quad's height 3 along glTF's up, y.
+  EXPECT_EQ(position.minValues, (std::vector<double>{0, 0, -1}));
+  EXPECT_EQ(position.maxValues, (std::vector<double>{5, 3, 1}));
+  const std::vector<Vec3> positions = readVec3(model, prim.attributes.at("POSITION"));
+  EXPECT_EQ(positions[2], Vec3(2, 3, -1));
+  EXPECT_EQ(positions[4], Vec3(5, 0, 1));
   const std::vector<Vec3> normals = readVec3(model, prim.attributes.at("NORMAL"));
+  EXPECT_EQ(normals[0], Vec3(0, 1, 0));  // the quad faced up, and still does
   EXPECT_EQ(normals[6], Vec3(1, 0, 0));  // normalised on the way out
 
   const std::vector<Vec3> colors = readVec3(model, prim.attributes.at("COLOR_0"));
@@ -82,6 +86,34 @@ TEST(GltfExport, BakeReadsBackWithItsGeometryColoursAndUnlitMaterial) {
   EXPECT_EQ(model.extensionsUsed, std::vector<std::string>{"KHR_materials_unlit"});
   ASSERT_TRUE(model.meshes[0].extras.Has("radiosityPerColorUnit"));
   EXPECT_EQ(model.meshes[0].extras.Get("radiosityPerColorUnit").GetNumberAsDouble(), 6.0);
+  EXPECT_EQ(model.meshes[0].extras.Get("sourceUp").Get<std::string>(), "z");
+}
+
+TEST(GltfExport, AYUpSceneIsWrittenAsItIsAndAnXUpOneTurnedWithoutAMirror) {
+  TempDir dir;
+  const DisplayMesh mesh = sampleMesh();
+  const std::vector<Rgb> b(7, Rgb(1.0));
+  for (int up : {1, 0}) {
+    const std::string path = (dir / "bake.glb").string();
+    writeBakeGlb(path, mesh, b, up);
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, path)) << error;
+    const tinygltf::Primitive& prim = model.meshes[0].primitives[0];
+    const std::vector<Vec3> positions = readVec3(model, prim.attributes.at("POSITION"));
+    const std::vector<Vec3> normals = readVec3(model, prim.attributes.at("NORMAL"));
+    if (up == 1) {
+      EXPECT_EQ(positions, mesh.positions);
+    } else {  // (x, y, z) -> (y, x, -z): x, the scene's up, becomes y
+      EXPECT_EQ(positions[4], Vec3(-1, 5, 0));
+      EXPECT_EQ(normals[6], Vec3(0, 1, 0));
+    }
+    // No mirror: the triangle's winding still agrees with its normal.
+    const Vec3 winding = glm::cross(positions[5] - positions[4], positions[6] - positions[4]);
+    EXPECT_GT(glm::dot(winding, normals[6]), 0.0) << "up " << up;
+    EXPECT_EQ(model.meshes[0].extras.Get("sourceUp").Get<std::string>(), up == 1 ? "y" : "x");
+  }
 }
 
 TEST(GltfExport, ColourScaleFallsBackToTheMaximumThenToOne) {
@@ -94,7 +126,7 @@ TEST(GltfExport, ColourScaleFallsBackToTheMaximumThenToOne) {
 TEST(GltfExport, UnwritablePathIsAClearError) {
   const std::string path = "/nonexistent-radmesh-dir/bake.glb";
   try {
-    writeBakeGlb(path, sampleMesh(), std::vector<Rgb>(7, Rgb(1.0)));
+    writeBakeGlb(path, sampleMesh(), std::vector<Rgb>(7, Rgb(1.0)), 2);
     ADD_FAILURE() << "no error for " << path;
   } catch (const OptionError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot write the bake to '" + path + "': No such file or directory"),
@@ -106,13 +138,13 @@ TEST(GltfExport, UnwritablePathIsAClearError) {
 TEST(GltfExport, RadiosityThatCannotBeTrustedIsNotWritten) {
   TempDir dir;
   const std::string path = (dir / "bad.glb").string();
-  EXPECT_THROW(writeBakeGlb(path, sampleMesh(), std::vector<Rgb>(6, Rgb(1.0))), std::invalid_argument);
+  EXPECT_THROW(writeBakeGlb(path, sampleMesh(), std::vector<Rgb>(6, Rgb(1.0)), 2), std::invalid_argument);
   std::vector<Rgb> nan(7, Rgb(1.0));
   nan[2].g = std::nan("");
-  EXPECT_THROW(writeBakeGlb(path, sampleMesh(), nan), std::invalid_argument);
+  EXPECT_THROW(writeBakeGlb(path, sampleMesh(), nan, 2), std::invalid_argument);
   std::vector<Rgb> negative(7, Rgb(1.0));
   negative[0].b = -1e-3;
-  EXPECT_THROW(writeBakeGlb(path, sampleMesh(), negative), std::invalid_argument);
+  EXPECT_THROW(writeBakeGlb(path, sampleMesh(), negative, 2), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 

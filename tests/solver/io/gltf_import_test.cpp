@@ -288,7 +288,7 @@ TEST(GltfImport, GlbWrittenByTheBakeExportReadsBack) {
   mesh.normals.assign(4, Vec3(0, 0, 1));
   mesh.indices = {0, 1, 2, 0, 2, 3};
   const std::string path = (dir / "bake.glb").string();
-  writeBakeGlb(path, mesh, std::vector<Rgb>(4, Rgb(1.0)));
+  writeBakeGlb(path, mesh, std::vector<Rgb>(4, Rgb(1.0)), /*sceneUpAxis=*/1);
   std::vector<std::string> warnings;
   const Scene s = importGltf(path, &warnings);
   ASSERT_EQ(s.polygons.size(), 1u);

@@ -1,0 +1,101 @@
+// --up on the commands, and bakes: written y-up, described by `info` and walked by the viewer
+// with no solve.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/cli/cli_run.h"
+
+namespace radmesh {
+namespace {
+
+const std::string kYUpRoom = test::dataPath("yup_room.gltf").string();
+
+nlohmann::json infoJson(const std::string& arguments) {
+  const CommandRun run = radmesh("info " + arguments + " --json");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  return nlohmann::json::parse(run.output.substr(run.output.find('{')));  // after what went to stderr
+}
+
+TEST(UpAxisCli, InfoGivesTheUpAxisTheFormatOrTheOptionSets) {
+  EXPECT_EQ(infoJson(kYUpRoom)["up"], "y");
+  EXPECT_EQ(infoJson(kYUpRoom)["kind"], "scene");
+  EXPECT_EQ(infoJson("office")["up"], "z");
+  EXPECT_EQ(infoJson("office --up x")["up"], "x");
+  const CommandRun text = radmesh("info " + kYUpRoom);
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_NE(text.output.find("\nup              y\n"), std::string::npos) << text.output;
+}
+
+TEST(UpAxisCli, AutoSaysWhatItChoseOnOneLine) {
+  const CommandRun run = radmesh("info " + kYUpRoom + " --up auto");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("radmesh: --up auto: y is up (the axis along which the floor faces up at the bottom and "
+                            "the lights face down)\n"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(infoJson("office --up auto")["up"], "z");
+}
+
+TEST(UpAxisCli, ABadUpIsRefusedOnEveryCommand) {
+  for (const std::string command : {"info office", "solve office --max-iterations 1", "bench solve cornell"}) {
+    const CommandRun run = radmesh(command + " --up w");
+    EXPECT_NE(run.exitCode, 0) << command;
+    EXPECT_NE(run.output.find("--up 'w' is not an axis: give x, y, z, or auto"), std::string::npos)
+        << command << ": " << run.output;
+  }
+}
+
+TEST(UpAxisCli, TheOfficesBakeIsYUpAndInfoDescribesItAsABake) {
+  const std::string bake = tempPath("office.glb");
+  const CommandRun solve = radmesh("solve office --cell 1 --resolution 32 --max-iterations 5 --quiet --out " + bake);
+  ASSERT_EQ(solve.exitCode, 0) << solve.output;
+  const nlohmann::json scene = infoJson("office --cell 1");
+  const nlohmann::json j = infoJson(bake);
+  EXPECT_EQ(j["kind"], "bake");
+  EXPECT_EQ(j["made_by"], "radmesh");
+  EXPECT_EQ(j["up"], "y");
+  EXPECT_EQ(j["source_up"], "z");
+  EXPECT_GT(j["triangles"].get<int>(), 0);
+  EXPECT_TRUE(j["warnings"].empty());
+  // (x, y, z) -> (x, z, -y): the office's 2.7 m height is along glTF's y, its 5.4 m depth along -z.
+  for (int c = 0; c < 3; ++c) {
+    const int from = c == 0 ? 0 : c == 1 ? 2 : 1;
+    const double sign = c == 2 ? -1.0 : 1.0;
+    EXPECT_NEAR(j["bounds_min"][c].get<double>(), sign * scene[c == 2 ? "bounds_max" : "bounds_min"][from].get<double>(), 1e-6);
+    EXPECT_NEAR(j["bounds_max"][c].get<double>(), sign * scene[c == 2 ? "bounds_min" : "bounds_max"][from].get<double>(), 1e-6);
+  }
+  EXPECT_NEAR(j["bounds_max"][1].get<double>() - j["bounds_min"][1].get<double>(), 2.7, 1e-6);
+  EXPECT_NEAR(j["total_area"].get<double>(), scene["total_area"].get<double>(), 1e-5 * scene["total_area"].get<double>());
+
+  const CommandRun text = radmesh("info " + bake);
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_NE(text.output.find("bake            " + bake + " (by radmesh;"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("up              y (the scene's z turned onto glTF's y)"), std::string::npos) << text.output;
+  EXPECT_EQ(text.output.find("emitter"), std::string::npos) << text.output;
+
+  const CommandRun again = radmesh("solve " + bake);
+  EXPECT_EQ(again.exitCode, 2) << again.output;
+  EXPECT_NE(again.output.find("is a bake, already solved: there is nothing to solve"), std::string::npos)
+      << again.output;
+}
+
+TEST(UpAxisCli, TheViewerWalksABakeWithNoSolve) {
+  const std::string viewer = (test::binaryDir() / "viewer" / "radmesh-view").string();
+  if (!std::filesystem::exists(viewer)) GTEST_SKIP() << "radmesh-view is not built";
+  if (std::system("command -v xvfb-run > /dev/null") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+  const std::string bake = tempPath("two-rooms.glb"), png = tempPath("walk.png");
+  ASSERT_EQ(radmesh("solve two-rooms --cell 1 --resolution 32 --max-iterations 5 --quiet --out " + bake).exitCode, 0);
+  const CommandRun run = runCommand("xvfb-run -a -s '-screen 0 800x600x24' " + viewer + " " + bake +
+                                     " --size 800x600 --steps 1 --screenshot " + png);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("wrote " + png), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("a bake, nothing to solve"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("no emitter"), std::string::npos) << run.output;
+  EXPECT_EQ(pngSize(png), std::make_pair(800, 600));
+}
+
+}  // namespace
+}  // namespace radmesh
