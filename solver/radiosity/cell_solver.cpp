@@ -262,6 +262,7 @@ Ledger CellSolver::ledger() const {
     total.notCaptured += l.notCaptured;
     total.escaped += l.escaped;
     total.absorbedByBackFaces += l.absorbedByBackFaces;
+    total.lightOutside += l.lightOutside;
   }
   for (const PortalLink& link : s.links) total.unshot += channelSum(s.cells[link.cell].solver->portalPower(link.patch));
   return total;

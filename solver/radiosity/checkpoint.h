@@ -13,7 +13,7 @@
 
 namespace radmesh {
 
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;  // 2: the ledger keeps lightOutside
 
 // Writes the solver's state to path atomically: a temporary file in the same folder, flushed to
 // disk, then renamed over path, so that a kill at any moment leaves the last good checkpoint.

@@ -25,7 +25,10 @@ double Ledger::imbalance() const {
   return input() > 0.0 ? std::abs(input() - accounted) / input() : std::abs(accounted);
 }
 
-double Ledger::unshotFraction() const { return input() > 0.0 ? unshot / input() : 0.0; }
+double Ledger::unshotFraction() const {
+  const double cameIn = input() - lightOutside;
+  return cameIn > 0.0 ? unshot / cameIn : 0.0;
+}
 
 namespace {
 
@@ -249,7 +252,9 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
   const double nearDepth = sceneNearDepth(patches);
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
-    deliver(lightRow(scene, scene.lights[k], patches, options.resolution, nearDepth, pool), lightPower[k], true);
+    const FormFactorRow row = lightRow(scene, scene.lights[k], patches, options.resolution, nearDepth, pool);
+    deliver(row, lightPower[k], true);
+    ledger.lightOutside += channelSum(lightPower[k]) * (row.escapedFraction() + row.backFaces);
     record.shotPowerW += channelSum(lightPower[k]);
   }
   updateUnshot();

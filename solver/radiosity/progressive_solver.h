@@ -27,9 +27,14 @@ struct Ledger {
   double absorbedByBackFaces = 0.0;  // part of absorbed: reached the unlit back of a one-sided patch
   double portalOut = 0.0;    // reached the cell's portal patches: leaves for the neighbour cells
   double portalIn = 0.0;     // arrived from the neighbour cells, to be shot from the portal patches
+  // Part of escaped and absorbedByBackFaces: what a light's shot sent past the model or onto its
+  // outside (most of the sun on a building), which never entered it.
+  double lightOutside = 0.0;
   double input() const;      // emitted + portalIn: all the power the solve has had to distribute
   double imbalance() const;  // |input - (absorbed + unshot + notCaptured + escaped + portalOut)| / input
-  double unshotFraction() const;  // unshot / input: what is left to distribute (0 if nothing came in)
+  // unshot / (input - lightOutside): what is left to distribute of what came in (0 if nothing did).
+  // Not of input: the sun on a building's outside would make 1 % of it more than all its rooms' light.
+  double unshotFraction() const;
 };
 
 // Throws SolveError when the ledger does not balance to 1e-9 of its input, naming `iteration` and

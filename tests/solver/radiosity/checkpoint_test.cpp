@@ -196,9 +196,9 @@ TEST_F(CheckpointRefusal, OneFlippedByte) {
     expectRefused(path, m, options(Backend::Native, 10), "is corrupted");
   }
   std::string otherVersion = bytes;
-  otherVersion[8] = 2;
+  otherVersion[8] = 7;
   writeBytes(path, otherVersion);
-  expectRefused(path, m, options(Backend::Native, 10), "is a version 2 checkpoint");
+  expectRefused(path, m, options(Backend::Native, 10), "is a version 7 checkpoint");
 }
 
 TEST(Checkpoint, RestoreRefusesAProgressOfOtherPatchesAndLeavesTheSolverAsItWas) {

@@ -87,6 +87,31 @@ TEST(LightShot, PointLightInAClosedBoxSendsAll4PiIAndTheLedgerBalancesEveryItera
   for (int i = 0; i < 200 && !solver.done(); ++i) EXPECT_LE(solver.step().ledger.imbalance(), 1e-9);
 }
 
+// The sun on a closed room lit by its ceiling lands on its outside: that power never came in, so
+// the stopping rule measures the unshot power against the ceiling's alone, and the room is solved.
+TEST(LightShot, SunOnTheOutsideDoesNotCountTowardsTheUnshotFraction) {
+  Daylight daylight;
+  daylight.sun = {parseSun("30,40")};
+  const Scene room = loadScene(test::dataPath("yup_room.gltf").string(), nullptr, daylight);
+  SolveOptions options = lightOptions();
+  options.resolution = 64;
+  options.until = 1.0;  // on the unshot power alone
+  options.untilUnshot = 0.01;
+  ProgressiveSolver solver(room, meshScene(room, 0.5), options);
+  const IterationRecord& first = solver.step();
+  const Rgb sun = lightPower(room, room.lights.back());
+  const double sunW = sun.r + sun.g + sun.b;
+  EXPECT_GT(first.ledger.lightOutside, 0.99 * sunW);  // all but what slips in at edges
+  EXPECT_LE(first.ledger.lightOutside, sunW * (1 + 1e-12));
+  EXPECT_GT(first.ledger.unshotFraction(), 0.5);  // the ceiling's light, not yet shot
+  EXPECT_FALSE(solver.done());
+  int iterations = 1;
+  while (!solver.done()) ++iterations, solver.step();
+  EXPECT_GT(iterations, 20);
+  EXPECT_LE(solver.ledger().unshotFraction(), 0.01);
+  EXPECT_LE(solver.ledger().imbalance(), 1e-9);
+}
+
 TEST(LightShot, TheCubeAndTheSpotsFalloffIntegrateToTheirClosedForms) {
   Scene scene = pointBox();
   const ProjectionSurface cube = lightSurface(scene, scene.lights[0], 256);
