@@ -60,16 +60,9 @@ nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, do
                        {"unshot_fraction", cell.ledger.unshotFraction()},
                        {"waiting", cell.waitingW},
                        {"ledger", ledgerJson(cell.ledger)}});
-  return {{"scene", scene},
+  nlohmann::json j = optionsJson(o);
+  j.update({{"scene", scene},
           {"patches", solver.patches().size()},
-          {"backend", toString(o.backend)},
-          {"projection", toString(o.projection)},
-          {"resolution", o.resolution},
-          {"ratio", o.ratio},
-          {"shooters", o.shooters},
-          {"threads", o.threads},
-          {"until", o.until},
-          {"until_unshot", o.untilUnshot},
           {"cells", solver.cellCount()},
           {"portals", solver.portalCount()},
           {"rounds", solver.rounds()},
@@ -77,7 +70,8 @@ nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, do
           {"unshot_fraction", solver.ledger().unshotFraction()},
           {"seconds", seconds},
           {"ledger", ledgerJson(solver.ledger())},
-          {"per_cell", std::move(perCell)}};
+          {"per_cell", std::move(perCell)}});
+  return j;
 }
 
 }  // namespace radmesh::cli

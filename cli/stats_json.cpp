@@ -33,22 +33,20 @@ nlohmann::json ledgerJson(const Ledger& l) {
   return j;
 }
 
+nlohmann::json optionsJson(const SolveOptions& o) {
+  return {{"backend", toString(o.backend)}, {"projection", toString(o.projection)}, {"mapping", toString(o.mapping)},
+          {"resolution", o.resolution},     {"ratio", o.ratio},                       {"shooters", o.shooters},
+          {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot}};
+}
+
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
   const SolveOptions& o = solver.options();
   const ProjectionSummary capture = solver.projectionSummary();
   nlohmann::json perIteration = nlohmann::json::array();
   for (const IterationRecord& r : solver.history()) perIteration.push_back(iterationJson(r));
-  return {{"scene", scene},
+  nlohmann::json j = optionsJson(o);
+  j.update({{"scene", scene},
           {"patches", solver.patches().size()},
-          {"backend", toString(o.backend)},
-          {"projection", toString(o.projection)},
-          {"mapping", toString(o.mapping)},
-          {"resolution", o.resolution},
-          {"ratio", o.ratio},
-          {"shooters", o.shooters},
-          {"threads", o.threads},
-          {"until", o.until},
-          {"until_unshot", o.untilUnshot},
           {"captured_fraction", capture.capturedFraction},
           {"delta_form_factor_sum", capture.deltaFormFactorSum},
           {"iterations", solver.history().size()},
@@ -57,7 +55,8 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"seconds", seconds},
           {"per_iteration", std::move(perIteration)},
           {"ledger", ledgerJson(solver.ledger())},
-          {"effects", effectsJson(solver.effectsPlan())}};
+          {"effects", effectsJson(solver.effectsPlan())}});
+  return j;
 }
 
 nlohmann::json effectsJson(const EffectsPlan& plan) {

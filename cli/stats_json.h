@@ -12,6 +12,10 @@ namespace radmesh::cli {
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
 // {"emitted": W, "absorbed": W, ..., "imbalance": x}, with "portal_in" and "portal_out" for a cell.
 nlohmann::json ledgerJson(const Ledger& ledger);
+
+// The solve's options as --stats gives them: backend, projection, mapping, resolution, ratio,
+// shooters, threads, until, until_unshot.
+nlohmann::json optionsJson(const SolveOptions& o);
 // {"occlusion": {"on": false, "reason": "..."}, ...}
 nlohmann::json effectsJson(const EffectsPlan& plan);
 // Compact, one line; makes the folder. Throws on I/O failure.
