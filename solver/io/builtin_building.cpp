@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
+#include "solver/io/interior_materials.h"
 #include "solver/io/scene_builder.h"
 #include "solver/scene/scene_error.h"
 
@@ -29,16 +30,16 @@ struct Materials {
 
 Materials addMaterials(SceneBuilder& b) {
   Materials m{};
-  const int wall = b.addMaterial("wall paint", {0.72, 0.70, 0.65});
-  const int ceiling = b.addMaterial("ceiling tile", {0.80, 0.80, 0.78});
-  m.room = {b.addMaterial("carpet", {0.22, 0.24, 0.28}), ceiling, wall};
+  const int wall = b.addMaterial(interior::kWallPaint);
+  const int ceiling = b.addMaterial(interior::kCeilingTile);
+  m.room = {b.addMaterial(interior::kCarpet), ceiling, wall};
   m.corridor = {b.addMaterial("corridor linoleum", {0.45, 0.42, 0.36}), ceiling, wall};
-  m.light = b.addMaterial("light panel", {0.80, 0.80, 0.80}, {10.0, 9.6, 8.8});
-  m.frame = b.addMaterial("door frame", {0.60, 0.58, 0.52});
-  m.oak = b.addMaterial("oak", {0.55, 0.38, 0.22});
-  m.steel = b.addMaterial("cabinet enamel", {0.55, 0.56, 0.58});
-  m.beech = b.addMaterial("beech", {0.62, 0.48, 0.30});
-  m.fabric = b.addMaterial("chair fabric", {0.15, 0.22, 0.45});
+  m.light = b.addMaterial(interior::kLightPanel);
+  m.frame = b.addMaterial(interior::kDoorFrame);
+  m.oak = b.addMaterial(interior::kOak);
+  m.steel = b.addMaterial(interior::kCabinetEnamel);
+  m.beech = b.addMaterial(interior::kBeech);
+  m.fabric = b.addMaterial(interior::kChairFabric);
   m.book = b.addMaterial("book spines", {0.45, 0.25, 0.20});
   return m;
 }

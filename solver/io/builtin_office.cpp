@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "solver/io/interior_materials.h"
 #include "solver/io/scene_builder.h"
 
 namespace radmesh {
@@ -27,19 +28,18 @@ struct Materials {
 
 Materials addMaterials(SceneBuilder& b) {
   Materials m{};
-  m.wall = b.addMaterial("wall paint", {0.72, 0.70, 0.65});
-  m.ceiling = b.addMaterial("ceiling tile", {0.80, 0.80, 0.78});
-  m.floor = b.addMaterial("carpet", {0.22, 0.24, 0.28});
-  // A fluorescent troffer's diffuser: 10 W/m^2 per channel, slightly warm.
-  m.light = b.addMaterial("light panel", {0.80, 0.80, 0.80}, {10.0, 9.6, 8.8});
+  m.wall = b.addMaterial(interior::kWallPaint);
+  m.ceiling = b.addMaterial(interior::kCeilingTile);
+  m.floor = b.addMaterial(interior::kCarpet);
+  m.light = b.addMaterial(interior::kLightPanel);
   m.door = b.addMaterial("door", {0.45, 0.30, 0.18});
-  m.frame = b.addMaterial("door frame", {0.60, 0.58, 0.52});
+  m.frame = b.addMaterial(interior::kDoorFrame);
   m.glass = b.addMaterial("window glass", {0.08, 0.10, 0.12});
-  m.oak = b.addMaterial("oak", {0.55, 0.38, 0.22});
-  m.beech = b.addMaterial("beech", {0.62, 0.48, 0.30});
-  m.fabric = b.addMaterial("chair fabric", {0.15, 0.22, 0.45});
+  m.oak = b.addMaterial(interior::kOak);
+  m.beech = b.addMaterial(interior::kBeech);
+  m.fabric = b.addMaterial(interior::kChairFabric);
   m.steel = b.addMaterial("steel", {0.35, 0.35, 0.37});
-  m.cabinet = b.addMaterial("cabinet enamel", {0.55, 0.56, 0.58});
+  m.cabinet = b.addMaterial(interior::kCabinetEnamel);
   m.board = b.addMaterial("whiteboard", {0.85, 0.85, 0.85});
   m.cork = b.addMaterial("cork", {0.50, 0.36, 0.22});
   m.screen = b.addMaterial("monitor", {0.10, 0.10, 0.11});

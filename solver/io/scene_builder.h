@@ -41,6 +41,7 @@ class SceneBuilder {
   explicit SceneBuilder(std::string source);
 
   int addMaterial(std::string name, Rgb rho, Rgb emittance = Rgb(0.0));
+  int addMaterial(const Material& m) { return addMaterial(m.name, m.rho, m.emittance); }
   void addPolygon(std::vector<Vec3> ccw, int material, std::string origin);
 
   // The rectangle lo..hi in the plane coordinate[axis] = lo[axis], facing +axis (facing > 0) or

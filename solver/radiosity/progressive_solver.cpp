@@ -14,21 +14,10 @@
 #include "solver/formfactors/light_rows.h"
 #include "solver/formfactors/near_field.h"
 #include "solver/projection/scan_conversion.h"
+#include "solver/radiosity/solver_input.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
-
-double Ledger::input() const { return emitted + portalIn; }
-
-double Ledger::imbalance() const {
-  const double accounted = absorbed + unshot + notCaptured + escaped + portalOut;
-  return input() > 0.0 ? std::abs(input() - accounted) / input() : std::abs(accounted);
-}
-
-double Ledger::unshotFraction() const {
-  const double cameIn = input() - lightOutside;
-  return cameIn > 0.0 ? unshot / cameIn : 0.0;
-}
 
 namespace {
 
@@ -40,53 +29,6 @@ double channelSum(double c) { return 3.0 * c; }
 template <typename Value> Value channels(const Rgb& c);
 template <> Rgb channels<Rgb>(const Rgb& c) { return c; }
 template <> double channels<double>(const Rgb& c) { return c.r; }
-
-void requireFinite(const Scene& scene, const std::string& element, const char* what, const Vec3& v) {
-  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
-    throw SceneError(scene.source, element, fmt::format("has a NaN or infinite {} ({}, {}, {})", what, v.x, v.y, v.z),
-                     "give every vertex finite coordinates in metres");
-}
-
-// The solver checks what it is handed as the loaders check files: a scene built in code or a
-// patch list from elsewhere would otherwise turn into NaN radiosity or light from nowhere.
-void validateSolverInput(const Scene& scene, const std::vector<Patch>& patches) {
-  for (const Material& m : scene.materials) {
-    const std::string element = fmt::format("material '{}'", m.name);
-    for (int c = 0; c < 3; ++c) {
-      if (!(m.rho[c] >= 0.0 && m.rho[c] <= 1.0))
-        throw SceneError(scene.source, element, fmt::format("reflectance {} is outside [0, 1]", m.rho[c]),
-                         "give each reflectance channel a value from 0 to 1");
-      if (!(std::isfinite(m.emittance[c]) && m.emittance[c] >= 0.0))
-        throw SceneError(scene.source, element, fmt::format("emittance {} is negative or not finite", m.emittance[c]),
-                         "give emittance as a finite, non-negative exitance in W/m^2");
-    }
-  }
-  for (size_t i = 0; i < scene.polygons.size(); ++i) {
-    const Polygon& polygon = scene.polygons[i];
-    const std::string element =
-        fmt::format("polygon {}", i) + (polygon.origin.empty() ? "" : " (" + polygon.origin + ")");
-    for (const Vec3& v : polygon.vertices) requireFinite(scene, element, "vertex", v);
-  }
-  for (size_t i = 0; i < patches.size(); ++i) {
-    const Patch& p = patches[i];
-    const std::string element = fmt::format("patch {} (of polygon {})", i, p.polygon);
-    if (p.vertexCount != 3 && p.vertexCount != 4)
-      throw SceneError(scene.source, element, fmt::format("has {} vertices, not 3 or 4", p.vertexCount),
-                       "mesh the polygon it came from into triangles and convex quads");
-    if (!(std::isfinite(p.areaM2) && p.areaM2 > 0.0))
-      throw SceneError(scene.source, element, fmt::format("has area {} m^2", p.areaM2),
-                       "fix the polygon it came from, or mesh with another --cell");
-    for (int k = 0; k < p.vertexCount; ++k) requireFinite(scene, element, "vertex", p.vertices[k]);
-    requireFinite(scene, element, "centroid", p.centroid);
-    requireFinite(scene, element, "normal", p.normal);
-    if (p.material < 0 || p.material >= static_cast<int>(scene.materials.size()))
-      throw SceneError(scene.source, element, fmt::format("refers to material {}, which does not exist", p.material),
-                       "give the polygon it came from a defined material");
-  }
-  if (patches.empty())
-    throw SceneError(scene.source, "the scene", "meshed into no patches", "give it polygons");
-  validateLights(scene);
-}
 
 // Whether a progress has n patches and names no others (a row's, a record's shooters).
 bool fitsPatches(const SolverProgress& p, size_t n) {
@@ -102,20 +44,6 @@ bool fitsPatches(const SolverProgress& p, size_t n) {
 }
 
 }  // namespace
-
-void checkLedger(const Ledger& l, int iteration) {
-  constexpr double kTolerance = 1e-9;  // of the emitted power: rounding over millions of updates stays far below
-  if (l.imbalance() <= kTolerance) return;
-  const std::string portals = l.portalIn > 0.0 || l.portalOut > 0.0
-      ? fmt::format(" (a cell: portal in {:.17g} W, portal out {:.17g} W)", l.portalIn, l.portalOut) : "";
-  throw SolveError(fmt::format(
-      "iteration {}: the energy ledger does not balance: emitted {:.17g} W, absorbed {:.17g} W + unshot {:.17g} W "
-      "+ not captured {:.17g} W + escaped {:.17g} W (absorbed by back faces {:.17g} W){}; imbalance {:.3g} of the "
-      "emitted power, above {:.0e}. This is a fault in radmesh or its form-factor back end; the solve stops and "
-      "nothing of it is written",
-      iteration, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, portals,
-      l.imbalance(), kTolerance));
-}
 
 struct ProgressiveSolver::State {
   Scene scene;

@@ -7,39 +7,13 @@
 #include <vector>
 
 #include "solver/radiosity/effects_plan.h"
+#include "solver/radiosity/ledger.h"
 #include "solver/backends/form_factor_backend.h"
 #include "solver/meshing/patch.h"
 #include "solver/scene/scene.h"
 #include "solver/scene/solve_options.h"
 
 namespace radmesh {
-
-// Where the emitted power went, in watts summed over RGB. Balances:
-// emitted + portalIn = absorbed + unshot + notCaptured + escaped + portalOut
-// (the portal terms are those of one cell of a cells solve, solver/radiosity/cell_solver.h; zero
-// otherwise).
-struct Ledger {
-  double emitted = 0.0;
-  double absorbed = 0.0;     // absorbed by patches: (1 - rho) of what reached them
-  double unshot = 0.0;       // reflected but not yet shot on: sum of dB_j * A_j
-  double notCaptured = 0.0;  // left the shooter outside the projection surface (the plane's miss)
-  double escaped = 0.0;      // captured but hit no patch: light leaving an open scene
-  double absorbedByBackFaces = 0.0;  // part of absorbed: reached the unlit back of a one-sided patch
-  double portalOut = 0.0;    // reached the cell's portal patches: leaves for the neighbour cells
-  double portalIn = 0.0;     // arrived from the neighbour cells, to be shot from the portal patches
-  // Part of escaped and absorbedByBackFaces: what a light's shot sent past the model or onto its
-  // outside (most of the sun on a building), which never entered it.
-  double lightOutside = 0.0;
-  double input() const;      // emitted + portalIn: all the power the solve has had to distribute
-  double imbalance() const;  // |input - (absorbed + unshot + notCaptured + escaped + portalOut)| / input
-  // unshot / (input - lightOutside): what is left to distribute of what came in (0 if nothing did).
-  // Not of input: the sun on a building's outside would make 1 % of it more than all its rooms' light.
-  double unshotFraction() const;
-};
-
-// Throws SolveError when the ledger does not balance to 1e-9 of its input, naming `iteration` and
-// every term. Every iteration, in every build: numbers that do not balance are never shown or written.
-void checkLedger(const Ledger& ledger, int iteration);
 
 // A solve that stops with more than this fraction of the emitted power unshot is far from
 // converged (docs/accuracy.md: its reflected light is tens of per cent wrong); the CLI and the
