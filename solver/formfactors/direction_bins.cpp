@@ -107,12 +107,30 @@ void splitOverDirectionBins(int n, std::span<const Vec3> polygon, const std::fun
   }
   for (const BinFace& f : binFaces(n)) {
     const ProjectionFace& face = f.face;
-    for (int row = 0; row < face.height; ++row) {
+    // The part on this face, and the rows and columns its corners reach: only those are cut.
+    std::vector<Vec3> onFace = above;
+    for (int k : {0, 1}) {
+      const double lo = k == 0 ? face.a0 : face.b0, hi = k == 0 ? face.a1 : face.b1;
+      onFace = clipAtOrigin(clipAtOrigin(onFace, lineNormal(face, k, lo)), -lineNormal(face, k, hi));
+    }
+    if (onFace.empty()) continue;
+    std::array<int, 2> first{face.width - 1, face.height - 1}, last{0, 0};
+    for (const Vec3& p : onFace) {
+      const Vec3 q = toFace(face, p);
+      for (int k : {0, 1}) {
+        const double from = k == 0 ? face.a0 : face.b0, size = k == 0 ? face.pixelWidth() : face.pixelHeight();
+        const int count = k == 0 ? face.width : face.height;
+        const int at = q.z > 0.0 ? std::clamp(static_cast<int>(std::floor((q[k] / q.z - from) / size)), 0, count - 1) : -1;
+        first[k] = at < 0 ? 0 : std::min(first[k], at);
+        last[k] = at < 0 ? count - 1 : std::max(last[k], at);
+      }
+    }
+    for (int row = first[1]; row <= last[1]; ++row) {
       const double b0 = face.b0 + row * face.pixelHeight();
-      std::vector<Vec3> band = clipAtOrigin(clipAtOrigin(above, lineNormal(face, 1, b0)),
+      std::vector<Vec3> band = clipAtOrigin(clipAtOrigin(onFace, lineNormal(face, 1, b0)),
                                             -lineNormal(face, 1, b0 + face.pixelHeight()));
       if (band.empty()) continue;
-      for (int column = 0; column < face.width; ++column) {
+      for (int column = first[0]; column <= last[0]; ++column) {
         const double a0 = face.a0 + column * face.pixelWidth();
         std::vector<Vec3> part = clipAtOrigin(clipAtOrigin(band, lineNormal(face, 0, a0)),
                                               -lineNormal(face, 0, a0 + face.pixelWidth()));
