@@ -42,7 +42,7 @@ struct CellsRun {
 CellsRun runCells(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
                   SolveOptions o, const BenchCellsArgs& args) {
   const double start = benchSeconds(o.threads);
-  CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots});
+  CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots, args.portalBins});
   while (!solver.done()) solver.round();
   return {benchSeconds(o.threads) - start, solver.iterations(), solver.rounds(), solver.ledger().unshotFraction(),
           solver.radiosity()};
@@ -53,7 +53,7 @@ CellsRun runCells(const Scene& scene, const std::vector<Patch>& patches, const C
 double focusSeconds(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
                     const SolveOptions& o, const BenchCellsArgs& args, int& iterations) {
   const double start = benchSeconds(o.threads);
-  CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots});
+  CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots, args.portalBins});
   if (args.focusCell < 0 || args.focusCell >= solver.cellCount())
     throw OptionError(fmt::format("--focus-cell {} is not a cell of {}: give 0 to {}", args.focusCell, scene.source,
                                   solver.cellCount() - 1));
@@ -80,9 +80,10 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
   o.effects = EffectsMode::All;  // the same projection in every cell as in the whole building
   o.threads = 1;
   validateOptions(o);
-  fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, exchange every {} iterations\n",
+  fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, exchange every {} iterations, "
+             "portal bins {}\n",
              scene.source, patches.size(), partition.cells.size(), partition.portals.size(), args.projection,
-             args.resolution, 100.0 * args.untilUnshot, args.exchangeShots);
+             args.resolution, 100.0 * args.untilUnshot, args.exchangeShots, args.portalBins);
 
   double start = benchSeconds(1);
   ProgressiveSolver whole(scene, patches, o);
@@ -149,7 +150,7 @@ nlohmann::json benchCells(const BenchCellsArgs& args) {
   nlohmann::json scenes = nlohmann::json::array();
   for (const std::string& name : args.scenes) scenes.push_back(benchScene(name, args));
   return {{"projection", args.projection}, {"resolution", args.resolution}, {"until_unshot", args.untilUnshot},
-          {"exchange_shots", args.exchangeShots}, {"scenes", scenes}};
+          {"exchange_shots", args.exchangeShots}, {"portal_bins", args.portalBins}, {"scenes", scenes}};
 }
 
 }  // namespace radmesh::cli

@@ -83,6 +83,7 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_option("--exchange-shots", args->exchangeShots, "Iterations per cell between portal exchanges")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--focus-cell", args->focusCell, "The camera's cell, solved first")->capture_default_str();
   cmd->add_option("--focus-unshot", args->focusUnshot, "The focus cell's unshot fraction to time to")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per solve")->capture_default_str();

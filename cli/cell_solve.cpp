@@ -7,6 +7,7 @@
 #include "cli/progress.h"
 #include "cli/stats_json.h"
 #include "solver/cells/find_cells.h"
+#include "solver/formfactors/direction_bins.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
@@ -17,8 +18,10 @@ std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch
     throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
   const CellPartition partition = findCells(scene, patches);
   auto solver = std::make_unique<CellSolver>(scene, std::move(patches), partition, options, settings);
-  fmt::print("cells: {} cells, {} portals, exchanging portal light every {} iterations per cell\n",
-             solver->cellCount(), solver->portalCount(), settings.exchangeShots);
+  fmt::print("cells: {} cells, {} portals, exchanging portal light every {} iterations per cell, {}\n",
+             solver->cellCount(), solver->portalCount(), settings.exchangeShots,
+             settings.portalBins > 1 ? fmt::format("in {} direction bins", directionBinCount(settings.portalBins))
+                                     : std::string("re-emitted diffusely"));
   return solver;
 }
 
@@ -66,6 +69,8 @@ nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, do
           {"cells", solver.cellCount()},
           {"portals", solver.portalCount()},
           {"rounds", solver.rounds()},
+          {"exchange_shots", solver.settings().exchangeShots},
+          {"portal_bins", solver.settings().portalBins},
           {"iterations", solver.iterations()},
           {"unshot_fraction", solver.ledger().unshotFraction()},
           {"seconds", seconds},

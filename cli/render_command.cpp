@@ -105,7 +105,7 @@ Solved solveScene(const RenderArgs& args) {
   };
   if (args.flags.cellsOn()) {
     std::unique_ptr<CellSolver> solver =
-        makeCellSolver(scene, meshScene(scene, cell.cellM), options, {cell.cellM, args.flags.exchangeShots});
+        makeCellSolver(scene, meshScene(scene, cell.cellM), options, {cell.cellM, args.flags.exchangeShots, args.flags.portalBins});
     printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
     if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
     return solvedFrom(solver->patches(), solver->displayRadiosity());

@@ -68,7 +68,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
   if (!args.checkpointPath.empty() || !args.resumePath.empty())
     throw OptionError("--checkpoint and --resume save and restore one solve, not a cells solve: give --cells off");
   std::unique_ptr<CellSolver> solver =
-      makeCellSolver(scene, meshScene(scene, cellM), options, {cellM, args.flags.exchangeShots});
+      makeCellSolver(scene, meshScene(scene, cellM), options, {cellM, args.flags.exchangeShots, args.flags.portalBins});
   fmt::print("solving {} cell by cell: {} patches, {} {}x{}, k={}, until {:g}% unshot\n", scene.source,
              solver->patches().size(), toString(options.projection), options.resolution, options.resolution,
              options.shooters, 100.0 * options.untilUnshot);

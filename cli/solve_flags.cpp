@@ -114,6 +114,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--exchange-shots", f.exchangeShots, "With --cells auto: iterations per cell between portal exchanges")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  cmd->add_option("--portal-bins", f.portalBins, kPortalBinsHelp)->capture_default_str();
   const std::vector<CLI::Option*> options = cmd->get_options();
   f.solverOptions.assign(options.begin() + static_cast<std::ptrdiff_t>(first), options.end());
 }

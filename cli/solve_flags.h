@@ -21,6 +21,7 @@ struct SolveFlags {
   bool strict = false;  // --strict: a scene that needed any repair is refused
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
   int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
+  int portalBins = 0;         // --portal-bins: direction bins of light crossing a portal (0, 1: diffuse)
   Daylight daylight;          // --sky, --sky-model, --sun
   UpChoice up = UpChoice::Format;  // --up
   SolveOptions options;
@@ -35,6 +36,10 @@ struct SolveFlags {
   // The cell to mesh `scene` with: --cell when given, else the one chosen from the scene's size.
   CellChoice cell(const Scene& scene) const;
 };
+
+inline constexpr const char* kPortalBinsHelp =
+    "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
+    "in it (docs/cells.md); 0 or 1: re-emitted diffusely";
 
 // --cell's value when the user gave it, else chooseCell(scene); `why` says which.
 CellChoice commandCell(const Scene& scene, double cellM, bool given);

@@ -16,6 +16,12 @@ void FormFactorBackend::restoreMachineState(const std::string& state) {
   if (!state.empty()) throw std::invalid_argument("this back end keeps no machine state, but some was given");
 }
 
+void FormFactorBackend::binDirections(std::span<const int>, int) {
+  throw OptionError("directional portals (--portal-bins above 1) need each pixel's delta form factor summed per "
+                    "receiver and per direction bin, which only the native back end does (the mesh machine sums a "
+                    "pixel into its receiver alone): give --backend native, or --portal-bins 1");
+}
+
 void refuseNaNUnshotPower(std::span<const double> unshotPowerW) {
   for (std::size_t j = 0; j < unshotPowerW.size(); ++j)
     if (std::isnan(unshotPowerW[j]))

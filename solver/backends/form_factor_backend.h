@@ -30,6 +30,10 @@ class FormFactorBackend {
   // One row per shooter, all from the same scene; rows is resized to shooters.size().
   virtual void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) = 0;
   virtual ProjectionSummary projectionSummary() const = 0;
+  // From now on, the rows of these shooters (portal patches) also split their directions into
+  // directionBinCount(n) bins (FormFactorRow::binShares). Throws OptionError on a back end that
+  // cannot: the base, for the mesh back end (its machine sums a pixel into its patch alone).
+  virtual void binDirections(std::span<const int> shooters, int n);
   // The single plane's item buffer for a shooter, at the options' resolution and ratio, whatever
   // the projection in use: what the viewer shows, and where the back ends must agree pixel for pixel.
   virtual ItemBuffer singlePlaneItemBuffer(int shooter) = 0;

@@ -17,7 +17,8 @@ double FormFactorRow::escapedFraction() const {
 
 std::size_t FormFactorRow::bytes() const {
   return sizeof(FormFactorRow) + receivers.capacity() * sizeof(int) +
-         formFactors.capacity() * sizeof(double);
+         formFactors.capacity() * sizeof(double) + binShares.capacity() * sizeof(BinShare) +
+         (binBackFaces.capacity() + binTotals.capacity()) * sizeof(double);
 }
 
 FormFactorRow assembleRow(int shooter, double capturedFraction, std::span<const double> formFactors,

@@ -14,6 +14,16 @@ struct FormFactorRow {
   double backFaces = 0.0;           // reaches the unlit back of one-sided patches (absorbed there)
   double capturedFraction = 1.0;    // caught by the projection surface (the rest: not captured)
   bool reused = false;              // served from the form-factor cache, not computed
+  // A directional shooter's row (FormFactorBackend::binDirections): the same directions again,
+  // split by their bin (solver/formfactors/direction_bins.h). Empty for any other shooter.
+  struct BinShare {
+    int patch = 0;
+    int bin = 0;
+    double formFactor = 0.0;  // F_jb: of the bin's directions, those landing on the patch's front
+  };
+  std::vector<BinShare> binShares;   // by patch
+  std::vector<double> binBackFaces;  // per bin: landing on backs
+  std::vector<double> binTotals;     // per bin, F_b: all its directions the projection catches, hit or not
 
   double hitFraction() const;       // sum of formFactors, plus backFaces
   // Caught but hitting no patch: light leaving an open scene. Never negative.

@@ -97,6 +97,9 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     throw OptionError("--cells auto stops on the unshot power of the whole building alone: give --until 1 with "
                       "--until-unshot (the bake preset does), not a convergence C");
   if (settings.exchangeShots < 1) throw OptionError("--exchange-shots must be at least 1");
+  if (settings.portalBins < 0 || settings.portalBins > kMaxPortalBins)
+    throw OptionError(fmt::format("--portal-bins {} is out of range: give 0 or 1 (diffuse) up to {} (an N x N "
+                                  "hemicube of direction bins)", settings.portalBins, kMaxPortalBins));
   // A light has no patch, so no cell owns its one shot yet; a beam (the sun) may light every cell.
   if (!scene.lights.empty())
     throw OptionError(fmt::format("{} has {} light(s) without a patch (KHR_lights_punctual or --sun), which --cells "
@@ -171,7 +174,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     }
     cell.portalPatches = static_cast<int>(portalPatches.size());
     cell.solver = std::make_unique<ProgressiveSolver>(sub, std::move(local), cellOptions);
-    cell.solver->setPortalPatches(portalPatches);
+    cell.solver->setPortalPatches(portalPatches, settings.portalBins);
   }
 
   for (size_t p = 0; p < partition.portals.size(); ++p) {
@@ -304,6 +307,7 @@ int CellSolver::cellCount() const { return static_cast<int>(state_->cells.size()
 int CellSolver::portalCount() const { return state_->portalCount; }
 const ProgressiveSolver& CellSolver::cellSolver(int cell) const { return *state_->cells.at(static_cast<size_t>(cell)).solver; }
 const SolveOptions& CellSolver::options() const { return state_->options; }
+const CellSolveSettings& CellSolver::settings() const { return state_->settings; }
 
 std::vector<CellFigures> CellSolver::cellFigures() const {
   const State& s = *state_;

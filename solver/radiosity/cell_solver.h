@@ -1,9 +1,9 @@
 #pragma once
 // The cells solve (the paper's section 1.7, docs/cells.md): one ProgressiveSolver per cell, over
 // the cell's patches and its portal patches (each portal meshed like a wall and turned to face
-// into the cell). A shot projects only its cell. Light reaching a portal patch waits there; at
-// fixed exchange points it moves to the twin patch facing into the neighbour cell, which shoots
-// it on diffusely like any unshot power. Between exchanges the cells shoot in parallel, each on
+// into the cell). A shot projects only its cell. Light reaching a portal patch waits there, by
+// direction bin; at fixed exchange points it moves to the twin patch facing into the neighbour
+// cell, which shoots each bin on into its own directions (or all diffusely, without bins). Between exchanges the cells shoot in parallel, each on
 // its own, so results are bitwise the same for any number of threads.
 #include <memory>
 #include <string>
@@ -15,9 +15,14 @@
 
 namespace radmesh {
 
+constexpr int kMaxPortalBins = 16;  // CellSolveSettings::portalBins: 16 x 16 on top, 768 bins in all
+
 struct CellSolveSettings {
   double cellM = 0.381;    // the grid the portals are meshed on: the scene's (meshScene's cellM)
   int exchangeShots = 16;  // iterations each cell shoots between two portal exchanges
+  // Light crossing a portal keeps its direction in directionBinCount(portalBins) bins and goes on
+  // in it (solver/formfactors/direction_bins.h); 0 or 1: re-emitted diffusely. At most 16.
+  int portalBins = 0;
 };
 
 struct CellFigures {
@@ -67,6 +72,7 @@ class CellSolver {
   std::vector<CellFigures> cellFigures() const;
   const ProgressiveSolver& cellSolver(int cell) const;
   const SolveOptions& options() const;
+  const CellSolveSettings& settings() const;
 
  private:
   struct State;

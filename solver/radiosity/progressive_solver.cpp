@@ -1,6 +1,7 @@
 #include "solver/radiosity/progressive_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include <utility>
 
 #include "parallel/thread_pool.h"
+#include "solver/formfactors/direction_bins.h"
 #include "solver/formfactors/form_factor_cache.h"
 #include "solver/formfactors/light_rows.h"
 #include "solver/formfactors/near_field.h"
@@ -58,7 +60,12 @@ struct ProgressiveSolver::State {
   std::vector<int> tieRank;            // shooters of equal power go in geometric order
   std::vector<Rgb> lightPower;         // per scene light, W per channel: all shot in iteration 1
   std::vector<char> isPortal;          // per patch (setPortalPatches)
-  std::vector<Rgb> portalPower;        // per patch: arrived on a portal patch, waiting to be taken
+  int portalBinsN = 0;                 // setPortalPatches' n: directionBinCount(n) bins per portal patch
+  // Per portal patch, per bin of its direction of travel (in the frame of its back, facing the
+  // neighbour cell): arrived on it, waiting to be taken.
+  std::vector<std::vector<Rgb>> portalPower;
+  // Per portal patch with more than one bin: its unshot power (arrived from the neighbour) per bin.
+  std::vector<std::vector<Rgb>> portalUnshot;
   std::unique_ptr<FormFactorBackend> backend;
   FormFactorCache cache;
   Ledger ledger;
@@ -76,9 +83,11 @@ struct ProgressiveSolver::State {
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   void shootLights(IterationRecord& record);
   void deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape);
+  void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins, bool bookEscape);
   void updateUnshot();
-  template <typename Value> void receive(const FormFactorRow& row, const Value& power);
-  void passToPortals(const FormFactorRow& row, const Rgb& power);
+  template <typename Value, typename Incident> void receive(const FormFactorRow& row, Incident incidentOf);
+  template <typename Incident> void passToPortals(const FormFactorRow& row, Incident incidentOf);
+  void arrivalShares(int shooter, int portal, std::vector<double>& shares) const;
 };
 
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
@@ -102,7 +111,8 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   s.unshotPowerW.resize(n);
   s.timesShot.assign(n, 0);
   s.isPortal.assign(n, 0);
-  s.portalPower.assign(n, Rgb(0.0));
+  s.portalPower.resize(n);
+  s.portalUnshot.resize(n);
   for (size_t j = 0; j < n; ++j) {
     const Material& m = s.scene.materials[s.patches[j].material];
     s.rho[j] = m.rho;
@@ -167,7 +177,15 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
     ++timesShot[i];
     record.shotPowerW += channelSum(shotPower[s]);
   }
-  for (size_t s = 0; s < shooters.size(); ++s) deliver(rows[s], shotPower[s], plan.escape);
+  for (size_t s = 0; s < shooters.size(); ++s) {
+    std::vector<Rgb>& bins = portalUnshot[shooters[s]];
+    if (bins.empty()) {
+      deliver(rows[s], shotPower[s], plan.escape);
+    } else {
+      deliverByBins(rows[s], bins, plan.escape);
+      std::fill(bins.begin(), bins.end(), Rgb(0.0));
+    }
+  }
   updateUnshot();
   record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
 }
@@ -197,17 +215,62 @@ void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& powe
   if (bookEscape) ledger.escaped += powerW * row.escapedFraction();
   ledger.absorbed += powerW * row.backFaces;
   ledger.absorbedByBackFaces += powerW * row.backFaces;
-  passToPortals(row, power);
+  passToPortals(row, [&](size_t r) { return power * row.formFactors[r]; });
   if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
     double received = 0.0;
     for (size_t r = 0; r < row.receivers.size(); ++r)
       if (!isPortal[row.receivers[r]]) received += row.formFactors[r];
     ledger.absorbed += powerW * received;
   } else if (plan.colour) {
-    receive(row, power);
+    receive<Rgb>(row, [&](size_t r) { return power * row.formFactors[r]; });
   } else {
-    receive(row, power.r);
+    receive<double>(row, [&](size_t r) { return power.r * row.formFactors[r]; });
   }
+}
+
+// A portal patch's shot, each bin's power into its own directions: sum_b P_b F_jb / F_b to
+// receiver j. A bin the projection does not cover (F_b = 0: the single plane's grazing bins) is
+// shot diffusely with the whole row, as a portal without bins would be.
+void ProgressiveSolver::State::deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins,
+                                             bool bookEscape) {
+  std::vector<double> hit(row.binBackFaces);  // per bin: landing on a patch, front or back
+  for (const FormFactorRow::BinShare& share : row.binShares) hit[share.bin] += share.formFactor;
+  std::vector<Rgb> perFormFactor(bins.size(), Rgb(0.0));  // P_b / F_b
+  Rgb uncovered(0.0);
+  for (size_t b = 0; b < bins.size(); ++b) {
+    const double total = row.binTotals[b];
+    if (!(total > 0.0)) {
+      uncovered += bins[b];
+      continue;
+    }
+    perFormFactor[b] = bins[b] / total;
+    const double backW = channelSum(perFormFactor[b]) * row.binBackFaces[b];
+    ledger.absorbed += backW;
+    ledger.absorbedByBackFaces += backW;
+    const double escaped = total - hit[b];  // as FormFactorRow::escapedFraction, per bin
+    if (bookEscape && escaped > 1e-12 * total) ledger.escaped += channelSum(perFormFactor[b]) * escaped;
+  }
+  // The receivers of the bins as a row of their own, each with the power reaching it.
+  FormFactorRow lit;
+  lit.shooter = row.shooter;
+  std::vector<Rgb> incident;
+  for (const FormFactorRow::BinShare& share : row.binShares) {
+    if (lit.receivers.empty() || lit.receivers.back() != share.patch) {
+      lit.receivers.push_back(share.patch);
+      incident.push_back(Rgb(0.0));
+    }
+    incident.back() += perFormFactor[share.bin] * share.formFactor;
+  }
+  lit.formFactors.assign(lit.receivers.size(), 0.0);
+  auto incidentOf = [&](size_t r) { return incident[r]; };
+  passToPortals(lit, incidentOf);
+  if (!plan.interreflection) {
+    for (size_t r = 0; r < lit.receivers.size(); ++r)
+      if (!isPortal[lit.receivers[r]]) ledger.absorbed += channelSum(incident[r]);
+  } else {
+    receive<Rgb>(lit, incidentOf);
+  }
+  if (channelSum(uncovered) > 0.0) deliver(row, uncovered, bookEscape);
 }
 
 void ProgressiveSolver::State::updateUnshot() {
@@ -217,8 +280,8 @@ void ProgressiveSolver::State::updateUnshot() {
 
 // Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double), each
 // receiver updated where the back end keeps it.
-template <typename Value>
-void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& power) {
+template <typename Value, typename Incident>
+void ProgressiveSolver::State::receive(const FormFactorRow& row, Incident incidentOf) {
   // Per channel: incident, reflected, absorbed, gain, B, dB (6 flops); then the unshot power (a
   // channel sum and the area), the absorbed power (a channel sum) and the running sum (1). A grey
   // scene's channel sums are one multiply each.
@@ -227,7 +290,7 @@ void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& po
   ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
     const int j = row.receivers[r];
     if (isPortal[j]) return 0.0;  // passToPortals took it
-    const Value incident = power * row.formFactors[r];
+    const Value incident = incidentOf(r);
     const Value reflected = channels<Value>(rho[j]) * incident;
     const Value gain = reflected / patches[j].areaM2;
     radiosity[j] += Rgb(gain);
@@ -237,15 +300,50 @@ void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& po
   });
 }
 
-// What reaches a portal patch waits there for the neighbour cell, in receiver order.
-void ProgressiveSolver::State::passToPortals(const FormFactorRow& row, const Rgb& power) {
+// What reaches a portal patch waits there for the neighbour cell, in receiver order, by the bins of
+// its direction of travel.
+template <typename Incident>
+void ProgressiveSolver::State::passToPortals(const FormFactorRow& row, Incident incidentOf) {
+  std::vector<double> shares;
   for (size_t r = 0; r < row.receivers.size(); ++r) {
     const int j = row.receivers[r];
     if (!isPortal[j]) continue;
-    const Rgb incident = power * row.formFactors[r];
-    portalPower[j] += incident;
+    const Rgb incident = incidentOf(r);
     ledger.portalOut += channelSum(incident);
+    if (portalPower[j].size() == 1) {
+      portalPower[j][0] += incident;
+      continue;
+    }
+    arrivalShares(row.shooter, j, shares);
+    for (size_t b = 0; b < shares.size(); ++b)
+      if (shares[b] > 0.0) portalPower[j][b] += incident * shares[b];
   }
+}
+
+// How what reaches a portal patch from a shooter splits over the bins of its direction of travel,
+// in the frame of the portal's back (the twin patch facing into the neighbour cell: u, -v, -n),
+// where the light goes on: the directions from the shooter's centre through the patch, each bin's
+// part weighted by its cosine to the portal's normal (which for a patch small against its distance
+// is the shooter's cosine up to a constant), the shares adding up to 1.
+void ProgressiveSolver::State::arrivalShares(int shooter, int portal, std::vector<double>& shares) const {
+  const Patch& p = patches[portal];
+  std::array<Vec3, 4> seen{};
+  for (int k = 0; k < p.vertexCount; ++k) {
+    const Vec3 d = p.vertices[k] - patches[shooter].centroid;
+    seen[k] = Vec3(glm::dot(d, p.frame.u), -glm::dot(d, p.frame.v), -glm::dot(d, p.frame.n));
+  }
+  shares.assign(directionBinCount(portalBinsN), 0.0);
+  double total = 0.0;
+  splitOverDirectionBins(portalBinsN, std::span<const Vec3>(seen.data(), p.vertexCount), [&](int b, double f) {
+    shares[b] += f;
+    total += f;
+  });
+  if (!(total > 0.0)) {  // seen edge-on: the direction of its centre
+    const Vec3 d = p.centroid - patches[shooter].centroid;
+    shares[directionBin(portalBinsN, Vec3(glm::dot(d, p.frame.u), -glm::dot(d, p.frame.v), -glm::dot(d, p.frame.n)))] = 1.0;
+    return;
+  }
+  for (double& share : shares) share /= total;
 }
 
 const IterationRecord& ProgressiveSolver::step() {
@@ -291,26 +389,43 @@ bool ProgressiveSolver::done() const {
 
 bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
 
-void ProgressiveSolver::setPortalPatches(const std::vector<int>& portalPatches) {
+void ProgressiveSolver::setPortalPatches(const std::vector<int>& portalPatches, int binsN) {
   State& s = *state_;
-  for (int j : portalPatches) {
+  for (int j : portalPatches)
     if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
       throw std::invalid_argument(fmt::format("portal patch {} is not one of the {} patches", j, s.patches.size()));
+  const int bins = directionBinCount(binsN);
+  if (bins > 1) s.backend->binDirections(portalPatches, binsN);
+  s.portalBinsN = binsN;
+  for (int j : portalPatches) {
     s.isPortal[j] = 1;
+    s.portalPower[j].assign(bins, Rgb(0.0));
+    if (bins > 1) s.portalUnshot[j].assign(bins, Rgb(0.0));
   }
 }
 
-const Rgb& ProgressiveSolver::portalPower(int patch) const { return state_->portalPower.at(static_cast<size_t>(patch)); }
-
-Rgb ProgressiveSolver::takePortalPower(int patch) {
-  return std::exchange(state_->portalPower.at(static_cast<size_t>(patch)), Rgb(0.0));
+Rgb ProgressiveSolver::portalPower(int patch) const {
+  Rgb sum(0.0);
+  for (const Rgb& bin : state_->portalPower.at(static_cast<size_t>(patch))) sum += bin;
+  return sum;
 }
 
-void ProgressiveSolver::addPortalPower(int patch, const Rgb& power) {
+std::vector<Rgb> ProgressiveSolver::takePortalPower(int patch) {
+  std::vector<Rgb>& bins = state_->portalPower.at(static_cast<size_t>(patch));
+  return std::exchange(bins, std::vector<Rgb>(bins.size(), Rgb(0.0)));
+}
+
+void ProgressiveSolver::addPortalPower(int patch, std::span<const Rgb> bins) {
   State& s = *state_;
   const size_t j = static_cast<size_t>(patch);
+  if (!s.isPortal.at(j) || bins.size() != s.portalPower[j].size())
+    throw std::invalid_argument(fmt::format("patch {} is not a portal patch of {} direction bins", patch, bins.size()));
+  Rgb power(0.0);
+  for (const Rgb& bin : bins) power += bin;
   const double powerW = channelSum(power);
   if (!(powerW > 0.0)) return;
+  if (!s.portalUnshot[j].empty())
+    for (size_t b = 0; b < bins.size(); ++b) s.portalUnshot[j][b] += bins[b];
   s.unshotRadiosity.at(j) += power / s.patches[j].areaM2;
   const double before = s.unshotPowerW[j];
   s.unshotPowerW[j] = channelSum(s.unshotRadiosity[j]) * s.patches[j].areaM2;

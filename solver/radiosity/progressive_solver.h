@@ -3,6 +3,7 @@
 // patches with the most unshot power. The CLI loops step(); the viewer interleaves it with frames.
 // It plans the effects the scene calls for (options.effects) and skips the rest, exactly.
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -77,11 +78,16 @@ class ProgressiveSolver {
   // Portal patches (a cell of a cells solve): light reaching their front is neither reflected nor
   // absorbed but waits on them (ledger portalOut) until takePortalPower() moves it to the
   // neighbour cell, whose solve receives it with addPortalPower() (ledger portalIn) as unshot
-  // power of its twin patch. Call before the first step.
-  void setPortalPatches(const std::vector<int>& portalPatches);
-  const Rgb& portalPower(int patch) const;  // what waits on the portal patch
-  Rgb takePortalPower(int patch);  // the same, leaving it empty
-  void addPortalPower(int patch, const Rgb& power);
+  // power of its twin patch. Call before the first step. With binsN > 1 the power is kept per bin
+  // of its direction of travel (directionBinCount(binsN) bins, solver/formfactors/direction_bins.h,
+  // in the frame of the patch's back: the twin's), and a portal patch shoots each bin's power into
+  // that bin's directions; binsN <= 1: one bin, shot diffusely. Throws OptionError when the back
+  // end cannot split rows by direction.
+  void setPortalPatches(const std::vector<int>& portalPatches, int binsN = 0);
+  Rgb portalPower(int patch) const;  // what waits on the portal patch, all bins
+  std::vector<Rgb> takePortalPower(int patch);  // per bin, leaving it empty
+  // Per bin, as many as the patch has (std::invalid_argument otherwise, or for no portal patch).
+  void addPortalPower(int patch, std::span<const Rgb> bins);
   // Changes options().until and untilUnshot of the solve under way (throws OptionError).
   void setStoppingRule(double until, double untilUnshot);
   double convergence() const;

@@ -93,6 +93,19 @@ TEST(Cli, SolveCellsAutoWritesPerCellStatsThatBalance) {
   EXPECT_EQ(j["iterations"], iterations);
 }
 
+TEST(Cli, SolveCellsWithPortalBinsBalancesAndSaysSo) {
+  const std::string stats = tempPath("bins.json");
+  const CommandRun run =
+      radmesh("solve two-rooms --cells auto --portal-bins 4 --resolution 32 --until-unshot 0.05 --quiet --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("in 48 direction bins"), std::string::npos) << run.output;
+  std::ifstream in(stats);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["portal_bins"], 4);
+  EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-9);
+  EXPECT_GT(j["per_cell"][1]["ledger"]["portal_in"].get<double>(), 0.0);
+}
+
 TEST(Cli, BenchCellsComparesTheCellsSolveWithTheWholeBuilding) {
   const std::string json = tempPath("cells.json");
   const CommandRun run = radmesh("bench cells two-rooms --resolution 16 --until-unshot 0.1 --json " + json);
@@ -119,6 +132,9 @@ TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   run = radmesh("solve two-rooms --cells auto --preset paper");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--until-unshot"), std::string::npos) << run.output;
+  run = radmesh("solve two-rooms --cells auto --portal-bins 17");
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("--portal-bins 17 is out of range"), std::string::npos) << run.output;
 }
 
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "solver/formfactors/analytic_form_factor.h"
+#include "solver/formfactors/direction_bins.h"
 #include "solver/projection/hemicube.h"
 #include "solver/scene/scene_error.h"
 #include "solver/projection/single_plane.h"
@@ -52,6 +53,29 @@ ProjectionSummary NativeBackend::projectionSummary() const {
   return {projection_->surface().capturedFraction, projection_->surface().tableSum};
 }
 
+void NativeBackend::binDirections(std::span<const int> shooters, int n) {
+  directional_.assign(patches_.size(), 0);
+  for (int j : shooters) directional_.at(static_cast<size_t>(j)) = 1;
+  binsN_ = n;
+  binTotals_.assign(directionBinCount(n), 0.0);
+  pixelBin_.clear();
+  if (!projection_) {
+    for (size_t b = 0; b < binTotals_.size(); ++b) binTotals_[b] = directionBinFormFactor(n, static_cast<int>(b));
+    return;
+  }
+  const ProjectionSurface& surface = projection_->surface();
+  for (size_t f = 0; f < surface.faces.size(); ++f) {
+    const ProjectionFace& face = surface.faces[f];
+    std::vector<int>& bins = pixelBin_.emplace_back(surface.deltaFormFactors[f].size());
+    for (int row = 0; row < face.height; ++row)
+      for (int column = 0; column < face.width; ++column) {
+        const size_t q = static_cast<size_t>(row) * face.width + column;
+        bins[q] = directionBin(n, face.toLocal(face.pixelCentre(column, row)));
+        binTotals_[bins[q]] += surface.deltaFormFactors[f][q];
+      }
+  }
+}
+
 void NativeBackend::computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) {
   rows.resize(shooters.size());
   for (size_t s = 0; s < shooters.size(); ++s)
@@ -77,7 +101,50 @@ FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int
                              projection.depthTieRank(), projection.projectedAreaPixels()};
     refineSubPixelReceivers(shot, pool_, formFactors_);
   }
-  return assembleRow(shooter, projection.surface().capturedFraction, formFactors_, seenFromFront_);
+  FormFactorRow row = assembleRow(shooter, projection.surface().capturedFraction, formFactors_, seenFromFront_);
+  if (!directional_.empty() && directional_[shooter]) addPixelBins(projection, row);
+  return row;
+}
+
+// Each pixel's delta form factor summed per patch and bin, in pixel order whatever the threads.
+void NativeBackend::addPixelBins(const EnvironmentProjection& projection, FormFactorRow& row) const {
+  const long long bins = static_cast<long long>(binTotals_.size());
+  std::vector<std::pair<long long, double>> hits;  // (patch * bins + bin, delta form factor)
+  for (size_t f = 0; f < projection.itemBuffers().size(); ++f) {
+    const std::vector<int>& items = projection.itemBuffers()[f].items;
+    for (size_t q = 0; q < items.size(); ++q)
+      if (items[q] != ItemBuffer::kNone)
+        hits.emplace_back(items[q] * bins + pixelBin_[f][q], projection.surface().deltaFormFactors[f][q]);
+  }
+  std::stable_sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  row.binTotals = binTotals_;
+  row.binBackFaces.assign(binTotals_.size(), 0.0);
+  for (size_t k = 0; k < hits.size();) {
+    const long long key = hits[k].first;
+    double sum = 0.0;
+    for (; k < hits.size() && hits[k].first == key; ++k) sum += hits[k].second;
+    const int patch = static_cast<int>(key / bins), bin = static_cast<int>(key % bins);
+    if (seenFromFront_[patch])
+      row.binShares.push_back({patch, bin, sum});
+    else
+      row.binBackFaces[bin] += sum;
+  }
+}
+
+void NativeBackend::addAnalyticBins(int shooter, FormFactorRow& row) const {
+  row.binTotals = binTotals_;
+  row.binBackFaces.assign(binTotals_.size(), 0.0);
+  for (size_t j = 0; j < patches_.size(); ++j) {
+    if (!(formFactors_[j] > 0.0)) continue;
+    const LocalPolygon local = toShooterFrame(patches_[shooter], patches_[j]);
+    splitOverDirectionBins(binsN_, local.corners(), [&](int bin, double f) {
+      if (!(f > 0.0)) return;
+      if (seenFromFront_[j])
+        row.binShares.push_back({static_cast<int>(j), bin, f});
+      else
+        row.binBackFaces[bin] += f;
+    });
+  }
 }
 
 FormFactorRow NativeBackend::analyticRow(int shooter) {
@@ -113,6 +180,7 @@ FormFactorRow NativeBackend::analyticRow(int shooter) {
     for (double& f : row.formFactors) f /= sum;
     row.backFaces /= sum;
   }
+  if (!directional_.empty() && directional_[shooter]) addAnalyticBins(shooter, row);
   return row;
 }
 

@@ -16,6 +16,7 @@ class NativeBackend final : public FormFactorBackend {
 
   void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
   ProjectionSummary projectionSummary() const override;
+  void binDirections(std::span<const int> shooters, int n) override;
 
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
 
@@ -24,6 +25,9 @@ class NativeBackend final : public FormFactorBackend {
  private:
   FormFactorRow projectedRow(EnvironmentProjection& projection, int shooter);
   FormFactorRow analyticRow(int shooter);
+  // A directional shooter's split by bin: from the item buffers of its projection, or analytic.
+  void addPixelBins(const EnvironmentProjection& projection, FormFactorRow& row) const;
+  void addAnalyticBins(int shooter, FormFactorRow& row) const;
 
   const Scene& scene_;
   const std::vector<Patch>& patches_;
@@ -34,6 +38,10 @@ class NativeBackend final : public FormFactorBackend {
   std::unique_ptr<EnvironmentProjection> singlePlane_;  // made when first asked for
   std::vector<double> formFactors_;                     // per patch, this shot
   std::vector<char> seenFromFront_;                     // per patch, this shot
+  int binsN_ = 0;                                       // binDirections' n
+  std::vector<char> directional_;                       // per patch: its rows split by bin
+  std::vector<std::vector<int>> pixelBin_;              // per face, per pixel: the bin of its centre
+  std::vector<double> binTotals_;                       // per bin: its pixels' delta form factors, or closed form
 };
 
 }  // namespace radmesh
