@@ -75,7 +75,7 @@ struct ProgressiveSolver::State {
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   void shootLights(IterationRecord& record);
-  void deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape);
+  void deliver(const FormFactorRow& row, const Rgb& power);
   void updateUnshot();
   template <typename Value> void receive(const FormFactorRow& row, const Value& power);
   void passToPortals(const FormFactorRow& row, const Rgb& power);
@@ -167,21 +167,21 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
     ++timesShot[i];
     record.shotPowerW += channelSum(shotPower[s]);
   }
-  for (size_t s = 0; s < shooters.size(); ++s) deliver(rows[s], shotPower[s], plan.escape);
+  for (size_t s = 0; s < shooters.size(); ++s) deliver(rows[s], shotPower[s]);
   updateUnshot();
   record.capturedFraction = rows.empty() ? 0.0 : rows.front().capturedFraction;
 }
 
 // Iteration 1 of a scene with lights: each light's one shot, all from the first state. Their rows
-// are computed on the host for every back end (solver/formfactors/light_rows.h); what escapes is
-// booked even in a closed scene, since a light (the sun) may shine on it from outside.
+// are computed on the host for every back end (solver/formfactors/light_rows.h); what they send
+// past the model or onto its outside never entered it (Ledger::lightOutside).
 void ProgressiveSolver::State::shootLights(IterationRecord& record) {
   ThreadPool pool(options.threads);
   const double nearDepth = sceneNearDepth(patches);
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
     const FormFactorRow row = lightRow(scene, scene.lights[k], patches, options.resolution, nearDepth, pool);
-    deliver(row, lightPower[k], true);
+    deliver(row, lightPower[k]);
     ledger.lightOutside += channelSum(lightPower[k]) * (row.escapedFraction() + row.backFaces);
     record.shotPowerW += channelSum(lightPower[k]);
   }
@@ -190,11 +190,13 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
 }
 
 // Where one row's power goes: not captured, escaped, the backs of one-sided patches, and the
-// receivers (eq. 1.2, or absorbed outright when nothing reflects).
-void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape) {
+// receivers (eq. 1.2, or absorbed outright when nothing reflects). Escape is booked in a closed
+// scene too: pixel centres on a seam where patch edges meet in a T-junction may fall outside
+// both sides by rounding, and that light hits nothing (EffectsPlan::escape).
+void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& power) {
   const double powerW = channelSum(power);
   ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
-  if (bookEscape) ledger.escaped += powerW * row.escapedFraction();
+  ledger.escaped += powerW * row.escapedFraction();
   ledger.absorbed += powerW * row.backFaces;
   ledger.absorbedByBackFaces += powerW * row.backFaces;
   passToPortals(row, power);
