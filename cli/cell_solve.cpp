@@ -15,7 +15,9 @@ namespace radmesh::cli {
 std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
                                            const CellSolveSettings& settings) {
   if (options.backend != Backend::Native)
-    throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
+    throw OptionError("--cells auto runs on the native back end only: each cell's solver would keep its own "
+                      "emulated MP-1 (its PE memory, item buffers and patch state), a machine per cell, too much "
+                      "memory for a building of a hundred rooms; give --backend native, or --cells off");
   const CellPartition partition = findCells(scene, patches);
   auto solver = std::make_unique<CellSolver>(scene, std::move(patches), partition, options, settings);
   fmt::print("cells: {} cells, {} portals, exchanging portal light every {} iterations per cell, {}\n",

@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 prints the message (or the help) and gives each kind of usage error its own code;
+    // every usage error exits 2, as radmesh's own option and scene errors do.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const radmesh::SceneError& e) {
     fmt::print(stderr, "radmesh: error: {}\n", e.what());
     return 2;

@@ -20,7 +20,7 @@ struct Daylight {
   double skyLux = 0.0;  // horizontal illuminance of the unobstructed sky; 0: no sky
   SkyModel sky = SkyModel::Uniform;
   Vec3 up{0.0, 0.0, 1.0};
-  std::vector<Light> sun;  // --sun: the sun's directional light, joining the scene's own lights
+  std::vector<Light> sun{};  // --sun: the sun's directional light, joining the scene's own lights
 
 };
 

@@ -82,6 +82,7 @@ bool projectParallel(const LocalPolygon& patch, const ProjectionFace& face, Scre
   out.inverseDepthX = m.x / (m.z * scaleA);
   out.inverseDepthY = m.y / (m.z * scaleB);
   out.inverseDepthC = (m.x * face.a0 + m.y * face.b0 - patch.planeOffset) / m.z;
+  out.parallel = true;
   return true;
 }
 

@@ -62,6 +62,7 @@ struct ScreenPolygon {
   // 1/depth is affine in pixel coordinates under a perspective projection: true perspective
   // depth anywhere on the patch, from its plane (robust for slivers, unlike vertex interpolation).
   double inverseDepthX = 0.0, inverseDepthY = 0.0, inverseDepthC = 0.0;
+  bool parallel = false;  // a light's parallel beam (its depth ties: scan_conversion.h)
 };
 
 // Clips against depth > nearDepth and projects. False when nothing is left in front.

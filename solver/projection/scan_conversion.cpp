@@ -60,6 +60,7 @@ bool setupPolygon(const ScreenPolygon& polygon, int width, int height, int id, i
   setup.id = id;
   setup.rank = rank;
   setup.areaPixels = 0.5 * std::abs(doubleArea);
+  setup.depthTieTolerance = polygon.parallel ? kBeamDepthTieTolerance : kDepthTieTolerance;
   setup.inverseDepthX = polygon.inverseDepthX;
   setup.inverseDepthY = polygon.inverseDepthY;
   setup.inverseDepthC = polygon.inverseDepthC;
@@ -185,7 +186,7 @@ void rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int 
     for (int column = left; column < right; ++column) {
       const double inverseDepth = setup.inverseDepthX * (column + 0.5) + rowPart;
       const int there = items[column];
-      if (there == ItemBuffer::kNone || closer(inverseDepth, setup.rank, depths[column], rankOf[there])) {
+      if (there == ItemBuffer::kNone || closer(inverseDepth, setup.rank, depths[column], rankOf[there], setup.depthTieTolerance)) {
         items[column] = setup.id;
         depths[column] = inverseDepth;
       }

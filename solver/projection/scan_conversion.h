@@ -37,6 +37,7 @@ struct PolygonSetup {
   int columnBegin = 0, columnEnd = 0;  // pixels [columnBegin, columnEnd) x [rowBegin, rowEnd)
   int rowBegin = 0, rowEnd = 0;        // hold every pixel centre the polygon may cover
   double areaPixels = 0.0;             // projected area, in pixels
+  double depthTieTolerance = 0.0;     // for closer(): kDepthTieTolerance, or kBeamDepthTieTolerance
 };
 
 // False when the polygon has no area or lies wholly outside the width x height face.
@@ -56,11 +57,16 @@ double inverseDepthAt(const PolygonSetup& setup, int column, int row);
 
 // z-compare: is A in front of B? Depths equal to a relative tolerance (coplanar patches) are
 // ordered by rank, so the winner does not depend on the order patches are drawn in.
+// A light's parallel beam ties only what rounding cannot tell apart: depth along it is affine and
+// exact to a few ulps, while 1e-6 would tie the pixels within 1e-4 of one of a closed room's
+// corners, where the room's inside, when its rank is lower, let the sun in through the seam.
 inline constexpr double kDepthTieTolerance = 1e-6;
-inline bool closer(double inverseDepthA, int rankA, double inverseDepthB, int rankB) {
+inline constexpr double kBeamDepthTieTolerance = 1e-12;
+inline bool closer(double inverseDepthA, int rankA, double inverseDepthB, int rankB,
+                   double tolerance = kDepthTieTolerance) {
   const double difference = inverseDepthA - inverseDepthB;
   const double scale = std::max(std::abs(inverseDepthA), std::abs(inverseDepthB));
-  if (std::abs(difference) <= kDepthTieTolerance * scale) return rankA < rankB;
+  if (std::abs(difference) <= tolerance * scale) return rankA < rankB;
   return difference > 0.0;  // the larger 1/depth is the nearer
 }
 

@@ -124,7 +124,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
   std::vector<bool> meshFacesB(partition.portals.size());
   for (size_t p = 0; p < partition.portals.size(); ++p) {
     const Portal& portal = partition.portals[p];
-    Scene opening{scene.source, {portalMaterial}, {{portal.vertices, 0, fmt::format("portal {}", p)}}};
+    Scene opening{scene.source, {portalMaterial}, {{portal.vertices, 0, fmt::format("portal {}", p)}}, {}, scene.upAxis};
     portalMesh[p] = meshScene(opening, settings.cellM);
     const Vec3 aToB = centre(partition.cells[portal.cellB]) - centre(partition.cells[portal.cellA]);
     meshFacesB[p] = glm::dot(newellNormal(portal.vertices), aToB) > 0.0;
@@ -142,7 +142,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     CellState& cell = s.cells[c];
     cell.name = c < partitionCells ? partition.cells[c].name : "outside";
     cell.buildingPatch = own[c];
-    Scene sub{scene.source, scene.materials, {}};
+    Scene sub{scene.source, scene.materials, {}, {}, scene.upAxis};
     sub.materials.push_back(portalMaterial);
     const int portalMaterialIndex = static_cast<int>(sub.materials.size()) - 1;
     std::vector<char> used(scene.polygons.size(), 0);

@@ -57,7 +57,8 @@ EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, E
 
   const bool closed = isClosed(scene);
   plan.escape = !closed;
-  const std::string escapeWhy = closed ? "the surface is closed: no light can leave the scene"
+  const std::string escapeWhy = closed ? "the surface is closed: no light can leave the scene (what slips through seams "
+                                         "between patches by rounding is still booked as escaped)"
                                        : "the surface has open edges: light leaving through openings is accounted";
 
   plan.nearReceivers = findNearFieldReceivers(patches);

@@ -21,7 +21,8 @@ struct EffectsPlan {
   bool colour = true;           // off: every material and emitter grey, one channel does for three
   bool interreflection = true;  // off: every reflectance zero, one shot per emitter
   bool nearField = true;        // off: no receiver closer to a shooter than the shooter's size
-  bool escape = true;           // off: the scene is closed, no light can leave it
+  bool escape = true;           // off: the scene is closed, no light can leave it (what hits nothing
+                                //   through seams between patches is booked as escaped all the same)
   std::vector<Effect> effects;  // the five above with their reasons, in that order
   // Per shooter patch, the receivers in its near field (solver/formfactors/near_field.h), whatever the mode.
   std::vector<std::vector<int>> nearReceivers;

@@ -82,8 +82,8 @@ struct ProgressiveSolver::State {
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   void shootLights(IterationRecord& record);
-  void deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape);
-  void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins, bool bookEscape);
+  void deliver(const FormFactorRow& row, const Rgb& power);
+  void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins);
   void updateUnshot();
   template <typename Value, typename Incident> void receive(const FormFactorRow& row, Incident incidentOf);
   template <typename Incident> void passToPortals(const FormFactorRow& row, Incident incidentOf);
@@ -180,9 +180,9 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
   for (size_t s = 0; s < shooters.size(); ++s) {
     std::vector<Rgb>& bins = portalUnshot[shooters[s]];
     if (bins.empty()) {
-      deliver(rows[s], shotPower[s], plan.escape);
+      deliver(rows[s], shotPower[s]);
     } else {
-      deliverByBins(rows[s], bins, plan.escape);
+      deliverByBins(rows[s], bins);
       std::fill(bins.begin(), bins.end(), Rgb(0.0));
     }
   }
@@ -191,15 +191,15 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
 }
 
 // Iteration 1 of a scene with lights: each light's one shot, all from the first state. Their rows
-// are computed on the host for every back end (solver/formfactors/light_rows.h); what escapes is
-// booked even in a closed scene, since a light (the sun) may shine on it from outside.
+// are computed on the host for every back end (solver/formfactors/light_rows.h); what they send
+// past the model or onto its outside never entered it (Ledger::lightOutside).
 void ProgressiveSolver::State::shootLights(IterationRecord& record) {
   ThreadPool pool(options.threads);
   const double nearDepth = sceneNearDepth(patches);
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
     const FormFactorRow row = lightRow(scene, scene.lights[k], patches, options.resolution, nearDepth, pool);
-    deliver(row, lightPower[k], true);
+    deliver(row, lightPower[k]);
     ledger.lightOutside += channelSum(lightPower[k]) * (row.escapedFraction() + row.backFaces);
     record.shotPowerW += channelSum(lightPower[k]);
   }
@@ -208,11 +208,13 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
 }
 
 // Where one row's power goes: not captured, escaped, the backs of one-sided patches, and the
-// receivers (eq. 1.2, or absorbed outright when nothing reflects).
-void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& power, bool bookEscape) {
+// receivers (eq. 1.2, or absorbed outright when nothing reflects). Escape is booked in a closed
+// scene too: pixel centres on a seam where patch edges meet in a T-junction may fall outside
+// both sides by rounding, and that light hits nothing (EffectsPlan::escape).
+void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& power) {
   const double powerW = channelSum(power);
   ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
-  if (bookEscape) ledger.escaped += powerW * row.escapedFraction();
+  ledger.escaped += powerW * row.escapedFraction();
   ledger.absorbed += powerW * row.backFaces;
   ledger.absorbedByBackFaces += powerW * row.backFaces;
   passToPortals(row, [&](size_t r) { return power * row.formFactors[r]; });
@@ -231,8 +233,7 @@ void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& powe
 // A portal patch's shot, each bin's power into its own directions: sum_b P_b F_jb / F_b to
 // receiver j. A bin the projection does not cover (F_b = 0: the single plane's grazing bins) is
 // shot diffusely with the whole row, as a portal without bins would be.
-void ProgressiveSolver::State::deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins,
-                                             bool bookEscape) {
+void ProgressiveSolver::State::deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins) {
   std::vector<double> hit(row.binBackFaces);  // per bin: landing on a patch, front or back
   for (const FormFactorRow::BinShare& share : row.binShares) hit[share.bin] += share.formFactor;
   std::vector<Rgb> perFormFactor(bins.size(), Rgb(0.0));  // P_b / F_b
@@ -248,7 +249,7 @@ void ProgressiveSolver::State::deliverByBins(const FormFactorRow& row, const std
     ledger.absorbed += backW;
     ledger.absorbedByBackFaces += backW;
     const double escaped = total - hit[b];  // as FormFactorRow::escapedFraction, per bin
-    if (bookEscape && escaped > 1e-12 * total) ledger.escaped += channelSum(perFormFactor[b]) * escaped;
+    if (escaped > 1e-12 * total) ledger.escaped += channelSum(perFormFactor[b]) * escaped;
   }
   // The receivers of the bins as a row of their own, each with the power reaching it.
   FormFactorRow lit;
@@ -270,7 +271,7 @@ void ProgressiveSolver::State::deliverByBins(const FormFactorRow& row, const std
   } else {
     receive<Rgb>(lit, incidentOf);
   }
-  if (channelSum(uncovered) > 0.0) deliver(row, uncovered, bookEscape);
+  if (channelSum(uncovered) > 0.0) deliver(row, uncovered);
 }
 
 void ProgressiveSolver::State::updateUnshot() {

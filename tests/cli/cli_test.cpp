@@ -129,12 +129,31 @@ TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   run = radmesh("solve two-rooms --cells auto --checkpoint " + tempPath("x.ckpt"));
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--cells off"), std::string::npos) << run.output;
+  run = radmesh("solve two-rooms --cells auto --backend mesh");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("a machine per cell"), std::string::npos) << run.output;
   run = radmesh("solve two-rooms --cells auto --preset paper");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--until-unshot"), std::string::npos) << run.output;
   run = radmesh("solve two-rooms --cells auto --portal-bins 17");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--portal-bins 17 is out of range"), std::string::npos) << run.output;
+}
+
+// CLI11's own refusals (a value not in a list, an unknown flag, a number that is not one) exit 2
+// like radmesh's; help still exits 0.
+TEST(Cli, EveryUsageErrorExits2) {
+  CommandRun run = radmesh("info furnace --cell-groups bogus");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--cell-groups"), std::string::npos) << run.output;
+  run = radmesh("solve furnace --bogus");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--bogus"), std::string::npos) << run.output;
+  run = radmesh("solve furnace --resolution abc");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--resolution"), std::string::npos) << run.output;
+  EXPECT_EQ(radmesh("--help").exitCode, 0);
+  EXPECT_EQ(radmesh("solve --help").exitCode, 0);
 }
 
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {

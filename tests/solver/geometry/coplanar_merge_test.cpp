@@ -45,7 +45,7 @@ TEST(CoplanarMerge, QuadGivenAsTwoTrianglesBecomesTheQuadItself) {
 }
 
 TEST(CoplanarMerge, MergedQuadMeshesExactlyLikeTheQuad) {
-  Scene quad{"quad", {{"lamp", Rgb(0.5), Rgb(1.0)}}, {{kQuad, 0, "quad"}}};
+  Scene quad{"quad", {{"lamp", Rgb(0.5), Rgb(1.0)}}, {{kQuad, 0, "quad"}}, {}};
   Scene split = quad;
   split.polygons = mergeCoplanarTriangles({tri(kQuad[0], kQuad[1], kQuad[2]), tri(kQuad[0], kQuad[2], kQuad[3])});
   const auto a = meshScene(quad, 0.381), b = meshScene(split, 0.381);

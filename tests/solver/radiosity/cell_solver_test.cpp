@@ -147,7 +147,7 @@ TEST(CellSolver, SameForOneAndTwoThreads) {
 // on the same grid, the door an opening the light escapes through.
 TEST(CellSolver, CellWithoutPortalsIsTheOrdinarySolveOfItsRoom) {
   const TwoRooms t;
-  Scene roomA{t.scene.source, t.scene.materials, {}};
+  Scene roomA{t.scene.source, t.scene.materials, {}, {}, t.scene.upAxis};
   std::vector<char> used(t.scene.polygons.size(), 0);
   for (const Patch& p : t.patches)
     if (inRoomA(p)) used[p.polygon] = 1;

@@ -92,7 +92,7 @@ TEST(MeshBackend, SeveralPlanesAtOnceGiveTheRowsOfOneAtATime) {
 // A shooter on the floor looking up at quads facing down (one partly off the plane, one wholly
 // off it, one hiding part of another): their projections are rectangles the test computes itself.
 struct Ceiling {
-  Scene scene{"ceiling", {test::grey(0.5, 1.0)}, {}};
+  Scene scene{"ceiling", {test::grey(0.5, 1.0)}, {}, {}};
   std::vector<Patch> patches;
   Ceiling() {
     patches.push_back(test::makePatch({{-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0}, {-0.05, 0.05, 0}}));
