@@ -5,7 +5,9 @@
 #include <deque>
 #include <fmt/format.h>
 
+#include "solver/formfactors/light_rows.h"
 #include "solver/meshing/meshing.h"
+#include "solver/projection/projection.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -80,13 +82,17 @@ struct CellSolver::State {
   std::vector<int> distance;  // from the focus, -1 where no portal leads
   std::vector<int> order;     // the cells by distance from the focus, then index
   int rounds = 0;
+  // The lights' shots (State::shootLights) less what they handed to the cells: escaped, the backs
+  // of one-sided patches. Part of the building's ledger, in no cell's.
+  Ledger lights;
   ThreadPool pool;
 
   State(std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s)
       : patches(std::move(p)), options(o), settings(s), pool(o.threads) {}
 
-  int shotsThisRound(int cell) const;
+  std::vector<int> shotsThisRound(const Ledger& building) const;
   void exchange();
+  void shootLights(const Scene& scene);
 };
 
 CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const CellPartition& partition,
@@ -97,10 +103,6 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     throw OptionError("--cells auto stops on the unshot power of the whole building alone: give --until 1 with "
                       "--until-unshot (the bake preset does), not a convergence C");
   if (settings.exchangeShots < 1) throw OptionError("--exchange-shots must be at least 1");
-  // A light has no patch, so no cell owns its one shot yet; a beam (the sun) may light every cell.
-  if (!scene.lights.empty())
-    throw OptionError(fmt::format("{} has {} light(s) without a patch (KHR_lights_punctual or --sun), which --cells "
-                                  "auto does not solve yet: use --cells off", scene.source, scene.lights.size()));
   State& s = *state_;
   validatePartition(scene, s.patches.size(), partition);
   s.portalCount = static_cast<int>(partition.portals.size());
@@ -185,6 +187,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
   std::sort(s.links.begin(), s.links.end(), [](const PortalLink& x, const PortalLink& y) {
     return x.cell != y.cell ? x.cell < y.cell : x.patch < y.patch;
   });
+  s.shootLights(scene);
   focus(-1);
 }
 
@@ -210,10 +213,62 @@ void CellSolver::focus(int cell) {
 
 int CellSolver::portalDistance(int cell) const { return state_->distance.at(static_cast<size_t>(cell)); }
 
-int CellSolver::State::shotsThisRound(int cell) const {
-  if (focus < 0) return settings.exchangeShots;
-  const int d = distance[cell] < 0 ? 30 : std::min(distance[cell], 30);
-  return std::max(1, settings.exchangeShots >> d);
+// The round's budget, exchangeShots a cell (with a focus, halved at each portal of distance from
+// it, so that a round stays short), shared in proportion to each cell's unshot power (halved the
+// same way), so that the cells shoot roughly in the order the whole building's solve would. A
+// cell holding more than its share (1/cells) of the stopping threshold shoots at least once, and
+// so does the strongest: the round that shoots nothing is the one after done().
+std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const {
+  const int n = static_cast<int>(cells.size());
+  std::vector<double> weight(n);
+  double total = 0.0, budget = 0.0;
+  for (int c = 0; c < n; ++c) {
+    const int d = distance[c] < 0 ? 30 : std::min(distance[c], 30);
+    weight[c] = std::ldexp(cells[c].solver->ledger().unshot, -d);
+    total += weight[c];
+    budget += std::ldexp(static_cast<double>(settings.exchangeShots), -d);
+  }
+  const double thresholdW = options.untilUnshot * (building.input() - building.lightOutside) / n;
+  const int strongest = static_cast<int>(std::max_element(weight.begin(), weight.end()) - weight.begin());
+  std::vector<int> shots(n, 0);
+  for (int c = 0; c < n; ++c) {
+    if (total > 0.0) shots[c] = static_cast<int>(budget * (weight[c] / total));
+    if (cells[c].solver->ledger().unshot > thresholdW || c == strongest) shots[c] = std::max(shots[c], 1);
+  }
+  return shots;
+}
+
+// Each light's one shot over the whole building's patches (solver/formfactors/light_rows.h), as
+// the whole solve shoots it in its first iteration: what lands on a cell's patches the cell
+// receives as emitted power (ProgressiveSolver::receiveLight); what escapes or lands on the back
+// of a one-sided patch is booked here, in the building's ledger.
+void CellSolver::State::shootLights(const Scene& scene) {
+  if (scene.lights.empty()) return;
+  std::vector<int> cellOf(patches.size()), localOf(patches.size());
+  for (size_t c = 0; c < cells.size(); ++c)
+    for (size_t k = 0; k < cells[c].buildingPatch.size(); ++k)
+      cellOf[cells[c].buildingPatch[k]] = static_cast<int>(c), localOf[cells[c].buildingPatch[k]] = static_cast<int>(k);
+  const double nearDepth = sceneNearDepth(patches);
+  for (const Light& light : scene.lights) {
+    const Rgb power = lightPower(scene, light);
+    const double powerW = channelSum(power);
+    lights.emitted += powerW;
+    if (!(powerW > 0.0)) continue;  // a dark light, or a beam with no window
+    const FormFactorRow row = lightRow(scene, light, patches, options.resolution, nearDepth, pool);
+    std::vector<FormFactorRow> perCell(cells.size());
+    for (size_t r = 0; r < row.receivers.size(); ++r) {  // ascending in the building, so in each cell
+      FormFactorRow& part = perCell[cellOf[row.receivers[r]]];
+      part.receivers.push_back(localOf[row.receivers[r]]);
+      part.formFactors.push_back(row.formFactors[r]);
+    }
+    for (size_t c = 0; c < cells.size(); ++c)
+      if (!perCell[c].receivers.empty()) lights.emitted -= cells[c].solver->receiveLight(perCell[c], power);
+    lights.notCaptured += powerW * (1.0 - row.capturedFraction);
+    lights.escaped += powerW * row.escapedFraction();
+    lights.absorbed += powerW * row.backFaces;
+    lights.absorbedByBackFaces += powerW * row.backFaces;
+    lights.lightOutside += powerW * (row.escapedFraction() + row.backFaces);
+  }
 }
 
 void CellSolver::State::exchange() {
@@ -223,13 +278,13 @@ void CellSolver::State::exchange() {
 
 void CellSolver::round() {
   State& s = *state_;
+  const std::vector<int> shots = s.shotsThisRound(ledger());
   std::vector<int> active;
   for (int c : s.order)
-    if (!s.cells[c].solver->exhausted()) active.push_back(c);
+    if (shots[c] > 0 && !s.cells[c].solver->exhausted()) active.push_back(c);
   s.pool.parallelFor(static_cast<int>(active.size()), [&](int i, int) {
     ProgressiveSolver& solver = *s.cells[active[i]].solver;
-    const int shots = s.shotsThisRound(active[i]);
-    for (int n = 0; n < shots && !solver.exhausted(); ++n) solver.step();
+    for (int n = 0; n < shots[active[i]] && !solver.exhausted(); ++n) solver.step();
   });
   ++s.rounds;
   checkLedger(ledger(), iterations());
@@ -254,8 +309,10 @@ bool CellSolver::done() const {
 Ledger CellSolver::ledger() const {
   const State& s = *state_;
   Ledger total;
-  for (const CellState& cell : s.cells) {
-    const Ledger& l = cell.solver->ledger();
+  std::vector<const Ledger*> parts{&s.lights};
+  for (const CellState& cell : s.cells) parts.push_back(&cell.solver->ledger());
+  for (const Ledger* part : parts) {
+    const Ledger& l = *part;
     total.emitted += l.emitted;
     total.absorbed += l.absorbed;
     total.unshot += l.unshot;

@@ -82,6 +82,11 @@ class ProgressiveSolver {
   const Rgb& portalPower(int patch) const;  // what waits on the portal patch
   Rgb takePortalPower(int patch);  // the same, leaving it empty
   void addPortalPower(int patch, const Rgb& power);
+  // A cells solve's share of a light's one shot over the whole building (CellSolver): `row` gives
+  // the fraction of the light's `power` reaching each of this solve's patches (local indices,
+  // ascending). It arrives as emitted power (ledger emitted), absorbed and reflected as in the
+  // whole solve's first iteration. Returns the watts booked. Call before the first step.
+  double receiveLight(FormFactorRow row, const Rgb& power);
   // Changes options().until and untilUnshot of the solve under way (throws OptionError).
   void setStoppingRule(double until, double untilUnshot);
   double convergence() const;
