@@ -80,7 +80,6 @@ struct CellSolver::State {
   int portalCount = 0;
   int focus = -1;
   std::vector<int> distance;  // from the focus, -1 where no portal leads
-  std::vector<int> order;     // the cells by distance from the focus, then index
   int rounds = 0;
   // The lights' shots (State::shootLights) less what they handed to the cells: escaped, the backs
   // of one-sided patches. Part of the building's ledger, in no cell's.
@@ -90,6 +89,8 @@ struct CellSolver::State {
   State(std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s)
       : patches(std::move(p)), options(o), settings(s), pool(o.threads) {}
 
+  // Portals from the focus, 30 where none leads (a cell's weight halves with each).
+  int hops(int cell) const { return distance[cell] < 0 ? 30 : std::min(distance[cell], 30); }
   std::vector<int> shotsThisRound(const Ledger& building) const;
   void exchange();
   void shootLights(const Scene& scene);
@@ -205,10 +206,6 @@ void CellSolver::focus(int cell) {
       for (int next : s.neighbours[queue.front()])
         if (s.distance[next] < 0) s.distance[next] = s.distance[queue.front()] + 1, queue.push_back(next);
   }
-  s.order.resize(n);
-  for (int c = 0; c < n; ++c) s.order[c] = c;
-  auto rank = [&](int c) { return s.distance[c] < 0 ? n : s.distance[c]; };
-  std::stable_sort(s.order.begin(), s.order.end(), [&](int a, int b) { return rank(a) < rank(b); });
 }
 
 int CellSolver::portalDistance(int cell) const { return state_->distance.at(static_cast<size_t>(cell)); }
@@ -223,7 +220,7 @@ std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const
   std::vector<double> weight(n);
   double total = 0.0, budget = 0.0;
   for (int c = 0; c < n; ++c) {
-    const int d = distance[c] < 0 ? 30 : std::min(distance[c], 30);
+    const int d = hops(c);
     weight[c] = std::ldexp(cells[c].solver->ledger().unshot, -d);
     total += weight[c];
     budget += std::ldexp(static_cast<double>(settings.exchangeShots), -d);
@@ -280,8 +277,14 @@ void CellSolver::round() {
   State& s = *state_;
   const std::vector<int> shots = s.shotsThisRound(ledger());
   std::vector<int> active;
-  for (int c : s.order)
+  for (int c = 0; c < cellCount(); ++c)
     if (shots[c] > 0 && !s.cells[c].solver->exhausted()) active.push_back(c);
+  // Nearest the focus first; among cells as near, the longest first (shots times patches), so that
+  // the threads finish the round together. Which thread runs a cell does not change its result.
+  auto cost = [&](int c) { return static_cast<double>(shots[c]) * s.cells[c].solver->patches().size(); };
+  std::stable_sort(active.begin(), active.end(), [&](int a, int b) {
+    return s.hops(a) != s.hops(b) ? s.hops(a) < s.hops(b) : cost(a) > cost(b);
+  });
   s.pool.parallelFor(static_cast<int>(active.size()), [&](int i, int) {
     ProgressiveSolver& solver = *s.cells[active[i]].solver;
     for (int n = 0; n < shots[active[i]] && !solver.exhausted(); ++n) solver.step();

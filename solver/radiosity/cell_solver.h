@@ -47,7 +47,7 @@ class CellSolver {
   // The cells shoot their shares of the round's budget (CellSolveSettings::exchangeShots), in
   // proportion to their unshot power; a cell with more than 1/cells of the stopping threshold
   // unshot shoots at least once, and so does the strongest. The cells run in parallel on
-  // options.threads; then the power waiting on portals moves to the twins, in cell and patch
+  // options.threads, the longest started first; then the power waiting on portals moves to the twins, in cell and patch
   // order. The building's ledger is checked before and after the exchange.
   void round();
   // The building's unshot power (with what waits on portals) at most options.untilUnshot of the
