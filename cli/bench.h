@@ -64,6 +64,7 @@ struct BenchCellsArgs {
   int focusCell = 0;           // the camera's cell
   int maxIterations = 1'000'000;
   bool skipWhole = false;      // no whole-building solve (and so no error per room)
+  bool focusOnly = false;      // the focus run alone: no whole-building solve, no solve to untilUnshot
 };
 
 // The cells solve beside the whole building's (docs/cells.md): time, iterations, the error of the

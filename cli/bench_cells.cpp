@@ -57,6 +57,7 @@ struct FocusRun {
   int iterations = 0;         // the focus cell's
   int buildingIterations = 0;
   double arrivedW = 0.0;      // the focus cell's light: emitted in it and come in through its portals
+  int cell = 0;
   std::string name;
 };
 
@@ -82,8 +83,26 @@ FocusRun focusRun(const Scene& scene, const std::vector<Patch>& patches, const C
   run.iterations = solver.cellFigures()[args.focusCell].iterations;
   run.buildingIterations = solver.iterations();
   run.arrivedW = solver.cellSolver(args.focusCell).ledger().input();
+  run.cell = args.focusCell;
   run.name = solver.cellFigures()[args.focusCell].name;
   return run;
+}
+
+const FocusRun& printFocus(const FocusRun& focus, const BenchCellsArgs& args) {
+  fmt::print("{:<28} {:>10.3f} {:>10} {:>11}   cell {} ({}) to {:g}% of its arriving light unshot, after {:.3f} s "
+             "of setup; {} iterations in all cells\n",
+             "focus cell first, 1 thread", focus.seconds, "", focus.iterations, args.focusCell, focus.name,
+             100.0 * args.focusUnshot, focus.setupSeconds, focus.buildingIterations);
+  return focus;
+}
+
+nlohmann::json focusJson(const FocusRun& focus) {
+  return {{"focus_cell", focus.cell},
+          {"focus_seconds", focus.seconds},
+          {"focus_setup_seconds", focus.setupSeconds},
+          {"focus_iterations", focus.iterations},
+          {"focus_building_iterations", focus.buildingIterations},
+          {"focus_arrived_w", focus.arrivedW}};
 }
 
 // Per lit room, the cells solve's reflected light against the whole building's: the rooms, the
@@ -134,6 +153,10 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
                             {"cells", partition.cells.size()},
                             {"portals", partition.portals.size()}};
   fmt::print("{:<28} {:>10} {:>10} {:>11} {:>8}\n", "", "seconds", "wall s", "iterations", "unshot");
+  if (args.focusOnly) {
+    result.update(focusJson(printFocus(focusRun(scene, patches, partition, o, args), args)));
+    return result;
+  }
   std::vector<Rgb> wholeRadiosity;
   double wholeSeconds = 0.0;
   if (!args.skipWhole) {
@@ -158,25 +181,15 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
              "cells, 2 threads", parallel.seconds, parallel.wallSeconds, parallel.iterations,
              100.0 * parallel.unshotFraction, one.wallSeconds / parallel.wallSeconds,
              identical ? "bitwise identical" : "DIFFERENT RESULTS");
-  const FocusRun focus = focusRun(scene, patches, partition, o, args);
-  fmt::print("{:<28} {:>10.3f} {:>10} {:>11}   cell {} ({}) to {:g}% of its arriving light unshot, after {:.3f} s "
-             "of setup; {} iterations in all cells\n",
-             "focus cell first, 1 thread", focus.seconds, "", focus.iterations, args.focusCell,
-             focus.name, 100.0 * args.focusUnshot, focus.setupSeconds,
-             focus.buildingIterations);
+  const FocusRun focus = printFocus(focusRun(scene, patches, partition, o, args), args);
   result.update({{"cells_seconds", one.seconds},
                  {"cells_wall_seconds", one.wallSeconds},
                  {"cells_iterations", one.iterations},
                  {"cells_rounds", one.rounds},
                  {"cells_two_threads_seconds", parallel.seconds},
                  {"two_threads_speedup", one.wallSeconds / parallel.wallSeconds},
-                 {"two_threads_identical", identical},
-                 {"focus_cell", args.focusCell},
-                 {"focus_seconds", focus.seconds},
-                 {"focus_setup_seconds", focus.setupSeconds},
-                 {"focus_iterations", focus.iterations},
-                 {"focus_building_iterations", focus.buildingIterations},
-                 {"focus_arrived_w", focus.arrivedW}});
+                 {"two_threads_identical", identical}});
+  result.update(focusJson(focus));
   if (args.skipWhole) return result;
   const RoomErrors errors = roomErrors(scene, patches, partition, wholeRadiosity, one.radiosity);
   fmt::print("reflected light per room against the whole building: largest error {:.2f}%, mean {:.2f}% over {} lit "

@@ -93,6 +93,7 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_option("--focus-unshot", args->focusUnshot, "The focus cell's unshot fraction to time to")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per solve")->capture_default_str();
   cmd->add_flag("--skip-whole", args->skipWhole, "No whole-building solve (for buildings where it takes too long)");
+  cmd->add_flag("--focus-only", args->focusOnly, "Only the focus cell's time to --focus-unshot (no solve to --until-unshot)");
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->callback([args, json] {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");

@@ -123,6 +123,14 @@ TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
   EXPECT_GT(scene["focus_iterations"].get<int>(), 0);
   EXPECT_GT(scene["focus_arrived_w"].get<double>(), 0.0);  // room B's light, all through the door
   EXPECT_EQ(run.output.find("whole building, 1 thread"), std::string::npos) << run.output;
+
+  // --focus-only: the focus run alone, the same as in the full bench.
+  const std::string focus = tempPath("focus.json");
+  ASSERT_EQ(radmesh("bench cells two-rooms --resolution 16 --until-unshot 0.1 --focus-only --focus-cell 1 --json " + focus).exitCode, 0);
+  const auto only = nlohmann::json::parse(std::ifstream(focus))["scenes"][0];
+  EXPECT_FALSE(only.contains("cells_seconds"));
+  EXPECT_EQ(only["focus_iterations"], scene["focus_iterations"]);
+  EXPECT_EQ(only["focus_arrived_w"], scene["focus_arrived_w"]);
 }
 
 // bench solve --cells auto times the cells solve to the unshot fraction: reached, the same
