@@ -229,7 +229,7 @@ std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const
   const int strongest = static_cast<int>(std::max_element(weight.begin(), weight.end()) - weight.begin());
   std::vector<int> shots(n, 0);
   for (int c = 0; c < n; ++c) {
-    if (total > 0.0) shots[c] = static_cast<int>(budget * (weight[c] / total));
+    if (total > 0.0) shots[c] = static_cast<int>(std::min(budget * (weight[c] / total), 1e9));  // no int overflow
     if (cells[c].solver->ledger().unshot > thresholdW || c == strongest) shots[c] = std::max(shots[c], 1);
   }
   return shots;
