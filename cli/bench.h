@@ -20,8 +20,11 @@ struct BenchSolveArgs {
   std::vector<int> shooters{1};    // k per iteration
   std::string backend = "native";
   double until = 0.95;
+  double untilUnshot = 0.0;  // and stop at this unshot fraction (0: no such rule)
   int maxIterations = 5000;
   int threads = 1;
+  std::string cellsMode = "off";  // --cells auto: the cells solve (docs/cells.md), timed per iteration
+  int exchangeShots = 16;
   std::vector<double> cells;  // patch-count scaling sweep; empty: skipped
   int scalingResolution = 256;
   int scalingIterations = 20;
@@ -61,6 +64,8 @@ struct BenchCellsArgs {
   int portalBins = 0;          // CellSolveSettings::portalBins
   int focusCell = 0;           // the camera's cell
   int maxIterations = 1'000'000;
+  bool skipWhole = false;      // no whole-building solve (and so no error per room)
+  bool focusOnly = false;      // the focus run alone: no whole-building solve, no solve to untilUnshot
 };
 
 // The cells solve beside the whole building's (docs/cells.md): time, iterations, the error of the

@@ -32,39 +32,103 @@ std::vector<double> reflectedPerCell(const Scene& scene, const std::vector<Patch
 }
 
 struct CellsRun {
-  double seconds = 0.0;
+  double seconds = 0.0;      // benchSeconds: one thread, its CPU time; more, wall time
+  double wallSeconds = 0.0;
   int iterations = 0;
   int rounds = 0;
   double unshotFraction = 0.0;
   std::vector<Rgb> radiosity;
 };
 
+double wallSeconds() { return benchSeconds(2); }
+
 CellsRun runCells(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
                   SolveOptions o, const BenchCellsArgs& args) {
-  const double start = benchSeconds(o.threads);
+  const double start = benchSeconds(o.threads), wallStart = wallSeconds();
   CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots, args.portalBins});
   while (!solver.done()) solver.round();
-  return {benchSeconds(o.threads) - start, solver.iterations(), solver.rounds(), solver.ledger().unshotFraction(),
-          solver.radiosity()};
+  return {benchSeconds(o.threads) - start, wallSeconds() - wallStart, solver.iterations(), solver.rounds(),
+          solver.ledger().unshotFraction(), solver.radiosity()};
 }
 
-// The camera's cell first: seconds until its unshot power is at most focusUnshot of what it has
-// had (emitted and arrived through portals), once light has reached it.
-double focusSeconds(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
-                    const SolveOptions& o, const BenchCellsArgs& args, int& iterations) {
+struct FocusRun {
+  double setupSeconds = 0.0;  // the cell solvers built (the portals meshed, the lights shot)
+  double seconds = 0.0;       // then, until the focus cell reached focusUnshot
+  int iterations = 0;         // the focus cell's
+  int buildingIterations = 0;
+  double arrivedW = 0.0;      // the focus cell's light: emitted in it and come in through its portals
+  int cell = 0;
+  std::string name;
+};
+
+// The camera's cell first: the time until its unshot power is at most focusUnshot of the light it
+// has had (ledger input: emitted in it, lights' direct light on it, and what came in through its
+// portals), once light has reached it; checked between rounds. One thread, its CPU time.
+FocusRun focusRun(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
+                  const SolveOptions& o, const BenchCellsArgs& args) {
+  FocusRun run;
   const double start = benchSeconds(o.threads);
   CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots, args.portalBins});
   if (args.focusCell < 0 || args.focusCell >= solver.cellCount())
     throw OptionError(fmt::format("--focus-cell {} is not a cell of {}: give 0 to {}", args.focusCell, scene.source,
                                   solver.cellCount() - 1));
   solver.focus(args.focusCell);
+  run.setupSeconds = benchSeconds(o.threads) - start;
   auto reached = [&] {
     const Ledger& l = solver.cellSolver(args.focusCell).ledger();
     return l.input() > 0.0 && l.unshotFraction() <= args.focusUnshot;
   };
   while (!solver.done() && !(solver.rounds() > 0 && reached())) solver.round();
-  iterations = solver.cellFigures()[args.focusCell].iterations;
-  return benchSeconds(o.threads) - start;
+  run.seconds = benchSeconds(o.threads) - start - run.setupSeconds;
+  run.iterations = solver.cellFigures()[args.focusCell].iterations;
+  run.buildingIterations = solver.iterations();
+  run.arrivedW = solver.cellSolver(args.focusCell).ledger().input();
+  run.cell = args.focusCell;
+  run.name = solver.cellFigures()[args.focusCell].name;
+  return run;
+}
+
+const FocusRun& printFocus(const FocusRun& focus, const BenchCellsArgs& args) {
+  fmt::print("{:<28} {:>10.3f} {:>10} {:>11}   cell {} ({}) to {:g}% of its arriving light unshot, after {:.3f} s "
+             "of setup; {} iterations in all cells\n",
+             "focus cell first, 1 thread", focus.seconds, "", focus.iterations, args.focusCell, focus.name,
+             100.0 * args.focusUnshot, focus.setupSeconds, focus.buildingIterations);
+  return focus;
+}
+
+nlohmann::json focusJson(const FocusRun& focus) {
+  return {{"focus_cell", focus.cell},
+          {"focus_seconds", focus.seconds},
+          {"focus_setup_seconds", focus.setupSeconds},
+          {"focus_iterations", focus.iterations},
+          {"focus_building_iterations", focus.buildingIterations},
+          {"focus_arrived_w", focus.arrivedW}};
+}
+
+// Per lit room, the cells solve's reflected light against the whole building's: the rooms, the
+// largest and the mean of the errors.
+struct RoomErrors {
+  nlohmann::json rooms = nlohmann::json::array();
+  double worst = 0.0, mean = 0.0;
+  int counted = 0;
+};
+
+RoomErrors roomErrors(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
+                      const std::vector<Rgb>& whole, const std::vector<Rgb>& cells) {
+  const std::vector<double> expected = reflectedPerCell(scene, patches, partition, whole);
+  const std::vector<double> got = reflectedPerCell(scene, patches, partition, cells);
+  double largest = 0.0;
+  for (double e : expected) largest = std::max(largest, e);
+  RoomErrors r;
+  double sum = 0.0;
+  for (size_t c = 0; c < expected.size(); ++c) {
+    if (!(expected[c] > 1e-3 * largest)) continue;  // an unlit room has no relative error
+    const double error = got[c] / expected[c] - 1.0;
+    r.worst = std::max(r.worst, std::abs(error)), sum += std::abs(error), ++r.counted;
+    r.rooms.push_back({{"cell", partition.cells[c].name}, {"whole", expected[c]}, {"cells", got[c]}, {"error", error}});
+  }
+  r.mean = r.counted > 0 ? sum / r.counted : 0.0;
+  return r;
 }
 
 nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
@@ -80,73 +144,67 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
   o.effects = EffectsMode::All;  // the same projection in every cell as in the whole building
   o.threads = 1;
   validateOptions(o);
-  fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, exchange every {} iterations, "
+  fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, {} shots a cell a round on average, "
              "portal bins {}\n",
              scene.source, patches.size(), partition.cells.size(), partition.portals.size(), args.projection,
              args.resolution, 100.0 * args.untilUnshot, args.exchangeShots, args.portalBins);
 
-  double start = benchSeconds(1);
-  ProgressiveSolver whole(scene, patches, o);
-  while (!whole.done()) whole.step();
-  const double wholeSeconds = benchSeconds(1) - start;
+  nlohmann::json result = {{"scene", scene.source},
+                            {"patches", patches.size()},
+                            {"cells", partition.cells.size()},
+                            {"portals", partition.portals.size()}};
+  fmt::print("{:<28} {:>10} {:>10} {:>11} {:>8}\n", "", "seconds", "wall s", "iterations", "unshot");
+  if (args.focusOnly) {
+    result.update(focusJson(printFocus(focusRun(scene, patches, partition, o, args), args)));
+    return result;
+  }
+  std::vector<Rgb> wholeRadiosity;
+  double wholeSeconds = 0.0;
+  if (!args.skipWhole) {
+    const double start = benchSeconds(1), wallStart = wallSeconds();
+    ProgressiveSolver whole(scene, patches, o);
+    while (!whole.done()) whole.step();
+    wholeSeconds = benchSeconds(1) - start;
+    wholeRadiosity = whole.radiosity();
+    fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%\n", "whole building, 1 thread", wholeSeconds,
+               wallSeconds() - wallStart, whole.history().size(), 100.0 * whole.ledger().unshotFraction());
+    result.update({{"whole_seconds", wholeSeconds}, {"whole_iterations", whole.history().size()}});
+  }
   const CellsRun one = runCells(scene, patches, partition, o, args);
+  fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%{}\n", "cells, 1 thread", one.seconds, one.wallSeconds,
+             one.iterations, 100.0 * one.unshotFraction,
+             args.skipWhole ? "" : fmt::format("   {:.1f}x faster", wholeSeconds / one.seconds));
   SolveOptions two = o;
   two.threads = 2;
   const CellsRun parallel = runCells(scene, patches, partition, two, args);
   const bool identical = parallel.radiosity == one.radiosity;
-
-  const std::vector<double> expected = reflectedPerCell(scene, patches, partition, whole.radiosity());
-  const std::vector<double> got = reflectedPerCell(scene, patches, partition, one.radiosity);
-  double largest = 0.0;
-  for (double e : expected) largest = std::max(largest, e);
-  nlohmann::json rooms = nlohmann::json::array();
-  double worst = 0.0, sum = 0.0;
-  int counted = 0;
-  for (size_t c = 0; c < expected.size(); ++c) {
-    if (!(expected[c] > 1e-3 * largest)) continue;  // an unlit room has no relative error
-    const double error = got[c] / expected[c] - 1.0;
-    worst = std::max(worst, std::abs(error)), sum += std::abs(error), ++counted;
-    rooms.push_back({{"cell", partition.cells[c].name}, {"whole", expected[c]}, {"cells", got[c]}, {"error", error}});
-  }
-  int focusIterations = 0;
-  const double focus = focusSeconds(scene, patches, partition, o, args, focusIterations);
-
-  fmt::print("{:<28} {:>10} {:>11} {:>8}\n", "", "seconds", "iterations", "unshot");
-  fmt::print("{:<28} {:>10.3f} {:>11} {:>7.2f}%\n", "whole building, 1 thread", wholeSeconds, whole.history().size(),
-             100.0 * whole.ledger().unshotFraction());
-  fmt::print("{:<28} {:>10.3f} {:>11} {:>7.2f}%   {:.1f}x faster\n", "cells, 1 thread", one.seconds, one.iterations,
-             100.0 * one.unshotFraction, wholeSeconds / one.seconds);
-  fmt::print("{:<28} {:>10.3f} {:>11} {:>7.2f}%   {:.2f}x on 2 threads (wall), {}\n", "cells, 2 threads",
-             parallel.seconds, parallel.iterations, 100.0 * parallel.unshotFraction, one.seconds / parallel.seconds,
+  fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%   {:.2f}x on 2 threads (wall against wall), {}\n",
+             "cells, 2 threads", parallel.seconds, parallel.wallSeconds, parallel.iterations,
+             100.0 * parallel.unshotFraction, one.wallSeconds / parallel.wallSeconds,
              identical ? "bitwise identical" : "DIFFERENT RESULTS");
-  fmt::print("{:<28} {:>10.3f} {:>11}   cell {} to {:g}% of its light unshot\n", "focus cell first, 1 thread", focus,
-             focusIterations, args.focusCell, 100.0 * args.focusUnshot);
+  const FocusRun focus = printFocus(focusRun(scene, patches, partition, o, args), args);
+  result.update({{"cells_seconds", one.seconds},
+                 {"cells_wall_seconds", one.wallSeconds},
+                 {"cells_iterations", one.iterations},
+                 {"cells_rounds", one.rounds},
+                 {"cells_two_threads_seconds", parallel.seconds},
+                 {"two_threads_speedup", one.wallSeconds / parallel.wallSeconds},
+                 {"two_threads_identical", identical}});
+  result.update(focusJson(focus));
+  if (args.skipWhole) return result;
+  const RoomErrors errors = roomErrors(scene, patches, partition, wholeRadiosity, one.radiosity);
   fmt::print("reflected light per room against the whole building: largest error {:.2f}%, mean {:.2f}% over {} lit "
              "rooms\n",
-             100.0 * worst, counted > 0 ? 100.0 * sum / counted : 0.0, counted);
-  return {{"scene", scene.source},
-          {"patches", patches.size()},
-          {"cells", partition.cells.size()},
-          {"portals", partition.portals.size()},
-          {"whole_seconds", wholeSeconds},
-          {"whole_iterations", whole.history().size()},
-          {"cells_seconds", one.seconds},
-          {"cells_iterations", one.iterations},
-          {"cells_rounds", one.rounds},
-          {"cells_two_threads_seconds", parallel.seconds},
-          {"two_threads_identical", identical},
-          {"focus_cell", args.focusCell},
-          {"focus_seconds", focus},
-          {"focus_iterations", focusIterations},
-          {"largest_room_error", worst},
-          {"mean_room_error", counted > 0 ? sum / counted : 0.0},
-          {"rooms", rooms}};
+             100.0 * errors.worst, 100.0 * errors.mean, errors.counted);
+  result.update({{"largest_room_error", errors.worst}, {"mean_room_error", errors.mean}, {"rooms", errors.rooms}});
+  return result;
 }
 
 }  // namespace
 
 nlohmann::json benchCells(const BenchCellsArgs& args) {
-  fmt::print("times: one thread, the solving thread's CPU time; two threads, wall time\n");
+  fmt::print("seconds: one thread, the solving thread's CPU time; two threads, wall time; the speed-up on two "
+             "threads is wall time against wall time\n");
   nlohmann::json scenes = nlohmann::json::array();
   for (const std::string& name : args.scenes) scenes.push_back(benchScene(name, args));
   return {{"projection", args.projection}, {"resolution", args.resolution}, {"until_unshot", args.untilUnshot},

@@ -32,7 +32,13 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--shooters", args->shooters, "Shooters k per iteration to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--backend", args->backend, "native or mesh (emulated MP-1)")->capture_default_str();
   cmd->add_option("--until", args->until, "Convergence to time to")->capture_default_str();
+  cmd->add_option("--until-unshot", args->untilUnshot, "Or the unshot fraction to time to (0: none)")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per run")->capture_default_str();
+  cmd->add_option("--cells", args->cellsMode, "auto: time the cells solve (with --until 1 --until-unshot F); off")
+      ->capture_default_str();
+  cmd->add_option("--exchange-shots", args->exchangeShots, "With --cells auto: shots per cell per round, on average")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
@@ -80,13 +86,15 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_option("--projection", args->projection, "plane, hemicube or analytic")->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "N of the projection")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Both solves stop at this unshot fraction")->capture_default_str();
-  cmd->add_option("--exchange-shots", args->exchangeShots, "Iterations per cell between portal exchanges")
+  cmd->add_option("--exchange-shots", args->exchangeShots, "Shots a cell a round between portal exchanges, on average")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--focus-cell", args->focusCell, "The camera's cell, solved first")->capture_default_str();
   cmd->add_option("--focus-unshot", args->focusUnshot, "The focus cell's unshot fraction to time to")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per solve")->capture_default_str();
+  cmd->add_flag("--skip-whole", args->skipWhole, "No whole-building solve (for buildings where it takes too long)");
+  cmd->add_flag("--focus-only", args->focusOnly, "Only the focus cell's time to --focus-unshot (no solve to --until-unshot)");
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->callback([args, json] {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");

@@ -6,6 +6,9 @@
 
 #include "cli/bench.h"
 #include "cli/bench_timing.h"
+#include "cli/cell_solve.h"
+#include "solver/cells/find_cells.h"
+#include "solver/radiosity/cell_solver.h"
 #include "cli/stats_json.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/progressive_solver.h"
@@ -15,6 +18,10 @@
 namespace radmesh::cli {
 
 namespace {
+
+bool reachedUnshot(const SolveOptions& o, double unshotFraction) {
+  return o.untilUnshot > 0.0 && unshotFraction <= o.untilUnshot;
+}
 
 struct Timing {
   double msPerIteration = 0.0;  // median over the measured iterations
@@ -45,7 +52,31 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
   t.secondsToUntil = benchSeconds(options.threads) - start;
   t.msPerIteration = 1e3 * median(perIteration);
   t.iterationsToUntil = static_cast<int>(perIteration.size());
-  t.reached = solver.convergence() >= options.until;
+  t.reached = solver.convergence() >= options.until || reachedUnshot(options, t.unshotFraction);
+  return t;
+}
+
+// The cells solve, round by round: its time per iteration is a round's time over the iterations
+// the cells shot in it, the median over the rounds.
+Timing timeCells(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
+                 SolveOptions options, int maxIterations, const CellSolveSettings& settings) {
+  options.maxIterations = maxIterations;
+  const double start = benchSeconds(options.threads);
+  CellSolver solver(scene, patches, partition, options, settings);
+  std::vector<double> perIteration;
+  while (!solver.done()) {
+    const double before = benchSeconds(options.threads);
+    const int iterations = solver.iterations();
+    solver.round();
+    if (solver.iterations() > iterations)
+      perIteration.push_back((benchSeconds(options.threads) - before) / (solver.iterations() - iterations));
+  }
+  Timing t;
+  t.unshotFraction = solver.ledger().unshotFraction();
+  t.secondsToUntil = benchSeconds(options.threads) - start;
+  t.msPerIteration = 1e3 * median(perIteration);
+  t.iterationsToUntil = solver.iterations();
+  t.reached = reachedUnshot(options, t.unshotFraction);
   return t;
 }
 
@@ -56,10 +87,17 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
   const CellChoice cell = commandCell(scene, args.cellM, args.cellGiven);
   fmt::print("{}\n", cell.why);
   const std::vector<Patch> patches = meshScene(scene, cell.cellM);
+  const bool cells = cellsModeOn(args.cellsMode);
+  const CellPartition partition = cells ? findCells(scene, patches) : CellPartition{};
   nlohmann::json rows = nlohmann::json::array();
-  fmt::print("scene {}: {} patches, threads {}, until C={:.2f}; times are {}\n", scene.source, patches.size(),
+  fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}; times are {}\n", scene.source, patches.size(),
              args.threads, args.until,
+             args.untilUnshot > 0.0 ? fmt::format(" or {:g}% unshot", 100.0 * args.untilUnshot) : "",
              args.threads == 1 ? "the solving thread's CPU time" : "wall time");
+  if (cells)
+    fmt::print("cells solve: {} cells, {} portals, {} shots a cell a round on average; ms/iteration: a round's time "
+               "over its iterations, the median over the rounds\n",
+               partition.cells.size(), partition.portals.size(), args.exchangeShots);
   const Backend backend = parseBackend(args.backend);
   fmt::print("{:<10} {:>6} {:>4} {:>14} {:>12} {:>12} {:>10} {:>8} {:>12}\n", "projection", "N", "k", "ms/iteration",
              "iterations", "s to C", "it/s", "unshot", "MP-1 s/it");
@@ -72,9 +110,12 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
         o.resolution = n;
         o.shooters = k;
         o.until = args.until;
+        o.untilUnshot = args.untilUnshot;
         o.threads = args.threads;
         validateOptions(o);
-        const Timing t = timeSolve(scene, patches, o, args.maxIterations);
+        if (cells) requireCellsOptions(o);
+        const Timing t = cells ? timeCells(scene, patches, partition, o, args.maxIterations, {cell.cellM, args.exchangeShots})
+                               : timeSolve(scene, patches, o, args.maxIterations);
         fmt::print("{:<10} {:>6} {:>4} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f} {:>7.2f}% {:>12.4f}\n", projection, n, k,
                    t.msPerIteration, t.iterationsToUntil, t.reached ? " " : "+", t.secondsToUntil,
                    t.msPerIteration > 0 ? 1e3 / t.msPerIteration : 0.0, 100.0 * t.unshotFraction,
@@ -110,6 +151,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
     }
   }
   return {{"scene", scene.source}, {"patches", patches.size()}, {"backend", args.backend}, {"threads", args.threads},
+          {"cells", args.cellsMode}, {"until_unshot", args.untilUnshot},
           {"clock", args.threads == 1 ? "thread cpu" : "wall"}, {"until", args.until},   {"rows", rows},               {"scaling", scaling}};
 }
 

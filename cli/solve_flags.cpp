@@ -70,11 +70,13 @@ SolveOptions SolveFlags::resolved() const {
   return o;
 }
 
-bool SolveFlags::cellsOn() const {
+bool cellsModeOn(const std::string& cells) {
   if (cells != "auto" && cells != "off")
     throw OptionError("--cells '" + cells + "' is unknown: give auto (find the rooms and solve them cell by cell) or off");
   return cells == "auto";
 }
+
+bool SolveFlags::cellsOn() const { return cellsModeOn(cells); }
 
 void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
@@ -111,7 +113,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--cells", f.cells,
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
       ->capture_default_str();
-  cmd->add_option("--exchange-shots", f.exchangeShots, "With --cells auto: iterations per cell between portal exchanges")
+  cmd->add_option("--exchange-shots", f.exchangeShots, "With --cells auto: shots a cell a round between portal exchanges, on average (shared by unshot power)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--portal-bins", f.portalBins, kPortalBinsHelp)->capture_default_str();

@@ -5,7 +5,9 @@
 #include <deque>
 #include <fmt/format.h>
 
+#include "solver/formfactors/light_rows.h"
 #include "solver/meshing/meshing.h"
+#include "solver/projection/projection.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -78,15 +80,20 @@ struct CellSolver::State {
   int portalCount = 0;
   int focus = -1;
   std::vector<int> distance;  // from the focus, -1 where no portal leads
-  std::vector<int> order;     // the cells by distance from the focus, then index
   int rounds = 0;
+  // The lights' shots (State::shootLights) less what they handed to the cells: escaped, the backs
+  // of one-sided patches. Part of the building's ledger, in no cell's.
+  Ledger lights;
   ThreadPool pool;
 
   State(std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s)
       : patches(std::move(p)), options(o), settings(s), pool(o.threads) {}
 
-  int shotsThisRound(int cell) const;
+  // Portals from the focus, 30 where none leads (a cell's weight halves with each).
+  int hops(int cell) const { return distance[cell] < 0 ? 30 : std::min(distance[cell], 30); }
+  std::vector<int> shotsThisRound(const Ledger& building) const;
   void exchange();
+  void shootLights(const Scene& scene);
 };
 
 CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const CellPartition& partition,
@@ -100,10 +107,6 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
   if (settings.portalBins < 0 || settings.portalBins > kMaxPortalBins)
     throw OptionError(fmt::format("--portal-bins {} is out of range: give 0 or 1 (diffuse) up to {} (an N x N "
                                   "hemicube of direction bins)", settings.portalBins, kMaxPortalBins));
-  // A light has no patch, so no cell owns its one shot yet; a beam (the sun) may light every cell.
-  if (!scene.lights.empty())
-    throw OptionError(fmt::format("{} has {} light(s) without a patch (KHR_lights_punctual or --sun), which --cells "
-                                  "auto does not solve yet: use --cells off", scene.source, scene.lights.size()));
   State& s = *state_;
   validatePartition(scene, s.patches.size(), partition);
   s.portalCount = static_cast<int>(partition.portals.size());
@@ -188,6 +191,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
   std::sort(s.links.begin(), s.links.end(), [](const PortalLink& x, const PortalLink& y) {
     return x.cell != y.cell ? x.cell < y.cell : x.patch < y.patch;
   });
+  s.shootLights(scene);
   focus(-1);
 }
 
@@ -205,18 +209,66 @@ void CellSolver::focus(int cell) {
       for (int next : s.neighbours[queue.front()])
         if (s.distance[next] < 0) s.distance[next] = s.distance[queue.front()] + 1, queue.push_back(next);
   }
-  s.order.resize(n);
-  for (int c = 0; c < n; ++c) s.order[c] = c;
-  auto rank = [&](int c) { return s.distance[c] < 0 ? n : s.distance[c]; };
-  std::stable_sort(s.order.begin(), s.order.end(), [&](int a, int b) { return rank(a) < rank(b); });
 }
 
 int CellSolver::portalDistance(int cell) const { return state_->distance.at(static_cast<size_t>(cell)); }
 
-int CellSolver::State::shotsThisRound(int cell) const {
-  if (focus < 0) return settings.exchangeShots;
-  const int d = distance[cell] < 0 ? 30 : std::min(distance[cell], 30);
-  return std::max(1, settings.exchangeShots >> d);
+// The round's budget, exchangeShots a cell (with a focus, halved at each portal of distance from
+// it, so that a round stays short), shared in proportion to each cell's unshot power (halved the
+// same way), so that the cells shoot roughly in the order the whole building's solve would. A
+// cell holding more than its share (1/cells) of the stopping threshold shoots at least once, and
+// so does the strongest: the round that shoots nothing is the one after done().
+std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const {
+  const int n = static_cast<int>(cells.size());
+  std::vector<double> weight(n);
+  double total = 0.0, budget = 0.0;
+  for (int c = 0; c < n; ++c) {
+    const int d = hops(c);
+    weight[c] = std::ldexp(cells[c].solver->ledger().unshot, -d);
+    total += weight[c];
+    budget += std::ldexp(static_cast<double>(settings.exchangeShots), -d);
+  }
+  const double thresholdW = options.untilUnshot * (building.input() - building.lightOutside) / n;
+  const int strongest = static_cast<int>(std::max_element(weight.begin(), weight.end()) - weight.begin());
+  std::vector<int> shots(n, 0);
+  for (int c = 0; c < n; ++c) {
+    if (total > 0.0) shots[c] = static_cast<int>(std::min(budget * (weight[c] / total), 1e9));  // no int overflow
+    if (cells[c].solver->ledger().unshot > thresholdW || c == strongest) shots[c] = std::max(shots[c], 1);
+  }
+  return shots;
+}
+
+// Each light's one shot over the whole building's patches (solver/formfactors/light_rows.h), as
+// the whole solve shoots it in its first iteration: what lands on a cell's patches the cell
+// receives as emitted power (ProgressiveSolver::receiveLight); what escapes or lands on the back
+// of a one-sided patch is booked here, in the building's ledger.
+void CellSolver::State::shootLights(const Scene& scene) {
+  if (scene.lights.empty()) return;
+  std::vector<int> cellOf(patches.size()), localOf(patches.size());
+  for (size_t c = 0; c < cells.size(); ++c)
+    for (size_t k = 0; k < cells[c].buildingPatch.size(); ++k)
+      cellOf[cells[c].buildingPatch[k]] = static_cast<int>(c), localOf[cells[c].buildingPatch[k]] = static_cast<int>(k);
+  const double nearDepth = sceneNearDepth(patches);
+  for (const Light& light : scene.lights) {
+    const Rgb power = lightPower(scene, light);
+    const double powerW = channelSum(power);
+    lights.emitted += powerW;
+    if (!(powerW > 0.0)) continue;  // a dark light, or a beam with no window
+    const FormFactorRow row = lightRow(scene, light, patches, options.resolution, nearDepth, pool);
+    std::vector<FormFactorRow> perCell(cells.size());
+    for (size_t r = 0; r < row.receivers.size(); ++r) {  // ascending in the building, so in each cell
+      FormFactorRow& part = perCell[cellOf[row.receivers[r]]];
+      part.receivers.push_back(localOf[row.receivers[r]]);
+      part.formFactors.push_back(row.formFactors[r]);
+    }
+    for (size_t c = 0; c < cells.size(); ++c)
+      if (!perCell[c].receivers.empty()) lights.emitted -= cells[c].solver->receiveLight(perCell[c], power);
+    lights.notCaptured += powerW * (1.0 - row.capturedFraction);
+    lights.escaped += powerW * row.escapedFraction();
+    lights.absorbed += powerW * row.backFaces;
+    lights.absorbedByBackFaces += powerW * row.backFaces;
+    lights.lightOutside += powerW * (row.escapedFraction() + row.backFaces);
+  }
 }
 
 void CellSolver::State::exchange() {
@@ -226,13 +278,19 @@ void CellSolver::State::exchange() {
 
 void CellSolver::round() {
   State& s = *state_;
+  const std::vector<int> shots = s.shotsThisRound(ledger());
   std::vector<int> active;
-  for (int c : s.order)
-    if (!s.cells[c].solver->exhausted()) active.push_back(c);
+  for (int c = 0; c < cellCount(); ++c)
+    if (shots[c] > 0 && !s.cells[c].solver->exhausted()) active.push_back(c);
+  // Nearest the focus first; among cells as near, the longest first (shots times patches), so that
+  // the threads finish the round together. Which thread runs a cell does not change its result.
+  auto cost = [&](int c) { return static_cast<double>(shots[c]) * s.cells[c].solver->patches().size(); };
+  std::stable_sort(active.begin(), active.end(), [&](int a, int b) {
+    return s.hops(a) != s.hops(b) ? s.hops(a) < s.hops(b) : cost(a) > cost(b);
+  });
   s.pool.parallelFor(static_cast<int>(active.size()), [&](int i, int) {
     ProgressiveSolver& solver = *s.cells[active[i]].solver;
-    const int shots = s.shotsThisRound(active[i]);
-    for (int n = 0; n < shots && !solver.exhausted(); ++n) solver.step();
+    for (int n = 0; n < shots[active[i]] && !solver.exhausted(); ++n) solver.step();
   });
   ++s.rounds;
   checkLedger(ledger(), iterations());
@@ -257,8 +315,10 @@ bool CellSolver::done() const {
 Ledger CellSolver::ledger() const {
   const State& s = *state_;
   Ledger total;
-  for (const CellState& cell : s.cells) {
-    const Ledger& l = cell.solver->ledger();
+  std::vector<const Ledger*> parts{&s.lights};
+  for (const CellState& cell : s.cells) parts.push_back(&cell.solver->ledger());
+  for (const Ledger* part : parts) {
+    const Ledger& l = *part;
     total.emitted += l.emitted;
     total.absorbed += l.absorbed;
     total.unshot += l.unshot;

@@ -3,8 +3,10 @@
 // the cell's patches and its portal patches (each portal meshed like a wall and turned to face
 // into the cell). A shot projects only its cell. Light reaching a portal patch waits there, by
 // direction bin; at fixed exchange points it moves to the twin patch facing into the neighbour
-// cell, which shoots each bin on into its own directions (or all diffusely, without bins). Between exchanges the cells shoot in parallel, each on
-// its own, so results are bitwise the same for any number of threads.
+// cell, which shoots each bin on into its own directions (or all diffusely, without bins). Between
+// exchanges the cells shoot in parallel, each on its own, so results are bitwise the same for any
+// number of threads. Lights without a patch (KHR, the sun) shoot once over the whole building when
+// the solver is made; each cell receives what landed on its patches.
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,7 +21,9 @@ constexpr int kMaxPortalBins = 16;  // CellSolveSettings::portalBins: 16 x 16 on
 
 struct CellSolveSettings {
   double cellM = 0.381;    // the grid the portals are meshed on: the scene's (meshScene's cellM)
-  int exchangeShots = 16;  // iterations each cell shoots between two portal exchanges
+  // A round's budget between two portal exchanges: exchangeShots a cell (with a focus, halved at
+  // each portal of distance from it), shared by the cells in proportion to their unshot power.
+  int exchangeShots = 16;
   // Light crossing a portal keeps its direction in directionBinCount(portalBins) bins and goes on
   // in it (solver/formfactors/direction_bins.h); 0 or 1: re-emitted diffusely. At most 16.
   int portalBins = 0;
@@ -45,17 +49,18 @@ class CellSolver {
   CellSolver(const CellSolver&) = delete;
   CellSolver& operator=(const CellSolver&) = delete;
 
-  // Every cell with unshot power shoots up to its shots this round (exchangeShots; with a focus,
-  // fewer the farther from it), the cells in parallel on options.threads; then the power waiting
-  // on portals moves to the twins, in cell and patch order. The building's ledger is checked
-  // before and after the exchange.
+  // The cells shoot their shares of the round's budget (CellSolveSettings::exchangeShots), in
+  // proportion to their unshot power; a cell with more than 1/cells of the stopping threshold
+  // unshot shoots at least once, and so does the strongest. The cells run in parallel on
+  // options.threads, the longest started first; then the power waiting on portals moves to the twins, in cell and patch
+  // order. The building's ledger is checked before and after the exchange.
   void round();
   // The building's unshot power (with what waits on portals) at most options.untilUnshot of the
   // emitted, options.maxIterations shot (checked between rounds), or nothing left anywhere.
   bool done() const;
   bool exhausted() const;
-  // The camera's cell: it shoots exchangeShots a round, its neighbours at portal distance d
-  // exchangeShots >> d (at least 1), and the cells are started in that order. -1: no focus.
+  // The camera's cell: a cell's unshot power and its part of the round's budget count half for each
+  // portal between it and the focus, and the cells are started in that order. -1: no focus.
   void focus(int cell);
   int portalDistance(int cell) const;  // from the focus (0 without one); -1 where no portal leads
 

@@ -435,6 +435,22 @@ void ProgressiveSolver::addPortalPower(int patch, std::span<const Rgb> bins) {
   s.exhausted = false;
 }
 
+double ProgressiveSolver::receiveLight(FormFactorRow row, const Rgb& power) {
+  State& s = *state_;
+  for (int j : row.receivers)
+    if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
+      throw std::invalid_argument(fmt::format("light receiver {} is not one of the {} patches", j, s.patches.size()));
+  row.capturedFraction = 1.0;  // what missed, escaped or hit a back face is the caller's to book
+  row.backFaces = 0.0;
+  const double arrivedW = channelSum(power) * row.hitFraction();
+  s.ledger.emitted += arrivedW;
+  s.deliver(row, power, false);
+  s.updateUnshot();
+  s.exhausted = std::none_of(s.unshotPowerW.begin(), s.unshotPowerW.end(), [](double p) { return p > 0.0; });
+  checkLedger(s.ledger, 0);
+  return arrivedW;
+}
+
 void ProgressiveSolver::setStoppingRule(double until, double untilUnshot) {
   SolveOptions changed = state_->options;
   changed.until = until;

@@ -88,6 +88,11 @@ class ProgressiveSolver {
   std::vector<Rgb> takePortalPower(int patch);  // per bin, leaving it empty
   // Per bin, as many as the patch has (std::invalid_argument otherwise, or for no portal patch).
   void addPortalPower(int patch, std::span<const Rgb> bins);
+  // A cells solve's share of a light's one shot over the whole building (CellSolver): `row` gives
+  // the fraction of the light's `power` reaching each of this solve's patches (local indices,
+  // ascending). It arrives as emitted power (ledger emitted), absorbed and reflected as in the
+  // whole solve's first iteration. Returns the watts booked. Call before the first step.
+  double receiveLight(FormFactorRow row, const Rgb& power);
   // Changes options().until and untilUnshot of the solve under way (throws OptionError).
   void setStoppingRule(double until, double untilUnshot);
   double convergence() const;

@@ -37,6 +37,45 @@ TEST(CliLights, SunAloneLightsAnOpenBoxOnEitherBackEnd) {
   }
 }
 
+// Each cell's ledger, and that they add up to the building's: emitted (the light's power with
+// what each cell received of it) = absorbed + unshot + not captured + escaped.
+void expectCellsBalance(const nlohmann::json& j) {
+  const auto& l = j["ledger"];
+  const double emitted = l["emitted"].get<double>();
+  EXPECT_LE(l["imbalance"].get<double>(), 1e-9);
+  const double accounted = l["absorbed"].get<double>() + l["unshot"].get<double>() + l["not_captured"].get<double>() +
+                           l["escaped"].get<double>();
+  EXPECT_NEAR(accounted, emitted, 1e-9 * emitted);
+  double received = 0.0;
+  for (const auto& cell : j["per_cell"]) {
+    EXPECT_LE(cell["ledger"]["imbalance"].get<double>(), 1e-9) << cell.dump();
+    received += cell["ledger"]["emitted"].get<double>();
+  }
+  EXPECT_GT(received, 0.0);
+  EXPECT_LE(received, emitted * (1 + 1e-12));
+}
+
+// --cells auto with lights: a KHR point light in a closed box (one cell), the sun on a building.
+TEST(CliLights, CellsAutoSolvesLightsAndTheLedgerBalances) {
+  const std::string box = test::dataPath("lights/point_box.gltf").string();
+  const nlohmann::json cells =
+      solveStats(box + " --cells auto --cell 0.25 --resolution 32 --until-unshot 0.02 --quiet", "cells.json");
+  const nlohmann::json whole = solveStats(box + " --cell 0.25 --resolution 32 --until-unshot 0.02 --quiet", "whole.json");
+  EXPECT_EQ(cells["cells"], 1);
+  expectCellsBalance(cells);
+  // 179 cd white: 1 W/sr per channel, 4 pi W each, all of it landing inside the closed box.
+  EXPECT_NEAR(cells["ledger"]["emitted"].get<double>(), 3 * 4 * 3.141592653589793, 1e-9);
+  EXPECT_NEAR(cells["per_cell"][0]["ledger"]["emitted"].get<double>(), cells["ledger"]["emitted"].get<double>(), 1e-9);
+  EXPECT_NEAR(cells["ledger"]["absorbed"].get<double>(), whole["ledger"]["absorbed"].get<double>(),
+              0.02 * whole["ledger"]["emitted"].get<double>());
+
+  const nlohmann::json sun = solveStats(
+      "building:2x1 --sun 135,40 --cells auto --cell 0.75 --resolution 16 --until-unshot 0.05 --quiet", "sun.json");
+  expectCellsBalance(sun);
+  EXPECT_LE(sun["unshot_fraction"].get<double>(), 0.05);
+  EXPECT_GT(sun["ledger"]["light_outside"].get<double>(), 0.0);  // the sun on the roof and past the building
+}
+
 TEST(CliLights, InfoCountsTheLights) {
   const CommandRun run = radmesh("info " + test::dataPath("lights/three_lights.gltf").string() + " --json");
   ASSERT_EQ(run.exitCode, 0) << run.output;

@@ -122,6 +122,56 @@ TEST(Cli, BenchCellsComparesTheCellsSolveWithTheWholeBuilding) {
     EXPECT_TRUE(scene.contains(key)) << key;
 }
 
+// --skip-whole: no whole-building solve, so no error per room; the cells solve and the focus still timed.
+TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
+  const std::string json = tempPath("cells.json");
+  const CommandRun run = radmesh("bench cells two-rooms --resolution 16 --until-unshot 0.1 --skip-whole --focus-cell 1 "
+                                 "--json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto scene = nlohmann::json::parse(std::ifstream(json))["scenes"][0];
+  for (const char* key : {"whole_seconds", "whole_iterations", "rooms", "largest_room_error"})
+    EXPECT_FALSE(scene.contains(key)) << key;
+  EXPECT_TRUE(scene["two_threads_identical"].get<bool>());
+  EXPECT_EQ(scene["focus_cell"], 1);
+  EXPECT_GT(scene["focus_iterations"].get<int>(), 0);
+  EXPECT_GT(scene["focus_arrived_w"].get<double>(), 0.0);  // room B's light, all through the door
+  EXPECT_EQ(run.output.find("whole building, 1 thread"), std::string::npos) << run.output;
+
+  // --focus-only: the focus run alone, the same as in the full bench.
+  const std::string focus = tempPath("focus.json");
+  ASSERT_EQ(radmesh("bench cells two-rooms --resolution 16 --until-unshot 0.1 --focus-only --focus-cell 1 --json " + focus).exitCode, 0);
+  const auto only = nlohmann::json::parse(std::ifstream(focus))["scenes"][0];
+  EXPECT_FALSE(only.contains("cells_seconds"));
+  EXPECT_EQ(only["focus_iterations"], scene["focus_iterations"]);
+  EXPECT_EQ(only["focus_arrived_w"], scene["focus_arrived_w"]);
+}
+
+// bench solve --cells auto times the cells solve to the unshot fraction: reached, the same
+// iterations as `solve --cells auto` with the same settings.
+TEST(Cli, BenchSolveTimesTheCellsSolve) {
+  const std::string json = tempPath("bench.json");
+  const CommandRun run = radmesh("bench solve two-rooms --cells auto --exchange-shots 8 --until 1 --until-unshot 0.1 "
+                                 "--projections hemicube --resolutions 16 --threads 1 --json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto j = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(j["cells"], "auto");
+  ASSERT_EQ(j["rows"].size(), 1u);
+  const auto& row = j["rows"][0];
+  EXPECT_TRUE(row["reached_until"].get<bool>());
+  EXPECT_LE(row["unshot_fraction"].get<double>(), 0.1);
+  const std::string stats = tempPath("stats.json");
+  ASSERT_EQ(radmesh("solve two-rooms --cells auto --exchange-shots 8 --until-unshot 0.1 --projection hemicube "
+                    "--resolution 16 --threads 1 --quiet --stats " + stats).exitCode, 0);
+  EXPECT_EQ(row["iterations_to_until"], nlohmann::json::parse(std::ifstream(stats))["iterations"]);
+
+  CommandRun bad = radmesh("bench solve two-rooms --cells some");
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_NE(bad.output.find("--cells 'some' is unknown"), std::string::npos) << bad.output;
+  bad = radmesh("bench solve two-rooms --cells auto --resolutions 16");  // stops on C by default
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_NE(bad.output.find("--until-unshot"), std::string::npos) << bad.output;
+}
+
 TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve two-rooms --cells some");
   EXPECT_NE(run.exitCode, 0);

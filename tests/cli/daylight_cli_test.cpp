@@ -43,6 +43,16 @@ TEST(Cli, SkyLightsARoomThroughOneWindow) {
   // The window closes the room: nothing escapes, what leaves through the window is absorbed by it.
   EXPECT_EQ(l["escaped"].get<double>(), 0.0);
 
+  // The sky is emitter patches: the cells solve takes it as it is (a room of one cell).
+  const std::string cellsStats = tempPath("cells.json");
+  const CommandRun cells = radmesh("solve " + kRoom + " --sky 10000 --resolution 64 --cells auto --quiet --stats " + cellsStats);
+  ASSERT_EQ(cells.exitCode, 0) << cells.output;
+  const auto c = nlohmann::json::parse(std::ifstream(cellsStats));
+  EXPECT_NEAR(c["ledger"]["emitted"].get<double>(), kWindowW, 1e-9 * kWindowW);
+  EXPECT_LE(c["ledger"]["imbalance"].get<double>(), 1e-9);
+  EXPECT_LE(c["unshot_fraction"].get<double>(), 0.01);
+  EXPECT_NEAR(c["ledger"]["absorbed"].get<double>(), l["absorbed"].get<double>(), 0.01 * kWindowW);
+
 #ifdef RADMESH_HAS_VIEWER
   const std::string png = tempPath("room.png");
   // At a fixed exposure (white at B = 1 W/m^2), so that the bound measures the light: the room

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
@@ -112,7 +114,7 @@ double absorbedIn(const TwoRooms& t, const std::vector<Rgb>& b, bool roomA) {
 // gets the right power but spread evenly: less on the dark floor beyond the door, where the
 // light from A's ceiling would land, more on the light walls and ceiling. Both solves to 1 %
 // unshot, same mesh and projection; the tolerances are what was measured (docs/cells.md) with a
-// margin: room A 0.01 %, room B's absorbed power 1.3 %, room B's reflected light +27 %.
+// margin: room A +0.26 %, room B's absorbed power -2.1 %, room B's reflected light +22 %.
 TEST(CellSolver, ReflectedLightPerRoomNearTheWholeBuildingSolve) {
   const TwoRooms t;
   SolveOptions o = testOptions();
@@ -122,7 +124,7 @@ TEST(CellSolver, ReflectedLightPerRoomNearTheWholeBuildingSolve) {
   ProgressiveSolver whole(t.scene, t.patches, o);
   while (!whole.done()) whole.step();
   auto error = [](double got, double expected) { return got / expected - 1.0; };
-  EXPECT_LT(std::abs(error(reflected(t, cells.radiosity(), true), reflected(t, whole.radiosity(), true))), 0.002);
+  EXPECT_LT(std::abs(error(reflected(t, cells.radiosity(), true), reflected(t, whole.radiosity(), true))), 0.004);
   EXPECT_LT(std::abs(error(absorbedIn(t, cells.radiosity(), false), absorbedIn(t, whole.radiosity(), false))), 0.03);
   const double roomB = error(reflected(t, cells.radiosity(), false), reflected(t, whole.radiosity(), false));
   EXPECT_GT(roomB, 0.15);
@@ -168,6 +170,54 @@ TEST(CellSolver, CellWithoutPortalsIsTheOrdinarySolveOfItsRoom) {
   EXPECT_GT(alone.ledger().escaped, 0.0);
 }
 
+// Each cell's iterations over the next round, as CellSolver::round() shares its budget: exchange
+// shots a cell, halved at each portal from the focus, in proportion to unshot power (halved the
+// same way); at least one for a cell above 1/cells of the stopping threshold, and the strongest.
+std::vector<int> expectedShots(const CellSolver& solver, int exchangeShots) {
+  const std::vector<CellFigures> cells = solver.cellFigures();
+  const int n = static_cast<int>(cells.size());
+  const Ledger building = solver.ledger();
+  std::vector<double> weight(n);
+  double total = 0.0, budget = 0.0;
+  for (int c = 0; c < n; ++c) {
+    const int d = solver.portalDistance(c);
+    weight[c] = std::ldexp(cells[c].ledger.unshot, -d);
+    total += weight[c], budget += std::ldexp(exchangeShots, -d);
+  }
+  const int strongest = static_cast<int>(std::max_element(weight.begin(), weight.end()) - weight.begin());
+  const double threshold = solver.options().untilUnshot * building.emitted / n;
+  std::vector<int> shots(n);
+  for (int c = 0; c < n; ++c) {
+    shots[c] = static_cast<int>(budget * (weight[c] / total));
+    if (cells[c].ledger.unshot > threshold || c == strongest) shots[c] = std::max(shots[c], 1);
+  }
+  return shots;
+}
+
+std::vector<int> iterationsPerCell(const CellSolver& solver) {
+  std::vector<int> n;
+  for (const CellFigures& cell : solver.cellFigures()) n.push_back(cell.iterations);
+  return n;
+}
+
+// The round's 2 x 8 shots go by unshot power: all to A while B has none, then shared.
+TEST(CellSolver, ShotsFollowTheUnshotPower) {
+  const TwoRooms t;
+  CellSolver solver(t.scene, t.patches, twoRoomsPartition(t.patches), testOptions(), {kDefaultCellM, 8});
+  solver.round();
+  EXPECT_EQ(iterationsPerCell(solver), (std::vector<int>{16, 0}));
+  for (int round = 2; round <= 6; ++round) {
+    const std::vector<int> before = iterationsPerCell(solver), shots = expectedShots(solver, 8);
+    solver.round();
+    const std::vector<int> after = iterationsPerCell(solver);
+    for (int c = 0; c < 2; ++c) EXPECT_EQ(after[c] - before[c], shots[c]) << "cell " << c << ", round " << round;
+    EXPECT_GE(shots[0] + shots[1], 15);  // the budget, less what rounding down leaves
+    EXPECT_LE(shots[0] + shots[1], 16);
+  }
+  EXPECT_GT(solver.cellFigures()[1].iterations, 0);  // B shoots once light has come through the door
+  EXPECT_LT(solver.cellFigures()[1].iterations, solver.cellFigures()[0].iterations);  // but less than A
+}
+
 TEST(CellSolver, FocusShootsNearCellsMore) {
   const TwoRooms t;
   CellSolver solver(t.scene, t.patches, twoRoomsPartition(t.patches), testOptions(), {kDefaultCellM, 8});
@@ -175,10 +225,69 @@ TEST(CellSolver, FocusShootsNearCellsMore) {
   EXPECT_EQ(solver.portalDistance(1), 0);
   EXPECT_EQ(solver.portalDistance(0), 1);
   solver.round();
-  EXPECT_EQ(solver.cellFigures()[0].iterations, 4);  // 8 >> 1
-  solver.round();
-  EXPECT_EQ(solver.cellFigures()[0].iterations, 8);
-  EXPECT_EQ(solver.cellFigures()[1].iterations, 8);  // B had light only from the second round
+  EXPECT_EQ(iterationsPerCell(solver), (std::vector<int>{12, 0}));  // 8 + 8 / 2, all A's: B has no light yet
+  for (int round = 2; round <= 4; ++round) {
+    const std::vector<int> before = iterationsPerCell(solver), shots = expectedShots(solver, 8);
+    solver.round();
+    const std::vector<int> after = iterationsPerCell(solver);
+    for (int c = 0; c < 2; ++c) EXPECT_EQ(after[c] - before[c], shots[c]) << "cell " << c << ", round " << round;
+  }
+}
+
+// two-rooms without its emitters, lit by a point light in room A that also shines through the door.
+struct LitTwoRooms {
+  Scene scene = [] {
+    Scene s = builtinScene("two-rooms");
+    for (Material& m : s.materials) m.emittance = Rgb(0.0);
+    s.lights.push_back({"lamp", LightType::Point, {2.0, 2.0, 2.2}, {0, 0, -1}, Rgb(2.0)});
+    return s;
+  }();
+  std::vector<Patch> patches = meshScene(scene);
+};
+
+// The lights shoot once over the whole building when the cells solve is made: each patch gets
+// bitwise what the whole solve's first iteration gives it, and the ledger books the light per
+// cell (as emitted) and in total (the light's power) exactly.
+TEST(CellSolver, LightShootsOnceOverTheBuildingAndTheLedgerBalances) {
+  const LitTwoRooms t;
+  SolveOptions o = testOptions();
+  o.untilUnshot = 0.05;
+  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16});
+  ProgressiveSolver whole(t.scene, t.patches, o);
+  whole.step();  // the light's shot
+  ASSERT_EQ(cells.radiosity().size(), whole.radiosity().size());
+  for (size_t j = 0; j < t.patches.size(); ++j) ASSERT_EQ(cells.radiosity()[j], whole.radiosity()[j]) << "patch " << j;
+  const double lightW = 3 * 4 * std::numbers::pi * 2.0;
+  EXPECT_NEAR(cells.ledger().emitted, lightW, 1e-12 * lightW);
+  EXPECT_NEAR(cells.ledger().unshot, whole.ledger().unshot, 1e-12 * lightW);
+  EXPECT_NEAR(cells.ledger().escaped, whole.ledger().escaped, 1e-12 * lightW);
+  const std::vector<CellFigures> figures = cells.cellFigures();
+  EXPECT_GT(figures[1].ledger.emitted, 0.0);  // B's floor beyond the door, lit directly
+  EXPECT_LT(figures[1].ledger.emitted, 0.1 * figures[0].ledger.emitted);
+  for (; !cells.done(); cells.round()) {
+    EXPECT_LE(cells.ledger().imbalance(), 1e-9);
+    for (const CellFigures& cell : cells.cellFigures()) EXPECT_LE(cell.ledger.imbalance(), 1e-9) << cell.name;
+  }
+  EXPECT_NEAR(cells.ledger().emitted, lightW, 1e-12 * lightW);
+  EXPECT_LE(cells.ledger().unshotFraction(), 0.05);
+}
+
+// Both to 1 % unshot, the reflected light per room against the whole solve: the lit room within
+// 0.3 %, the other (lit directly through the door, then by what A reflects through it) within the
+// error of diffuse re-emission at the door. Measured: A +0.06 %, B +7.9 %.
+TEST(CellSolver, LightReflectedPerRoomNearTheWholeBuildingSolve) {
+  const LitTwoRooms lit;
+  const TwoRooms t{lit.scene, lit.patches};
+  SolveOptions o = testOptions();
+  o.effects = EffectsMode::All;
+  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16});
+  while (!cells.done()) cells.round();
+  ProgressiveSolver whole(t.scene, t.patches, o);
+  while (!whole.done()) whole.step();
+  const double roomA = reflected(t, cells.radiosity(), true) / reflected(t, whole.radiosity(), true) - 1.0;
+  const double roomB = reflected(t, cells.radiosity(), false) / reflected(t, whole.radiosity(), false) - 1.0;
+  EXPECT_LT(std::abs(roomA), 0.003);
+  EXPECT_LT(std::abs(roomB), 0.12);
 }
 
 TEST(CellSolver, RefusesAPartitionOfOtherPatches) {
