@@ -70,11 +70,7 @@ SolveOptions SolveFlags::resolved() const {
   return o;
 }
 
-bool SolveFlags::cellsOn() const {
-  if (cells != "auto" && cells != "off")
-    throw OptionError("--cells '" + cells + "' is unknown: give auto (find the rooms and solve them cell by cell) or off");
-  return cells == "auto";
-}
+bool SolveFlags::cellsOn() const { return parseCells(cells); }
 
 void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")

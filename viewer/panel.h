@@ -40,6 +40,7 @@ class Panel {
  private:
   void begin();  // the panel's window, docked at the right
   void drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver);
+  void drawCellsState(const CellsProgress& cells);
   void drawProgress(const SolverSnapshot& snapshot);
   void drawMachineCost(const SolverSnapshot& snapshot);
   void drawItemBuffer(const SolverSnapshot& snapshot);

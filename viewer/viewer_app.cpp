@@ -2,12 +2,14 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "solver/bake/bake_reader.h"
 #include "solver/io/scene_loader.h"
@@ -75,11 +77,38 @@ class FrameStats {
   Phase solving_, idle_;
 };
 
+// --frames N: each frame's time, and the part of it spent taking in the solver's snapshots.
+class FrameReport {
+ public:
+  void add(double frameSeconds, double feedSeconds) {
+    frames_.push_back(frameSeconds);
+    feeds_.push_back(feedSeconds);
+  }
+  long frames() const { return static_cast<long>(frames_.size()); }
+  void print() const {
+    if (frames_.empty()) return;
+    std::vector<double> f = frames_, feed = feeds_;
+    std::sort(f.begin(), f.end());
+    std::sort(feed.begin(), feed.end());
+    double sum = 0.0;
+    for (double s : f) sum += s;
+    std::printf("radmesh-view: %zu frames with the mesh: lowest %.1f fps (%.1f ms), median %.1f fps (%.1f ms), "
+                "mean %.1f fps; taking in snapshots: median %.2f ms, longest %.1f ms a frame\n",
+                f.size(), 1.0 / f.back(), 1e3 * f.back(), 1.0 / f[f.size() / 2], 1e3 * f[f.size() / 2],
+                double(f.size()) / sum, 1e3 * feed[feed.size() / 2], 1e3 * feed.back());
+  }
+
+ private:
+  std::vector<double> frames_, feeds_;
+};
+
 // What the window shows: a solve converging on its own thread, or a bake.
 class Shown {
  public:
   virtual ~Shown() = default;
-  virtual void feed(Renderer& renderer, ViewSettings& view) = 0;  // hands the renderer what changed
+  // Hands the renderer what changed, and the solve where the camera is.
+  virtual void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) = 0;
+  virtual bool meshShown() const = 0;
   virtual void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) = 0;
   virtual void saveCheckpoint(const Panel&) {}
   virtual bool solving() const = 0;  // the frame statistics keep these frames apart
@@ -95,7 +124,20 @@ class ShownSolve : public Shown {
       : smokeTest_(args.steps > 0), steps_(args.steps), solver_(std::move(scene), setup, !smokeTest_, args.resume) {
     if (smokeTest_) solver_.step(args.steps);
   }
-  void feed(Renderer& renderer, ViewSettings& view) override { feed_.show(solver_.latest(), renderer, view); }
+  void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) override {
+    solver_.setEye(camera.view().eye);
+    feed_.show(solver_.latest(), renderer, view);
+    // A camera outside every room (the scene's corner is outside a building) goes into the room
+    // solved first, once a solve.
+    const SolverSnapshot& s = feed_.shown();
+    if (s.cells && s.cells->focus >= 0 && s.generation != placedGeneration_) {
+      placedGeneration_ = s.generation;
+      const std::vector<Cell>& cells = s.cells->partition->cells;
+      if (!s.cells->eyeInFocus && s.cells->focus < static_cast<int>(cells.size()))
+        camera.standIn(cells[s.cells->focus].boundsMin, cells[s.cells->focus].boundsMax);
+    }
+  }
+  bool meshShown() const override { return feed_.shown().mesh != nullptr; }
   void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
     panel.draw(feed_.shown(), solver_, camera, view);
   }
@@ -103,19 +145,25 @@ class ShownSolve : public Shown {
   bool solving() const override { return smokeTest_ ? !ready() : feed_.shown().playing && !feed_.shown().done; }
   bool ready() const override {
     const SolverSnapshot& s = feed_.shown();
-    return s.iteration() >= steps_ || s.done || !s.error.empty();
+    const int steps = s.cells ? s.cells->rounds : s.iteration();
+    return steps >= steps_ || s.done || !s.error.empty();
   }
   std::string failure() const override {
     return feed_.shown().error.empty() ? "" : "the solve failed: " + feed_.shown().error;
   }
   std::string state() const override {
-    char line[96];
-    std::snprintf(line, sizeof line, "solver at iteration %d, C = %.4f", feed_.shown().iteration(),
-                  feed_.shown().convergence());
+    const SolverSnapshot& s = feed_.shown();
+    char line[160];
+    if (s.cells)
+      std::snprintf(line, sizeof line, "cells solve at round %d, %d iterations, unshot %.2f%%", s.cells->rounds,
+                    s.iteration(), 100.0 * s.ledger.unshotFraction());
+    else
+      std::snprintf(line, sizeof line, "solver at iteration %d, C = %.4f", s.iteration(), s.convergence());
     return line;
   }
 
  private:
+  std::uint64_t placedGeneration_ = 0;  // the solve whose cells placed the camera
   bool smokeTest_;
   int steps_;
   SolverThread solver_;
@@ -129,7 +177,8 @@ class ShownBake : public Shown {
                    std::to_string(bake_.mesh.indices.size() / 3) + " triangles, up " +
                    upAxisName(bake_.upAxis);
   }
-  void feed(Renderer& renderer, ViewSettings& view) override {
+  bool meshShown() const override { return true; }
+  void feed(Renderer& renderer, ViewSettings& view, WalkCamera&) override {
     if (!fed_) {
       renderer.setMesh(bake_.mesh);
       renderer.setVertexRadiosity(bake_.vertexB);
@@ -197,10 +246,12 @@ int runViewer(const ViewerArgs& args) {
 
   auto lastFrame = Clock::now();
   FrameStats stats;
+  FrameReport report;
   long frames = 0;
   int framesSinceReady = 0;
   int exitCode = 0;
   bool saveKeyWasDown = false;  // F5 saves once per press
+  double feedSeconds = 0.0;     // the last frame's, for the report
   while (!window.shouldClose()) {
     glfwPollEvents();
     if (glfwGetKey(window.window(), GLFW_KEY_ESCAPE) == GLFW_PRESS && !imgui.wantsKeyboard()) window.requestClose();
@@ -212,8 +263,11 @@ int runViewer(const ViewerArgs& args) {
     lastFrame = now;
     // dt is the previous frame's time; it counts where that frame's snapshot stood.
     if (frames > 0) stats.add(dt, shown->solving());
+    if (args.frames > 0 && frames > 0 && shown->meshShown()) report.add(dt, feedSeconds);
 
-    shown->feed(renderer, view);
+    const auto feedStart = Clock::now();
+    shown->feed(renderer, view, camera);
+    feedSeconds = std::chrono::duration<double>(Clock::now() - feedStart).count();
     camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
     const glm::ivec2 size = window.framebufferSize();
     const glm::ivec2 sceneSize{std::max(1, size.x - int(Panel::kWidthPx)), size.y};
@@ -224,7 +278,8 @@ int runViewer(const ViewerArgs& args) {
     ++frames;
 
     // The panel lays itself out over a couple of frames: wait for them before the screenshot.
-    if (smokeTest && shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames) {
+    const bool smokeTestDone = smokeTest && shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames;
+    if (smokeTestDone || (args.frames > 0 && report.frames() >= args.frames)) {
       if (!shown->failure().empty()) {
         std::fprintf(stderr, "radmesh-view: %s\n", shown->failure().c_str());
         exitCode = 1;
@@ -238,6 +293,7 @@ int runViewer(const ViewerArgs& args) {
   }
 
   stats.print(window.framebufferSize(), shown->state());
+  report.print();
   return exitCode;
 }
 
