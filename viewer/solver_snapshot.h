@@ -58,6 +58,7 @@ struct SolverSnapshot {
   SceneSummary summary;
   std::vector<Effect> effects;               // the solver's effects plan: each on or off, and why
   std::vector<Rgb> vertexB;                  // display radiosity per mesh vertex
+  double exposure = 1.0;                     // autoExposure of vertexB (viewer/exposure.h)
   std::vector<int> lastShooters;             // patches shot by the last iteration
   std::vector<ConvergencePoint> curve;       // one point per iteration so far
   Ledger ledger;

@@ -12,6 +12,7 @@
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/checkpoint.h"
 #include "solver/scene/scene_error.h"
+#include "viewer/exposure.h"
 
 namespace radmesh {
 
@@ -378,6 +379,8 @@ void SolverThread::publish(const Run& run) {
       snapshot->lastCapturedFraction = history.back().capturedFraction;
     }
   }
+  // Here rather than on the UI's thread: it sorts every triangle.
+  snapshot->exposure = autoExposure(*run.mesh, snapshot->vertexB);
   snapshot->lastShotStats = run.lastShotStats;
   snapshot->itemBuffer = run.itemBuffer;
   snapshot->itemBufferShooter = run.itemBufferShooter;

@@ -15,6 +15,7 @@
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
 #include "viewer/camera.h"
+#include "viewer/cell_visibility.h"
 #include "viewer/exposure.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"
@@ -34,12 +35,16 @@ class SnapshotFeed {
  public:
   void show(const std::shared_ptr<const SolverSnapshot>& snapshot, Renderer& renderer, ViewSettings& view) {
     if (snapshot == shown_) return;
-    if (!shown_ || snapshot->generation != shown_->generation || snapshot->mesh != shown_->mesh)
+    if (!shown_ || snapshot->generation != shown_->generation || snapshot->mesh != shown_->mesh) {
       renderer.setMesh(snapshot->mesh ? *snapshot->mesh : DisplayMesh{});
+      if (snapshot->mesh && snapshot->cells)
+        renderer.setCells(snapshot->cells->partition->cellOfPatch,
+                          static_cast<int>(snapshot->cells->partition->cells.size()));
+    }
     if (snapshot->mesh) {
       renderer.setVertexRadiosity(snapshot->vertexB);
       renderer.setHighlightedPatches(snapshot->lastShooters);
-      if (view.autoExposure) view.exposureStops = std::log2(autoExposure(*snapshot->mesh, snapshot->vertexB));
+      if (view.autoExposure) view.exposureStops = std::log2(snapshot->exposure);
     }
     shown_ = snapshot;
   }
@@ -92,10 +97,11 @@ class FrameReport {
     std::sort(feed.begin(), feed.end());
     double sum = 0.0;
     for (double s : f) sum += s;
+    const long slow = std::count_if(f.begin(), f.end(), [](double s) { return s > 1.0 / 30.0; });
     std::printf("radmesh-view: %zu frames with the mesh: lowest %.1f fps (%.1f ms), median %.1f fps (%.1f ms), "
-                "mean %.1f fps; taking in snapshots: median %.2f ms, longest %.1f ms a frame\n",
+                "mean %.1f fps, %ld under 30 fps; taking in snapshots: median %.2f ms, longest %.1f ms a frame\n",
                 f.size(), 1.0 / f.back(), 1e3 * f.back(), 1.0 / f[f.size() / 2], 1e3 * f[f.size() / 2],
-                double(f.size()) / sum, 1e3 * feed[feed.size() / 2], 1e3 * feed.back());
+                double(f.size()) / sum, slow, 1e3 * feed[feed.size() / 2], 1e3 * feed.back());
   }
 
  private:
@@ -109,6 +115,8 @@ class Shown {
   // Hands the renderer what changed, and the solve where the camera is.
   virtual void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) = 0;
   virtual bool meshShown() const = 0;
+  // Before drawing: what the renderer may leave out, seen from `view`.
+  virtual void cull(Renderer&, const RenderView&, double /*aspect*/) {}
   virtual void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) = 0;
   virtual void saveCheckpoint(const Panel&) {}
   virtual bool solving() const = 0;  // the frame statistics keep these frames apart
@@ -138,6 +146,11 @@ class ShownSolve : public Shown {
     }
   }
   bool meshShown() const override { return feed_.shown().mesh != nullptr; }
+  void cull(Renderer& renderer, const RenderView& view, double aspect) override {
+    const SolverSnapshot& s = feed_.shown();
+    if (s.mesh && s.cells)
+      renderer.setVisibleCells(visibleCells(*s.cells->partition, viewProjectionMatrix(view, aspect), view.eye));
+  }
   void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
     panel.draw(feed_.shown(), solver_, camera, view);
   }
@@ -172,7 +185,7 @@ class ShownSolve : public Shown {
 
 class ShownBake : public Shown {
  public:
-  ShownBake(const std::string& path, Bake bake) : bake_(std::move(bake)) {
+  ShownBake(const std::string& path, Bake bake) : bake_(std::move(bake)), exposure_(autoExposure(bake_.mesh, bake_.vertexB)) {
     description_ = "bake " + path + " (by " + (bake_.fromRadmesh ? "radmesh" : "another tool") + "), " +
                    std::to_string(bake_.mesh.indices.size() / 3) + " triangles, up " +
                    upAxisName(bake_.upAxis);
@@ -184,7 +197,7 @@ class ShownBake : public Shown {
       renderer.setVertexRadiosity(bake_.vertexB);
       fed_ = true;
     }
-    if (view.autoExposure) view.exposureStops = std::log2(autoExposure(bake_.mesh, bake_.vertexB));
+    if (view.autoExposure) view.exposureStops = std::log2(exposure_);
   }
   void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
     panel.drawBake(description_, camera, view);
@@ -195,6 +208,7 @@ class ShownBake : public Shown {
 
  private:
   Bake bake_;
+  double exposure_;  // the bake's auto exposure: it never changes
   std::string description_;
   bool fed_ = false;
 };
@@ -252,6 +266,7 @@ int runViewer(const ViewerArgs& args) {
   int exitCode = 0;
   bool saveKeyWasDown = false;  // F5 saves once per press
   double feedSeconds = 0.0;     // the last frame's, for the report
+  long framesWithMesh = 0;
   while (!window.shouldClose()) {
     glfwPollEvents();
     if (glfwGetKey(window.window(), GLFW_KEY_ESCAPE) == GLFW_PRESS && !imgui.wantsKeyboard()) window.requestClose();
@@ -263,14 +278,17 @@ int runViewer(const ViewerArgs& args) {
     lastFrame = now;
     // dt is the previous frame's time; it counts where that frame's snapshot stood.
     if (frames > 0) stats.add(dt, shown->solving());
-    if (args.frames > 0 && frames > 0 && shown->meshShown()) report.add(dt, feedSeconds);
+    // The report starts a frame after the mesh's: taking in a new mesh is not drawing.
+    if (args.frames > 0 && framesWithMesh >= 2) report.add(dt, feedSeconds);
 
     const auto feedStart = Clock::now();
     shown->feed(renderer, view, camera);
     feedSeconds = std::chrono::duration<double>(Clock::now() - feedStart).count();
+    if (shown->meshShown()) ++framesWithMesh;
     camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
     const glm::ivec2 size = window.framebufferSize();
     const glm::ivec2 sceneSize{std::max(1, size.x - int(Panel::kWidthPx)), size.y};
+    shown->cull(renderer, camera.view(), double(sceneSize.x) / double(sceneSize.y));
     renderer.draw(camera.view(), sceneSize, Shading{std::exp2(view.exposureStops), view.highlightShooters});
     imgui.beginFrame();
     shown->drawPanel(panel, camera, view);
