@@ -4,6 +4,8 @@
 #include <chrono>
 #include <exception>
 #include <optional>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <utility>
 
 #include "solver/cells/cell_at.h"
@@ -22,6 +24,8 @@ using Clock = std::chrono::steady_clock;
 
 // Publishing costs a pass over every vertex; while playing, the UI needs no more than this.
 constexpr auto kPublishInterval = std::chrono::milliseconds(40);
+// The solver thread's nice value, above the drawing thread's 0 (Linux's nice is per thread).
+constexpr int kSolverNice = 10;
 // An item buffer costs a projection of every patch: while playing, one now and then is enough.
 constexpr auto kItemBufferInterval = std::chrono::milliseconds(500);
 
@@ -191,6 +195,9 @@ std::shared_ptr<const SolverSnapshot> SolverThread::latest() const {
 }
 
 void SolverThread::loop() {
+  // Drawing comes first: on a machine with fewer free cores than threads, the window keeps its
+  // frame rate and the solve (with the pool threads it starts, which inherit this) takes the rest.
+  setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kSolverNice);
   std::unique_ptr<Run> run;
   Clock::time_point lastPublish{};
   for (;;) {

@@ -116,7 +116,7 @@ class Shown {
   virtual void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) = 0;
   virtual bool meshShown() const = 0;
   // Before drawing: what the renderer may leave out, seen from `view`.
-  virtual void cull(Renderer&, const RenderView&, double /*aspect*/) {}
+  virtual void cull(Renderer&, const RenderView&, double /*aspect*/, const ViewSettings&) {}
   virtual void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) = 0;
   virtual void saveCheckpoint(const Panel&) {}
   virtual bool solving() const = 0;  // the frame statistics keep these frames apart
@@ -146,10 +146,11 @@ class ShownSolve : public Shown {
     }
   }
   bool meshShown() const override { return feed_.shown().mesh != nullptr; }
-  void cull(Renderer& renderer, const RenderView& view, double aspect) override {
+  void cull(Renderer& renderer, const RenderView& view, double aspect, const ViewSettings& settings) override {
     const SolverSnapshot& s = feed_.shown();
     if (s.mesh && s.cells)
-      renderer.setVisibleCells(visibleCells(*s.cells->partition, viewProjectionMatrix(view, aspect), view.eye));
+      renderer.setVisibleCells(settings.cullCells ? visibleCells(*s.cells->partition, viewProjectionMatrix(view, aspect), view.eye)
+                                                  : std::vector<bool>{});
   }
   void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
     panel.draw(feed_.shown(), solver_, camera, view);
@@ -288,7 +289,7 @@ int runViewer(const ViewerArgs& args) {
     camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
     const glm::ivec2 size = window.framebufferSize();
     const glm::ivec2 sceneSize{std::max(1, size.x - int(Panel::kWidthPx)), size.y};
-    shown->cull(renderer, camera.view(), double(sceneSize.x) / double(sceneSize.y));
+    shown->cull(renderer, camera.view(), double(sceneSize.x) / double(sceneSize.y), view);
     renderer.draw(camera.view(), sceneSize, Shading{std::exp2(view.exposureStops), view.highlightShooters});
     imgui.beginFrame();
     shown->drawPanel(panel, camera, view);
