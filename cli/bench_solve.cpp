@@ -87,7 +87,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
   const CellChoice cell = commandCell(scene, args.cellM, args.cellGiven);
   fmt::print("{}\n", cell.why);
   const std::vector<Patch> patches = meshScene(scene, cell.cellM);
-  const bool cells = cellsModeOn(args.cellsMode);
+  const bool cells = parseCells(args.cellsMode);
   const CellPartition partition = cells ? findCells(scene, patches) : CellPartition{};
   nlohmann::json rows = nlohmann::json::array();
   fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}; times are {}\n", scene.source, patches.size(),

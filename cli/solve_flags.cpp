@@ -70,13 +70,8 @@ SolveOptions SolveFlags::resolved() const {
   return o;
 }
 
-bool cellsModeOn(const std::string& cells) {
-  if (cells != "auto" && cells != "off")
-    throw OptionError("--cells '" + cells + "' is unknown: give auto (find the rooms and solve them cell by cell) or off");
-  return cells == "auto";
-}
+bool SolveFlags::cellsOn() const { return parseCells(cells); }
 
-bool SolveFlags::cellsOn() const { return cellsModeOn(cells); }
 
 void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")

@@ -30,7 +30,7 @@ struct SolveFlags {
   // Parses the text flags into options and validates them (throws OptionError). With --backend mesh
   // and no --projection, the projection is the single plane, the only one the mesh runs.
   SolveOptions resolved() const;
-  bool cellsOn() const;  // --cells auto: cellsModeOn(cells)
+  bool cellsOn() const;  // --cells auto: parseCells(cells)
   // The solver flags given on the command line, e.g. {"--resolution", "--preset"}.
   std::vector<std::string> given() const;
   // The cell to mesh `scene` with: --cell when given, else the one chosen from the scene's size.
@@ -48,7 +48,6 @@ CellChoice commandCell(const Scene& scene, double cellM, bool given);
 void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
 
 // --cells auto (true) or off (false); throws OptionError for anything else.
-bool cellsModeOn(const std::string& cells);
 
 // Adds SCENE, --strict, --sky, --sky-model, --sun and --preset --backend --cell --projection --resolution --ratio --shooters --until
 // --until-unshot --max-iterations --threads --cache-mb --cells --exchange-shots to a subcommand. --preset is applied as it

@@ -35,15 +35,25 @@ WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
     const double halfSpan = 0.5 * std::max(frame.heightM(), extent[across]);
     const double distanceM = 1.05 * halfSpan / std::tan(glm::radians(0.5 * fovYDeg));
     ground_ = centre + outward * (0.5 * extent[axis] + distanceM);
+    lookAt(centre);
   } else {
-    // Stand near the corner at the least `across` and `along` of the up axis' frame, looking at
-    // the centre: a bake, turned from one frame onto another, starts where its scene does.
+    // A bake, turned from one frame onto another, starts where its scene does.
     eyeHeightM = std::min(1.6, 0.6 * frame.heightM());
-    const UpFrame axes = upFrame(frame.upAxis);
-    ground_ = centre;
-    for (const glm::dvec3& e : {axes.across, axes.along}) ground_ -= 0.35 * std::abs(glm::dot(extent, e)) * e;
+    standIn(frame.boundsMin, frame.boundsMax);
   }
-  forward_ = horizontal(centre - ground_, up_);
+}
+
+void WalkCamera::standIn(const Vec3& boundsMin, const Vec3& boundsMax) {
+  const glm::dvec3 extent = boundsMax - boundsMin;
+  const glm::dvec3 centre = boundsMin + 0.5 * horizontal(extent, up_);
+  const UpFrame axes = upFrame(frame_.upAxis);
+  ground_ = centre;
+  for (const glm::dvec3& e : {axes.across, axes.along}) ground_ -= 0.35 * std::abs(glm::dot(extent, e)) * e;
+  lookAt(centre);
+}
+
+void WalkCamera::lookAt(const glm::dvec3& target) {
+  forward_ = horizontal(target - ground_, up_);
   // A point-sized or degenerate scene: look along any horizontal axis.
   forward_ = glm::length(forward_) > 1e-9 ? glm::normalize(forward_) : glm::dvec3(up_.z, up_.x, up_.y);
 }

@@ -22,6 +22,9 @@ class WalkCamera {
   // scene open on one side (a Cornell box) is looked into through that side from outside instead.
   explicit WalkCamera(const SceneFrame& frame);
 
+  // Moves to a room: near the corner of its bounds at their least `across` and `along` (as the
+  // constructor stands in the scene's), looking level at their centre; the eye height is kept.
+  void standIn(const Vec3& boundsMin, const Vec3& boundsMax);
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
 
@@ -30,6 +33,8 @@ class WalkCamera {
   double fovYDeg = 60.0;
 
  private:
+  void lookAt(const glm::dvec3& target);  // level, from where it stands
+
   SceneFrame frame_;
   glm::dvec3 up_{0.0};
   glm::dvec3 ground_{0.0};   // the point on the floor plane below the eye

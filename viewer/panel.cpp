@@ -24,6 +24,9 @@ bool sliderDouble(const char* label, double* value, double min, double max, cons
   return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &min, &max, format, flags);
 }
 
+// A cell counts as settled at this unshot fraction (the target for the camera's room).
+constexpr double kCellSettledUnshot = 0.05;
+
 // A solve parameter restarts the solve once the user lets go of it, not at every pixel dragged.
 bool released() { return ImGui::IsItemDeactivatedAfterEdit(); }
 
@@ -54,6 +57,49 @@ void row(const char* name, const char* format, double value) {
   ImGui::TextUnformatted(name);
   ImGui::TableNextColumn();
   ImGui::Text(format, value);
+}
+
+// A cells solve's state: the camera's cell, and every cell by portal distance (folded).
+void drawCellsState(const CellsProgress& cells) {
+  const int settled = static_cast<int>(std::count_if(cells.cells.begin(), cells.cells.end(), [](const auto& c) {
+    return c.unshotFraction <= kCellSettledUnshot;
+  }));
+  if (cells.focus >= 0 && cells.focus < static_cast<int>(cells.cells.size())) {
+    const CellsProgress::Row& focus = cells.cells[cells.focus];
+    ImGui::Text("%s '%s': unshot %.2f%%, %d iterations", cells.eyeInFocus ? "camera in" : "camera in no room; first",
+                focus.name.c_str(), 100.0 * focus.unshotFraction, focus.iterations);
+  } else {
+    ImGui::TextUnformatted("no camera cell yet: every cell shoots alike");
+  }
+  ImGui::Text("%zu cells, %d at %.0f%% unshot or less", cells.cells.size(), settled, 100.0 * kCellSettledUnshot);
+  if (!ImGui::CollapsingHeader("cells by portal distance")) return;
+  std::vector<int> order(cells.cells.size());
+  for (size_t c = 0; c < order.size(); ++c) order[c] = static_cast<int>(c);
+  auto rank = [&](int c) { return cells.cells[c].portalDistance < 0 ? 1 << 30 : cells.cells[c].portalDistance; };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return rank(a) < rank(b); });
+  if (ImGui::BeginTable("cells", 4, ImGuiTableFlags_ScrollY, ImVec2(0.0f, 160.0f))) {
+    ImGui::TableSetupColumn("cell");
+    ImGui::TableSetupColumn("portals");
+    ImGui::TableSetupColumn("unshot");
+    ImGui::TableSetupColumn("iterations");
+    ImGui::TableHeadersRow();
+    ImGuiListClipper clipper;  // only the rows in sight: a building has hundreds
+    clipper.Begin(static_cast<int>(order.size()));
+    while (clipper.Step())
+      for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+        const CellsProgress::Row& c = cells.cells[order[i]];
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(c.name.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%d", c.portalDistance);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f%%", 100.0 * c.unshotFraction);
+        ImGui::TableNextColumn();
+        ImGui::Text("%d", c.iterations);
+      }
+    ImGui::EndTable();
+  }
 }
 
 }  // namespace
@@ -143,12 +189,17 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
                                                           : "paused";
   if (!snapshot.mesh && snapshot.error.empty()) state = "meshing";
   const SolveOptions& o = snapshot.setup.options;
-  ImGui::Text("%s: iteration %d", state, snapshot.iteration());
+  if (snapshot.cells)
+    ImGui::Text("%s: round %d, %d iterations", state, snapshot.cells->rounds, snapshot.iteration());
+  else
+    ImGui::Text("%s: iteration %d", state, snapshot.iteration());
   if (o.untilUnshot > 0.0)
     ImGui::Text("unshot power: %.2f%% of the emitted (until %.2f%%)", 100.0 * unshot, 100.0 * o.untilUnshot);
   else
     ImGui::Text("unshot power: %.2f%% of the emitted", 100.0 * unshot);
-  if (o.until < 1.0)
+  if (snapshot.cells)
+    drawCellsState(*snapshot.cells);
+  else if (o.until < 1.0)
     ImGui::Text("C = %.4f (until %.3f)", snapshot.convergence(), o.until);
   else
     ImGui::Text("C = %.4f", snapshot.convergence());
@@ -163,7 +214,7 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
               o.resolution, o.resolution, o.shooters, snapshot.summary.patches);
   if (ImGui::Button(snapshot.playing ? "Pause" : "Play")) snapshot.playing ? solver.pause() : solver.play();
   ImGui::SameLine();
-  if (ImGui::Button("Step 1")) solver.step(1);
+  if (ImGui::Button(snapshot.cells ? "Round 1" : "Step 1")) solver.step(1);
   ImGui::SameLine();
   if (ImGui::Button("Step N")) solver.step(stepCount_);
   ImGui::SameLine();
@@ -196,9 +247,11 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
   const double lastSeconds = snapshot.curve.size() >= 2
                                  ? snapshot.curve.back().hostSeconds - snapshot.curve.end()[-2].hostSeconds
                                  : snapshot.hostSeconds();
-  ImGui::Text("host: %.3f s in all, last iteration %.2f ms", snapshot.hostSeconds(), 1e3 * lastSeconds);
-  ImGui::Text("last shooters: %zu, captured fraction %.4f", snapshot.lastShooters.size(),
-              snapshot.lastCapturedFraction);
+  ImGui::Text("host: %.3f s in all, last %s %.2f ms", snapshot.hostSeconds(), snapshot.cells ? "round" : "iteration",
+              1e3 * lastSeconds);
+  if (!snapshot.cells)
+    ImGui::Text("last shooters: %zu, captured fraction %.4f", snapshot.lastShooters.size(),
+                snapshot.lastCapturedFraction);
   drawMachineCost(snapshot);
   ImGui::Separator();
   ImGui::TextUnformatted("energy ledger");
@@ -369,6 +422,7 @@ void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
   if (ImGui::Button("Auto")) view.autoExposure = true;
   ImGui::Checkbox("follow auto exposure", &view.autoExposure);
   if (solving) ImGui::Checkbox("highlight last shooters", &view.highlightShooters);
+  if (solving) ImGui::Checkbox("draw only the rooms in sight through doors", &view.cullCells);
   sliderDouble("speed m/s", &camera.speedMps, 0.05, 10.0, "%.2f", ImGuiSliderFlags_Logarithmic);
   sliderDouble("eye height m", &camera.eyeHeightM, 0.02, 3.0, "%.2f");
   sliderDouble("field of view", &camera.fovYDeg, 20.0, 110.0, "%.0f deg");

@@ -18,6 +18,9 @@ struct ViewSettings {
   double exposureStops = 0.0;  // log2 of the linear exposure factor
   bool autoExposure = true;    // follow autoExposure() as the light streams in
   bool highlightShooters = true;
+  // With cells: draw only the rooms the eye may see through portals (viewer/cell_visibility.h);
+  // a room seen across the outside, through two windows, is then left out.
+  bool cullCells = true;
 };
 
 enum class PanelTab { Progress, ItemBuffer, Parameters, Scene, View };

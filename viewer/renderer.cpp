@@ -157,7 +157,35 @@ void Renderer::setMesh(const DisplayMesh& mesh) {
   for (size_t t = 0; t < mesh.patchOfTriangle.size(); ++t)
     trianglesByPatch_[next[static_cast<size_t>(mesh.patchOfTriangle[t])]++] = static_cast<unsigned>(t);
   highlightIndexCount_ = 0;
+  firstIndexOfCell_.clear();
+  visibleCells_.clear();
 }
+
+void Renderer::setCells(const std::vector<int>& cellOfPatch, int cells) {
+  const size_t patches = firstTriangleOfPatch_.empty() ? 0 : firstTriangleOfPatch_.size() - 1;
+  if (cellOfPatch.size() < patches)
+    throw std::invalid_argument("cells given for " + std::to_string(cellOfPatch.size()) + " patches, not the mesh's " +
+                                std::to_string(patches));
+  auto group = [&](size_t p) { return cellOfPatch[p] < 0 || cellOfPatch[p] >= cells ? cells : cellOfPatch[p]; };
+  firstIndexOfCell_.assign(static_cast<size_t>(cells) + 2, 0);
+  for (size_t p = 0; p < patches; ++p)
+    firstIndexOfCell_[group(p) + 1] += 3 * (firstTriangleOfPatch_[p + 1] - firstTriangleOfPatch_[p]);
+  for (size_t c = 1; c < firstIndexOfCell_.size(); ++c) firstIndexOfCell_[c] += firstIndexOfCell_[c - 1];
+  std::vector<unsigned> byCell(indexCount_);
+  std::vector<size_t> next(firstIndexOfCell_.begin(), firstIndexOfCell_.end() - 1);
+  for (size_t p = 0; p < patches; ++p)
+    for (size_t i = firstTriangleOfPatch_[p]; i < firstTriangleOfPatch_[p + 1]; ++i) {
+      const size_t t = trianglesByPatch_[i];
+      std::copy(indices_.begin() + 3 * t, indices_.begin() + 3 * t + 3, byCell.begin() + next[group(p)]);
+      next[group(p)] += 3;
+    }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(byCell.size() * sizeof(unsigned)), byCell.data(),
+               GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+void Renderer::setVisibleCells(std::vector<bool> visible) { visibleCells_ = std::move(visible); }
 
 void Renderer::setVertexRadiosity(const std::vector<Rgb>& vertexB) {
   if (vertexB.size() != vertexCount_)
@@ -186,6 +214,28 @@ void Renderer::setHighlightedPatches(const std::vector<int>& patches) {
   glBindVertexArray(0);
 }
 
+void Renderer::drawVisibleCells() const {
+  const size_t cells = firstIndexOfCell_.empty() ? 0 : firstIndexOfCell_.size() - 2;
+  if (visibleCells_.size() != cells || cells == 0) {
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
+    return;
+  }
+  // Runs of cells drawn, one call each; the outside (the last group) always.
+  for (size_t c = 0; c <= cells;) {
+    if (c < cells && !visibleCells_[c]) {
+      ++c;
+      continue;
+    }
+    const size_t first = firstIndexOfCell_[c];
+    while (c < cells && visibleCells_[c]) ++c;
+    if (c == cells) ++c;  // the outside follows the last cell
+    const size_t count = firstIndexOfCell_[c] - first;
+    if (count > 0)
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(first * sizeof(unsigned)));
+  }
+}
+
 void Renderer::draw(const RenderView& view, glm::ivec2 framebufferSize, const Shading& shading) {
   glViewport(0, 0, framebufferSize.x, framebufferSize.y);
   glClearColor(0.02f, 0.02f, 0.03f, 1.0f);
@@ -206,7 +256,7 @@ void Renderer::draw(const RenderView& view, glm::ivec2 framebufferSize, const Sh
   glUniform1f(tintAmountLocation_, 0.0f);
   glBindVertexArray(vertexArray_);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
+  drawVisibleCells();
 
   if (shading.highlightShooters && highlightIndexCount_ > 0) {
     // Shooters: a translucent magenta fill and a solid outline, pulled towards the eye.

@@ -29,11 +29,18 @@ class Renderer {
   void setVertexRadiosity(const std::vector<Rgb>& vertexB);
   // Patches (indices into the solver's patches) drawn tinted, e.g. the last iteration's shooters.
   void setHighlightedPatches(const std::vector<int>& patches);
+  // Groups the triangles by the cell of their patch (kOutsideCell, or a cell below `cells`), so
+  // that setVisibleCells can leave cells out. Until the next setMesh.
+  void setCells(const std::vector<int>& cellOfPatch, int cells);
+  // Per cell: whether it is drawn; empty draws every cell. Patches facing no cell are always drawn.
+  void setVisibleCells(std::vector<bool> visible);
 
   // Clears and draws into the current context's framebuffer.
   void draw(const RenderView& view, glm::ivec2 framebufferSize, const Shading& shading);
 
  private:
+  void drawVisibleCells() const;
+
   unsigned program_ = 0;
   unsigned vertexArray_ = 0;
   unsigned positionBuffer_ = 0, normalBuffer_ = 0, radiosityBuffer_ = 0;
@@ -46,6 +53,8 @@ class Renderer {
   std::vector<unsigned> indices_;          // kept to build the highlight's index list
   std::vector<size_t> firstTriangleOfPatch_;  // triangles sorted by patch: CSR offsets
   std::vector<unsigned> trianglesByPatch_;
+  std::vector<size_t> firstIndexOfCell_;  // with cells: the index buffer by cell, the outside last
+  std::vector<bool> visibleCells_;
 };
 
 }  // namespace radmesh

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "solver/bake/display_radiosity.h"
+#include "solver/cells/cell_partition.h"
 #include "solver/projection/item_buffer.h"
 #include "solver/backends/shot_stats.h"
 #include "solver/radiosity/progressive_solver.h"
@@ -19,6 +20,10 @@ namespace radmesh {
 struct SolveSetup {
   SolveOptions options;
   double cellM = 0.381;  // the paper's 15-inch grid (solver/meshing/meshing.h)
+  // --cells auto: the rooms solved cell by cell (CellSolver, docs/cells.md), the camera's first;
+  // a step is then a round of every cell's shots and a portal exchange.
+  bool cells = false;
+  int exchangeShots = 16;  // with cells: the camera's cell's shots a round (CellSolveSettings)
 };
 
 // One point per iteration of the curves the panel draws.
@@ -31,6 +36,21 @@ struct ConvergencePoint {
   std::shared_ptr<const ShotStats> shot;  // this iteration's; null without figures or on a cache hit
 };
 
+// Where a cells solve stands: per cell, and which cell it solves first.
+struct CellsProgress {
+  struct Row {
+    std::string name;
+    int iterations = 0;
+    double unshotFraction = 0.0;  // of the light the cell has had (emitted in it, or through portals)
+    int portalDistance = 0;       // from the focus; -1 where no portal leads
+  };
+  std::vector<Row> cells;  // the partition's, then "outside" if any patch faces no cell
+  int rounds = 0;
+  int focus = -1;  // the cell solved first: the eye's, else the one nearest it; -1 before an eye is known
+  bool eyeInFocus = false;  // the eye stands in the focused cell (not outside every cell)
+  std::shared_ptr<const CellPartition> partition;  // the cells' bounds, the same for a whole solve
+};
+
 struct SolverSnapshot {
   std::uint64_t generation = 0;              // counts restarts: a new mesh when it changes
   SolveSetup setup;
@@ -38,6 +58,7 @@ struct SolverSnapshot {
   SceneSummary summary;
   std::vector<Effect> effects;               // the solver's effects plan: each on or off, and why
   std::vector<Rgb> vertexB;                  // display radiosity per mesh vertex
+  double exposure = 1.0;                     // autoExposure of vertexB (viewer/exposure.h)
   std::vector<int> lastShooters;             // patches shot by the last iteration
   std::vector<ConvergencePoint> curve;       // one point per iteration so far
   Ledger ledger;
@@ -49,6 +70,7 @@ struct SolverSnapshot {
   // The back end's figures of the last shot there was (cache hits have none): on the mesh, depth
   // histograms at stages (a), (b) and emulated phase costs.
   std::shared_ptr<const ShotStats> lastShotStats;
+  std::shared_ptr<const CellsProgress> cells;  // a cells solve's; null for the whole scene's
   bool playing = false;
   bool done = false;       // the stopping rule is met (steps may still go past it)
   bool exhausted = false;  // nothing is left to shoot

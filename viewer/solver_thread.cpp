@@ -3,10 +3,18 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <optional>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <utility>
 
+#include "solver/cells/cell_at.h"
+#include "solver/cells/find_cells.h"
+#include "solver/radiosity/cell_solver.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/checkpoint.h"
+#include "solver/scene/scene_error.h"
+#include "viewer/exposure.h"
 
 namespace radmesh {
 
@@ -16,6 +24,8 @@ using Clock = std::chrono::steady_clock;
 
 // Publishing costs a pass over every vertex; while playing, the UI needs no more than this.
 constexpr auto kPublishInterval = std::chrono::milliseconds(40);
+// The solver thread's nice value, above the drawing thread's 0 (Linux's nice is per thread).
+constexpr int kSolverNice = 10;
 // An item buffer costs a projection of every patch: while playing, one now and then is enough.
 constexpr auto kItemBufferInterval = std::chrono::milliseconds(500);
 
@@ -41,7 +51,12 @@ ConvergencePoint nextPoint(const std::vector<ConvergencePoint>& curve, const Ite
 struct SolverThread::Run {
   SolveSetup setup;
   std::uint64_t generation = 0;
-  std::unique_ptr<ProgressiveSolver> solver;
+  std::unique_ptr<ProgressiveSolver> solver;       // the whole scene at once, or
+  std::unique_ptr<CellSolver> cells;               // cell by cell (setup.cells)
+  std::shared_ptr<const CellPartition> partition;  // with cells
+  int focus = -1;                                  // with cells: the cell solved first
+  bool eyeInFocus = false;
+  std::optional<Vec3> focusedEye;                  // the eye the focus was found for
   std::shared_ptr<const DisplayMesh> mesh;
   SceneSummary summary;
   std::vector<ConvergencePoint> curve;
@@ -54,6 +69,37 @@ struct SolverThread::Run {
   void add(const IterationRecord& record) {
     curve.push_back(nextPoint(curve, record));
     if (record.shotStats) lastShotStats = record.shotStats;
+  }
+  bool done() const { return cells ? cells->done() : solver->done(); }
+  bool exhausted() const { return cells ? cells->exhausted() : solver->exhausted(); }
+  int lastShooter() const { return cells ? -1 : radmesh::lastShooter(*solver); }  // cells: no item buffer
+  const std::vector<Patch>& patches() const { return cells ? cells->patches() : solver->patches(); }
+
+  // An iteration of the whole solve; a round of the cells solve, focused on the eye's cell first.
+  void step(const std::optional<Vec3>& eye, int upAxis) {
+    if (!cells) return add(solver->step());
+    focusOn(eye, upAxis);
+    const auto start = Clock::now();
+    cells->round();
+    IterationRecord record;  // the building's, over the round: C has no meaning across cells
+    record.iteration = cells->iterations();
+    record.ledger = cells->ledger();
+    record.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    add(record);
+  }
+
+  // The cell the eye stands in, else the cell nearest it; nothing before the eye is known. The
+  // look-up passes over every patch: only when the eye has moved.
+  void focusOn(const std::optional<Vec3>& eye, int upAxis) {
+    if (!eye || eye == focusedEye) return;
+    focusedEye = eye;
+    Vec3 up(0.0);
+    up[upAxis] = 1.0;
+    int cell = cellBelow(cells->patches(), *partition, *eye, up);
+    eyeInFocus = cell != kOutsideCell;
+    if (!eyeInFocus) cell = nearestCell(*partition, *eye);
+    if (cell != focus) cells->focus(cell);
+    focus = cell;
   }
 };
 
@@ -122,10 +168,17 @@ void SolverThread::setStoppingRule(double until, double untilUnshot) {
     checked.until = until;
     checked.untilUnshot = untilUnshot;
     validateOptions(checked);
+    if (pendingSetup_.cells && until < 1.0)
+      throw OptionError("a cells solve stops on the unshot power of the whole building alone: leave C at 1");
     pendingSetup_.options = checked;
     stoppingRulePending_ = true;
   }
   wake_.notify_all();
+}
+
+void SolverThread::setEye(const Vec3& eye) {
+  std::lock_guard lock(mutex_);
+  eye_ = eye;
 }
 
 void SolverThread::setItemBufferWanted(bool wanted) {
@@ -142,6 +195,9 @@ std::shared_ptr<const SolverSnapshot> SolverThread::latest() const {
 }
 
 void SolverThread::loop() {
+  // Drawing comes first: on a machine with fewer free cores than threads, the window keeps its
+  // frame rate and the solve (with the pool threads it starts, which inherit this) takes the rest.
+  setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kSolverNice);
   std::unique_ptr<Run> run;
   Clock::time_point lastPublish{};
   for (;;) {
@@ -149,21 +205,23 @@ void SolverThread::loop() {
     SolveSetup setup;
     std::string resumePath, checkpointPath;
     std::uint64_t generation = 0;
+    std::optional<Vec3> eye;
     {
       std::unique_lock lock(mutex_);
       // Paused, the thread still wakes to show the item buffer of the last shot once it is asked for.
       auto itemBufferMissing = [&] {
-        return run && itemBufferWanted_ && lastShooter(*run->solver) != run->itemBufferShooter;
+        return run && itemBufferWanted_ && run->lastShooter() != run->itemBufferShooter;
       };
       // Playing stops at the stopping rule; a step asked for goes past it, until nothing is left.
       auto canStep = [&] {
-        return run && ((playing_ && !run->solver->done()) || (pendingSteps_ > 0 && !run->solver->exhausted()));
+        return run && ((playing_ && !run->done()) || (pendingSteps_ > 0 && !run->exhausted()));
       };
       wake_.wait(lock, [&] {
         return stop_ || restartPending_ || (run && stoppingRulePending_) || (run && !pendingCheckpoint_.empty()) ||
                canStep() || itemBufferMissing();
       });
       if (stop_) return;
+      eye = eye_;
       if (restartPending_) {
         work = Work::Restart;
         restartPending_ = false;
@@ -186,7 +244,7 @@ void SolverThread::loop() {
     }
 
     if (work == Work::Restart) {
-      run = startRun(setup, generation, resumePath);
+      run = startRun(setup, generation, resumePath, eye);
       if (run) publish(*run);
       lastPublish = Clock::now();
       continue;
@@ -199,7 +257,11 @@ void SolverThread::loop() {
     if (work == Work::StoppingRule) {
       run->setup.options.until = setup.options.until;
       run->setup.options.untilUnshot = setup.options.untilUnshot;
-      run->solver->setStoppingRule(setup.options.until, setup.options.untilUnshot);  // validated by the caller
+      // Validated by the caller.
+      if (run->cells)
+        run->cells->setUntilUnshot(setup.options.untilUnshot);
+      else
+        run->solver->setStoppingRule(setup.options.until, setup.options.untilUnshot);
       publish(*run);
       continue;
     }
@@ -209,7 +271,7 @@ void SolverThread::loop() {
       continue;
     }
     try {
-      run->add(run->solver->step());
+      run->step(eye, scene_.upAxis);
     } catch (const std::exception& e) {
       publishFailure(run->setup, e.what());
       run.reset();
@@ -218,10 +280,10 @@ void SolverThread::loop() {
     bool moreToDo = false;
     {
       std::lock_guard lock(mutex_);
-      moreToDo = ((playing_ && !run->solver->done()) || pendingSteps_ > 0) && !restartPending_;
+      moreToDo = ((playing_ && !run->done()) || pendingSteps_ > 0) && !restartPending_;
     }
     // While iterating, publish at the UI's pace; the last iteration before a pause always.
-    const bool finished = !moreToDo || run->solver->exhausted();
+    const bool finished = !moreToDo || run->exhausted();
     if (finished || Clock::now() - lastPublish >= kPublishInterval) {
       refreshItemBuffer(*run, finished);
       publish(*run);
@@ -231,20 +293,30 @@ void SolverThread::loop() {
 }
 
 std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setup, std::uint64_t generation,
-                                                         const std::string& resumePath) {
+                                                         const std::string& resumePath,
+                                                         const std::optional<Vec3>& eye) {
   try {
     auto run = std::make_unique<Run>();
     run->setup = setup;
     run->generation = generation;
     std::vector<Patch> patches = meshScene(scene_, setup.cellM);
     run->summary = summarizeScene(scene_, patches, setup.cellM);
-    run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), setup.options);
-    if (!resumePath.empty()) {
+    if (setup.cells) {
+      if (setup.options.backend != Backend::Native)
+        throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
+      run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
+      run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, setup.options,
+                                                CellSolveSettings{setup.cellM, setup.exchangeShots});
+      run->focusOn(eye, scene_.upAxis);
+    } else {
+      run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), setup.options);
+    }
+    if (!resumePath.empty() && run->solver) {
       resumeFromCheckpoint(resumePath, *run->solver);
       for (const IterationRecord& record : run->solver->history()) run->add(record);
       run->checkpointMessage = "resumed from " + resumePath;
     }
-    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->solver->patches()));
+    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->patches()));
     return run;
   } catch (const std::exception& e) {
     publishFailure(setup, e.what());
@@ -253,6 +325,10 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
 }
 
 void SolverThread::save(Run& run, const std::string& path) {
+  if (run.cells) {
+    run.checkpointMessage = "a cells solve keeps no checkpoint (it is one solve per cell): restart with --cells off";
+    return;
+  }
   try {
     writeCheckpoint(path, *run.solver);
     run.checkpointMessage = "saved " + path + " after iteration " + std::to_string(run.solver->history().size());
@@ -262,7 +338,7 @@ void SolverThread::save(Run& run, const std::string& path) {
 }
 
 void SolverThread::refreshItemBuffer(Run& run, bool finished) {
-  const int shooter = lastShooter(*run.solver);
+  const int shooter = run.lastShooter();
   {
     std::lock_guard lock(mutex_);
     if (!itemBufferWanted_) return;
@@ -279,27 +355,47 @@ void SolverThread::refreshItemBuffer(Run& run, bool finished) {
   run.itemBufferTime = now;
 }
 
+std::shared_ptr<const CellsProgress> SolverThread::cellsProgress(const Run& run) {
+  auto progress = std::make_shared<CellsProgress>();
+  const std::vector<CellFigures> figures = run.cells->cellFigures();
+  for (size_t c = 0; c < figures.size(); ++c)
+    progress->cells.push_back({figures[c].name, figures[c].iterations, figures[c].ledger.unshotFraction(),
+                               run.cells->portalDistance(static_cast<int>(c))});
+  progress->rounds = run.cells->rounds();
+  progress->focus = run.focus;
+  progress->eyeInFocus = run.eyeInFocus;
+  progress->partition = run.partition;
+  return progress;
+}
+
 void SolverThread::publish(const Run& run) {
   auto snapshot = std::make_shared<SolverSnapshot>();
   snapshot->generation = run.generation;
   snapshot->setup = run.setup;
   snapshot->mesh = run.mesh;
   snapshot->summary = run.summary;
-  snapshot->effects = run.solver->effectsPlan().effects;
-  snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayRadiosity());
-  const auto& history = run.solver->history();
-  if (!history.empty()) {
-    snapshot->lastShooters = history.back().shooters;
-    snapshot->lastCapturedFraction = history.back().capturedFraction;
+  if (run.cells) {
+    snapshot->vertexB = vertexRadiosity(*run.mesh, run.cells->displayRadiosity());
+    snapshot->cells = cellsProgress(run);
+  } else {
+    snapshot->effects = run.solver->effectsPlan().effects;
+    snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayRadiosity());
+    const auto& history = run.solver->history();
+    if (!history.empty()) {
+      snapshot->lastShooters = history.back().shooters;
+      snapshot->lastCapturedFraction = history.back().capturedFraction;
+    }
   }
+  // Here rather than on the UI's thread: it sorts every triangle.
+  snapshot->exposure = autoExposure(*run.mesh, snapshot->vertexB);
   snapshot->lastShotStats = run.lastShotStats;
   snapshot->itemBuffer = run.itemBuffer;
   snapshot->itemBufferShooter = run.itemBufferShooter;
   snapshot->curve = run.curve;
-  snapshot->ledger = run.solver->ledger();
-  snapshot->done = run.solver->done();
+  snapshot->ledger = run.cells ? run.cells->ledger() : run.solver->ledger();
+  snapshot->done = run.done();
   snapshot->checkpointMessage = run.checkpointMessage;
-  snapshot->exhausted = run.solver->exhausted();
+  snapshot->exhausted = run.exhausted();
   std::lock_guard lock(mutex_);
   snapshot->playing = playing_;
   latest_ = std::move(snapshot);

@@ -1,9 +1,10 @@
 #pragma once
-// The progressive solver on its own thread. The UI sends commands (play, pause, step, restart)
+// The progressive solver (or, with SolveSetup::cells, the cells solver) on its own thread. The UI sends commands (play, pause, step, restart)
 // and reads the newest published snapshot; neither ever waits for an iteration to finish.
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -23,7 +24,8 @@ class SolverThread {
 
   void play();
   void pause();               // also cancels pending steps
-  void step(int iterations);  // this many more iterations, then pause; also past the stopping rule
+  // This many more iterations (with cells: rounds), then pause; also past the stopping rule.
+  void step(int iterations);
   // Changes the stopping rule of the solve under way (and of later restarts), without restarting
   // it: a stricter rule lets a stopped solve play on. Throws OptionError on values out of range.
   void setStoppingRule(double until, double untilUnshot);
@@ -31,6 +33,9 @@ class SolverThread {
   // Saves the solve to a checkpoint after the iteration under way; the snapshots' checkpointMessage
   // then says where, or why not.
   void saveCheckpoint(const std::string& path);
+  // Where the camera's eye is: a cells solve solves its cell first, and follows it from round to
+  // round. Until it is given, every cell shoots alike.
+  void setEye(const Vec3& eye);
   // Whether snapshots should carry the last shooter's item buffer (it costs a projection).
   void setItemBufferWanted(bool wanted);
 
@@ -41,9 +46,11 @@ class SolverThread {
   struct Run;  // the solver and what the thread accumulates across its iterations
   void loop();
   // Null: failed. With a resume path, goes on from that checkpoint.
-  std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation, const std::string& resumePath);
+  std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation, const std::string& resumePath,
+                                const std::optional<Vec3>& eye);
   void save(Run& run, const std::string& path);
   void refreshItemBuffer(Run& run, bool finished);
+  static std::shared_ptr<const CellsProgress> cellsProgress(const Run& run);
   void publish(const Run& run);
   void publishFailure(const SolveSetup& setup, const std::string& error);
 
@@ -56,6 +63,7 @@ class SolverThread {
   bool restartPending_ = true;
   bool stoppingRulePending_ = false;
   bool itemBufferWanted_ = false;
+  std::optional<Vec3> eye_;
   SolveSetup pendingSetup_;
   std::string pendingResume_;      // for the first run only: a restart solves from scratch
   std::string pendingCheckpoint_;  // where to save, once the iteration under way is done

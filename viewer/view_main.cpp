@@ -20,8 +20,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
                  "(MGF and the built-in rooms z, glTF y)");
-  app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here) or native (host CPU)")
-      ->capture_default_str();
+  CLI::Option* backendGiven =
+      app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here; native with --cells auto) or "
+                     "native (host CPU)")
+          ->capture_default_str();
   app.add_option("--projection", projection, "plane, hemicube or analytic")->capture_default_str();
   app.add_option("--mapping", mapping, "Single plane over the PEs (mesh back end): hierarchical, cut-and-stack, adaptive")
       ->capture_default_str();
@@ -43,6 +45,15 @@ int main(int argc, char** argv) {
   app.add_option("--until-unshot", o.untilUnshot,
                  "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: off)")
       ->capture_default_str();
+  std::string cells = "off";
+  app.add_option("--cells", cells, "auto: find the rooms and solve them cell by cell, the camera's first (docs/cells.md); "
+                 "off: the whole scene at once")
+      ->capture_default_str();
+  app.add_option("--exchange-shots", args.setup.exchangeShots,
+                 "With --cells auto: the camera's cell's iterations between portal exchanges (a neighbour at portal "
+                 "distance d shoots this >> d)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")->capture_default_str();
   app.add_option("--resume", args.resume, "Go on from a checkpoint of the same scene and options (radmesh solve "
                  "--checkpoint, or the panel's Save checkpoint)");
@@ -55,7 +66,10 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--min-frames", args.minFrames, "With --steps: draw at least this many frames (timing)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps)");
+  app.add_option("--frames", args.frames, "Frame-time report: solve while drawing N frames once the mesh shows, "
+                 "print the lowest and median frame rates, save --screenshot, exit")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps or --frames)");
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -63,8 +77,15 @@ int main(int argc, char** argv) {
     if (sky->count() > 0) radmesh::checkSkyLux(args.daylight.skyLux);
     args.daylight.sky = radmesh::parseSkyModel(skyModel);
     if (!sun.empty()) args.daylight.sun = {radmesh::parseSun(sun)};
-    if (!args.screenshot.empty() && args.steps <= 0)
-      throw radmesh::OptionError("--screenshot needs --steps N (the number of iterations to run first)");
+    if (!args.screenshot.empty() && args.steps <= 0 && args.frames <= 0)
+      throw radmesh::OptionError("--screenshot needs --steps N (the number of iterations to run first) or --frames N");
+    if (args.steps > 0 && args.frames > 0)
+      throw radmesh::OptionError("--steps and --frames are two different runs: give one");
+    args.setup.cells = radmesh::parseCells(cells);
+    // The cells solve runs on the host's CPU (docs/cells.md), and keeps no checkpoint.
+    if (args.setup.cells && backendGiven->count() == 0) backend = "native";
+    if (args.setup.cells && !args.resume.empty())
+      throw radmesh::OptionError("--resume goes on from one solve, not a cells solve: give --cells off");
     if (std::sscanf(size.c_str(), "%dx%d", &args.windowSize.x, &args.windowSize.y) != 2 || args.windowSize.x < 64 ||
         args.windowSize.y < 64)
       throw radmesh::OptionError("--size must be WxH with both at least 64, e.g. 1280x720");

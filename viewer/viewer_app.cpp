@@ -2,17 +2,20 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "solver/bake/bake_reader.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
 #include "viewer/camera.h"
+#include "viewer/cell_visibility.h"
 #include "viewer/exposure.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"
@@ -32,12 +35,16 @@ class SnapshotFeed {
  public:
   void show(const std::shared_ptr<const SolverSnapshot>& snapshot, Renderer& renderer, ViewSettings& view) {
     if (snapshot == shown_) return;
-    if (!shown_ || snapshot->generation != shown_->generation || snapshot->mesh != shown_->mesh)
+    if (!shown_ || snapshot->generation != shown_->generation || snapshot->mesh != shown_->mesh) {
       renderer.setMesh(snapshot->mesh ? *snapshot->mesh : DisplayMesh{});
+      if (snapshot->mesh && snapshot->cells)
+        renderer.setCells(snapshot->cells->partition->cellOfPatch,
+                          static_cast<int>(snapshot->cells->partition->cells.size()));
+    }
     if (snapshot->mesh) {
       renderer.setVertexRadiosity(snapshot->vertexB);
       renderer.setHighlightedPatches(snapshot->lastShooters);
-      if (view.autoExposure) view.exposureStops = std::log2(autoExposure(*snapshot->mesh, snapshot->vertexB));
+      if (view.autoExposure) view.exposureStops = std::log2(snapshot->exposure);
     }
     shown_ = snapshot;
   }
@@ -75,11 +82,41 @@ class FrameStats {
   Phase solving_, idle_;
 };
 
+// --frames N: each frame's time, and the part of it spent taking in the solver's snapshots.
+class FrameReport {
+ public:
+  void add(double frameSeconds, double feedSeconds) {
+    frames_.push_back(frameSeconds);
+    feeds_.push_back(feedSeconds);
+  }
+  long frames() const { return static_cast<long>(frames_.size()); }
+  void print() const {
+    if (frames_.empty()) return;
+    std::vector<double> f = frames_, feed = feeds_;
+    std::sort(f.begin(), f.end());
+    std::sort(feed.begin(), feed.end());
+    double sum = 0.0;
+    for (double s : f) sum += s;
+    const long slow = std::count_if(f.begin(), f.end(), [](double s) { return s > 1.0 / 30.0; });
+    std::printf("radmesh-view: %zu frames with the mesh: lowest %.1f fps (%.1f ms), median %.1f fps (%.1f ms), "
+                "mean %.1f fps, %ld under 30 fps; taking in snapshots: median %.2f ms, longest %.1f ms a frame\n",
+                f.size(), 1.0 / f.back(), 1e3 * f.back(), 1.0 / f[f.size() / 2], 1e3 * f[f.size() / 2],
+                double(f.size()) / sum, slow, 1e3 * feed[feed.size() / 2], 1e3 * feed.back());
+  }
+
+ private:
+  std::vector<double> frames_, feeds_;
+};
+
 // What the window shows: a solve converging on its own thread, or a bake.
 class Shown {
  public:
   virtual ~Shown() = default;
-  virtual void feed(Renderer& renderer, ViewSettings& view) = 0;  // hands the renderer what changed
+  // Hands the renderer what changed, and the solve where the camera is.
+  virtual void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) = 0;
+  virtual bool meshShown() const = 0;
+  // Before drawing: what the renderer may leave out, seen from `view`.
+  virtual void cull(Renderer&, const RenderView&, double /*aspect*/, const ViewSettings&) {}
   virtual void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) = 0;
   virtual void saveCheckpoint(const Panel&) {}
   virtual bool solving() const = 0;  // the frame statistics keep these frames apart
@@ -95,7 +132,26 @@ class ShownSolve : public Shown {
       : smokeTest_(args.steps > 0), steps_(args.steps), solver_(std::move(scene), setup, !smokeTest_, args.resume) {
     if (smokeTest_) solver_.step(args.steps);
   }
-  void feed(Renderer& renderer, ViewSettings& view) override { feed_.show(solver_.latest(), renderer, view); }
+  void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) override {
+    solver_.setEye(camera.view().eye);
+    feed_.show(solver_.latest(), renderer, view);
+    // A camera outside every room (the scene's corner is outside a building) goes into the room
+    // solved first, once a solve.
+    const SolverSnapshot& s = feed_.shown();
+    if (s.cells && s.cells->focus >= 0 && s.generation != placedGeneration_) {
+      placedGeneration_ = s.generation;
+      const std::vector<Cell>& cells = s.cells->partition->cells;
+      if (!s.cells->eyeInFocus && s.cells->focus < static_cast<int>(cells.size()))
+        camera.standIn(cells[s.cells->focus].boundsMin, cells[s.cells->focus].boundsMax);
+    }
+  }
+  bool meshShown() const override { return feed_.shown().mesh != nullptr; }
+  void cull(Renderer& renderer, const RenderView& view, double aspect, const ViewSettings& settings) override {
+    const SolverSnapshot& s = feed_.shown();
+    if (s.mesh && s.cells)
+      renderer.setVisibleCells(settings.cullCells ? visibleCells(*s.cells->partition, viewProjectionMatrix(view, aspect), view.eye)
+                                                  : std::vector<bool>{});
+  }
   void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
     panel.draw(feed_.shown(), solver_, camera, view);
   }
@@ -103,19 +159,25 @@ class ShownSolve : public Shown {
   bool solving() const override { return smokeTest_ ? !ready() : feed_.shown().playing && !feed_.shown().done; }
   bool ready() const override {
     const SolverSnapshot& s = feed_.shown();
-    return s.iteration() >= steps_ || s.done || !s.error.empty();
+    const int steps = s.cells ? s.cells->rounds : s.iteration();
+    return steps >= steps_ || s.done || !s.error.empty();
   }
   std::string failure() const override {
     return feed_.shown().error.empty() ? "" : "the solve failed: " + feed_.shown().error;
   }
   std::string state() const override {
-    char line[96];
-    std::snprintf(line, sizeof line, "solver at iteration %d, C = %.4f", feed_.shown().iteration(),
-                  feed_.shown().convergence());
+    const SolverSnapshot& s = feed_.shown();
+    char line[160];
+    if (s.cells)
+      std::snprintf(line, sizeof line, "cells solve at round %d, %d iterations, unshot %.2f%%", s.cells->rounds,
+                    s.iteration(), 100.0 * s.ledger.unshotFraction());
+    else
+      std::snprintf(line, sizeof line, "solver at iteration %d, C = %.4f", s.iteration(), s.convergence());
     return line;
   }
 
  private:
+  std::uint64_t placedGeneration_ = 0;  // the solve whose cells placed the camera
   bool smokeTest_;
   int steps_;
   SolverThread solver_;
@@ -124,18 +186,19 @@ class ShownSolve : public Shown {
 
 class ShownBake : public Shown {
  public:
-  ShownBake(const std::string& path, Bake bake) : bake_(std::move(bake)) {
+  ShownBake(const std::string& path, Bake bake) : bake_(std::move(bake)), exposure_(autoExposure(bake_.mesh, bake_.vertexB)) {
     description_ = "bake " + path + " (by " + (bake_.fromRadmesh ? "radmesh" : "another tool") + "), " +
                    std::to_string(bake_.mesh.indices.size() / 3) + " triangles, up " +
                    upAxisName(bake_.upAxis);
   }
-  void feed(Renderer& renderer, ViewSettings& view) override {
+  bool meshShown() const override { return true; }
+  void feed(Renderer& renderer, ViewSettings& view, WalkCamera&) override {
     if (!fed_) {
       renderer.setMesh(bake_.mesh);
       renderer.setVertexRadiosity(bake_.vertexB);
       fed_ = true;
     }
-    if (view.autoExposure) view.exposureStops = std::log2(autoExposure(bake_.mesh, bake_.vertexB));
+    if (view.autoExposure) view.exposureStops = std::log2(exposure_);
   }
   void drawPanel(Panel& panel, WalkCamera& camera, ViewSettings& view) override {
     panel.drawBake(description_, camera, view);
@@ -146,6 +209,7 @@ class ShownBake : public Shown {
 
  private:
   Bake bake_;
+  double exposure_;  // the bake's auto exposure: it never changes
   std::string description_;
   bool fed_ = false;
 };
@@ -197,10 +261,13 @@ int runViewer(const ViewerArgs& args) {
 
   auto lastFrame = Clock::now();
   FrameStats stats;
+  FrameReport report;
   long frames = 0;
   int framesSinceReady = 0;
   int exitCode = 0;
   bool saveKeyWasDown = false;  // F5 saves once per press
+  double feedSeconds = 0.0;     // the last frame's, for the report
+  long framesWithMesh = 0;
   while (!window.shouldClose()) {
     glfwPollEvents();
     if (glfwGetKey(window.window(), GLFW_KEY_ESCAPE) == GLFW_PRESS && !imgui.wantsKeyboard()) window.requestClose();
@@ -212,11 +279,17 @@ int runViewer(const ViewerArgs& args) {
     lastFrame = now;
     // dt is the previous frame's time; it counts where that frame's snapshot stood.
     if (frames > 0) stats.add(dt, shown->solving());
+    // The report starts a frame after the mesh's: taking in a new mesh is not drawing.
+    if (args.frames > 0 && framesWithMesh >= 2) report.add(dt, feedSeconds);
 
-    shown->feed(renderer, view);
+    const auto feedStart = Clock::now();
+    shown->feed(renderer, view, camera);
+    feedSeconds = std::chrono::duration<double>(Clock::now() - feedStart).count();
+    if (shown->meshShown()) ++framesWithMesh;
     camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
     const glm::ivec2 size = window.framebufferSize();
     const glm::ivec2 sceneSize{std::max(1, size.x - int(Panel::kWidthPx)), size.y};
+    shown->cull(renderer, camera.view(), double(sceneSize.x) / double(sceneSize.y), view);
     renderer.draw(camera.view(), sceneSize, Shading{std::exp2(view.exposureStops), view.highlightShooters});
     imgui.beginFrame();
     shown->drawPanel(panel, camera, view);
@@ -224,7 +297,8 @@ int runViewer(const ViewerArgs& args) {
     ++frames;
 
     // The panel lays itself out over a couple of frames: wait for them before the screenshot.
-    if (smokeTest && shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames) {
+    const bool smokeTestDone = smokeTest && shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames;
+    if (smokeTestDone || (args.frames > 0 && report.frames() >= args.frames)) {
       if (!shown->failure().empty()) {
         std::fprintf(stderr, "radmesh-view: %s\n", shown->failure().c_str());
         exitCode = 1;
@@ -238,6 +312,7 @@ int runViewer(const ViewerArgs& args) {
   }
 
   stats.print(window.framebufferSize(), shown->state());
+  report.print();
   return exitCode;
 }
 

@@ -31,6 +31,9 @@ struct ViewerArgs {
   int steps = 0;
   long minFrames = 0;  // and draw at least this many frames first (for timing)
   std::string screenshot;
+  // Frame-time report when frames > 0: solve (playing) while drawing this many frames from the
+  // first that shows the mesh, print their frame rates (lowest, median), save --screenshot, exit.
+  long frames = 0;
 };
 
 // Returns the process exit code; throws SceneError, OptionError or std::runtime_error (no

@@ -312,6 +312,13 @@ bool CellSolver::done() const {
          iterations() >= o.maxIterations;
 }
 
+void CellSolver::setUntilUnshot(double untilUnshot) {
+  SolveOptions changed = state_->options;
+  changed.untilUnshot = untilUnshot;
+  validateOptions(changed);
+  state_->options = changed;
+}
+
 Ledger CellSolver::ledger() const {
   const State& s = *state_;
   Ledger total;

@@ -59,6 +59,9 @@ class CellSolver {
   // emitted, options.maxIterations shot (checked between rounds), or nothing left anywhere.
   bool done() const;
   bool exhausted() const;
+  // A new stopping rule for the solve under way (the viewer's panel): throws OptionError for a
+  // value out of range.
+  void setUntilUnshot(double untilUnshot);
   // The camera's cell: a cell's unshot power and its part of the round's budget count half for each
   // portal between it and the focus, and the cells are started in that order. -1: no focus.
   void focus(int cell);

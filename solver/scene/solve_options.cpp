@@ -69,6 +69,12 @@ Backend parseBackend(const std::string& text) {
   throw OptionError("--backend '" + text + "' is unknown: give native or mesh");
 }
 
+bool parseCells(const std::string& text) {
+  if (text != "auto" && text != "off")
+    throw OptionError("--cells '" + text + "' is unknown: give auto (find the rooms and solve them cell by cell) or off");
+  return text == "auto";
+}
+
 void applyPreset(Preset preset, SolveOptions& o) {
   const bool bake = preset == Preset::Bake;
   o.projection = bake ? Projection::Hemicube : Projection::Plane;

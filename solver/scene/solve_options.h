@@ -56,5 +56,7 @@ const char* toString(MappingKind kind);
 MappingKind parseMapping(const std::string& text);    // throws OptionError
 const char* toString(EffectsMode mode);
 EffectsMode parseEffects(const std::string& text);    // throws OptionError
+// --cells: "auto" (find the rooms and solve them cell by cell, docs/cells.md) is true, "off" false.
+bool parseCells(const std::string& text);             // throws OptionError
 
 }  // namespace radmesh

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "solver/cells/cell_partition.h"
 #include "viewer/exposure.h"
 #include "viewer/gl_context.h"
 #include "viewer/offscreen_render.h"
@@ -124,6 +125,29 @@ TEST(Renderer, ResizedContextDrawsAtTheNewSize) {
     EXPECT_NEAR(pixel(image, 48, 24)[0], srgbByte(0.5), 1);
     EXPECT_EQ(pixel(image, 48 - 30, 24)[0], pixel(image, 2, 2)[0]);
   }
+}
+
+// Triangles grouped by cell: a cell left out is not drawn, the patches facing no cell always are.
+TEST(Renderer, DrawsOnlyTheVisibleCellsAndTheOutside) {
+  OsMesaContext context({64, 64});
+  Renderer renderer;
+  renderer.setMesh(facingSquare());
+  renderer.setVertexRadiosity(std::vector<Rgb>(4, Rgb{0.5}));
+  // Patch 0 (x > z, right of the middle row) and patch 1 (left of it).
+  auto drawn = [&](const std::vector<int>& cellOfPatch, int cells, std::vector<bool> visible) {
+    renderer.setCells(cellOfPatch, cells);
+    renderer.setVisibleCells(std::move(visible));
+    renderer.draw(frontView(), context.framebufferSize(), Shading{1.0, false});
+    const Image image = captureFramebuffer(context.framebufferSize());
+    auto lit = [&](int x) { return std::abs(pixel(image, x, 32)[0] - srgbByte(0.5)) <= 1; };
+    return std::array<bool, 2>{lit(42), lit(22)};
+  };
+  EXPECT_EQ(drawn({1, 0}, 2, {true, false}), (std::array<bool, 2>{false, true}));
+  EXPECT_EQ(drawn({1, 0}, 2, {false, true}), (std::array<bool, 2>{true, false}));
+  EXPECT_EQ(drawn({1, 0}, 2, {false, false}), (std::array<bool, 2>{false, false}));
+  EXPECT_EQ(drawn({1, 0}, 2, {}), (std::array<bool, 2>{true, true})) << "no visibility: every cell";
+  EXPECT_EQ(drawn({kOutsideCell, 0}, 1, {false}), (std::array<bool, 2>{true, false})) << "the outside is drawn";
+  EXPECT_THROW(renderer.setCells({0}, 1), std::invalid_argument);
 }
 
 TEST(Renderer, RefusesRadiosityOfTheWrongLength) {

@@ -1,0 +1,124 @@
+// The viewer's cells solve: the camera's room is solved first, and the focus follows the eye.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "solver/cells/find_cells.h"
+#include "solver/io/scene_loader.h"
+#include "tests/viewer/solver_thread_wait.h"
+#include "viewer/solver_thread.h"
+
+namespace radmesh {
+namespace {
+
+using test::Snapshot;
+using test::waitFor;
+
+SolveSetup cellsSetup() {
+  SolveSetup setup;
+  setup.cells = true;
+  setup.options.backend = Backend::Native;
+  setup.options.resolution = 32;
+  setup.options.until = 1.0;
+  setup.options.untilUnshot = 0.0;  // only the steps stop it
+  setup.options.threads = 1;
+  return setup;
+}
+
+// 1.6 m above the middle of the named room's floor.
+Vec3 eyeIn(const Scene& scene, const std::string& room) {
+  for (const Polygon& polygon : scene.polygons) {
+    if (groupOfOrigin(polygon.origin) != room || polygon.origin.find(" floor") == std::string::npos) continue;
+    Vec3 middle(0.0);
+    for (const Vec3& v : polygon.vertices) middle += v / double(polygon.vertices.size());
+    return middle + Vec3(0.0, 0.0, 1.6);
+  }
+  ADD_FAILURE() << "no floor in " << room;
+  return Vec3(0.0);
+}
+
+int cellNamed(const CellsProgress& cells, const std::string& name) {
+  for (size_t c = 0; c < cells.cells.size(); ++c)
+    if (cells.cells[c].name == name) return static_cast<int>(c);
+  ADD_FAILURE() << "no cell " << name;
+  return 0;
+}
+
+// With the eye in room r0c0 of building:3x3, the first round shoots 16 iterations there and one in
+// the farthest room, which is left with more of its light unshot; walking into that room moves the
+// focus there at the next round.
+TEST(CellsSolverThread, TheCamerasRoomIsSolvedFirstAndTheFocusFollowsTheEye) {
+  const Scene scene = loadScene("building:3x3");
+  SolverThread thread(scene, cellsSetup(), /*playing=*/false);
+  thread.setEye(eyeIn(scene, "r0c0"));
+  thread.step(1);
+  const Snapshot first = waitFor(thread, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 1; });
+  ASSERT_TRUE(first->cells);
+  const CellsProgress& cells = *first->cells;
+  EXPECT_EQ(cells.rounds, 1);
+  const int room = cellNamed(cells, "r0c0");
+  EXPECT_EQ(cells.focus, room);
+  EXPECT_TRUE(cells.eyeInFocus);
+  EXPECT_EQ(cells.cells[room].portalDistance, 0);
+  EXPECT_EQ(cells.cells[room].iterations, 16);
+  const auto far = std::max_element(cells.cells.begin(), cells.cells.end(), [](const auto& a, const auto& b) {
+    return a.portalDistance < b.portalDistance;
+  });
+  const int farCell = static_cast<int>(far - cells.cells.begin());
+  ASSERT_GE(far->portalDistance, 4) << "16 >> 4 leaves one shot a round";
+  EXPECT_EQ(far->iterations, 1);
+  EXPECT_LT(cells.cells[room].unshotFraction, far->unshotFraction);
+  EXPECT_EQ(first->iteration(), [&] {
+    int n = 0;
+    for (const auto& c : cells.cells) n += c.iterations;
+    return n;
+  }());
+
+  thread.setEye(eyeIn(scene, far->name));
+  thread.step(1);
+  const Snapshot second = waitFor(thread, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 2; });
+  EXPECT_EQ(second->cells->focus, farCell);
+  EXPECT_EQ(second->cells->cells[farCell].portalDistance, 0);
+  EXPECT_EQ(second->cells->cells[farCell].iterations, 1 + 16);
+  EXPECT_EQ(second->cells->cells[room].iterations, 16 + 1);
+}
+
+// Before the eye is known, every cell shoots alike; outside every room, the nearest room is first.
+TEST(CellsSolverThread, WithoutAnEyeEveryCellShootsAlike) {
+  const Scene scene = loadScene("building:1x1");
+  SolveSetup setup = cellsSetup();
+  setup.exchangeShots = 3;
+  SolverThread thread(scene, setup, false);
+  thread.step(1);
+  const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 1; });
+  EXPECT_EQ(s->cells->focus, -1);
+  for (const auto& c : s->cells->cells) EXPECT_EQ(c.iterations, 3) << c.name;
+}
+
+TEST(CellsSolverThread, AnEyeOutsideTheBuildingFocusesTheNearestRoom) {
+  const Scene scene = loadScene("building:1x1");
+  SolverThread thread(scene, cellsSetup(), false);
+  thread.setEye(Vec3(-100.0, -100.0, 1.6));
+  thread.step(1);
+  const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 1; });
+  ASSERT_GE(s->cells->focus, 0);
+  EXPECT_FALSE(s->cells->eyeInFocus);
+  const CellPartition& partition = *s->cells->partition;
+  for (size_t c = 0; c < partition.cells.size(); ++c) {
+    const Vec3 eye(-100.0, -100.0, 1.6);
+    auto distance = [&](const Cell& cell) { return glm::length(eye - glm::clamp(eye, cell.boundsMin, cell.boundsMax)); };
+    EXPECT_LE(distance(partition.cells[s->cells->focus]), distance(partition.cells[c])) << partition.cells[c].name;
+  }
+}
+
+TEST(CellsSolverThread, ACellsSolveOnTheMeshBackEndIsRefusedWithTheFix) {
+  SolveSetup setup = cellsSetup();
+  setup.options.backend = Backend::Mesh;
+  SolverThread thread(loadScene("building:1x1"), setup, false);
+  const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return !s.error.empty(); });
+  EXPECT_NE(s->error.find("--backend native"), std::string::npos) << s->error;
+}
+
+}  // namespace
+}  // namespace radmesh
