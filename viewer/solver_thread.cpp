@@ -244,7 +244,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
       for (const IterationRecord& record : run->solver->history()) run->add(record);
       run->checkpointMessage = "resumed from " + resumePath;
     }
-    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->solver->patches()));
+    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->solver->elements()));
     return run;
   } catch (const std::exception& e) {
     publishFailure(setup, e.what());
@@ -286,7 +286,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->mesh = run.mesh;
   snapshot->summary = run.summary;
   snapshot->effects = run.solver->effectsPlan().effects;
-  snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayRadiosity());
+  snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayElementRadiosity());
   const auto& history = run.solver->history();
   if (!history.empty()) {
     snapshot->lastShooters = history.back().shooters;

@@ -53,6 +53,7 @@ struct SolverProgress {
   // The form-factor cache, most recently used first. On the mesh back end a row computed with
   // other shooters beside it differs in its last bits, so which rows the cache serves matters.
   std::vector<FormFactorRow> cachedRows;
+  std::vector<Rgb> elementRadiosity;  // per element when patches are cut into elements; else empty
 };
 
 // Throws SceneError for input it cannot solve (NaN or infinite coordinates or emittance, an area
@@ -78,6 +79,7 @@ class ProgressiveSolver {
   // absorbed but waits on them (ledger portalOut) until takePortalPower() moves it to the
   // neighbour cell, whose solve receives it with addPortalPower() (ledger portalIn) as unshot
   // power of its twin patch. Call before the first step.
+  // Throws OptionError when patches are cut into elements (not built yet).
   void setPortalPatches(const std::vector<int>& portalPatches);
   const Rgb& portalPower(int patch) const;  // what waits on the portal patch
   Rgb takePortalPower(int patch);  // the same, leaving it empty
@@ -90,6 +92,13 @@ class ProgressiveSolver {
   const std::vector<Patch>& patches() const;
   const std::vector<Rgb>& radiosity() const;  // B per patch, W/m^2
   std::vector<Rgb> displayRadiosity() const;  // B plus the display-only ambient term
+  // The receivers (options().subdivide, solver/meshing/elements.h): the elements patches are cut
+  // into, listed patch by patch; with subdivide off, the patches themselves. Each element's B
+  // gathers what reaches it; a patch's B is the area mean of its elements'. Output (bake, render,
+  // viewer) shows elements.
+  const std::vector<Patch>& elements() const;
+  const std::vector<Rgb>& elementRadiosity() const;  // B per element, W/m^2
+  std::vector<Rgb> displayElementRadiosity() const;  // B per element plus the display-only ambient term
   const Ledger& ledger() const;
   const std::vector<IterationRecord>& history() const;
   // The options in force: as given, but with an analytic projection where occlusion is off.
