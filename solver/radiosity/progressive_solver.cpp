@@ -242,12 +242,12 @@ void ProgressiveSolver::State::updateUnshot() {
 // receiver updated where the back end keeps it.
 template <typename Value>
 void ProgressiveSolver::State::receive(const FormFactorRow& row, const Value& power) {
+  if (subdivided()) return receiveOnElements(row, power);
   // Per channel: incident, reflected, absorbed, gain, B, dB (6 flops); then the unshot power (a
   // channel sum and the area), the absorbed power (a channel sum) and the running sum (1). A grey
   // scene's channel sums are one multiply each.
   constexpr bool kColour = std::is_same_v<Value, Rgb>;
   constexpr double kFlops = kColour ? 3 * 6 + (2 + 1) + 2 + 1 : 6 + (1 + 1) + 1 + 1;
-  if (subdivided()) return receiveOnElements(row, power);
   ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
     const int j = row.receivers[r];
     if (isPortal[j]) return 0.0;  // passToPortals took it
