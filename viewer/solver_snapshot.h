@@ -39,6 +39,7 @@ struct SolverSnapshot {
   std::vector<Effect> effects;               // the solver's effects plan: each on or off, and why
   std::vector<Rgb> vertexB;                  // display radiosity per mesh vertex
   std::vector<int> lastShooters;             // patches shot by the last iteration
+  std::vector<int> lastShooterElements;      // their elements (the mesh's), to highlight
   std::vector<ConvergencePoint> curve;       // one point per iteration so far
   Ledger ledger;
   double lastCapturedFraction = 0.0;         // of the last iteration's shooters

@@ -290,6 +290,7 @@ void SolverThread::publish(const Run& run) {
   const auto& history = run.solver->history();
   if (!history.empty()) {
     snapshot->lastShooters = history.back().shooters;
+    snapshot->lastShooterElements = run.solver->elementsOf(snapshot->lastShooters);
     snapshot->lastCapturedFraction = history.back().capturedFraction;
   }
   snapshot->lastShotStats = run.lastShotStats;

@@ -28,6 +28,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--effects", effects, "auto: simulate only what the scene calls for; all: everything")
       ->capture_default_str();
+  app.add_option("--subdivide", subdivide, "off, or uniform: patches shoot, their elements receive and are shown")
+      ->capture_default_str();
+  app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch)")
+      ->capture_default_str();
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();
@@ -75,6 +79,7 @@ int main(int argc, char** argv) {
     o.projection = radmesh::parseProjection(projection);
     o.mapping = radmesh::parseMapping(mapping);
     o.effects = radmesh::parseEffects(effects);
+    o.subdivide = radmesh::parseSubdivide(subdivide);
     // Drawing needs a core too (llvmpipe renders on the CPU).
     if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     radmesh::validateOptions(o);

@@ -36,7 +36,7 @@ class SnapshotFeed {
       renderer.setMesh(snapshot->mesh ? *snapshot->mesh : DisplayMesh{});
     if (snapshot->mesh) {
       renderer.setVertexRadiosity(snapshot->vertexB);
-      renderer.setHighlightedPatches(snapshot->lastShooters);
+      renderer.setHighlightedPatches(snapshot->lastShooterElements);
       if (view.autoExposure) view.exposureStops = std::log2(autoExposure(*snapshot->mesh, snapshot->vertexB));
     }
     shown_ = snapshot;

@@ -454,6 +454,16 @@ std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
   return shown;
 }
 
+std::vector<int> ProgressiveSolver::elementsOf(const std::vector<int>& patches) const {
+  const State& s = *state_;
+  if (!s.subdivided()) return patches;
+  std::vector<int> elements;
+  for (int p : patches)
+    for (int e = s.elements.first.at(static_cast<size_t>(p)); e < s.elements.first.at(static_cast<size_t>(p) + 1); ++e)
+      elements.push_back(e);
+  return elements;
+}
+
 std::vector<Rgb> ProgressiveSolver::displayElementRadiosity() const {
   const State& s = *state_;
   if (!s.subdivided()) return displayRadiosity();

@@ -99,6 +99,7 @@ class ProgressiveSolver {
   const std::vector<Patch>& elements() const;
   const std::vector<Rgb>& elementRadiosity() const;  // B per element, W/m^2
   std::vector<Rgb> displayElementRadiosity() const;  // B per element plus the display-only ambient term
+  std::vector<int> elementsOf(const std::vector<int>& patches) const;  // their elements, patch by patch
   const Ledger& ledger() const;
   const std::vector<IterationRecord>& history() const;
   // The options in force: as given, but with an analytic projection where occlusion is off.

@@ -45,6 +45,7 @@ TEST(Substructure, LedgerBalancesAndPatchesAreAreaMeansOnEveryProjection) {
     const TestScene t = litBox();
     ProgressiveSolver solver(t.scene, t.patches, fixedIterations(subdivided(optionsFor(projection), 0.2), 60));
     EXPECT_EQ(solver.elements().size(), 24u * 9u);  // 0.5 m patches, 0.2 m elements: 3 x 3 each
+    EXPECT_EQ(solver.elementsOf({1, 3}), (std::vector<int>{9, 10, 11, 12, 13, 14, 15, 16, 17, 27, 28, 29, 30, 31, 32, 33, 34, 35}));
     solveChecked(solver);
     EXPECT_LE(solver.ledger().imbalance(), 1e-12);
     EXPECT_GT(solver.ledger().absorbed, 0.5 * solver.ledger().emitted);
@@ -79,6 +80,7 @@ TEST(Substructure, OffIsPatchesReceivingBitwise) {
   solveChecked(a);
   solveChecked(b);
   EXPECT_EQ(&a.elements(), &a.patches());
+  EXPECT_EQ(a.elementsOf({3, 1}), (std::vector<int>{3, 1}));
   EXPECT_EQ(a.elementRadiosity(), a.radiosity());
   EXPECT_EQ(a.radiosity(), b.radiosity());
   EXPECT_EQ(a.displayElementRadiosity(), a.displayRadiosity());
