@@ -13,6 +13,7 @@
 #include "solver/cells/find_cells.h"
 #include "cli/solve_flags.h"
 #include "solver/radiosity/effects_plan.h"
+#include "solver/meshing/elements.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/scene_summary.h"
@@ -37,6 +38,7 @@ struct InfoArgs {
   bool cells = false;
   CellGroups cellGroups = CellGroups::Name;
   std::string planPath;  // --plan FILE.png
+  double minElementM = 0.0;  // --min-element: the elements --subdivide uniform would make
 };
 
 // Per cell what a cell solve would hold: its patches, their area, its emitting patches and power.
@@ -211,6 +213,9 @@ void addInfoCommand(CLI::App& app) {
   cmd->add_option_function<std::string>(
       "--effects", [args](const std::string& v) { args->effects = parseEffects(v); },
       "auto (simulate only what the scene calls for) or all");
+  cmd->add_option("--min-element", args->minElementM,
+                  "Count the elements --subdivide uniform would cut the patches into, metres (0: four a patch)")
+      ->capture_default_str();
   cmd->add_flag("--cells", args->cells,
                 "Also list the visibility cells (rooms) and the portals (openings) joining them (docs/cells.md)");
   cmd->add_option("--plan", args->planPath, "Draw the cells' floor plan to this PNG (implies --cells)");
@@ -229,6 +234,7 @@ void addInfoCommand(CLI::App& app) {
     const std::vector<Patch> patches = meshScene(scene, cell.cellM);
     const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
+    const double elements = countElements(patches, args->minElementM);
     const bool cells = args->cells || !args->planPath.empty();
     CellPartition partition;
     CellFigures outside;
@@ -245,6 +251,8 @@ void addInfoCommand(CLI::App& app) {
       nlohmann::json j = toJson(summary, scene);
       j["cell_m"] = cell.cellM;
       j["cell_why"] = cell.why;
+      j["elements"] = elements;
+      j["min_element"] = args->minElementM;
       j["effects"] = effectsJson(plan);
       j["warnings"] = warnings;
       if (cells) j.update(cellsJson(partition, figures, outside, seconds));
@@ -252,6 +260,8 @@ void addInfoCommand(CLI::App& app) {
       fmt::print("{}\n", j.dump(2));
     } else {
       printText(summary, scene, warnings, notes, cell);
+      fmt::print("elements        {:.0f} with --subdivide uniform --min-element {:g}{}\n", elements, args->minElementM,
+                 args->minElementM == 0.0 ? " (every patch cut into four)" : "");
       printEffects(plan);
       if (cells) printCells(partition, figures, outside, seconds);
     }

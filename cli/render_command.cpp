@@ -116,7 +116,7 @@ Solved solveScene(const RenderArgs& args) {
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
   if (args.iterations == 0) warnIfFarFromConverged(solver.ledger());
-  return solvedFrom(solver.patches(), solver.displayRadiosity());
+  return solvedFrom(solver.elements(), solver.displayElementRadiosity());
 }
 
 std::optional<Solved> readBakeToRender(const RenderArgs& args) {

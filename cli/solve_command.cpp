@@ -36,11 +36,18 @@ struct SolveArgs {
   std::string resumePath;
 };
 
+// "N patches", and their elements when patches are cut into elements.
+std::string patchesText(const ProgressiveSolver& solver) {
+  const std::string elements = solver.options().subdivide == Subdivide::Off
+                                   ? "" : fmt::format(" ({} elements)", solver.elements().size());
+  return fmt::format("{} patches{}", solver.patches().size(), elements);
+}
+
 void printSummary(const ProgressiveSolver& solver, double seconds) {
   const Ledger& l = solver.ledger();
   const size_t n = solver.history().size();
-  fmt::print("solved: {} patches, {} iterations, convergence {:.2f}%, unshot {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
-             solver.patches().size(), n, 100.0 * solver.convergence(), 100.0 * l.unshotFraction(), seconds,
+  fmt::print("solved: {}, {} iterations, convergence {:.2f}%, unshot {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
+             patchesText(solver), n, 100.0 * solver.convergence(), 100.0 * l.unshotFraction(), seconds,
              seconds > 0 ? n / seconds : 0.0);
   double machineSeconds = 0.0;
   std::string machine;
@@ -94,6 +101,8 @@ void run(const SolveArgs& args) {
   const CellChoice cell = args.flags.cell(scene);
   fmt::print("{}\n", cell.why);
   if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options);
+  if (options.subdivide != Subdivide::Off && (!args.checkpointPath.empty() || !args.resumePath.empty()))
+    throw OptionError("--checkpoint and --resume do not keep elements yet: give --subdivide off");
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
   ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
@@ -109,7 +118,7 @@ void run(const SolveArgs& args) {
   if (options.until < 1.0) until = fmt::format("C={:.2f}", options.until);
   if (options.untilUnshot > 0.0)
     until += fmt::format("{}{:g}% unshot", until.empty() ? "" : " or ", 100.0 * options.untilUnshot);
-  fmt::print("solving {}: {} patches, {} {}x{}, k={}, until {}\n", scene.source, solver.patches().size(),
+  fmt::print("solving {}: {}, {} {}x{}, k={}, until {}\n", scene.source, patchesText(solver),
              toString(options.projection), options.resolution, options.resolution, options.shooters,
              until.empty() ? "C=1" : until);
   const ProjectionSummary capture = solver.projectionSummary();
@@ -135,7 +144,7 @@ void run(const SolveArgs& args) {
     writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
     fmt::print("wrote {}\n", args.statsPath);
   }
-  writeBake(args.outPath, solver.patches(), solver.displayRadiosity(), scene.upAxis);
+  writeBake(args.outPath, solver.elements(), solver.displayElementRadiosity(), scene.upAxis);
 }
 
 }  // namespace

@@ -66,6 +66,9 @@ SolveOptions SolveFlags::resolved() const {
   if (o.backend == Backend::Mesh && std::find(flags.begin(), flags.end(), "--projection") == flags.end())
     o.projection = Projection::Plane;
   o.mapping = parseMapping(mapping);
+  o.subdivide = parseSubdivide(subdivide);
+  if (o.subdivide != Subdivide::Off && cells == "auto")
+    throw OptionError("--subdivide and --cells auto do not go together yet: give --subdivide off, or --cells off");
   validateOptions(o);
   return o;
 }
@@ -105,6 +108,12 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
            f.options.formFactorCacheBytes = static_cast<std::size_t>(mb * 1024 * 1024);
          },
          "Form-factor row cache budget in MiB (0: none)");
+  cmd->add_option("--subdivide", f.subdivide,
+                  "off (patches shoot and receive) or uniform (patches shoot, their elements receive: docs/accuracy.md)")
+      ->capture_default_str();
+  cmd->add_option("--min-element", f.options.minElementM,
+                  "With --subdivide uniform: longest element edge, metres (0: every patch cut into four)")
+      ->capture_default_str();
   cmd->add_option("--cells", f.cells,
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
       ->capture_default_str();

@@ -18,6 +18,7 @@ struct SolveFlags {
   std::string backend = "native";
   std::string projection;
   std::string mapping = "hierarchical";
+  std::string subdivide = "off";  // --subdivide off|uniform (--min-element is options.minElementM)
   bool strict = false;  // --strict: a scene that needed any repair is refused
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
   int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
@@ -52,7 +53,7 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
 // Adds SCENE, --strict, --sky, --sky-model, --sun and --preset --backend --cell --projection --resolution --ratio --shooters --until
 // --until-unshot --max-iterations --threads --cache-mb --cells --exchange-shots to a subcommand. --preset is applied as it
 // Adds SCENE, --strict, --up and --preset --backend --cell --projection --resolution --ratio --shooters --until
-// --until-unshot --max-iterations --threads --cache-mb to a subcommand. --preset is applied as it
+// --until-unshot --max-iterations --threads --cache-mb --subdivide --min-element to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
 

@@ -36,7 +36,8 @@ nlohmann::json ledgerJson(const Ledger& l) {
 nlohmann::json optionsJson(const SolveOptions& o) {
   return {{"backend", toString(o.backend)}, {"projection", toString(o.projection)}, {"mapping", toString(o.mapping)},
           {"resolution", o.resolution},     {"ratio", o.ratio},                       {"shooters", o.shooters},
-          {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot}};
+          {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot},
+          {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM}};
 }
 
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
@@ -47,6 +48,7 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
   nlohmann::json j = optionsJson(o);
   j.update({{"scene", scene},
           {"patches", solver.patches().size()},
+          {"elements", solver.elements().size()},
           {"captured_fraction", capture.capturedFraction},
           {"delta_form_factor_sum", capture.deltaFormFactorSum},
           {"iterations", solver.history().size()},

@@ -60,6 +60,7 @@ struct SolverSnapshot {
   std::vector<Rgb> vertexB;                  // display radiosity per mesh vertex
   double exposure = 1.0;                     // autoExposure of vertexB (viewer/exposure.h)
   std::vector<int> lastShooters;             // patches shot by the last iteration
+  std::vector<int> lastShooterElements;      // their elements (the mesh's), to highlight
   std::vector<ConvergencePoint> curve;       // one point per iteration so far
   Ledger ledger;
   double lastCapturedFraction = 0.0;         // of the last iteration's shooters

@@ -73,7 +73,8 @@ struct SolverThread::Run {
   bool done() const { return cells ? cells->done() : solver->done(); }
   bool exhausted() const { return cells ? cells->exhausted() : solver->exhausted(); }
   int lastShooter() const { return cells ? -1 : radmesh::lastShooter(*solver); }  // cells: no item buffer
-  const std::vector<Patch>& patches() const { return cells ? cells->patches() : solver->patches(); }
+  // What is drawn: the elements where patches are cut into them.
+  const std::vector<Patch>& receivers() const { return cells ? cells->patches() : solver->elements(); }
 
   // An iteration of the whole solve; a round of the cells solve, focused on the eye's cell first.
   void step(const std::optional<Vec3>& eye, int upAxis) {
@@ -316,7 +317,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
       for (const IterationRecord& record : run->solver->history()) run->add(record);
       run->checkpointMessage = "resumed from " + resumePath;
     }
-    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->patches()));
+    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->receivers()));
     return run;
   } catch (const std::exception& e) {
     publishFailure(setup, e.what());
@@ -379,10 +380,11 @@ void SolverThread::publish(const Run& run) {
     snapshot->cells = cellsProgress(run);
   } else {
     snapshot->effects = run.solver->effectsPlan().effects;
-    snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayRadiosity());
+    snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayElementRadiosity());
     const auto& history = run.solver->history();
     if (!history.empty()) {
       snapshot->lastShooters = history.back().shooters;
+      snapshot->lastShooterElements = run.solver->elementsOf(snapshot->lastShooters);
       snapshot->lastCapturedFraction = history.back().capturedFraction;
     }
   }

@@ -13,7 +13,8 @@
 int main(int argc, char** argv) {
   radmesh::ViewerArgs args;
   std::string up;
-  std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress";
+  std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress",
+              subdivide = "off";
   radmesh::SolveOptions& o = args.setup.options;
   CLI::App app{"radmesh-view: walk through a scene while its radiosity converges"};
   app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS), a .gltf/.glb/.mgf file, or a bake to walk")
@@ -28,6 +29,10 @@ int main(int argc, char** argv) {
   app.add_option("--mapping", mapping, "Single plane over the PEs (mesh back end): hierarchical, cut-and-stack, adaptive")
       ->capture_default_str();
   app.add_option("--effects", effects, "auto: simulate only what the scene calls for; all: everything")
+      ->capture_default_str();
+  app.add_option("--subdivide", subdivide, "off, or uniform: patches shoot, their elements receive and are shown")
+      ->capture_default_str();
+  app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch)")
       ->capture_default_str();
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
@@ -95,6 +100,7 @@ int main(int argc, char** argv) {
     o.projection = radmesh::parseProjection(projection);
     o.mapping = radmesh::parseMapping(mapping);
     o.effects = radmesh::parseEffects(effects);
+    o.subdivide = radmesh::parseSubdivide(subdivide);
     // Drawing needs a core too (llvmpipe renders on the CPU).
     if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     radmesh::validateOptions(o);

@@ -43,7 +43,7 @@ class SnapshotFeed {
     }
     if (snapshot->mesh) {
       renderer.setVertexRadiosity(snapshot->vertexB);
-      renderer.setHighlightedPatches(snapshot->lastShooters);
+      renderer.setHighlightedPatches(snapshot->lastShooterElements);
       if (view.autoExposure) view.exposureStops = std::log2(snapshot->exposure);
     }
     shown_ = snapshot;

@@ -63,9 +63,16 @@ double FormFactorBackend::updateReceivers(const FormFactorRow& row, double,
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
                                                          const std::vector<Patch>& patches,
                                                          const SolveOptions& options) {
+  return makeFormFactorBackend(scene, patches, patches, options);
+}
+
+std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene, const std::vector<Patch>& patches,
+                                                         const std::vector<Patch>& receivers,
+                                                         const SolveOptions& options) {
   switch (options.backend) {
-    case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, options);
-    case Backend::Mesh: return std::make_unique<MeshBackend>(scene, patches, options, MeshBackendOptions{options.mapping});
+    case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, receivers, options);
+    case Backend::Mesh:
+      return std::make_unique<MeshBackend>(scene, patches, receivers, options, MeshBackendOptions{options.mapping});
   }
   throw OptionError("--backend must be native or mesh");
 }

@@ -71,5 +71,10 @@ void refuseNaNUnshotPower(std::span<const double> unshotPowerW);
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
                                                          const std::vector<Patch>& patches,
                                                          const SolveOptions& options);
+// The same, with patches shooting and `receivers` (their elements, solver/meshing/elements.h)
+// receiving: rows index receivers.
+std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene, const std::vector<Patch>& patches,
+                                                         const std::vector<Patch>& receivers,
+                                                         const SolveOptions& options);
 
 }  // namespace radmesh

@@ -30,7 +30,13 @@ using Cell = std::array<long long, 3>;
 }  // namespace
 
 std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches) {
+  return findNearFieldReceivers(patches, patches);
+}
+
+std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches,
+                                                     const std::vector<Patch>& receivers) {
   const int n = static_cast<int>(patches.size());
+  const bool selfReceives = &patches == &receivers;
   std::vector<std::vector<int>> near(n);
   std::vector<double> size(n);
   double cellSize = 0.0;
@@ -42,8 +48,8 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
     return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
                 std::llround(std::floor(c.z / cellSize))};
   };
-  std::vector<std::pair<Cell, int>> sorted(n);
-  for (int i = 0; i < n; ++i) sorted[i] = {cellOf(patches[i].centroid), i};
+  std::vector<std::pair<Cell, int>> sorted(receivers.size());
+  for (size_t j = 0; j < receivers.size(); ++j) sorted[j] = {cellOf(receivers[j].centroid), static_cast<int>(j)};
   std::sort(sorted.begin(), sorted.end());
   for (int i = 0; i < n; ++i) {
     const Patch& shooter = patches[i];
@@ -55,8 +61,8 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
           auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{cell, -1});
           for (; it != sorted.end() && it->first == cell; ++it) {
             const int j = it->second;
-            if (j == i || !(glm::length(patches[j].centroid - shooter.centroid) < size[i])) continue;
-            if (partlyInFront(patches[j], shooter, size[i]) && partlyInFront(shooter, patches[j], size[i]))
+            if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < size[i])) continue;
+            if (partlyInFront(receivers[j], shooter, size[i]) && partlyInFront(shooter, receivers[j], size[i]))
               near[i].push_back(j);
           }
         }
@@ -97,8 +103,12 @@ double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int sub
 }
 
 void correctNearField(FormFactorRow& row, const std::vector<Patch>& patches, const std::vector<int>& nearReceivers) {
+  correctNearField(row, patches[row.shooter], patches, nearReceivers);
+}
+
+void correctNearField(FormFactorRow& row, const Patch& shooter, const std::vector<Patch>& patches,
+                      const std::vector<int>& nearReceivers) {
   if (nearReceivers.empty()) return;
-  const Patch& shooter = patches[row.shooter];
   const double before = row.hitFraction();
   const bool enclosed = row.escapedFraction() == 0.0;
   bool changed = false;

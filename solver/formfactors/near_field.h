@@ -17,6 +17,10 @@ inline constexpr int kNearFieldSubdivisions = 8;  // per edge of each of the sho
 // Per shooter, ascending: the receivers whose centroid is closer to the shooter's centroid than
 // the shooter's diameter and which face it (each has a part in front of the other's plane).
 std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches);
+// The same with patches shooting and `receivers` (their elements, solver/meshing/elements.h)
+// receiving: per shooter patch, the receivers in its near field.
+std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches,
+                                                     const std::vector<Patch>& receivers);
 
 // The mean over the shooter's area of the point-to-polygon form factor to the receiver, without
 // occlusion: the shooter's triangles cut into subdivisions^2 triangles each, one point at the
@@ -29,5 +33,8 @@ double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int sub
 // for an enclosed shooter (whatever it sent out landed on a patch), to what it summed before, so
 // that the correction moves light between receivers but never lets it escape.
 void correctNearField(FormFactorRow& row, const std::vector<Patch>& patches, const std::vector<int>& nearReceivers);
+// The same for a row of `shooter` over `receivers` (elements).
+void correctNearField(FormFactorRow& row, const Patch& shooter, const std::vector<Patch>& receivers,
+                      const std::vector<int>& nearReceivers);
 
 }  // namespace radmesh

@@ -14,7 +14,7 @@ namespace {
 // The analytic form factor of patch j if nothing in the item buffer is in front of its
 // centroid, else 0.
 double visibleFormFactor(const ProjectedShot& shot, int j) {
-  const Patch& shooter = shot.patches[shot.shooter];
+  const Patch& shooter = shot.shooter;
   const LocalPolygon local = toShooterFrame(shooter, shot.patches[j]);
   for (size_t f = 0; f < shot.surface.faces.size(); ++f) {
     const ProjectionFace& face = shot.surface.faces[f];

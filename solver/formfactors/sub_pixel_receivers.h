@@ -19,8 +19,8 @@ namespace radmesh {
 inline constexpr double kSubPixelAreaPixels = 1.0;  // projected area below which a patch is refined
 
 struct ProjectedShot {  // what one environment projection left behind
-  const std::vector<Patch>& patches;
-  int shooter;
+  const std::vector<Patch>& patches;  // the receivers: patches, or elements (solver/meshing/elements.h)
+  const Patch& shooter;
   const ProjectionSurface& surface;
   std::span<const ItemBuffer> itemBuffers;        // one per face
   std::span<const int> depthTieRank;              // per patch

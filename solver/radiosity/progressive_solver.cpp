@@ -15,6 +15,7 @@
 #include "solver/formfactors/form_factor_cache.h"
 #include "solver/formfactors/light_rows.h"
 #include "solver/formfactors/near_field.h"
+#include "solver/meshing/elements.h"
 #include "solver/projection/scan_conversion.h"
 #include "solver/radiosity/solver_input.h"
 #include "solver/scene/scene_error.h"
@@ -32,15 +33,19 @@ template <typename Value> Value channels(const Rgb& c);
 template <> Rgb channels<Rgb>(const Rgb& c) { return c; }
 template <> double channels<double>(const Rgb& c) { return c.r; }
 
-// Whether a progress has n patches and names no others (a row's, a record's shooters).
-bool fitsPatches(const SolverProgress& p, size_t n) {
+// Whether a progress has n patches and `elements` elements (0: patches receive) and names no
+// others (a row's shooter and receivers, a record's shooters).
+bool fitsPatches(const SolverProgress& p, size_t n, size_t elements) {
   auto patchIndex = [n](int j) { return j >= 0 && static_cast<size_t>(j) < n; };
+  const size_t receivers = elements > 0 ? elements : n;
+  auto receiverIndex = [receivers](int j) { return j >= 0 && static_cast<size_t>(j) < receivers; };
   auto rowFits = [&](const FormFactorRow& row) {
     return patchIndex(row.shooter) && row.receivers.size() == row.formFactors.size() &&
-           std::all_of(row.receivers.begin(), row.receivers.end(), patchIndex);
+           std::all_of(row.receivers.begin(), row.receivers.end(), receiverIndex);
   };
   auto recordFits = [&](const IterationRecord& r) { return std::all_of(r.shooters.begin(), r.shooters.end(), patchIndex); };
   return p.radiosity.size() == n && p.unshotRadiosity.size() == n && p.unshotPowerW.size() == n &&
+         p.elementRadiosity.size() == elements &&
          p.timesShot.size() == n && std::all_of(p.cachedRows.begin(), p.cachedRows.end(), rowFits) &&
          std::all_of(p.history.begin(), p.history.end(), recordFits);
 }
@@ -71,6 +76,10 @@ struct ProgressiveSolver::State {
   Ledger ledger;
   std::vector<IterationRecord> history;
   std::vector<FormFactorRow> rows;
+  // Patches shoot, elements receive (options.subdivide; solver/meshing/elements.h): empty when off.
+  Elements elements;
+  std::vector<Rgb> elementRadiosity;
+  std::vector<std::vector<int>> elementNearReceivers;  // per shooter patch, its near elements
   double firstShotPowerW = 0.0;
   double convergence = 0.0;
   bool exhausted = false;
@@ -83,9 +92,14 @@ struct ProgressiveSolver::State {
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   void shootLights(IterationRecord& record);
   void deliver(const FormFactorRow& row, const Rgb& power);
+  void deliverToReceivers(const FormFactorRow& row, const Rgb& power);
   void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins);
   void updateUnshot();
   template <typename Value, typename Incident> void receive(const FormFactorRow& row, Incident incidentOf);
+  template <typename Value, typename Incident> void receiveOnElements(const FormFactorRow& row, Incident incidentOf);
+  bool subdivided() const { return options.subdivide != Subdivide::Off; }
+  const std::vector<Patch>& receivers() const { return subdivided() ? elements.elements : patches; }
+  Rgb ambient() const;
   template <typename Incident> void passToPortals(const FormFactorRow& row, Incident incidentOf);
   void arrivalShares(int shooter, int portal, std::vector<double>& shares) const;
 };
@@ -105,12 +119,17 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   // plane, being the machine under study).
   if (!s.plan.occlusion && s.options.backend == Backend::Native) s.options.projection = Projection::Analytic;
   const size_t n = s.patches.size();
+  if (s.subdivided()) {
+    s.elements = subdivideUniform(s.patches, options.minElementM);
+    for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
+    if (s.plan.nearField) s.elementNearReceivers = findNearFieldReceivers(s.patches, s.elements.elements);
+  }
   s.rho.resize(n);
   s.radiosity.resize(n);
   s.unshotRadiosity.resize(n);
   s.unshotPowerW.resize(n);
   s.timesShot.assign(n, 0);
-  s.isPortal.assign(n, 0);
+  s.isPortal.assign(s.receivers().size(), 0);
   s.portalPower.resize(n);
   s.portalUnshot.resize(n);
   for (size_t j = 0; j < n; ++j) {
@@ -127,7 +146,7 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   s.ledger.unshot = s.ledger.emitted;
   s.exhausted = !(s.ledger.emitted > 0.0);
   s.tieRank = depthTieRanks(s.patches);
-  s.backend = backend ? std::move(backend) : makeFormFactorBackend(s.scene, s.patches, s.options);
+  s.backend = backend ? std::move(backend) : makeFormFactorBackend(s.scene, s.patches, s.receivers(), s.options);
 }
 
 ProgressiveSolver::~ProgressiveSolver() = default;
@@ -159,7 +178,12 @@ void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, Itera
   std::vector<FormFactorRow> computed;
   backend->computeRows(missing, computed);
   if (plan.nearField)
-    for (FormFactorRow& row : computed) correctNearField(row, patches, plan.nearReceivers[row.shooter]);
+    for (FormFactorRow& row : computed) {
+      if (subdivided())
+        correctNearField(row, patches[row.shooter], elements.elements, elementNearReceivers[row.shooter]);
+      else
+        correctNearField(row, patches, plan.nearReceivers[row.shooter]);
+    }
   for (size_t m = 0; m < missing.size(); ++m) {
     if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
     rows[missingSlot[m]] = std::move(computed[m]);
@@ -198,7 +222,7 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
   const double nearDepth = sceneNearDepth(patches);
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
-    const FormFactorRow row = lightRow(scene, scene.lights[k], patches, options.resolution, nearDepth, pool);
+    const FormFactorRow row = lightRow(scene, scene.lights[k], receivers(), options.resolution, nearDepth, pool);
     deliver(row, lightPower[k]);
     ledger.lightOutside += channelSum(lightPower[k]) * (row.escapedFraction() + row.backFaces);
     record.shotPowerW += channelSum(lightPower[k]);
@@ -217,6 +241,12 @@ void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& powe
   ledger.escaped += powerW * row.escapedFraction();
   ledger.absorbed += powerW * row.backFaces;
   ledger.absorbedByBackFaces += powerW * row.backFaces;
+  deliverToReceivers(row, power);
+}
+
+// The part of a row's power that lands on the fronts of its receivers.
+void ProgressiveSolver::State::deliverToReceivers(const FormFactorRow& row, const Rgb& power) {
+  const double powerW = channelSum(power);
   passToPortals(row, [&](size_t r) { return power * row.formFactors[r]; });
   if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
     double received = 0.0;
@@ -283,6 +313,7 @@ void ProgressiveSolver::State::updateUnshot() {
 // receiver updated where the back end keeps it.
 template <typename Value, typename Incident>
 void ProgressiveSolver::State::receive(const FormFactorRow& row, Incident incidentOf) {
+  if (subdivided()) return receiveOnElements<Value>(row, incidentOf);
   // Per channel: incident, reflected, absorbed, gain, B, dB (6 flops); then the unshot power (a
   // channel sum and the area), the absorbed power (a channel sum) and the running sum (1). A grey
   // scene's channel sums are one multiply each.
@@ -299,6 +330,31 @@ void ProgressiveSolver::State::receive(const FormFactorRow& row, Incident incide
     unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
     return channelSum(incident - reflected);
   });
+}
+
+// Eq. 1.2 onto elements: B_e += rho_e dB_i F_ie A_i / A_e on the element's PE, then each patch
+// gathers what its elements reflected (in receiver order, on the host: a patch's elements may lie
+// on several PEs), as radiosity (the area mean of its elements') and as unshot power.
+template <typename Value, typename Incident>
+void ProgressiveSolver::State::receiveOnElements(const FormFactorRow& row, Incident incidentOf) {
+  // Per channel: incident, reflected, absorbed, gain, B (5 flops); the absorbed power's channel
+  // sum and the running sum.
+  constexpr double kFlops = std::is_same_v<Value, Rgb> ? 3 * 5 + 2 + 1 : 5 + 1 + 1;
+  std::vector<Value> reflected(row.receivers.size());
+  ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
+    const int e = row.receivers[r];
+    const Value incident = incidentOf(r);
+    reflected[r] = channels<Value>(rho[elements.patchOf[e]]) * incident;
+    elementRadiosity[e] += Rgb(reflected[r] / elements.elements[e].areaM2);
+    return channelSum(incident - reflected[r]);
+  });
+  for (size_t r = 0; r < row.receivers.size(); ++r) {
+    const int j = elements.patchOf[row.receivers[r]];
+    const Value gain = reflected[r] / patches[j].areaM2;
+    radiosity[j] += Rgb(gain);
+    unshotRadiosity[j] += Rgb(gain);
+    unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
+  }
 }
 
 // What reaches a portal patch waits there for the neighbour cell, in receiver order, by the bins of
@@ -392,6 +448,9 @@ bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
 
 void ProgressiveSolver::setPortalPatches(const std::vector<int>& portalPatches, int binsN) {
   State& s = *state_;
+  if (s.subdivided() && !portalPatches.empty())
+    throw OptionError("portal patches need patches that receive: a solve whose elements receive (subdivide) cannot "
+                      "be a cell yet");
   for (int j : portalPatches)
     if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
       throw std::invalid_argument(fmt::format("portal patch {} is not one of the {} patches", j, s.patches.size()));
@@ -440,11 +499,10 @@ double ProgressiveSolver::receiveLight(FormFactorRow row, const Rgb& power) {
   for (int j : row.receivers)
     if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
       throw std::invalid_argument(fmt::format("light receiver {} is not one of the {} patches", j, s.patches.size()));
-  row.capturedFraction = 1.0;  // what missed, escaped or hit a back face is the caller's to book
-  row.backFaces = 0.0;
+  row.backFaces = 0.0;  // what missed, escaped or hit a back face is the caller's to book
   const double arrivedW = channelSum(power) * row.hitFraction();
   s.ledger.emitted += arrivedW;
-  s.deliver(row, power, false);
+  s.deliverToReceivers(row, power);
   s.updateUnshot();
   s.exhausted = std::none_of(s.unshotPowerW.begin(), s.unshotPowerW.end(), [](double p) { return p > 0.0; });
   checkLedger(s.ledger, 0);
@@ -463,6 +521,10 @@ double ProgressiveSolver::convergence() const { return state_->convergence; }
 const Scene& ProgressiveSolver::scene() const { return state_->scene; }
 const std::vector<Patch>& ProgressiveSolver::patches() const { return state_->patches; }
 const std::vector<Rgb>& ProgressiveSolver::radiosity() const { return state_->radiosity; }
+const std::vector<Patch>& ProgressiveSolver::elements() const { return state_->receivers(); }
+const std::vector<Rgb>& ProgressiveSolver::elementRadiosity() const {
+  return state_->subdivided() ? state_->elementRadiosity : state_->radiosity;
+}
 const Ledger& ProgressiveSolver::ledger() const { return state_->ledger; }
 const std::vector<IterationRecord>& ProgressiveSolver::history() const { return state_->history; }
 const SolveOptions& ProgressiveSolver::options() const { return state_->options; }
@@ -470,13 +532,14 @@ const EffectsPlan& ProgressiveSolver::effectsPlan() const { return state_->plan;
 SolverProgress ProgressiveSolver::progress() const {
   const State& s = *state_;
   return {s.radiosity, s.unshotRadiosity, s.unshotPowerW, s.timesShot, s.ledger, s.history,
-          s.firstShotPowerW, s.convergence, s.exhausted, s.backend->machineState(), s.cache.contents()};
+          s.firstShotPowerW, s.convergence, s.exhausted, s.backend->machineState(), s.cache.contents(),
+          s.elementRadiosity};
 }
 
 void ProgressiveSolver::restoreProgress(SolverProgress p) {
   State& s = *state_;
   const size_t n = s.patches.size();
-  if (!fitsPatches(p, n) || p.machineState.empty() != s.backend->machineState().empty())
+  if (!fitsPatches(p, n, s.elementRadiosity.size()) || p.machineState.empty() != s.backend->machineState().empty())
     throw std::invalid_argument(fmt::format(
         "solver progress of another solve: not {} patches, shooters of other patches, or another back end", n));
   s.backend->restoreMachineState(p.machineState);  // throws, changing nothing, for another machine's
@@ -489,6 +552,7 @@ void ProgressiveSolver::restoreProgress(SolverProgress p) {
   s.firstShotPowerW = p.firstShotPowerW;
   s.convergence = p.convergence;
   s.exhausted = p.exhausted;
+  s.elementRadiosity = std::move(p.elementRadiosity);
   s.cache = FormFactorCache(s.options.formFactorCacheBytes);
   for (auto row = p.cachedRows.rbegin(); row != p.cachedRows.rend(); ++row) s.cache.insert(*row);
 }
@@ -501,25 +565,50 @@ FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
 // were closed; here the fraction of shot power lost so far (escaped through openings, or missed
 // by the single plane) is lost from the unshot power too, at every bounce, as it will be when it
 // is shot. Without that, an open room shows brighter than it will converge to.
-std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
-  const State& s = *state_;
-  if (!s.options.ambient) return s.radiosity;
+Rgb ProgressiveSolver::State::ambient() const {
+  if (!options.ambient) return Rgb(0.0);
   Rgb unshotPower(0.0), rhoArea(0.0);
   double area = 0.0;
-  for (size_t j = 0; j < s.patches.size(); ++j) {
-    unshotPower += s.unshotRadiosity[j] * s.patches[j].areaM2;
-    rhoArea += s.rho[j] * s.patches[j].areaM2;
-    area += s.patches[j].areaM2;
+  for (size_t j = 0; j < patches.size(); ++j) {
+    unshotPower += unshotRadiosity[j] * patches[j].areaM2;
+    rhoArea += rho[j] * patches[j].areaM2;
+    area += patches[j].areaM2;
   }
-  const Ledger& l = s.ledger;
+  const Ledger& l = ledger;
   // A cell's light leaving through its portals is lost to it as escaped light is.
   const double shot = l.input() - l.unshot;  // = absorbed + not captured + escaped + portal out
   const double lost = l.escaped + l.notCaptured + l.portalOut;
   const double kept = shot > 0.0 ? std::clamp(1.0 - lost / shot, 0.0, 1.0) : 1.0;
   const Rgb averageRho = rhoArea / area;
-  const Rgb ambient = unshotPower * kept / area / (Rgb(1.0) - averageRho * kept);
+  return unshotPower * kept / area / (Rgb(1.0) - averageRho * kept);
+}
+
+std::vector<Rgb> ProgressiveSolver::displayRadiosity() const {
+  const State& s = *state_;
+  if (!s.options.ambient) return s.radiosity;
+  const Rgb ambient = s.ambient();
   std::vector<Rgb> shown(s.radiosity);
   for (size_t j = 0; j < shown.size(); ++j) shown[j] += s.rho[j] * ambient;
+  return shown;
+}
+
+std::vector<int> ProgressiveSolver::elementsOf(const std::vector<int>& patches) const {
+  const State& s = *state_;
+  if (!s.subdivided()) return patches;
+  std::vector<int> elements;
+  for (int p : patches)
+    for (int e = s.elements.first.at(static_cast<size_t>(p)); e < s.elements.first.at(static_cast<size_t>(p) + 1); ++e)
+      elements.push_back(e);
+  return elements;
+}
+
+std::vector<Rgb> ProgressiveSolver::displayElementRadiosity() const {
+  const State& s = *state_;
+  if (!s.subdivided()) return displayRadiosity();
+  if (!s.options.ambient) return s.elementRadiosity;
+  const Rgb ambient = s.ambient();
+  std::vector<Rgb> shown(s.elementRadiosity);
+  for (size_t e = 0; e < shown.size(); ++e) shown[e] += s.rho[s.elements.patchOf[e]] * ambient;
   return shown;
 }
 

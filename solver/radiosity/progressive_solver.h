@@ -54,6 +54,7 @@ struct SolverProgress {
   // The form-factor cache, most recently used first. On the mesh back end a row computed with
   // other shooters beside it differs in its last bits, so which rows the cache serves matters.
   std::vector<FormFactorRow> cachedRows;
+  std::vector<Rgb> elementRadiosity;  // per element when patches are cut into elements; else empty
 };
 
 // Throws SceneError for input it cannot solve (NaN or infinite coordinates or emittance, an area
@@ -82,7 +83,7 @@ class ProgressiveSolver {
   // of its direction of travel (directionBinCount(binsN) bins, solver/formfactors/direction_bins.h,
   // in the frame of the patch's back: the twin's), and a portal patch shoots each bin's power into
   // that bin's directions; binsN <= 1: one bin, shot diffusely. Throws OptionError when the back
-  // end cannot split rows by direction.
+  // end cannot split rows by direction, or when patches are cut into elements (not built yet).
   void setPortalPatches(const std::vector<int>& portalPatches, int binsN = 0);
   Rgb portalPower(int patch) const;  // what waits on the portal patch, all bins
   std::vector<Rgb> takePortalPower(int patch);  // per bin, leaving it empty
@@ -101,6 +102,14 @@ class ProgressiveSolver {
   const std::vector<Patch>& patches() const;
   const std::vector<Rgb>& radiosity() const;  // B per patch, W/m^2
   std::vector<Rgb> displayRadiosity() const;  // B plus the display-only ambient term
+  // The receivers (options().subdivide, solver/meshing/elements.h): the elements patches are cut
+  // into, listed patch by patch; with subdivide off, the patches themselves. Each element's B
+  // gathers what reaches it; a patch's B is the area mean of its elements'. Output (bake, render,
+  // viewer) shows elements.
+  const std::vector<Patch>& elements() const;
+  const std::vector<Rgb>& elementRadiosity() const;  // B per element, W/m^2
+  std::vector<Rgb> displayElementRadiosity() const;  // B per element plus the display-only ambient term
+  std::vector<int> elementsOf(const std::vector<int>& patches) const;  // their elements, patch by patch
   const Ledger& ledger() const;
   const std::vector<IterationRecord>& history() const;
   // The options in force: as given, but with an analytic projection where occlusion is off.

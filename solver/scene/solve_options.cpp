@@ -38,6 +38,9 @@ void validateOptions(const SolveOptions& o) {
   if (o.threads < 0)
     throw OptionError("--threads " + std::to_string(o.threads) +
                       " is out of range: give 0 (every core) or a positive count");
+  if (!(std::isfinite(o.minElementM) && o.minElementM >= 0.0))
+    throw OptionError("--min-element " + number(o.minElementM) +
+                      " is out of range: give the longest element edge in metres, e.g. 0.1 (0: every patch cut into four)");
 }
 
 const char* toString(Projection projection) {
@@ -100,6 +103,18 @@ EffectsMode parseEffects(const std::string& text) {
   for (EffectsMode m : {EffectsMode::Auto, EffectsMode::All})
     if (text == toString(m)) return m;
   throw OptionError("--effects must be 'auto' (simulate only what the scene calls for) or 'all', not '" + text + "'");
+}
+
+const char* toString(Subdivide subdivide) { return subdivide == Subdivide::Uniform ? "uniform" : "off"; }
+
+Subdivide parseSubdivide(const std::string& text) {
+  for (Subdivide s : {Subdivide::Off, Subdivide::Uniform})
+    if (text == toString(s)) return s;
+  if (text == "adaptive")
+    throw OptionError("--subdivide adaptive is not built yet (issue #12): give uniform (every patch cut into elements "
+                      "of at most --min-element) or off");
+  throw OptionError("--subdivide '" + text + "' is unknown: give off (patches receive) or uniform (patches shoot, "
+                    "elements of at most --min-element receive)");
 }
 
 }  // namespace radmesh

@@ -11,6 +11,8 @@ enum class Backend { Native, Mesh };
 enum class MappingKind { Hierarchical, CutAndStack, Adaptive };
 // Which effects the solver simulates (solver/radiosity/effects_plan.h).
 enum class EffectsMode { Auto, All };
+// Whether patches are cut into elements that receive (solver/meshing/elements.h).
+enum class Subdivide { Off, Uniform };
 
 struct SolveOptions {
   Backend backend = Backend::Native;
@@ -34,6 +36,10 @@ struct SolveOptions {
   // defaults to All, so a caller gets the full simulation unless it asks; the CLI and the viewer
   // default to auto.
   EffectsMode effects = EffectsMode::All;
+  // Uniform: patches shoot, elements receive (substructuring, Cohen et al. 1986): each patch is cut
+  // into elements no longer than minElementM along any edge. Off: patches shoot and receive.
+  Subdivide subdivide = Subdivide::Off;
+  double minElementM = 0.0;  // 0: every patch cut once along each edge (into four)
 };
 
 // Named settings (docs/accuracy.md): Bake, what a user can trust (the CLI's default: the
@@ -58,5 +64,7 @@ const char* toString(EffectsMode mode);
 EffectsMode parseEffects(const std::string& text);    // throws OptionError
 // --cells: "auto" (find the rooms and solve them cell by cell, docs/cells.md) is true, "off" false.
 bool parseCells(const std::string& text);             // throws OptionError
+const char* toString(Subdivide subdivide);
+Subdivide parseSubdivide(const std::string& text);    // throws OptionError
 
 }  // namespace radmesh

@@ -48,19 +48,29 @@ struct ShooterClaim {
 
 }  // namespace
 
-MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches,
+MeshBackend::MeshBackend(const Scene& scene, const std::vector<Patch>& patches,
+                         const SolveOptions& options, const MeshBackendOptions& mesh)
+    : MeshBackend(scene, patches, patches, options, mesh) {}
+
+MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches, const std::vector<Patch>& receivers,
                          const SolveOptions& options, const MeshBackendOptions& mesh)
     : patches_(patches),
+      receivers_(receivers),
       options_(checked(options, mesh)),
       mesh_(mesh),
       surface_(makeSinglePlane(options.resolution, options.ratio)),
       machine_(machineConfig(options, mesh)),
       patchesOnPe_(machine_, "patches"),
       hostPool_(options.threads) {
-  layout_ = {static_cast<int>(patches.size()), machine_.size()};
-  // The patches spread out equally over the PE array (section 1.5).
+  layout_ = {static_cast<int>(receivers.size()), machine_.size()};
+  // The patches spread out equally over the PE array (section 1.5); so do the elements, beside them.
   for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
-  scan_ = std::make_unique<MeshScanConversion>(machine_, patches_, patchesOnPe_, surface_.faces[0],
+  shooterLayout_ = {static_cast<int>(patches.size()), machine_.size()};
+  if (&receivers != &patches) {
+    shootersOnPe_ = std::make_unique<emu::PeArray<PatchRecord>>(machine_, "shooting patches");
+    for (int j = 0; j < shooterLayout_.patches; ++j) shootersOnPe_->push(shooterLayout_.peOf(j), PatchRecord{j});
+  }
+  scan_ = std::make_unique<MeshScanConversion>(machine_, patches_, receivers_, patchesOnPe_, surface_.faces[0],
                                                sceneNearDepth(patches_));
 }
 
@@ -144,7 +154,7 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
   const std::size_t base = static_cast<std::size_t>(plane) * n;
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
-    const ProjectedShot projected{patches_, shot.shooters[plane], surface_, {&buffer, 1}, scan_->depthTieRank(),
+    const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
                                   {shot.projectedAreaPixels.data() + base, static_cast<std::size_t>(n)}};
     refineSubPixelReceivers(projected, hostPool_, formFactors);
   }
@@ -182,13 +192,15 @@ std::vector<int> MeshBackend::selectShooters(std::span<const double> unshotPower
   return inPhase("shooter selection", [&] {
     emu::Plural<ShooterClaim> best(machine_, {}, "strongest claim");
     emu::Plural<int> bestPatch(machine_, -1, "strongest patch");
-    std::vector<char> chosen(layout_.patches, 0);
+    const emu::PeArray<PatchRecord>& shootersOnPe = shootersOnPe_ ? *shootersOnPe_ : patchesOnPe_;
+    std::vector<char> chosen(shooterLayout_.patches, 0);
     std::vector<int> shooters;
     for (int round = 0; round < k; ++round) {
       // Each PE finds its strongest patch not yet chosen, then one reduceMax over the mesh.
       emu::Plural<bool> has(machine_, false, "has a claim");
-      machine_.compute({static_cast<double>(layout_.slotsPerPe()), 2.0 * layout_.slotsPerPe()}, [&](int pe) {
-        for (const PatchRecord& r : patchesOnPe_.list(pe)) {
+      const double slots = shooterLayout_.slotsPerPe();
+      machine_.compute({slots, 2.0 * slots}, [&](int pe) {
+        for (const PatchRecord& r : shootersOnPe.list(pe)) {
           const ShooterClaim claim{unshotPowerW[r.patch], tieRank[r.patch]};
           if (chosen[r.patch] || !(claim.powerW > 0.0)) continue;
           if (!has[pe] || best[pe] < claim) best[pe] = claim, bestPatch[pe] = r.patch, has[pe] = true;

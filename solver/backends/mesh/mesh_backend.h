@@ -32,6 +32,11 @@ class MeshBackend final : public FormFactorBackend {
   // patches (kept for the factory's common signature).
   MeshBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options,
               const MeshBackendOptions& mesh = {});
+  // Patches shoot, `receivers` receive (the elements of solver/meshing/elements.h): the PEs hold
+  // the receivers for the projection and the radiosity update, and the patches for the shooter
+  // selection; rows and item buffers index receivers.
+  MeshBackend(const Scene& scene, const std::vector<Patch>& patches, const std::vector<Patch>& receivers,
+              const SolveOptions& options, const MeshBackendOptions& mesh = {});
   ~MeshBackend() override;
 
   // All shooters' planes are mapped onto the mesh at once (the paper's section 1.7).
@@ -69,12 +74,16 @@ class MeshBackend final : public FormFactorBackend {
   FormFactorRow assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors);
 
   const std::vector<Patch>& patches_;
+  const std::vector<Patch>& receivers_;  // patches_ itself, or their elements
   SolveOptions options_;
   MeshBackendOptions mesh_;
   ProjectionSurface surface_;
-  PatchLayout layout_;
+  PatchLayout layout_;  // of the receivers
   emu::MeshMachine machine_;
-  emu::PeArray<PatchRecord> patchesOnPe_;
+  emu::PeArray<PatchRecord> patchesOnPe_;  // the receivers
+  // The shooting patches, when elements receive (null when patches do: patchesOnPe_ holds them).
+  std::unique_ptr<emu::PeArray<PatchRecord>> shootersOnPe_;
+  PatchLayout shooterLayout_;
   std::unique_ptr<MeshScanConversion> scan_;
   ThreadPool hostPool_;  // the sub-pixel refinement (solver/formfactors/sub_pixel_receivers.h) runs on the host
   MeshShotStats lastShot_;

@@ -31,10 +31,12 @@ constexpr double kRouteIntOps = 8.0;
 
 }  // namespace
 
-MeshScanConversion::MeshScanConversion(emu::MeshMachine& machine, const std::vector<Patch>& patches,
+MeshScanConversion::MeshScanConversion(emu::MeshMachine& machine, const std::vector<Patch>& shooters,
+                                       const std::vector<Patch>& patches,
                                        const emu::PeArray<PatchRecord>& patchesOnPe,
                                        const ProjectionFace& face, double nearDepth)
     : machine_(machine),
+      shooters_(shooters),
       patches_(patches),
       patchesOnPe_(patchesOnPe),
       face_(face),
@@ -60,9 +62,9 @@ void MeshScanConversion::project(MeshShot& shot) {
       for (int q = 0; q < planes; ++q) {
         const int j = record.patch;
         const int shooter = shot.shooters[q];
-        if (j == shooter) continue;
+        if (j == shooter && &shooters_ == &patches_) continue;
         // The projection stage's own functions, as the native back end calls them.
-        const std::optional<LocalPolygon> local = inShooterView(patches_[shooter], patches_[j]);
+        const std::optional<LocalPolygon> local = inShooterView(shooters_[shooter], patches_[j]);
         if (!local) continue;
         const std::size_t e = static_cast<std::size_t>(q) * n + j;
         shot.seenFromFront[e] = local->seenFromFront();

@@ -83,9 +83,11 @@ struct ScanDepths {
 
 class MeshScanConversion {
  public:
-  MeshScanConversion(emu::MeshMachine& machine, const std::vector<Patch>& patches,
-                     const emu::PeArray<PatchRecord>& patchesOnPe, const ProjectionFace& face,
-                     double nearDepth);
+  // `shooters` give the shots' viewpoints, `patches` (on the PEs) are projected: the same list,
+  // or the shooters' elements (solver/meshing/elements.h), which then never skip their own patch.
+  MeshScanConversion(emu::MeshMachine& machine, const std::vector<Patch>& shooters,
+                     const std::vector<Patch>& patches, const emu::PeArray<PatchRecord>& patchesOnPe,
+                     const ProjectionFace& face, double nearDepth);
 
   // Projection phase: fills shot.setups and friends (shot.shooters set by the caller).
   void project(MeshShot& shot);
@@ -123,6 +125,7 @@ class MeshScanConversion {
   void zBufferStep(const MeshShot& shot, bool first);
 
   emu::MeshMachine& machine_;
+  const std::vector<Patch>& shooters_;
   const std::vector<Patch>& patches_;
   const emu::PeArray<PatchRecord>& patchesOnPe_;
   ProjectionFace face_;

@@ -34,16 +34,21 @@ std::unique_ptr<ProjectionSurface> surfaceFor(const SolveOptions& options) {
 
 NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patches,
                              const SolveOptions& options)
+    : NativeBackend(scene, patches, patches, options) {}
+
+NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patches,
+                             const std::vector<Patch>& receivers, const SolveOptions& options)
     : scene_(scene),
       patches_(patches),
+      receivers_(receivers),
       options_(options),
       nearDepth_(sceneNearDepth(patches)),
       pool_(options.threads),
-      formFactors_(patches.size(), 0.0),
-      seenFromFront_(patches.size(), 0) {
+      formFactors_(receivers.size(), 0.0),
+      seenFromFront_(receivers.size(), 0) {
   validateOptions(options);
   if (auto surface = surfaceFor(options))
-    projection_ = std::make_unique<EnvironmentProjection>(patches, std::move(*surface), nearDepth_, pool_);
+    projection_ = std::make_unique<EnvironmentProjection>(receivers, std::move(*surface), nearDepth_, pool_);
 }
 
 NativeBackend::~NativeBackend() = default;
@@ -86,18 +91,18 @@ ItemBuffer NativeBackend::singlePlaneItemBuffer(int shooter) {
   const bool same = options_.projection == Projection::Plane;
   if (!same && !singlePlane_)
     singlePlane_ = std::make_unique<EnvironmentProjection>(
-        patches_, makeSinglePlane(options_.resolution, options_.ratio), nearDepth_, pool_);
+        receivers_, makeSinglePlane(options_.resolution, options_.ratio), nearDepth_, pool_);
   EnvironmentProjection& plane = same ? *projection_ : *singlePlane_;
-  plane.project(shooter);
+  plane.projectFrom(patches_[shooter], skipOf(shooter));
   return plane.itemBuffers()[0];
 }
 
 FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int shooter) {
-  projection.project(shooter);
+  projection.projectFrom(patches_[shooter], skipOf(shooter));
   formFactors_ = projection.pixelFormFactors();
   seenFromFront_ = projection.seenFromFront();
   if (options_.subPixelReceivers) {
-    const ProjectedShot shot{patches_, shooter, projection.surface(), projection.itemBuffers(),
+    const ProjectedShot shot{receivers_, patches_[shooter], projection.surface(), projection.itemBuffers(),
                              projection.depthTieRank(), projection.projectedAreaPixels()};
     refineSubPixelReceivers(shot, pool_, formFactors_);
   }
@@ -149,13 +154,14 @@ void NativeBackend::addAnalyticBins(int shooter, FormFactorRow& row) const {
 
 FormFactorRow NativeBackend::analyticRow(int shooter) {
   const Patch& from = patches_[shooter];
-  const int n = static_cast<int>(patches_.size());
+  const int n = static_cast<int>(receivers_.size());
+  const int skip = skipOf(shooter);
   pool_.parallelFor((n + kAnalyticChunk - 1) / kAnalyticChunk, [&](int chunk, int) {
     for (int j = chunk * kAnalyticChunk; j < std::min(n, (chunk + 1) * kAnalyticChunk); ++j) {
       formFactors_[j] = 0.0;
       seenFromFront_[j] = 0;
-      if (j == shooter) continue;
-      const LocalPolygon local = toShooterFrame(from, patches_[j]);
+      if (j == skip) continue;
+      const LocalPolygon local = toShooterFrame(from, receivers_[j]);
       if (std::abs(local.planeOffset) <= nearDepth_) continue;  // coplanar or edge-on
       seenFromFront_[j] = local.seenFromFront();
       formFactors_[j] = pointToPolygonFormFactor(local.corners());

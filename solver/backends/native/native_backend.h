@@ -12,6 +12,10 @@ namespace radmesh {
 class NativeBackend final : public FormFactorBackend {
  public:
   NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options);
+  // Patches shoot, `receivers` receive (the elements of solver/meshing/elements.h): rows and item
+  // buffers index receivers.
+  NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const std::vector<Patch>& receivers,
+                const SolveOptions& options);
   ~NativeBackend() override;
 
   void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
@@ -28,16 +32,19 @@ class NativeBackend final : public FormFactorBackend {
   // A directional shooter's split by bin: from the item buffers of its projection, or analytic.
   void addPixelBins(const EnvironmentProjection& projection, FormFactorRow& row) const;
   void addAnalyticBins(int shooter, FormFactorRow& row) const;
+  // The receiver a shot from `shooter` skips: itself when patches receive, none when elements do.
+  int skipOf(int shooter) const { return &receivers_ == &patches_ ? shooter : -1; }
 
   const Scene& scene_;
   const std::vector<Patch>& patches_;
+  const std::vector<Patch>& receivers_;  // patches_ itself, or their elements
   SolveOptions options_;
   double nearDepth_;
   ThreadPool pool_;
   std::unique_ptr<EnvironmentProjection> projection_;  // null for --projection analytic
   std::unique_ptr<EnvironmentProjection> singlePlane_;  // made when first asked for
-  std::vector<double> formFactors_;                     // per patch, this shot
-  std::vector<char> seenFromFront_;                     // per patch, this shot
+  std::vector<double> formFactors_;                     // per receiver, this shot
+  std::vector<char> seenFromFront_;                     // per receiver, this shot
   int binsN_ = 0;                                       // binDirections' n
   std::vector<char> directional_;                       // per patch: its rows split by bin
   std::vector<std::vector<int>> pixelBin_;              // per face, per pixel: the bin of its centre

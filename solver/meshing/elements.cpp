@@ -1,0 +1,103 @@
+#include "solver/meshing/elements.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+
+// An element of `parent` with the given corners (counter-clockwise around its normal): its area
+// and area centroid from the fan of triangles, the rest its parent's.
+Patch elementOf(const Patch& parent, std::initializer_list<Vec3> corners) {
+  Patch e = parent;
+  e.vertexCount = static_cast<int>(corners.size());
+  std::copy(corners.begin(), corners.end(), e.vertices.begin());
+  double area = 0.0;
+  Vec3 centroid{0.0};
+  for (int k = 1; k + 1 < e.vertexCount; ++k) {
+    const double a = 0.5 * glm::dot(glm::cross(e.vertices[k] - e.vertices[0], e.vertices[k + 1] - e.vertices[0]),
+                                    parent.normal);
+    area += a;
+    centroid += a * (e.vertices[0] + e.vertices[k] + e.vertices[k + 1]) / 3.0;
+  }
+  e.areaM2 = area;
+  e.centroid = centroid / area;
+  return e;
+}
+
+void cutQuad(const Patch& p, int n, std::vector<Patch>& out) {
+  const auto at = [&](int i, int j) {  // the bilinear point (i/n along v0 -> v1, j/n along v0 -> v3)
+    const double s = static_cast<double>(i) / n, t = static_cast<double>(j) / n;
+    return (1.0 - t) * ((1.0 - s) * p.vertices[0] + s * p.vertices[1]) +
+           t * ((1.0 - s) * p.vertices[3] + s * p.vertices[2]);
+  };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) out.push_back(elementOf(p, {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}));
+}
+
+void cutTriangle(const Patch& p, int n, std::vector<Patch>& out) {
+  const auto at = [&](int i, int j) {  // v0 + i/n (v1 - v0) + j/n (v2 - v0)
+    return p.vertices[0] + (static_cast<double>(i) / n) * (p.vertices[1] - p.vertices[0]) +
+           (static_cast<double>(j) / n) * (p.vertices[2] - p.vertices[0]);
+  };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i + j < n; ++i) {
+      out.push_back(elementOf(p, {at(i, j), at(i + 1, j), at(i, j + 1)}));
+      if (i + j + 1 < n) out.push_back(elementOf(p, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}));
+    }
+}
+
+}  // namespace
+
+int elementCuts(const Patch& patch, double minElementM) {
+  if (minElementM == 0.0) return 2;
+  double longest = 0.0;
+  for (int k = 0; k < patch.vertexCount; ++k)
+    longest = std::max(longest, glm::length(patch.vertices[(k + 1) % patch.vertexCount] - patch.vertices[k]));
+  // A patch exactly a whole number of elements long is cut that many times, not once more for rounding.
+  // At most 2^20 cuts (more elements than any limit), so that a tiny minElementM is refused, not overflowed.
+  return static_cast<int>(std::clamp(std::ceil(longest / minElementM * (1.0 - 1e-12)), 1.0, 1048576.0));
+}
+
+double countElements(const std::vector<Patch>& patches, double minElementM) {
+  double count = 0.0;
+  for (const Patch& p : patches) count += std::pow(elementCuts(p, minElementM), 2.0);
+  return count;
+}
+
+Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements) {
+  if (!std::isfinite(minElementM) || !(minElementM >= 0.0))
+    throw OptionError(fmt::format("--min-element must be a finite length in metres, at least 0 (0: every patch cut "
+                                  "into four), got {}; use e.g. --min-element 0.1", minElementM));
+  const double count = countElements(patches, minElementM);
+  if (count > static_cast<double>(maxElements)) {
+    const std::string fix = minElementM > 0.0
+        ? fmt::format("use a larger --min-element (about {:.3g} m or more)",
+                      minElementM * std::sqrt(count / static_cast<double>(maxElements)) * 1.1)
+        : "give a larger --cell or --subdivide off";
+    throw OptionError(fmt::format("--min-element {} m would cut the {} patches into {:.3g} elements, more than the "
+                                  "limit of {}; {}", minElementM, patches.size(), count, maxElements, fix));
+  }
+  Elements out;
+  out.elements.reserve(static_cast<std::size_t>(count));
+  out.first.reserve(patches.size() + 1);
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    out.first.push_back(static_cast<int>(out.elements.size()));
+    const int n = elementCuts(patches[p], minElementM);
+    if (patches[p].vertexCount == 4)
+      cutQuad(patches[p], n, out.elements);
+    else
+      cutTriangle(patches[p], n, out.elements);
+    out.patchOf.resize(out.elements.size(), static_cast<int>(p));
+  }
+  out.first.push_back(static_cast<int>(out.elements.size()));
+  return out;
+}
+
+}  // namespace radmesh

@@ -1,0 +1,70 @@
+// Substructuring's elements (solver/meshing/elements.h): exact counts, areas and orientation.
+#include <gtest/gtest.h>
+
+#include "solver/meshing/elements.h"
+#include "solver/scene/scene_error.h"
+#include "tests/solver/patch_fixtures.h"
+
+namespace radmesh::test {
+namespace {
+
+Patch unitSquare() { return makePatch({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}); }
+Patch rightTriangle() { return makePatch({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}); }
+
+void expectCutsOf(const Patch& parent, const Elements& e, int parentIndex, size_t count) {
+  double area = 0.0;
+  for (int k = e.first[parentIndex]; k < e.first[parentIndex + 1]; ++k) {
+    const Patch& element = e.elements[k];
+    EXPECT_EQ(e.patchOf[k], parentIndex);
+    EXPECT_NEAR(element.areaM2, parent.areaM2 / count, 1e-15);
+    // Counter-clockwise around the parent's normal, like the parent.
+    const Vec3 turn = glm::cross(element.vertices[1] - element.vertices[0], element.vertices[2] - element.vertices[0]);
+    EXPECT_GT(glm::dot(turn, parent.normal), 0.0);
+    EXPECT_EQ(element.normal, parent.normal);
+    EXPECT_EQ(element.material, parent.material);
+    area += element.areaM2;
+  }
+  EXPECT_EQ(static_cast<size_t>(e.first[parentIndex + 1] - e.first[parentIndex]), count);
+  EXPECT_NEAR(area, parent.areaM2, 1e-14);
+}
+
+TEST(Elements, CountIsExactForAGivenMinElement) {
+  const std::vector<Patch> patches{unitSquare(), rightTriangle()};
+  // The square's edges are 1 m: 0.25 m elements cut it 4 ways per edge, exactly (not 5 for
+  // rounding); the triangle's longest edge is sqrt 2 = 1.414 m, so 6 ways, 36 triangles.
+  const Elements e = subdivideUniform(patches, 0.25);
+  ASSERT_EQ(e.elements.size(), 16u + 36u);
+  EXPECT_EQ(e.first, (std::vector<int>{0, 16, 52}));
+  expectCutsOf(patches[0], e, 0, 16);
+  expectCutsOf(patches[1], e, 1, 36);
+  EXPECT_EQ(countElements(patches, 0.25), 52.0);
+  EXPECT_EQ(subdivideUniform(patches, 0.3).elements.size(), 16u + 25u);  // ceil(1/0.3) = 4, ceil(1.414/0.3) = 5
+  EXPECT_EQ(subdivideUniform(patches, 2.0).elements.size(), 2u);        // larger than both: one element each
+}
+
+TEST(Elements, MinElementZeroCutsEveryPatchIntoFour) {
+  const std::vector<Patch> patches{unitSquare(), rightTriangle()};
+  const Elements e = subdivideUniform(patches, 0.0);
+  ASSERT_EQ(e.elements.size(), 8u);
+  expectCutsOf(patches[0], e, 0, 4);
+  expectCutsOf(patches[1], e, 1, 4);
+  // The triangle's four-way split: its middle element is the triangle of the edge midpoints.
+  EXPECT_NEAR(glm::length(e.elements[5].centroid - patches[1].centroid), 0.0, 1e-15);
+}
+
+TEST(Elements, RefusesAMinElementThatIsNegativeNaNOrMakesTooMany) {
+  const std::vector<Patch> patches{unitSquare()};
+  EXPECT_THROW(subdivideUniform(patches, -0.1), OptionError);
+  EXPECT_THROW(subdivideUniform(patches, std::nan("")), OptionError);
+  try {
+    subdivideUniform(patches, 1e-9);
+    FAIL() << "1e-9 m elements of a square metre were not refused";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("larger --min-element"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(subdivideUniform(patches, 0.1, 99), OptionError);  // 100 elements, limit 99
+  EXPECT_EQ(subdivideUniform(patches, 0.1, 100).elements.size(), 100u);
+}
+
+}  // namespace
+}  // namespace radmesh::test
