@@ -47,7 +47,7 @@ int cellNamed(const CellsProgress& cells, const std::string& name) {
 
 // With the eye in room r0c0 of building:3x3, the first round shoots 16 iterations there and one in
 // the farthest room, which is left with more of its light unshot; walking into that room moves the
-// focus there at the next round.
+// focus there: the next round shoots it most.
 TEST(CellsSolverThread, TheCamerasRoomIsSolvedFirstAndTheFocusFollowsTheEye) {
   const Scene scene = loadScene("building:3x3");
   SolverThread thread(scene, cellsSetup(), /*playing=*/false);
@@ -80,12 +80,16 @@ TEST(CellsSolverThread, TheCamerasRoomIsSolvedFirstAndTheFocusFollowsTheEye) {
   const Snapshot second = waitFor(thread, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 2; });
   EXPECT_EQ(second->cells->focus, farCell);
   EXPECT_EQ(second->cells->cells[farCell].portalDistance, 0);
-  EXPECT_EQ(second->cells->cells[farCell].iterations, 1 + 16);
-  EXPECT_EQ(second->cells->cells[room].iterations, 16 + 1);
+  // The second round shot the new focus more than any other cell.
+  for (size_t c = 0; c < cells.cells.size(); ++c)
+    if (static_cast<int>(c) != farCell)
+      EXPECT_GT(second->cells->cells[farCell].iterations - cells.cells[farCell].iterations,
+                second->cells->cells[c].iterations - cells.cells[c].iterations) << cells.cells[c].name;
 }
 
-// Before the eye is known, every cell shoots alike; outside every room, the nearest room is first.
-TEST(CellsSolverThread, WithoutAnEyeEveryCellShootsAlike) {
+// Before the eye is known, no cell is first: a round's budget (3 shots a cell) goes by unshot
+// power, the lit room shooting most; outside every room, the nearest room is first.
+TEST(CellsSolverThread, WithoutAnEyeShotsFollowTheUnshotPower) {
   const Scene scene = loadScene("building:1x1");
   SolveSetup setup = cellsSetup();
   setup.exchangeShots = 3;
@@ -93,7 +97,13 @@ TEST(CellsSolverThread, WithoutAnEyeEveryCellShootsAlike) {
   thread.step(1);
   const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 1; });
   EXPECT_EQ(s->cells->focus, -1);
-  for (const auto& c : s->cells->cells) EXPECT_EQ(c.iterations, 3) << c.name;
+  int total = 0;
+  for (const auto& c : s->cells->cells) {
+    EXPECT_GE(c.iterations, 1) << c.name;
+    EXPECT_LE(c.iterations, s->cells->cells[cellNamed(*s->cells, "r0c0")].iterations) << c.name;
+    total += c.iterations;
+  }
+  EXPECT_LE(total, 3 * static_cast<int>(s->cells->cells.size()));
 }
 
 TEST(CellsSolverThread, AnEyeOutsideTheBuildingFocusesTheNearestRoom) {
