@@ -217,12 +217,17 @@ int CellSolver::portalDistance(int cell) const { return state_->distance.at(stat
 // it, so that a round stays short), shared in proportion to each cell's unshot power (halved the
 // same way), so that the cells shoot roughly in the order the whole building's solve would. A
 // cell holding more than its share (1/cells) of the stopping threshold shoots at least once, and
-// so does the strongest: the round that shoots nothing is the one after done().
+// so does the strongest: the round that shoots nothing is the one after done(). Until the focus
+// cell itself is below the stopping rule, cells more than one portal from it wait (no share, no
+// minimum): a hundred rooms shooting once a round each would cost the camera's room most of it.
 std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const {
   const int n = static_cast<int>(cells.size());
   std::vector<double> weight(n);
   double total = 0.0, budget = 0.0;
+  const bool focusFirst = focus >= 0 && cells[focus].solver->ledger().unshotFraction() > options.untilUnshot;
+  auto waits = [&](int c) { return focusFirst && hops(c) > 0; };
   for (int c = 0; c < n; ++c) {
+    if (waits(c)) continue;
     const int d = hops(c);
     weight[c] = std::ldexp(cells[c].solver->ledger().unshot, -d);
     total += weight[c];
@@ -233,7 +238,7 @@ std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const
   std::vector<int> shots(n, 0);
   for (int c = 0; c < n; ++c) {
     if (total > 0.0) shots[c] = static_cast<int>(std::min(budget * (weight[c] / total), 1e9));  // no int overflow
-    if (cells[c].solver->ledger().unshot > thresholdW || c == strongest) shots[c] = std::max(shots[c], 1);
+    if ((!waits(c) && cells[c].solver->ledger().unshot > thresholdW) || c == strongest) shots[c] = std::max(shots[c], 1);
   }
   return shots;
 }

@@ -172,14 +172,19 @@ TEST(CellSolver, CellWithoutPortalsIsTheOrdinarySolveOfItsRoom) {
 
 // Each cell's iterations over the next round, as CellSolver::round() shares its budget: exchange
 // shots a cell, halved at each portal from the focus, in proportion to unshot power (halved the
-// same way); at least one for a cell above 1/cells of the stopping threshold, and the strongest.
-std::vector<int> expectedShots(const CellSolver& solver, int exchangeShots) {
+// same way); at least one for a cell above 1/cells of the stopping threshold, and the strongest;
+// with a focus above the stopping rule, the focus alone.
+std::vector<int> expectedShots(const CellSolver& solver, int exchangeShots, int focus = -1) {
   const std::vector<CellFigures> cells = solver.cellFigures();
   const int n = static_cast<int>(cells.size());
   const Ledger building = solver.ledger();
+  // Until the focus is below the stopping rule, the other cells wait.
+  const bool focusFirst = focus >= 0 && cells[focus].ledger.unshotFraction() > solver.options().untilUnshot;
+  auto waits = [&](int c) { return focusFirst && c != focus; };
   std::vector<double> weight(n);
   double total = 0.0, budget = 0.0;
   for (int c = 0; c < n; ++c) {
+    if (waits(c)) continue;
     const int d = solver.portalDistance(c);
     weight[c] = std::ldexp(cells[c].ledger.unshot, -d);
     total += weight[c], budget += std::ldexp(exchangeShots, -d);
@@ -189,7 +194,7 @@ std::vector<int> expectedShots(const CellSolver& solver, int exchangeShots) {
   std::vector<int> shots(n);
   for (int c = 0; c < n; ++c) {
     shots[c] = static_cast<int>(budget * (weight[c] / total));
-    if (cells[c].ledger.unshot > threshold || c == strongest) shots[c] = std::max(shots[c], 1);
+    if ((!waits(c) && cells[c].ledger.unshot > threshold) || c == strongest) shots[c] = std::max(shots[c], 1);
   }
   return shots;
 }
@@ -227,11 +232,13 @@ TEST(CellSolver, FocusShootsNearCellsMore) {
   solver.round();
   EXPECT_EQ(iterationsPerCell(solver), (std::vector<int>{12, 0}));  // 8 + 8 / 2, all A's: B has no light yet
   for (int round = 2; round <= 4; ++round) {
-    const std::vector<int> before = iterationsPerCell(solver), shots = expectedShots(solver, 8);
+    const std::vector<int> before = iterationsPerCell(solver), shots = expectedShots(solver, 8, 1);
     solver.round();
     const std::vector<int> after = iterationsPerCell(solver);
     for (int c = 0; c < 2; ++c) EXPECT_EQ(after[c] - before[c], shots[c]) << "cell " << c << ", round " << round;
   }
+  // Once light has come through the door, B (the focus) shoots alone until it is below the rule.
+  EXPECT_EQ(expectedShots(solver, 8, 1)[0], 0);
 }
 
 // two-rooms without its emitters, lit by a point light in room A that also shines through the door.
