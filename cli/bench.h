@@ -61,7 +61,7 @@ struct BenchCellsArgs {
   double untilUnshot = 0.01;   // both solves, the whole building's and the cells'
   double focusUnshot = 0.05;   // the focus cell: its unshot power against the light it has had
   int exchangeShots = 16;
-  int portalBins = 0;          // CellSolveSettings::portalBins
+  int portalBins = 8;          // CellSolveSettings::portalBins
   int focusCell = 0;           // the camera's cell
   int maxIterations = 1'000'000;
   bool skipWhole = false;      // no whole-building solve (and so no error per room)

@@ -22,7 +22,7 @@ struct SolveFlags {
   bool strict = false;  // --strict: a scene that needed any repair is refused
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
   int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
-  int portalBins = 0;         // --portal-bins: direction bins of light crossing a portal (0, 1: diffuse)
+  int portalBins = 8;         // --portal-bins: direction bins of light crossing a portal (0, 1: diffuse)
   Daylight daylight;          // --sky, --sky-model, --sun
   UpChoice up = UpChoice::Format;  // --up
   SolveOptions options;
@@ -40,7 +40,7 @@ struct SolveFlags {
 
 inline constexpr const char* kPortalBinsHelp =
     "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
-    "in it (docs/cells.md); 0 or 1: re-emitted diffusely";
+    "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
 
 // --cell's value when the user gave it, else chooseCell(scene); `why` says which.
 CellChoice commandCell(const Scene& scene, double cellM, bool given);

@@ -110,7 +110,8 @@ double absorbedIn(const TwoRooms& t, const std::vector<Rgb>& b, bool roomA) {
   return sum;
 }
 
-// The approximation: light through the door is re-emitted diffusely from the doorway, so room B
+// The diffuse portal (--portal-bins 0, the paper's approximation; the default's bins are tested in
+// portal_bins_test.cpp): light through the door is re-emitted diffusely from the doorway, so room B
 // gets the right power but spread evenly: less on the dark floor beyond the door, where the
 // light from A's ceiling would land, more on the light walls and ceiling. Both solves to 1 %
 // unshot, same mesh and projection; the tolerances are what was measured (docs/cells.md) with a
@@ -119,7 +120,7 @@ TEST(CellSolver, ReflectedLightPerRoomNearTheWholeBuildingSolve) {
   const TwoRooms t;
   SolveOptions o = testOptions();
   o.effects = EffectsMode::All;
-  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16});
+  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16, 0});
   while (!cells.done()) cells.round();
   ProgressiveSolver whole(t.scene, t.patches, o);
   while (!whole.done()) whole.step();
@@ -287,7 +288,7 @@ TEST(CellSolver, LightReflectedPerRoomNearTheWholeBuildingSolve) {
   const TwoRooms t{lit.scene, lit.patches};
   SolveOptions o = testOptions();
   o.effects = EffectsMode::All;
-  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16});
+  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16, 0});
   while (!cells.done()) cells.round();
   ProgressiveSolver whole(t.scene, t.patches, o);
   while (!whole.done()) whole.step();
