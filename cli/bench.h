@@ -25,6 +25,7 @@ struct BenchSolveArgs {
   int threads = 1;
   std::string cellsMode = "off";  // --cells auto: the cells solve (docs/cells.md), timed per iteration
   int exchangeShots = 16;
+  int portalBins = 4;    // CellSolveSettings::portalBins
   std::vector<double> cells;  // patch-count scaling sweep; empty: skipped
   int scalingResolution = 256;
   int scalingIterations = 20;
@@ -61,7 +62,7 @@ struct BenchCellsArgs {
   double untilUnshot = 0.01;   // both solves, the whole building's and the cells'
   double focusUnshot = 0.05;   // the focus cell: its unshot power against the light it has had
   int exchangeShots = 16;
-  int portalBins = 8;          // CellSolveSettings::portalBins
+  int portalBins = 4;          // CellSolveSettings::portalBins
   int focusCell = 0;           // the camera's cell
   int maxIterations = 1'000'000;
   bool skipWhole = false;      // no whole-building solve (and so no error per room)

@@ -39,6 +39,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--exchange-shots", args->exchangeShots, "With --cells auto: shots per cell per round, on average")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();

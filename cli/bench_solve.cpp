@@ -114,7 +114,8 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
         o.threads = args.threads;
         validateOptions(o);
         if (cells) requireCellsOptions(o);
-        const Timing t = cells ? timeCells(scene, patches, partition, o, args.maxIterations, {cell.cellM, args.exchangeShots})
+        const Timing t = cells ? timeCells(scene, patches, partition, o, args.maxIterations,
+                                           {cell.cellM, args.exchangeShots, args.portalBins})
                                : timeSolve(scene, patches, o, args.maxIterations);
         fmt::print("{:<10} {:>6} {:>4} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f} {:>7.2f}% {:>12.4f}\n", projection, n, k,
                    t.msPerIteration, t.iterationsToUntil, t.reached ? " " : "+", t.secondsToUntil,

@@ -22,7 +22,7 @@ struct SolveFlags {
   bool strict = false;  // --strict: a scene that needed any repair is refused
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
   int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
-  int portalBins = 8;         // --portal-bins: direction bins of light crossing a portal (0, 1: diffuse)
+  int portalBins = 4;         // --portal-bins: direction bins of light crossing a portal (0, 1: diffuse)
   Daylight daylight;          // --sky, --sky-model, --sun
   UpChoice up = UpChoice::Format;  // --up
   SolveOptions options;

@@ -25,10 +25,10 @@ struct CellSolveSettings {
   // each portal of distance from it), shared by the cells in proportion to their unshot power.
   int exchangeShots = 16;
   // Light crossing a portal keeps its direction in directionBinCount(portalBins) bins and goes on
-  // in it (solver/formfactors/direction_bins.h); 0 or 1: re-emitted diffusely. At most 16. 8 by
-  // default: a room lit through its door is +4 % off the whole solve with 8 x 8, +29 % diffuse
-  // (docs/cells.md, Directional portals).
-  int portalBins = 8;
+  // in it (solver/formfactors/direction_bins.h); 0 or 1: re-emitted diffusely. At most 16. 4 by
+  // default: a room lit through its door is +6 % off the whole solve with 4 x 4 (+4 % with 8 x 8,
+  // at up to 2.6 times the time), +29 % diffuse (docs/cells.md, Directional portals).
+  int portalBins = 4;
 };
 
 struct CellFigures {

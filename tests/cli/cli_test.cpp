@@ -150,8 +150,8 @@ TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
 // iterations as `solve --cells auto` with the same settings.
 TEST(Cli, BenchSolveTimesTheCellsSolve) {
   const std::string json = tempPath("bench.json");
-  const CommandRun run = radmesh("bench solve two-rooms --cells auto --exchange-shots 8 --until 1 --until-unshot 0.1 "
-                                 "--projections hemicube --resolutions 16 --threads 1 --json " + json);
+  const CommandRun run = radmesh("bench solve two-rooms --cells auto --exchange-shots 8 --portal-bins 0 --until 1 "
+                                 "--until-unshot 0.1 --projections hemicube --resolutions 16 --threads 1 --json " + json);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const auto j = nlohmann::json::parse(std::ifstream(json));
   EXPECT_EQ(j["cells"], "auto");
@@ -160,8 +160,8 @@ TEST(Cli, BenchSolveTimesTheCellsSolve) {
   EXPECT_TRUE(row["reached_until"].get<bool>());
   EXPECT_LE(row["unshot_fraction"].get<double>(), 0.1);
   const std::string stats = tempPath("stats.json");
-  ASSERT_EQ(radmesh("solve two-rooms --cells auto --exchange-shots 8 --until-unshot 0.1 --projection hemicube "
-                    "--resolution 16 --threads 1 --quiet --stats " + stats).exitCode, 0);
+  ASSERT_EQ(radmesh("solve two-rooms --cells auto --exchange-shots 8 --portal-bins 0 --until-unshot 0.1 "
+                    "--projection hemicube --resolution 16 --threads 1 --quiet --stats " + stats).exitCode, 0);
   EXPECT_EQ(row["iterations_to_until"], nlohmann::json::parse(std::ifstream(stats))["iterations"]);
 
   CommandRun bad = radmesh("bench solve two-rooms --cells some");
