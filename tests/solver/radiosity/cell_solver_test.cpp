@@ -110,6 +110,15 @@ double absorbedIn(const TwoRooms& t, const std::vector<Rgb>& b, bool roomA) {
   return sum;
 }
 
+// The radiosity of the cells solve (diffuse portals) and of the whole solve, both until done().
+std::pair<std::vector<Rgb>, std::vector<Rgb>> cellsAndWholeSolve(const TwoRooms& t, const SolveOptions& o) {
+  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16, 0});
+  while (!cells.done()) cells.round();
+  ProgressiveSolver whole(t.scene, t.patches, o);
+  while (!whole.done()) whole.step();
+  return {cells.radiosity(), whole.radiosity()};
+}
+
 // The diffuse portal (--portal-bins 0, the paper's approximation; the default's bins are tested in
 // portal_bins_test.cpp): light through the door is re-emitted diffusely from the doorway, so room B
 // gets the right power but spread evenly: less on the dark floor beyond the door, where the
@@ -120,14 +129,11 @@ TEST(CellSolver, ReflectedLightPerRoomNearTheWholeBuildingSolve) {
   const TwoRooms t;
   SolveOptions o = testOptions();
   o.effects = EffectsMode::All;
-  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16, 0});
-  while (!cells.done()) cells.round();
-  ProgressiveSolver whole(t.scene, t.patches, o);
-  while (!whole.done()) whole.step();
+  const auto [cells, whole] = cellsAndWholeSolve(t, o);
   auto error = [](double got, double expected) { return got / expected - 1.0; };
-  EXPECT_LT(std::abs(error(reflected(t, cells.radiosity(), true), reflected(t, whole.radiosity(), true))), 0.004);
-  EXPECT_LT(std::abs(error(absorbedIn(t, cells.radiosity(), false), absorbedIn(t, whole.radiosity(), false))), 0.03);
-  const double roomB = error(reflected(t, cells.radiosity(), false), reflected(t, whole.radiosity(), false));
+  EXPECT_LT(std::abs(error(reflected(t, cells, true), reflected(t, whole, true))), 0.004);
+  EXPECT_LT(std::abs(error(absorbedIn(t, cells, false), absorbedIn(t, whole, false))), 0.03);
+  const double roomB = error(reflected(t, cells, false), reflected(t, whole, false));
   EXPECT_GT(roomB, 0.15);
   EXPECT_LT(roomB, 0.35);
 }
@@ -288,12 +294,9 @@ TEST(CellSolver, LightReflectedPerRoomNearTheWholeBuildingSolve) {
   const TwoRooms t{lit.scene, lit.patches};
   SolveOptions o = testOptions();
   o.effects = EffectsMode::All;
-  CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 16, 0});
-  while (!cells.done()) cells.round();
-  ProgressiveSolver whole(t.scene, t.patches, o);
-  while (!whole.done()) whole.step();
-  const double roomA = reflected(t, cells.radiosity(), true) / reflected(t, whole.radiosity(), true) - 1.0;
-  const double roomB = reflected(t, cells.radiosity(), false) / reflected(t, whole.radiosity(), false) - 1.0;
+  const auto [cells, whole] = cellsAndWholeSolve(t, o);
+  const double roomA = reflected(t, cells, true) / reflected(t, whole, true) - 1.0;
+  const double roomB = reflected(t, cells, false) / reflected(t, whole, false) - 1.0;
   EXPECT_LT(std::abs(roomA), 0.003);
   EXPECT_LT(std::abs(roomB), 0.12);
 }
