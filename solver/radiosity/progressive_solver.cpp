@@ -17,21 +17,16 @@
 #include "solver/formfactors/near_field.h"
 #include "solver/meshing/elements.h"
 #include "solver/projection/scan_conversion.h"
+#include "solver/radiosity/progressive_solver_state.h"
 #include "solver/radiosity/solver_input.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
 
+using solver_state::channelSum;
+using solver_state::channels;
+
 namespace {
-
-double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
-
-// With colour off (a grey scene) one channel stands for three: `double` holds it, and these give
-// bitwise what the three equal channels of an Rgb would (a + a + a rounds as 3a does).
-double channelSum(double c) { return 3.0 * c; }
-template <typename Value> Value channels(const Rgb& c);
-template <> Rgb channels<Rgb>(const Rgb& c) { return c; }
-template <> double channels<double>(const Rgb& c) { return c.r; }
 
 // Whether a progress has n patches and `elements` elements (0: patches receive) and names no
 // others (a row's shooter and receivers, a record's shooters).
@@ -51,58 +46,6 @@ bool fitsPatches(const SolverProgress& p, size_t n, size_t elements) {
 }
 
 }  // namespace
-
-struct ProgressiveSolver::State {
-  Scene scene;
-  std::vector<Patch> patches;
-  SolveOptions options;
-  EffectsPlan plan;
-  std::vector<Rgb> rho;
-  std::vector<Rgb> radiosity;          // B
-  std::vector<Rgb> unshotRadiosity;    // dB: received, not yet shot
-  std::vector<double> unshotPowerW;    // dB * A summed over RGB, what shooter selection compares
-  std::vector<int> timesShot;
-  std::vector<int> tieRank;            // shooters of equal power go in geometric order
-  std::vector<Rgb> lightPower;         // per scene light, W per channel: all shot in iteration 1
-  std::vector<char> isPortal;          // per patch (setPortalPatches)
-  int portalBinsN = 0;                 // setPortalPatches' n: directionBinCount(n) bins per portal patch
-  // Per portal patch, per bin of its direction of travel (in the frame of its back, facing the
-  // neighbour cell): arrived on it, waiting to be taken.
-  std::vector<std::vector<Rgb>> portalPower;
-  // Per portal patch with more than one bin: its unshot power (arrived from the neighbour) per bin.
-  std::vector<std::vector<Rgb>> portalUnshot;
-  std::unique_ptr<FormFactorBackend> backend;
-  FormFactorCache cache;
-  Ledger ledger;
-  std::vector<IterationRecord> history;
-  std::vector<FormFactorRow> rows;
-  // Patches shoot, elements receive (options.subdivide; solver/meshing/elements.h): empty when off.
-  Elements elements;
-  std::vector<Rgb> elementRadiosity;
-  std::vector<std::vector<int>> elementNearReceivers;  // per shooter patch, its near elements
-  double firstShotPowerW = 0.0;
-  double convergence = 0.0;
-  bool exhausted = false;
-
-  State(const Scene& s, std::vector<Patch> p, const SolveOptions& o)
-      : scene(s), patches(std::move(p)), options(o), cache(o.formFactorCacheBytes) {}
-
-  std::vector<int> pickShooters();
-  void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
-  void shoot(const std::vector<int>& shooters, IterationRecord& record);
-  void shootLights(IterationRecord& record);
-  void deliver(const FormFactorRow& row, const Rgb& power);
-  void deliverToReceivers(const FormFactorRow& row, const Rgb& power);
-  void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins);
-  void updateUnshot();
-  template <typename Value, typename Incident> void receive(const FormFactorRow& row, Incident incidentOf);
-  template <typename Value, typename Incident> void receiveOnElements(const FormFactorRow& row, Incident incidentOf);
-  bool subdivided() const { return options.subdivide != Subdivide::Off; }
-  const std::vector<Patch>& receivers() const { return subdivided() ? elements.elements : patches; }
-  Rgb ambient() const;
-  template <typename Incident> void passToPortals(const FormFactorRow& row, Incident incidentOf);
-  void arrivalShares(int shooter, int portal, std::vector<double>& shares) const;
-};
 
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
                                      const SolveOptions& options)
@@ -260,147 +203,9 @@ void ProgressiveSolver::State::deliverToReceivers(const FormFactorRow& row, cons
   }
 }
 
-// A portal patch's shot, each bin's power into its own directions: sum_b P_b F_jb / F_b to
-// receiver j. A bin the projection does not cover (F_b = 0: the single plane's grazing bins) is
-// shot diffusely with the whole row, as a portal without bins would be.
-void ProgressiveSolver::State::deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins) {
-  std::vector<double> hit(row.binBackFaces);  // per bin: landing on a patch, front or back
-  for (const FormFactorRow::BinShare& share : row.binShares) hit[share.bin] += share.formFactor;
-  std::vector<Rgb> perFormFactor(bins.size(), Rgb(0.0));  // P_b / F_b
-  Rgb uncovered(0.0);
-  for (size_t b = 0; b < bins.size(); ++b) {
-    const double total = row.binTotals[b];
-    if (!(total > 0.0)) {
-      uncovered += bins[b];
-      continue;
-    }
-    perFormFactor[b] = bins[b] / total;
-    const double backW = channelSum(perFormFactor[b]) * row.binBackFaces[b];
-    ledger.absorbed += backW;
-    ledger.absorbedByBackFaces += backW;
-    const double escaped = total - hit[b];  // as FormFactorRow::escapedFraction, per bin
-    if (escaped > 1e-12 * total) ledger.escaped += channelSum(perFormFactor[b]) * escaped;
-  }
-  // The receivers of the bins as a row of their own, each with the power reaching it.
-  FormFactorRow lit;
-  lit.shooter = row.shooter;
-  std::vector<Rgb> incident;
-  for (const FormFactorRow::BinShare& share : row.binShares) {
-    if (lit.receivers.empty() || lit.receivers.back() != share.patch) {
-      lit.receivers.push_back(share.patch);
-      incident.push_back(Rgb(0.0));
-    }
-    incident.back() += perFormFactor[share.bin] * share.formFactor;
-  }
-  lit.formFactors.assign(lit.receivers.size(), 0.0);
-  auto incidentOf = [&](size_t r) { return incident[r]; };
-  passToPortals(lit, incidentOf);
-  if (!plan.interreflection) {
-    for (size_t r = 0; r < lit.receivers.size(); ++r)
-      if (!isPortal[lit.receivers[r]]) ledger.absorbed += channelSum(incident[r]);
-  } else {
-    receive<Rgb>(lit, incidentOf);
-  }
-  if (channelSum(uncovered) > 0.0) deliver(row, uncovered);
-}
-
 void ProgressiveSolver::State::updateUnshot() {
   ledger.unshot = 0.0;
   for (double p : unshotPowerW) ledger.unshot += p;
-}
-
-// Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double), each
-// receiver updated where the back end keeps it.
-template <typename Value, typename Incident>
-void ProgressiveSolver::State::receive(const FormFactorRow& row, Incident incidentOf) {
-  if (subdivided()) return receiveOnElements<Value>(row, incidentOf);
-  // Per channel: incident, reflected, absorbed, gain, B, dB (6 flops); then the unshot power (a
-  // channel sum and the area), the absorbed power (a channel sum) and the running sum (1). A grey
-  // scene's channel sums are one multiply each.
-  constexpr bool kColour = std::is_same_v<Value, Rgb>;
-  constexpr double kFlops = kColour ? 3 * 6 + (2 + 1) + 2 + 1 : 6 + (1 + 1) + 1 + 1;
-  ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
-    const int j = row.receivers[r];
-    if (isPortal[j]) return 0.0;  // passToPortals took it
-    const Value incident = incidentOf(r);
-    const Value reflected = channels<Value>(rho[j]) * incident;
-    const Value gain = reflected / patches[j].areaM2;
-    radiosity[j] += Rgb(gain);
-    unshotRadiosity[j] += Rgb(gain);
-    unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
-    return channelSum(incident - reflected);
-  });
-}
-
-// Eq. 1.2 onto elements: B_e += rho_e dB_i F_ie A_i / A_e on the element's PE, then each patch
-// gathers what its elements reflected (in receiver order, on the host: a patch's elements may lie
-// on several PEs), as radiosity (the area mean of its elements') and as unshot power.
-template <typename Value, typename Incident>
-void ProgressiveSolver::State::receiveOnElements(const FormFactorRow& row, Incident incidentOf) {
-  // Per channel: incident, reflected, absorbed, gain, B (5 flops); the absorbed power's channel
-  // sum and the running sum.
-  constexpr double kFlops = std::is_same_v<Value, Rgb> ? 3 * 5 + 2 + 1 : 5 + 1 + 1;
-  std::vector<Value> reflected(row.receivers.size());
-  ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
-    const int e = row.receivers[r];
-    const Value incident = incidentOf(r);
-    reflected[r] = channels<Value>(rho[elements.patchOf[e]]) * incident;
-    elementRadiosity[e] += Rgb(reflected[r] / elements.elements[e].areaM2);
-    return channelSum(incident - reflected[r]);
-  });
-  for (size_t r = 0; r < row.receivers.size(); ++r) {
-    const int j = elements.patchOf[row.receivers[r]];
-    const Value gain = reflected[r] / patches[j].areaM2;
-    radiosity[j] += Rgb(gain);
-    unshotRadiosity[j] += Rgb(gain);
-    unshotPowerW[j] = channelSum(channels<Value>(unshotRadiosity[j])) * patches[j].areaM2;
-  }
-}
-
-// What reaches a portal patch waits there for the neighbour cell, in receiver order, by the bins of
-// its direction of travel.
-template <typename Incident>
-void ProgressiveSolver::State::passToPortals(const FormFactorRow& row, Incident incidentOf) {
-  std::vector<double> shares;
-  for (size_t r = 0; r < row.receivers.size(); ++r) {
-    const int j = row.receivers[r];
-    if (!isPortal[j]) continue;
-    const Rgb incident = incidentOf(r);
-    ledger.portalOut += channelSum(incident);
-    if (portalPower[j].size() == 1) {
-      portalPower[j][0] += incident;
-      continue;
-    }
-    arrivalShares(row.shooter, j, shares);
-    for (size_t b = 0; b < shares.size(); ++b)
-      if (shares[b] > 0.0) portalPower[j][b] += incident * shares[b];
-  }
-}
-
-// How what reaches a portal patch from a shooter splits over the bins of its direction of travel,
-// in the frame of the portal's back (the twin patch facing into the neighbour cell: u, -v, -n),
-// where the light goes on: the directions from the shooter's centre through the patch, each bin's
-// part weighted by its cosine to the portal's normal (which for a patch small against its distance
-// is the shooter's cosine up to a constant), the shares adding up to 1.
-void ProgressiveSolver::State::arrivalShares(int shooter, int portal, std::vector<double>& shares) const {
-  const Patch& p = patches[portal];
-  std::array<Vec3, 4> seen{};
-  for (int k = 0; k < p.vertexCount; ++k) {
-    const Vec3 d = p.vertices[k] - patches[shooter].centroid;
-    seen[k] = Vec3(glm::dot(d, p.frame.u), -glm::dot(d, p.frame.v), -glm::dot(d, p.frame.n));
-  }
-  shares.assign(directionBinCount(portalBinsN), 0.0);
-  double total = 0.0;
-  splitOverDirectionBins(portalBinsN, std::span<const Vec3>(seen.data(), p.vertexCount), [&](int b, double f) {
-    shares[b] += f;
-    total += f;
-  });
-  if (!(total > 0.0)) {  // seen edge-on: the direction of its centre
-    const Vec3 d = p.centroid - patches[shooter].centroid;
-    shares[directionBin(portalBinsN, Vec3(glm::dot(d, p.frame.u), -glm::dot(d, p.frame.v), -glm::dot(d, p.frame.n)))] = 1.0;
-    return;
-  }
-  for (double& share : shares) share /= total;
 }
 
 const IterationRecord& ProgressiveSolver::step() {
@@ -445,54 +250,6 @@ bool ProgressiveSolver::done() const {
 }
 
 bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
-
-void ProgressiveSolver::setPortalPatches(const std::vector<int>& portalPatches, int binsN) {
-  State& s = *state_;
-  if (s.subdivided() && !portalPatches.empty())
-    throw OptionError("portal patches need patches that receive: a solve whose elements receive (subdivide) cannot "
-                      "be a cell yet");
-  for (int j : portalPatches)
-    if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
-      throw std::invalid_argument(fmt::format("portal patch {} is not one of the {} patches", j, s.patches.size()));
-  const int bins = directionBinCount(binsN);
-  if (bins > 1) s.backend->binDirections(portalPatches, binsN);
-  s.portalBinsN = binsN;
-  for (int j : portalPatches) {
-    s.isPortal[j] = 1;
-    s.portalPower[j].assign(bins, Rgb(0.0));
-    if (bins > 1) s.portalUnshot[j].assign(bins, Rgb(0.0));
-  }
-}
-
-Rgb ProgressiveSolver::portalPower(int patch) const {
-  Rgb sum(0.0);
-  for (const Rgb& bin : state_->portalPower.at(static_cast<size_t>(patch))) sum += bin;
-  return sum;
-}
-
-std::vector<Rgb> ProgressiveSolver::takePortalPower(int patch) {
-  std::vector<Rgb>& bins = state_->portalPower.at(static_cast<size_t>(patch));
-  return std::exchange(bins, std::vector<Rgb>(bins.size(), Rgb(0.0)));
-}
-
-void ProgressiveSolver::addPortalPower(int patch, std::span<const Rgb> bins) {
-  State& s = *state_;
-  const size_t j = static_cast<size_t>(patch);
-  if (!s.isPortal.at(j) || bins.size() != s.portalPower[j].size())
-    throw std::invalid_argument(fmt::format("patch {} is not a portal patch of {} direction bins", patch, bins.size()));
-  Rgb power(0.0);
-  for (const Rgb& bin : bins) power += bin;
-  const double powerW = channelSum(power);
-  if (!(powerW > 0.0)) return;
-  if (!s.portalUnshot[j].empty())
-    for (size_t b = 0; b < bins.size(); ++b) s.portalUnshot[j][b] += bins[b];
-  s.unshotRadiosity.at(j) += power / s.patches[j].areaM2;
-  const double before = s.unshotPowerW[j];
-  s.unshotPowerW[j] = channelSum(s.unshotRadiosity[j]) * s.patches[j].areaM2;
-  s.ledger.portalIn += powerW;
-  s.ledger.unshot += s.unshotPowerW[j] - before;
-  s.exhausted = false;
-}
 
 double ProgressiveSolver::receiveLight(FormFactorRow row, const Rgb& power) {
   State& s = *state_;
