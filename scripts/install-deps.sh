@@ -7,6 +7,7 @@ packages=(
   libglfw3-dev libosmesa6-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-glad xvfb xauth gnuplot-nox
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()
