@@ -41,11 +41,12 @@ double Progress::fractionDone(const IterationRecord& r) const {
 }
 
 void Progress::print(const IterationRecord& r, double elapsed) {
-  const double rate = elapsed > 0.0 ? r.iteration / elapsed : 0.0;
+  const double rate = elapsed > 0.0 ? (r.iteration - startIteration_) / elapsed : 0.0;
   const double done = fractionDone(r);
+  const double doneNow = done - startDone_;  // this run's part
   const double unshot = 100.0 * r.ledger.unshotFraction();
   const std::string left =
-      done > 0.01 && done < 1.0 ? fmt::format("  ~{} left", duration(elapsed * (1.0 - done) / done)) : "";
+      doneNow > 0.01 && done < 1.0 ? fmt::format("  ~{} left", duration(elapsed * (1.0 - done) / doneNow)) : "";
   if (mode_ == Mode::Log) {
     std::string stops;
     if (stop_.untilUnshot > 0.0) stops += fmt::format(" (until {:g}%)", 100.0 * stop_.untilUnshot);
@@ -70,6 +71,11 @@ void Progress::report(const IterationRecord& r, double elapsed) {
   if (lastPrintedIteration_ == 0 || elapsed - lastPrintSeconds_ >= interval) print(r, elapsed);
 }
 
+void Progress::resumeFrom(const IterationRecord& last) {
+  startIteration_ = last.iteration;
+  startDone_ = fractionDone(last);
+}
+
 void Progress::finish(const IterationRecord& last, double elapsed) {
   if (last.iteration != lastPrintedIteration_) print(last, elapsed);
   if (mode_ == Mode::Terminal) fmt::print(out_, "\n");
@@ -77,6 +83,7 @@ void Progress::finish(const IterationRecord& last, double elapsed) {
 
 double solveWithProgress(ProgressiveSolver& solver, bool quiet, const std::function<void(double)>& afterStep) {
   Progress progress(solver.options());
+  if (!solver.history().empty()) progress.resumeFrom(solver.history().back());
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   while (!solver.done()) {

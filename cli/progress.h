@@ -18,6 +18,9 @@ class Progress {
   // `elapsedSeconds` since the solve began: the caller's clock, so that tests can inject one.
   void report(const IterationRecord& record, double elapsedSeconds);
   void finish(const IterationRecord& last, double elapsedSeconds);  // the final line
+  // A solve resumed after `last` (a checkpoint): the rate and the time left count only the
+  // iterations and progress made since, as the elapsed time does.
+  void resumeFrom(const IterationRecord& last);
 
  private:
   void print(const IterationRecord& record, double elapsedSeconds);
@@ -28,6 +31,8 @@ class Progress {
   Mode mode_;
   double lastPrintSeconds_ = 0.0;
   int lastPrintedIteration_ = 0;
+  int startIteration_ = 0;
+  double startDone_ = 0.0;
 };
 
 // Steps `solver` until done(), with progress on stdout unless `quiet`, calling afterStep (if any)

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -76,6 +77,29 @@ TEST(Progress, EstimatesTheTimeLeftFromTheUnshotPowerOnALogScale) {
   text.resize(std::fread(text.data(), 1, text.size(), out));
   std::fclose(out);
   EXPECT_NE(text.find("~2 s left"), std::string::npos) << text;
+}
+
+TEST(Progress, AResumedSolveCountsOnlyTheIterationsAndProgressSinceTheCheckpoint) {
+  // Resumed at iteration 1000 with 10 % unshot (halfway to 1 % on a log scale). 1 s and 100
+  // iterations later, at 3.16 % (three quarters): 100 it/s, and a quarter took 1 s, so ~1 s left.
+  SolveOptions stop;
+  stop.until = 1.0;
+  stop.untilUnshot = 0.01;
+  std::FILE* out = std::tmpfile();
+  Progress progress(stop, out, Progress::Mode::Log);
+  IterationRecord r;
+  r.iteration = 1000;
+  r.ledger.emitted = 1.0;
+  r.ledger.unshot = 0.1;
+  progress.resumeFrom(r);
+  r.iteration = 1100;
+  r.ledger.unshot = std::pow(10.0, -1.5);
+  progress.report(r, 1.0);
+  std::string text(300, '\0');
+  std::rewind(out);
+  text.resize(std::fread(text.data(), 1, text.size(), out));
+  std::fclose(out);
+  EXPECT_NE(text.find("iteration 1100  100.0 it/s  ~1 s left"), std::string::npos) << text;
 }
 
 }  // namespace
