@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "emulator/distributed.h"
 #include "emulator/mesh_machine.h"
 #include "emulator/wire_size.h"
 
@@ -38,7 +39,12 @@ class PeArray {
   const T& at(int pe, int i) const { return data_[offset(pe) + i]; }
   std::span<T> list(int pe) { return {data_.get() + offset(pe), listSize(pe)}; }
   std::span<const T> list(int pe) const { return {data_.get() + offset(pe), listSize(pe)}; }
-  int maxCount() const { return *std::max_element(counts_.begin(), counts_.end()); }  // in the block
+  // The longest list on any PE; distributed, a reduction over the ranks (every rank asks together).
+  int maxCount() const {
+    const int longest = *std::max_element(counts_.begin(), counts_.end());
+    if (!machine_->distributed()) return longest;
+    return detail::allReduce(*machine_, Channel::Reduce, longest, [](int in, int& inout) { inout = std::max(inout, in); });
+  }
   int reservedLength() const { return charged_; }  // per PE, in elements
   MeshMachine& machine() const { return *machine_; }
   const std::string& label() const { return label_; }

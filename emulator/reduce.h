@@ -58,7 +58,7 @@ Located<T> reduceMax(MeshMachine& machine, const Plural<T>& values) {
     }
     if (best.pe < 0 || best.value < value) best = {value, pe};
   }
-  nan = detail::firstProblem(machine, Channel::Reduce, nan);
+  if constexpr (std::is_floating_point_v<T>) nan = detail::firstProblem(machine, Channel::Reduce, nan);
   if (nan.found()) detail::throwNaN(machine, nan.pe, "reduceMax");
   if (!machine.distributed()) return best;
   return detail::allReduce(machine, Channel::Reduce, best, [](const Located<T>& in, Located<T>& inout) {
