@@ -18,11 +18,18 @@ MachineConfig checked(const MachineConfig& c) {
                                 std::to_string(c.threads));
   return c;
 }
+
+PeBlock blockOfThisProcess(const PeGrid& grid, const Transport* transport) {
+  if (!transport) return {0, 0, grid.rows, grid.cols};
+  return blockOf(grid, transport->rankGrid(), transport->rankRow(), transport->rankCol());
+}
 }  // namespace
 
 MeshMachine::MeshMachine(const MachineConfig& config)
     : grid_{checked(config).rows, config.cols},
-      mask_(grid_.size()),
+      transport_(config.transport),
+      block_(blockOfThisProcess(grid_, transport_.get())),
+      mask_(block_.size()),
       memory_(grid_, config.memoryBudgetBytes),
       pool_(config.threads) {}
 
@@ -30,6 +37,10 @@ void requireSameMachine(const MeshMachine& expected, const MeshMachine& got, con
   if (&expected != &got)
     throw std::invalid_argument(std::string(operation) +
                                 ": its plural data belong to different machines");
+}
+
+int MeshMachine::ownerOf(int pe) const {
+  return transport_->rankAt(grid_.row(pe) / block_.rows, grid_.col(pe) / block_.cols);
 }
 
 void MeshMachine::chargeAlu(AluCost cost) {

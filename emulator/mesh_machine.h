@@ -2,8 +2,11 @@
 // A mesh-connected SIMD machine: a toroidal grid of PEs with local memory, an active mask, host
 // threads that run the PEs' local work, and the counts of what its programs did. Communication
 // lives beside it (xnet.h, router.h, reduce.h, scan.h, mesh_sort.h); data in plural.h, pe_array.h.
+// A process holds one block of the PEs (the whole torus unless a transport splits it over ranks,
+// see transport.h): plural data are indexed by global PE id and store the block only.
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <utility>
 
@@ -11,7 +14,9 @@
 #include "emulator/cost_counts.h"
 #include "emulator/host_timer.h"
 #include "emulator/memory_ledger.h"
+#include "emulator/pe_block.h"
 #include "emulator/pe_grid.h"
+#include "emulator/transport.h"
 #include "parallel/thread_pool.h"
 
 namespace radmesh::emu {
@@ -21,6 +26,8 @@ struct MachineConfig {
   int cols = 64;
   std::int64_t memoryBudgetBytes = 16 * 1024;  // per PE, as the MP-1
   int threads = 1;  // host threads running PE work; results do not depend on it
+  // The processes the torus is split over; none: this process holds all of it.
+  std::shared_ptr<Transport> transport = nullptr;
 };
 
 // Local work a program declares per PE (SIMD: every PE steps through it, active or not).
@@ -37,8 +44,19 @@ class MeshMachine {
   int size() const { return grid_.size(); }
   int threads() const { return pool_.size(); }
 
-  // SIMD `if`: narrow the active set, flip to the `else` branch, restore (see ActiveScope).
-  bool active(int pe) const { return mask_.active(pe); }
+  // The PEs this process holds, and the map between their global ids and local (block) indices.
+  bool distributed() const { return transport_ != nullptr; }
+  Transport& transport() const { return *transport_; }  // only when distributed()
+  const PeBlock& block() const { return block_; }
+  int blockSize() const { return block_.size(); }
+  bool holds(int pe) const { return !transport_ || block_.holds(grid_, pe); }
+  int local(int pe) const { return transport_ ? block_.localIndex(grid_, pe) : pe; }
+  int globalPe(int local) const { return transport_ ? block_.globalPe(grid_, local) : local; }
+  int ownerOf(int pe) const;  // the rank holding pe (only when distributed())
+
+  // SIMD `if`: narrow the active set, flip to the `else` branch, restore (see ActiveScope). The
+  // mask covers this process's block; conditions are block-sized (Plural<bool>::values()).
+  bool active(int pe) const { return mask_.active(local(pe)); }
   const ActiveMask& mask() const { return mask_; }
   void pushActive(std::span<const bool> condition) { mask_.push(condition); }
   void flipActive() { mask_.flip(); }
@@ -76,6 +94,8 @@ class MeshMachine {
   static constexpr double kParallelMinWork = 20000.0;
 
   PeGrid grid_;
+  std::shared_ptr<Transport> transport_;
+  PeBlock block_;
   ActiveMask mask_;
   MemoryLedger memory_;
   ThreadPool pool_;
@@ -93,17 +113,17 @@ void MeshMachine::forEachActive(double workPerPe, PerPe&& perPe) {
   const std::uint8_t* flags = mask_.flags();
   const bool all = mask_.allActive();
   auto range = [&](int begin, int end) {
-    for (int pe = begin; pe < end; ++pe)
-      if (all || flags[pe]) perPe(pe);
+    for (int i = begin; i < end; ++i)
+      if (all || flags[i]) perPe(globalPe(i));
   };
   const double work = workPerPe * mask_.activeCount();
   if (pool_.size() == 1 || work < kParallelMinWork) {
-    range(0, size());
+    range(0, blockSize());
     return;
   }
   inParallel_ = true;
   try {
-    pool_.forEachChunk(size(), range);
+    pool_.forEachChunk(blockSize(), range);
   } catch (...) {
     inParallel_ = false;
     throw;

@@ -47,15 +47,27 @@ void chargeBitonic(MeshMachine& machine, int perPe, std::int64_t pairBytes) {
 }
 
 void chargePlacement(MeshMachine& machine, std::int64_t blockBytes) {
-  ClassCounts& c = machine.counters().sort;
-  chargeTree(c, machine.grid(), 2, sizeof(int), false);  // ranks of the active PEs
   // Sorted block r sits on PE r and goes to the r-th active PE.
   std::vector<int> destination(machine.size(), 0);
   std::vector<std::uint8_t> sends(machine.size(), 0);
   int rank = 0;
   for (int pe = 0; pe < machine.size(); ++pe)
     if (machine.active(pe)) sends[rank] = 1, destination[rank++] = pe;
-  chargeRoute(machine, c, routeTraffic(machine.grid(), sends, destination), blockBytes, 1);
+  chargePlacement(machine, blockBytes, routeTraffic(machine.grid(), sends, destination));
+}
+
+void chargePlacement(MeshMachine& machine, std::int64_t blockBytes, const RouterStats& send) {
+  ClassCounts& c = machine.counters().sort;
+  chargeTree(c, machine.grid(), 2, sizeof(int), false);  // ranks of the active PEs
+  chargeRoute(machine, c, send, blockBytes, 1);
+}
+
+void requireBitonicRanks(const MeshMachine& machine) {
+  const RankGrid ranks = machine.transport().rankGrid();
+  if (!powerOfTwo(ranks.rows) || !powerOfTwo(ranks.cols))
+    throw std::invalid_argument("sortPairs: the distributed bitonic sort needs a power-of-two rank grid, not " +
+                                std::to_string(ranks.rows) + " x " + std::to_string(ranks.cols) +
+                                "; run on 1, 2, 4, 8, ... ranks");
 }
 
 }  // namespace radmesh::emu::detail

@@ -2,7 +2,8 @@
 // A per-PE local array: each PE holds a list of T (an item buffer, a queue of descriptions). As a
 // plural array on a SIMD machine, every PE reserves room for the longest list any PE has had, so
 // the memory charged is that length x kWireBytes<T> on every PE; growing past the budget throws,
-// naming the PE whose list forced it.
+// naming the PE whose list forced it. Lists are indexed by global PE id; this process stores its
+// block's lists (MeshMachine::block).
 #include <algorithm>
 #include <memory>
 #include <span>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "emulator/distributed.h"
 #include "emulator/mesh_machine.h"
 #include "emulator/wire_size.h"
 
@@ -20,7 +22,7 @@ class PeArray {
  public:
   // Empty lists on every PE.
   explicit PeArray(MeshMachine& machine, std::string label = "local array")
-      : machine_(&machine), label_(std::move(label)), counts_(machine.size(), 0) {}
+      : machine_(&machine), label_(std::move(label)), counts_(machine.blockSize(), 0) {}
   // `length` copies of init on every PE (a plural array of fixed length).
   PeArray(MeshMachine& machine, int length, const T& init, std::string label = "local array")
       : PeArray(machine, std::move(label)) {
@@ -32,12 +34,17 @@ class PeArray {
   PeArray& operator=(const PeArray&) = delete;
   ~PeArray() { machine_->memory().release(chargedBytes()); }
 
-  int count(int pe) const { return counts_[pe]; }
+  int count(int pe) const { return counts_[machine_->local(pe)]; }
   T& at(int pe, int i) { return data_[offset(pe) + i]; }
   const T& at(int pe, int i) const { return data_[offset(pe) + i]; }
   std::span<T> list(int pe) { return {data_.get() + offset(pe), listSize(pe)}; }
   std::span<const T> list(int pe) const { return {data_.get() + offset(pe), listSize(pe)}; }
-  int maxCount() const { return *std::max_element(counts_.begin(), counts_.end()); }
+  // The longest list on any PE; distributed, a reduction over the ranks (every rank asks together).
+  int maxCount() const {
+    const int longest = *std::max_element(counts_.begin(), counts_.end());
+    if (!machine_->distributed()) return longest;
+    return detail::allReduce(*machine_, Channel::Reduce, longest, [](int in, int& inout) { inout = std::max(inout, in); });
+  }
   int reservedLength() const { return charged_; }  // per PE, in elements
   MeshMachine& machine() const { return *machine_; }
   const std::string& label() const { return label_; }
@@ -52,19 +59,21 @@ class PeArray {
   }
   // Appends to one PE's list (front-end or serial code: may grow every PE's reservation).
   void push(int pe, const T& value) {
-    if (counts_[pe] == charged_) reserve(counts_[pe] + 1, pe);
-    at(pe, counts_[pe]++) = value;
+    int& count = counts_[machine_->local(pe)];
+    if (count == charged_) reserve(count + 1, pe);
+    at(pe, count++) = value;
   }
   // Appends within the reserved length only; safe inside MeshMachine::compute.
   void pushReserved(int pe, const T& value) {
-    if (counts_[pe] == charged_)
+    int& count = counts_[machine_->local(pe)];
+    if (count == charged_)
       throw std::logic_error("PeArray '" + label_ + "': " + machine_->grid().name(pe) +
                              " exceeds its reserved length " + std::to_string(charged_) +
                              "; reserve() before the parallel step");
-    at(pe, counts_[pe]++) = value;
+    at(pe, count++) = value;
   }
-  void truncate(int pe, int count) { counts_[pe] = std::min(counts_[pe], count); }
-  void clear(int pe) { counts_[pe] = 0; }
+  void truncate(int pe, int count) { counts_[machine_->local(pe)] = std::min(this->count(pe), count); }
+  void clear(int pe) { counts_[machine_->local(pe)] = 0; }
   void clearAll() { std::fill(counts_.begin(), counts_.end(), 0); }  // the reservation stays
   // Empties every list and gives the reserved memory back (another phase reuses it). Serial only.
   void releaseAll() {
@@ -75,8 +84,8 @@ class PeArray {
   }
 
  private:
-  std::size_t offset(int pe) const { return static_cast<std::size_t>(pe) * stride_; }
-  std::size_t listSize(int pe) const { return static_cast<std::size_t>(counts_[pe]); }
+  std::size_t offset(int pe) const { return static_cast<std::size_t>(machine_->local(pe)) * stride_; }
+  std::size_t listSize(int pe) const { return static_cast<std::size_t>(count(pe)); }
   std::int64_t chargedBytes() const { return static_cast<std::int64_t>(charged_) * kWireBytes<T>; }
   void requireSerial(const char* what) const {
     if (machine_->inParallelRegion())

@@ -4,9 +4,14 @@
 // at every element whose start flag is set, and at the first active element. Inclusive: each
 // element gets the sum of its segment up to and including itself; exclusive: up to but not
 // including (T{} at a segment's start). Inactive PEs neither contribute nor receive.
+// Distributed (transport.h): a 2-D block is not contiguous in row-major order, and a floating-point
+// sum in another order has other bits, so every rank gathers the active elements and runs the scan
+// in order, keeping its block's results (detail::scanAcross).
 #include <stdexcept>
 #include <type_traits>
+#include <vector>
 
+#include "emulator/distributed.h"
 #include "emulator/pe_array.h"
 #include "emulator/plural.h"
 #include "emulator/tree_cost.h"
@@ -34,6 +39,26 @@ class SegmentedSum {
   T running_{};
 };
 
+template <class T>
+struct ScanElement {
+  int pe = 0;
+  T value{};
+  bool start = false;
+};
+// The scan of every rank's elements (each block's in its order) in row-major order; returns the
+// results of this block's elements, in its order.
+template <class T>
+std::vector<T> scanAcross(MeshMachine& machine, const std::vector<ScanElement<T>>& mine, ScanKind kind) {
+  SegmentedSum<T> sum(kind);
+  std::vector<T> results;
+  results.reserve(mine.size());
+  for (const ScanElement<T>& e : gatherByPe(machine, Channel::Scan, mine)) {
+    const T result = sum.next(e.value, e.start);
+    if (machine.holds(e.pe)) results.push_back(result);
+  }
+  return results;
+}
+
 // A scan of `perPe` elements per PE: a local pass, the tree's two sweeps, a local fix-up.
 template <class T>
 void chargeScan(MeshMachine& machine, std::int64_t perPe) {
@@ -51,6 +76,17 @@ void segmentedScan(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src,
   requireSameMachine(machine, src.machine(), "segmentedScan");
   requireSameMachine(machine, segmentStart.machine(), "segmentedScan");
   detail::chargeScan<T>(machine, 1);
+  if (machine.distributed()) {
+    std::vector<detail::ScanElement<T>> mine;
+    for (int i = 0; i < machine.blockSize(); ++i)
+      if (machine.mask().active(i)) {
+        const int pe = machine.globalPe(i);
+        mine.push_back({pe, src[pe], segmentStart[pe]});
+      }
+    const std::vector<T> results = detail::scanAcross(machine, mine, kind);
+    for (std::size_t k = 0; k < mine.size(); ++k) dst[mine[k].pe] = results[k];
+    return;
+  }
   detail::SegmentedSum<T> sum(kind);
   for (int pe = 0; pe < machine.size(); ++pe)
     if (machine.active(pe)) dst[pe] = sum.next(src[pe], segmentStart[pe]);
@@ -64,27 +100,49 @@ void segmentedScan(MeshMachine& machine, PeArray<T>& dst, const PeArray<T>& src,
   requireSameMachine(machine, dst.machine(), "segmentedScan");
   requireSameMachine(machine, src.machine(), "segmentedScan");
   requireSameMachine(machine, segmentStart.machine(), "segmentedScan");
-  int longest = 0;
-  int longestAt = 0;
-  for (int pe = 0; pe < machine.size(); ++pe) {
-    if (!machine.active(pe)) continue;
-    if (segmentStart.count(pe) != src.count(pe))
-      throw std::invalid_argument("segmentedScan: at " + machine.grid().name(pe) + " '" +
-                                  segmentStart.label() + "' has " +
-                                  std::to_string(segmentStart.count(pe)) + " flags for " +
-                                  std::to_string(src.count(pe)) + " values");
-    if (src.count(pe) > longest) longest = src.count(pe), longestAt = pe;
+  detail::Problem mismatch;
+  detail::MaxAt longest;
+  for (int i = 0; i < machine.blockSize(); ++i) {
+    if (!machine.mask().active(i)) continue;
+    const int pe = machine.globalPe(i);
+    if (segmentStart.count(pe) != src.count(pe)) mismatch.note(pe, segmentStart.count(pe), src.count(pe));
+    if (src.count(pe) > longest.value) longest = {src.count(pe), pe};
   }
-  dst.reserve(longest, longestAt);
-  detail::chargeScan<T>(machine, longest);
+  mismatch = detail::firstProblem(machine, Channel::Scan, mismatch);
+  if (mismatch.found())
+    throw std::invalid_argument("segmentedScan: at " + machine.grid().name(mismatch.pe) + " '" +
+                                segmentStart.label() + "' has " + std::to_string(mismatch.a) +
+                                " flags for " + std::to_string(mismatch.b) + " values");
+  longest = detail::allMaxAt(machine, Channel::Scan, longest);
+  dst.reserve(static_cast<int>(longest.value), longest.pe);
+  detail::chargeScan<T>(machine, longest.value);
+  auto resize = [&](int pe) {  // dst's list takes src's length
+    if (&dst == &src) return;
+    dst.clear(pe);
+    for (int i = 0; i < src.count(pe); ++i) dst.pushReserved(pe, T{});
+  };
+  if (machine.distributed()) {
+    std::vector<detail::ScanElement<T>> mine;
+    for (int i = 0; i < machine.blockSize(); ++i) {
+      if (!machine.mask().active(i)) continue;
+      const int pe = machine.globalPe(i);
+      for (int k = 0; k < src.count(pe); ++k) mine.push_back({pe, src.at(pe, k), segmentStart.at(pe, k)});
+    }
+    const std::vector<T> results = detail::scanAcross(machine, mine, kind);
+    std::size_t next = 0;
+    for (int i = 0; i < machine.blockSize(); ++i) {
+      if (!machine.mask().active(i)) continue;
+      const int pe = machine.globalPe(i);
+      resize(pe);
+      for (int k = 0; k < src.count(pe); ++k) dst.at(pe, k) = results[next++];
+    }
+    return;
+  }
   detail::SegmentedSum<T> sum(kind);
   for (int pe = 0; pe < machine.size(); ++pe) {
     if (!machine.active(pe)) continue;
+    resize(pe);
     const int n = src.count(pe);
-    if (&dst != &src) {
-      dst.clear(pe);
-      for (int i = 0; i < n; ++i) dst.pushReserved(pe, T{});
-    }
     for (int i = 0; i < n; ++i) dst.at(pe, i) = sum.next(src.at(pe, i), segmentStart.at(pe, i));
   }
 }

@@ -3,10 +3,13 @@
 // plural value `distance` hops in one direction, with wrap-around on all edges; the active PEs
 // receive (each reads the PE `distance` hops behind it, active or not), inactive PEs keep their
 // values. Cost: one operation of `distance` hops moving kWireBytes<T> bytes per PE per hop.
+// Distributed (transport.h), a shift sends each block's edge band to the neighbouring rank along
+// the columns, then along the rows (detail::shiftAcrossBlocks).
 #include <algorithm>
 #include <stdexcept>
 #include <vector>
 
+#include "emulator/distributed.h"
 #include "emulator/pe_array.h"
 #include "emulator/plural.h"
 
@@ -17,22 +20,35 @@ void requireDistance(int distance, const char* operation);
 // For every PE, the PE `distance` hops against `direction` (where a shift reads from). The
 // table is the calling thread's scratch, valid until its next call.
 const std::vector<int>& xnetSources(const PeGrid& grid, Direction direction, int distance);
-
-// What every PE sends in a list shift, gathered PE by PE (host scratch: registers on the MP-1).
-template <class T>
-struct SentLists {
-  std::vector<T> items;
-  std::vector<int> begin;  // PE pe's items are items[begin[pe] .. begin[pe + 1])
-  void reset(int pes) {
-    items.clear();
-    begin.assign(pes + 1, 0);
-  }
-  static SentLists& scratch() {
-    thread_local SentLists lists;
-    return lists;
-  }
-};
 void chargeXnet(MeshMachine& machine, std::int64_t items, int distance, std::int64_t itemBytes);
+
+// What every block PE receives in a list shift, from `sent` (what each sent, by local index; host
+// scratch, registers on the MP-1): one process reads it in place, where sourceOf(i) says; a
+// distributed machine moves it across the block edges first.
+template <class T>
+class Arriving {
+ public:
+  Arriving(MeshMachine& machine, const SentLists<T>& sent, Direction direction, int distance) {
+    if (machine.distributed()) {
+      moved_ = shiftAcrossBlocks(machine, sent, direction, distance);
+      lists_ = &moved_;
+    } else {
+      lists_ = &sent;
+      from_ = &xnetSources(machine.grid(), direction, distance);
+    }
+  }
+  int count(int i) const { return lists_->count(sourceOf(i)); }
+  std::span<const T> list(int i) const {
+    const int s = sourceOf(i);
+    return {lists_->items.data() + lists_->begin[s], static_cast<std::size_t>(lists_->count(s))};
+  }
+
+ private:
+  int sourceOf(int i) const { return from_ ? (*from_)[i] : i; }
+  SentLists<T> moved_;
+  const SentLists<T>* lists_ = nullptr;
+  const std::vector<int>* from_ = nullptr;
+};
 }  // namespace detail
 
 template <class T>
@@ -43,6 +59,16 @@ void xnetShift(MeshMachine& machine, Plural<T>& dst, const Plural<T>& src, Direc
   requireSameMachine(machine, src.machine(), "xnetShift");
   detail::requireDistance(distance, "xnetShift");
   detail::chargeXnet(machine, 1, distance, kWireBytes<T>);
+  if (machine.distributed()) {
+    auto& sent = detail::SentLists<T>::scratch();
+    sent.items.assign(src.data(), src.data() + src.blockSize());
+    sent.begin.resize(sent.items.size() + 1);
+    for (std::size_t i = 0; i < sent.begin.size(); ++i) sent.begin[i] = static_cast<int>(i);
+    const detail::Arriving<T> arriving(machine, sent, direction, distance);
+    for (int i = 0; i < machine.blockSize(); ++i)
+      if (machine.mask().active(i)) dst.data()[i] = arriving.list(i)[0];
+    return;
+  }
   const PeGrid& g = machine.grid();
   std::vector<T> aliased;
   const T* from = src.data();
@@ -81,24 +107,25 @@ void xnetShift(MeshMachine& machine, PeArray<T>& dst, const PeArray<T>& src, Dir
   requireSameMachine(machine, dst.machine(), "xnetShift");
   requireSameMachine(machine, src.machine(), "xnetShift");
   detail::requireDistance(distance, "xnetShift");
-  const std::vector<int>& from = detail::xnetSources(machine.grid(), direction, distance);
-  int longest = 0;
-  int longestAt = 0;
-  for (int pe = 0; pe < machine.size(); ++pe)
-    if (machine.active(pe) && src.count(from[pe]) > longest) longest = src.count(from[pe]), longestAt = pe;
-  dst.reserve(longest, longestAt);
-  detail::chargeXnet(machine, longest, distance, kWireBytes<T>);
   auto& sent = detail::SentLists<T>::scratch();  // the lists as they were before the shift
-  sent.reset(machine.size());
-  for (int pe = 0; pe < machine.size(); ++pe) {
-    const auto list = src.list(pe);
+  sent.reset(machine.blockSize());
+  for (int i = 0; i < machine.blockSize(); ++i) {
+    const auto list = src.list(machine.globalPe(i));
     sent.items.insert(sent.items.end(), list.begin(), list.end());
-    sent.begin[pe + 1] = static_cast<int>(sent.items.size());
+    sent.begin[i + 1] = static_cast<int>(sent.items.size());
   }
-  for (int pe = 0; pe < machine.size(); ++pe) {
-    if (!machine.active(pe)) continue;
+  const detail::Arriving<T> arriving(machine, sent, direction, distance);
+  detail::MaxAt longest;
+  for (int i = 0; i < machine.blockSize(); ++i)
+    if (machine.mask().active(i) && arriving.count(i) > longest.value) longest = {arriving.count(i), machine.globalPe(i)};
+  longest = detail::allMaxAt(machine, Channel::Xnet, longest);
+  dst.reserve(static_cast<int>(longest.value), longest.pe);
+  detail::chargeXnet(machine, longest.value, distance, kWireBytes<T>);
+  for (int i = 0; i < machine.blockSize(); ++i) {
+    if (!machine.mask().active(i)) continue;
+    const int pe = machine.globalPe(i);
     dst.clear(pe);
-    for (int i = sent.begin[from[pe]]; i < sent.begin[from[pe] + 1]; ++i) dst.pushReserved(pe, sent.items[i]);
+    for (const T& item : arriving.list(i)) dst.pushReserved(pe, item);
   }
 }
 
@@ -115,30 +142,42 @@ void xnetForward(MeshMachine& machine, PeArray<T>& records, PeArray<int>& forwar
   requireSameMachine(machine, records.machine(), "xnetForward");
   requireSameMachine(machine, forward.machine(), "xnetForward");
   detail::requireDistance(distance, "xnetForward");
-  const std::vector<int>& from = detail::xnetSources(machine.grid(), direction, distance);
-  int longest = 0, need = 0, needAt = 0, sending = 0;
-  for (int pe = 0; pe < machine.size(); ++pe) {
-    sending = std::max(sending, forward.count(pe));
-    if (!machine.active(pe)) continue;
-    const int incoming = forward.count(from[pe]);
-    longest = std::max(longest, incoming);
-    if (records.count(pe) + incoming > need) need = records.count(pe) + incoming, needAt = pe;
-  }
-  records.reserve(need, needAt);
-  forward.reserve(longest, needAt);
-  detail::chargeXnet(machine, sending, distance, kWireBytes<T>);
   auto& sent = detail::SentLists<T>::scratch();
-  sent.reset(machine.size());
-  for (int pe = 0; pe < machine.size(); ++pe) {
+  sent.reset(machine.blockSize());
+  for (int i = 0; i < machine.blockSize(); ++i) {
+    const int pe = machine.globalPe(i);
     for (int index : forward.list(pe)) sent.items.push_back(records.at(pe, index));
-    sent.begin[pe + 1] = static_cast<int>(sent.items.size());
+    sent.begin[i + 1] = static_cast<int>(sent.items.size());
   }
-  for (int pe = 0; pe < machine.size(); ++pe) {
-    if (!machine.active(pe)) continue;
+  const detail::Arriving<T> arriving(machine, sent, direction, distance);
+  struct Needs {
+    std::int64_t sending = 0, longest = 0;  // the longest list sent, and received by an active PE
+    detail::MaxAt need;                     // the longest records an active PE will hold
+  } needs;
+  for (int i = 0; i < machine.blockSize(); ++i) {
+    needs.sending = std::max<std::int64_t>(needs.sending, sent.count(i));
+    if (!machine.mask().active(i)) continue;
+    const int incoming = arriving.count(i), pe = machine.globalPe(i);
+    needs.longest = std::max<std::int64_t>(needs.longest, incoming);
+    if (records.count(pe) + incoming > needs.need.value) needs.need = {records.count(pe) + incoming, pe};
+  }
+  if (machine.distributed())
+    needs = detail::allReduce(machine, Channel::Xnet, needs, [](const Needs& in, Needs& inout) {
+      inout.sending = std::max(inout.sending, in.sending);
+      inout.longest = std::max(inout.longest, in.longest);
+      if (in.need.value > inout.need.value || (in.need.value == inout.need.value && in.need.pe < inout.need.pe))
+        inout.need = in.need;
+    });
+  records.reserve(static_cast<int>(needs.need.value), needs.need.pe);
+  forward.reserve(static_cast<int>(needs.longest), needs.need.pe);
+  detail::chargeXnet(machine, needs.sending, distance, kWireBytes<T>);
+  for (int i = 0; i < machine.blockSize(); ++i) {
+    if (!machine.mask().active(i)) continue;
+    const int pe = machine.globalPe(i);
     forward.clear(pe);
-    for (int i = sent.begin[from[pe]]; i < sent.begin[from[pe] + 1]; ++i) {
+    for (const T& item : arriving.list(i)) {
       forward.pushReserved(pe, records.count(pe));
-      records.pushReserved(pe, sent.items[i]);
+      records.pushReserved(pe, item);
     }
   }
 }
