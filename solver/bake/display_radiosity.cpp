@@ -22,7 +22,8 @@ using Sources = std::vector<std::pair<int, double>>;  // DisplayMesh::vertexSour
 // sides shows the inside of the table).
 class Points {
  public:
-  explicit Points(double toleranceM) : tolerance_(toleranceM), grid_(toleranceM) {}
+  // Buckets far wider than the tolerance: a look-up mostly meets one.
+  explicit Points(double toleranceM) : tolerance_(toleranceM), grid_(64.0 * toleranceM) {}
 
   int indexOf(const Vec3& position) {
     int found = -1;
