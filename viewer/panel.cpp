@@ -3,53 +3,19 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "solver/scene/scene_error.h"
-#include "viewer/item_buffer_image.h"
-#include "viewer/panel_figures.h"
-#include "viewer/panel_plot.h"
+#include "viewer/panel_widgets.h"
 
 namespace radmesh {
 
 namespace {
 
-// True while the value changes.
-bool sliderDouble(const char* label, double* value, double min, double max, const char* format,
-                  ImGuiSliderFlags flags = ImGuiSliderFlags_None) {
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &min, &max, format, flags);
-}
-
 // A cell counts as settled at this unshot fraction (the target for the camera's room).
 constexpr double kCellSettledUnshot = 0.05;
-
-// A solve parameter restarts the solve once the user lets go of it, not at every pixel dragged.
-bool released() { return ImGui::IsItemDeactivatedAfterEdit(); }
-
-template <class Enum, size_t N>
-bool comboOf(const char* label, Enum* value, const Enum (&choices)[N]) {
-  bool changed = false;
-  if (ImGui::BeginCombo(label, toString(*value))) {
-    for (Enum choice : choices)
-      if (ImGui::Selectable(toString(choice), choice == *value)) {
-        changed = choice != *value;
-        *value = choice;
-      }
-    ImGui::EndCombo();
-  }
-  return changed;
-}
-
-// A greyed remark that wraps at the panel's edge.
-void note(const char* text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("%s", text);
-  ImGui::PopStyleColor();
-}
 
 void row(const char* name, const char* format, double value) {
   ImGui::TableNextRow();
@@ -232,164 +198,6 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   ImGui::TextDisabled("%.1f fps (%.1f ms per frame)", fps, 1e3f / std::max(fps, 1e-3f));
 }
 
-void Panel::drawProgress(const SolverSnapshot& snapshot) {
-  std::vector<double> iterations, seconds, c, unshot;
-  for (const ConvergencePoint& p : snapshot.curve) {
-    iterations.push_back(p.iteration);
-    seconds.push_back(p.hostSeconds);
-    c.push_back(p.convergence);
-    unshot.push_back(p.unshotFraction);
-  }
-  ImGui::TextUnformatted("C (blue) and unshot power (orange) over iterations");
-  plotXY("c-iterations", iterations, c, {"iteration", 0.0, 1.0}, 90.0f, unshot);
-  ImGui::TextUnformatted("C and unshot power over host seconds");
-  plotXY("c-seconds", seconds, c, {"host s", 0.0, 1.0}, 90.0f, unshot);
-  const double lastSeconds = snapshot.curve.size() >= 2
-                                 ? snapshot.curve.back().hostSeconds - snapshot.curve.end()[-2].hostSeconds
-                                 : snapshot.hostSeconds();
-  ImGui::Text("host: %.3f s in all, last %s %.2f ms", snapshot.hostSeconds(), snapshot.cells ? "round" : "iteration",
-              1e3 * lastSeconds);
-  if (!snapshot.cells)
-    ImGui::Text("last shooters: %zu, captured fraction %.4f", snapshot.lastShooters.size(),
-                snapshot.lastCapturedFraction);
-  drawMachineCost(snapshot);
-  ImGui::Separator();
-  ImGui::TextUnformatted("energy ledger");
-  const Ledger& l = snapshot.ledger;
-  const double share = l.emitted > 0.0 ? 100.0 / l.emitted : 0.0;
-  if (ImGui::BeginTable("ledger", 3)) {
-    auto line = [&](const char* name, double watts) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(name);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.5g W", watts);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.2f %%", watts * share);
-    };
-    line("emitted", l.emitted);
-    line("absorbed", l.absorbed);
-    line("  by back faces", l.absorbedByBackFaces);
-    line("unshot", l.unshot);
-    line("not captured", l.notCaptured);
-    line("escaped", l.escaped);
-    ImGui::EndTable();
-  }
-  if (l.emitted > 0.0) ImGui::Text("imbalance %.1e", l.imbalance());
-}
-
-void Panel::drawMachineCost(const SolverSnapshot& snapshot) {
-  if (!snapshot.lastShotStats) {
-    note("machine seconds: with a back end that runs on a machine of its own, e.g. the mesh (Parameters)");
-    return;
-  }
-  const ShotStats& shot = *snapshot.lastShotStats;
-  const double total = snapshot.curve.empty() ? 0.0 : snapshot.curve.back().machineSeconds;
-  ImGui::Text("%s: %.3f s, last shot %.1f ms", shot.machine.c_str(), total, 1e3 * shot.machineSeconds);
-  std::vector<double> machineSeconds, c, unshot;
-  for (const ConvergencePoint& p : snapshot.curve) {
-    machineSeconds.push_back(p.machineSeconds);
-    c.push_back(p.convergence);
-    unshot.push_back(p.unshotFraction);
-  }
-  ImGui::Text("C and unshot power over %s seconds", shot.machine.c_str());
-  plotXY("c-machine", machineSeconds, c, {"machine s", 0.0, 1.0}, 70.0f, unshot);
-  for (const auto& [key, value] : shot.figures.items())
-    if (isTable(value)) figureTable(key, value);
-}
-
-void Panel::drawShotFigures(const SolverSnapshot& snapshot) {
-  if (!snapshot.lastShotStats) {
-    note("the last shot's figures (on the mesh: item-buffer depths at stages (a) and (b)): with a back end that "
-         "reports them (Parameters)");
-    return;
-  }
-  const nlohmann::json& figures = snapshot.lastShotStats->figures;
-  ImGui::TextUnformatted("last shot");  // its numbers, then its histograms, then its groups
-  for (const auto& [key, value] : figures.items())
-    if (value.is_number()) ImGui::Text("  %s %.6g", key.c_str(), value.get<double>());
-  for (const auto& [key, value] : figures.items())
-    if (isHistogram(value)) figureHistogram(key, value);
-  for (const auto& [key, value] : figures.items())
-    if (value.is_object()) figureGroup(key, value);
-  // The counts among the numbers, over the iterations that shot.
-  for (const auto& [key, value] : figures.items()) {
-    if (!value.is_number_integer()) continue;
-    std::vector<double> iterations, counts;
-    double highest = 1.0;
-    for (const ConvergencePoint& p : snapshot.curve) {
-      if (!p.shot || !p.shot->figures.contains(key)) continue;
-      iterations.push_back(p.iteration);
-      counts.push_back(p.shot->figures.at(key).get<double>());
-      highest = std::max(highest, counts.back());
-    }
-    ImGui::Text("%s over iterations", key.c_str());
-    plotXY(key.c_str(), iterations, counts, {"iteration", 0.0, highest}, 55.0f);
-  }
-}
-
-void Panel::drawItemBuffer(const SolverSnapshot& snapshot) {
-  if (!snapshot.itemBuffer) {
-    note(snapshot.itemBufferShooter >= 0 ? "the back end could not give it" : "shown after the next shot");
-    drawShotFigures(snapshot);
-    return;
-  }
-  if (snapshot.itemBuffer != uploadedItemBuffer_) {
-    itemBufferTexture_.upload(falseColourImage(*snapshot.itemBuffer));
-    uploadedItemBuffer_ = snapshot.itemBuffer;
-  }
-  const ItemBuffer& buffer = *snapshot.itemBuffer;
-  const size_t seen = buffer.items.size() - std::count(buffer.items.begin(), buffer.items.end(), ItemBuffer::kNone);
-  ImGui::TextWrapped("the single plane (%dx%d) above patch %d: %.1f%% of its pixels see a patch", buffer.width,
-                     buffer.height, snapshot.itemBufferShooter,
-                     100.0 * double(seen) / double(std::max<size_t>(1, buffer.items.size())));
-  const float side = std::min(ImGui::GetContentRegionAvail().x, 250.0f);
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(itemBufferTexture_.id())), ImVec2(side, side));
-  note("false colour by patch id");
-  drawShotFigures(snapshot);
-}
-
-void Panel::drawParameters(SolverThread& solver) {
-  SolveOptions& o = edited_.options;
-  bool changed = false;
-  ImGui::PushItemWidth(200.0f);
-  changed |= comboOf("back end", &o.backend, {Backend::Native, Backend::Mesh});
-  changed |= comboOf("projection", &o.projection, {Projection::Plane, Projection::Hemicube, Projection::Analytic});
-  changed |= comboOf("mapping (mesh)", &o.mapping,
-                     {MappingKind::Hierarchical, MappingKind::CutAndStack, MappingKind::Adaptive});
-  ImGui::SliderInt("resolution N", &o.resolution, 16, 2048, "%d", ImGuiSliderFlags_Logarithmic);
-  changed |= released();
-  sliderDouble("ratio", &o.ratio, 0.5, 10.0, "%.2f");
-  changed |= released();
-  ImGui::SliderInt("shooters k", &o.shooters, 1, 64);
-  changed |= released();
-  sliderDouble("cell m", &edited_.cellM, 0.02, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic);
-  changed |= released();
-  ImGui::SliderInt("host threads", &o.threads, 0, 64);
-  changed |= released();
-  changed |= ImGui::Checkbox("ambient term (display only)", &o.ambient);
-  // The stopping rule applies to the solve under way: no restart.
-  sliderDouble("until unshot (0: off)", &o.untilUnshot, 0.0, 0.5, "%.3f", ImGuiSliderFlags_Logarithmic);
-  bool stoppingRuleChanged = released();
-  sliderDouble("until C (1: off)", &o.until, 0.1, 1.0, "%.4f");
-  stoppingRuleChanged |= released();
-  ImGui::PopItemWidth();
-  note("the stopping rule applies to the solve under way; any other change restarts it");
-  if (changed || stoppingRuleChanged) {
-    try {
-      validateOptions(o);
-      parameterError_.clear();
-      if (changed)
-        solver.restart(edited_);
-      else
-        solver.setStoppingRule(o.until, o.untilUnshot);
-    } catch (const OptionError& e) {
-      parameterError_ = e.what();
-    }
-  }
-  if (!parameterError_.empty()) ImGui::TextWrapped("not applied: %s", parameterError_.c_str());
-}
-
 void Panel::drawScene(const SolverSnapshot& snapshot) {
   const SceneSummary& s = snapshot.summary;
   if (ImGui::BeginTable("scene", 2)) {
@@ -413,22 +221,6 @@ void Panel::drawScene(const SolverSnapshot& snapshot) {
   ImGui::Text("effects simulated (--effects %s)", toString(snapshot.setup.options.effects));
   for (const Effect& e : snapshot.effects)
     ImGui::TextWrapped("%s %s: %s", e.name.c_str(), e.on ? "on" : "off", e.reason.c_str());
-}
-
-void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
-  ImGui::PushItemWidth(200.0f);
-  if (sliderDouble("exposure EV", &view.exposureStops, -20.0, 20.0, "%.2f")) view.autoExposure = false;
-  ImGui::SameLine();
-  if (ImGui::Button("Auto")) view.autoExposure = true;
-  ImGui::Checkbox("follow auto exposure", &view.autoExposure);
-  if (solving) ImGui::Checkbox("highlight last shooters", &view.highlightShooters);
-  if (solving) ImGui::Checkbox("draw only the rooms in sight through doors", &view.cullCells);
-  sliderDouble("speed m/s", &camera.speedMps, 0.05, 10.0, "%.2f", ImGuiSliderFlags_Logarithmic);
-  sliderDouble("eye height m", &camera.eyeHeightM, 0.02, 3.0, "%.2f");
-  sliderDouble("field of view", &camera.fovYDeg, 20.0, 110.0, "%.0f deg");
-  ImGui::PopItemWidth();
-  note("WASD/arrows walk, Q/E lower/raise, Shift runs");
-  note("drag to look around, Esc quits");
 }
 
 }  // namespace radmesh

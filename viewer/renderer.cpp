@@ -238,7 +238,7 @@ void Renderer::drawVisibleCells() const {
 
 void Renderer::draw(const RenderView& view, glm::ivec2 framebufferSize, const Shading& shading) {
   glViewport(0, 0, framebufferSize.x, framebufferSize.y);
-  glClearColor(0.02f, 0.02f, 0.03f, 1.0f);
+  glClearColor(kBackgroundRgb[0], kBackgroundRgb[1], kBackgroundRgb[2], 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (indexCount_ == 0 || framebufferSize.x <= 0 || framebufferSize.y <= 0) return;
 

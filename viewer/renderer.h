@@ -11,6 +11,9 @@
 
 namespace radmesh {
 
+// The clear colour, linear RGB written as it is: what shows where no surface covers a pixel.
+inline constexpr float kBackgroundRgb[3] = {0.02f, 0.02f, 0.03f};
+
 struct Shading {
   double exposure = 1.0;        // linear factor applied to radiosity (W/m^2) before sRGB encoding
   bool highlightShooters = true;

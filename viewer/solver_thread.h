@@ -43,7 +43,7 @@ class SolverThread {
   std::shared_ptr<const SolverSnapshot> latest() const;
 
  private:
-  struct Run;  // the solver and what the thread accumulates across its iterations
+  struct Run;  // the solver and what the thread accumulates across its iterations (solver_run.h)
   void loop();
   // Null: failed. With a resume path, goes on from that checkpoint.
   std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation, const std::string& resumePath,

@@ -3,63 +3,47 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
+#include <span>
+#include <utility>
+
+#include "solver/bake/point_grid.h"
+#include "solver/bake/t_vertices.h"
 
 namespace radmesh {
 
 namespace {
 
-// Finds the vertex a patch corner welds to: one within `toleranceM` of it (looked up in a hash of
-// quantised positions, the neighbouring buckets included so that a bucket boundary cannot split
-// two coincident corners) with the same material and the same normal.
-//
-// Corners are welded only where patches share them as corners. Across two polygons, a corner of
-// one that lies inside an edge of the other (a T-junction: the polygons' own corners need not be
-// on the grid) gets no weight from the other side, so shading may step slightly along that edge.
-class Welder {
+using Sources = std::vector<std::pair<int, double>>;  // DisplayMesh::vertexSources of one vertex
+
+// Corners within `toleranceM` of one another are one point, at the first one's position, so that
+// the edges of different smoothing groups meet exactly (a hairline between a table's top and its
+// sides shows the inside of the table).
+class Points {
  public:
-  explicit Welder(double toleranceM) : tolerance_(toleranceM) {}
+  // Buckets far wider than the tolerance: a look-up mostly meets one.
+  explicit Points(double toleranceM) : tolerance_(toleranceM), grid_(64.0 * toleranceM) {}
 
-  int find(const DisplayMesh& mesh, const std::vector<int>& materialOf, const Vec3& position,
-           const Vec3& normal, int material) const {
-    const Key home = keyOf(position);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto bucket = buckets_.find(Key{home.x + dx, home.y + dy, home.z + dz});
-          if (bucket == buckets_.end()) continue;
-          for (int vertex : bucket->second)
-            if (materialOf[vertex] == material && glm::dot(mesh.normals[vertex], normal) > 1.0 - 1e-9 &&
-                glm::length(mesh.positions[vertex] - position) <= tolerance_)
-              return vertex;
-        }
-    return -1;
+  int indexOf(const Vec3& position) {
+    int found = -1;
+    grid_.anyInBox(position - Vec3(tolerance_), position + Vec3(tolerance_), [&](int point) {
+      if (glm::length(positions_[point] - position) <= tolerance_) found = point;
+      return found >= 0;
+    });
+    if (found < 0) {
+      found = static_cast<int>(positions_.size());
+      positions_.push_back(position);
+      grid_.insert(position, found);
+    }
+    return found;
   }
-
-  void insert(const Vec3& position, int vertex) { buckets_[keyOf(position)].push_back(vertex); }
+  const std::vector<Vec3>& positions() const { return positions_; }
 
  private:
-  struct Key {
-    std::int64_t x, y, z;
-    bool operator==(const Key&) const = default;
-  };
-  struct KeyHash {
-    size_t operator()(const Key& k) const {
-      // Unsigned: the mixing is meant to wrap around.
-      const auto u = [](std::int64_t x) { return static_cast<std::uint64_t>(x); };
-      return std::hash<std::uint64_t>()(u(k.x) * 73856093u ^ u(k.y) * 19349663u ^ u(k.z) * 83492791u);
-    }
-  };
-  Key keyOf(const Vec3& p) const {
-    const Vec3 q = glm::floor(p / tolerance_);
-    return {static_cast<std::int64_t>(q.x), static_cast<std::int64_t>(q.y), static_cast<std::int64_t>(q.z)};
-  }
-
   double tolerance_;
-  std::unordered_map<Key, std::vector<int>, KeyHash> buckets_;
+  PointGrid grid_;
+  std::vector<Vec3> positions_;
 };
 
 // Coincidence tolerance: far below any patch (a billionth of the scene's size), far above the
@@ -75,33 +59,118 @@ double weldTolerance(const std::vector<Patch>& patches) {
   return std::max(1e-9 * glm::length(hi - lo), 1e-14 * magnitude) + 1e-300;
 }
 
+// The sources of a point at t along the edge from a vertex to another: (1 - t) B(from) + t B(to),
+// as weights of patches (each end's weights scaled to sum to its share).
+Sources alongEdge(const Sources& from, const Sources& to, double t) {
+  Sources out;
+  auto add = [&](const Sources& end, double share) {
+    double total = 0.0;
+    for (const auto& [patch, weight] : end) total += weight;
+    if (total > 0.0)
+      for (const auto& [patch, weight] : end) out.emplace_back(patch, share * weight / total);
+  };
+  add(from, 1.0 - t);
+  add(to, t);
+  // One entry per patch: a patch that touches both ends (the usual case) once.
+  std::sort(out.begin(), out.end());
+  size_t kept = 0;
+  for (size_t i = 0; i < out.size(); ++i)
+    if (kept > 0 && out[kept - 1].first == out[i].first)
+      out[kept - 1].second += out[i].second;
+    else
+      out[kept++] = out[i];
+  out.resize(kept);
+  return out;
+}
+
 }  // namespace
 
 DisplayMesh buildDisplayMesh(const std::vector<Patch>& patches) {
   DisplayMesh mesh;
   if (patches.empty()) return mesh;
-  Welder welder(weldTolerance(patches));
+  const double tolerance = weldTolerance(patches);
+  Points points(tolerance);
+  // A point has a vertex per smoothing group (material and normal) of the patches around it.
+  std::vector<std::vector<unsigned>> vertexOfPoint;
   std::vector<int> materialOf;  // per vertex
+  auto vertexAt = [&](int point, const Patch& patch) {
+    vertexOfPoint.resize(points.positions().size());
+    for (unsigned vertex : vertexOfPoint[point])
+      if (materialOf[vertex] == patch.material && glm::dot(mesh.normals[vertex], patch.normal) > 1.0 - 1e-9)
+        return vertex;
+    const auto vertex = static_cast<unsigned>(mesh.positions.size());
+    mesh.positions.push_back(points.positions()[point]);
+    mesh.normals.push_back(patch.normal);
+    mesh.vertexSources.emplace_back();
+    materialOf.push_back(patch.material);
+    vertexOfPoint[point].push_back(vertex);
+    return vertex;
+  };
+  std::vector<std::array<unsigned, 4>> corners(patches.size());
+  std::vector<std::span<const Vec3>> outlines;
+  outlines.reserve(patches.size());
   for (size_t p = 0; p < patches.size(); ++p) {
     const Patch& patch = patches[p];
-    std::array<unsigned, 4> corner{};
     for (int i = 0; i < patch.vertexCount; ++i) {
-      int vertex = welder.find(mesh, materialOf, patch.vertices[i], patch.normal, patch.material);
-      if (vertex < 0) {
-        vertex = static_cast<int>(mesh.positions.size());
-        mesh.positions.push_back(patch.vertices[i]);
-        mesh.normals.push_back(patch.normal);
-        mesh.vertexSources.emplace_back();
-        materialOf.push_back(patch.material);
-        welder.insert(patch.vertices[i], vertex);
-      }
+      corners[p][i] = vertexAt(points.indexOf(patch.vertices[i]), patch);
       // Area weight: a large patch speaks for more of the surface around the vertex.
-      mesh.vertexSources[vertex].emplace_back(static_cast<int>(p), patch.areaM2);
-      corner[i] = static_cast<unsigned>(vertex);
+      mesh.vertexSources[corners[p][i]].emplace_back(static_cast<int>(p), patch.areaM2);
     }
-    // A convex quad splits along either diagonal; (0, 2) keeps both triangles counter-clockwise.
-    for (int t = 0; t + 2 < patch.vertexCount; ++t) {
-      mesh.indices.insert(mesh.indices.end(), {corner[0], corner[t + 1], corner[t + 2]});
+    outlines.emplace_back(patch.vertices.data(), patch.vertexCount);
+  }
+
+  // The corners of other patches inside a patch's edges join its outline (T-vertices).
+  const std::vector<std::vector<EdgePoint>> edgePoints = findEdgePoints(outlines, points.positions(), tolerance);
+  std::vector<std::vector<unsigned>> edgeVertices(patches.size());  // per edge point, in the patch's group
+  struct Interpolated {
+    double edgeM;
+    int patch, index;
+  };
+  std::vector<Interpolated> interpolated;
+  for (size_t p = 0; p < patches.size(); ++p)
+    for (size_t k = 0; k < edgePoints[p].size(); ++k) {
+      const EdgePoint& e = edgePoints[p][k];
+      edgeVertices[p].push_back(vertexAt(e.point, patches[p]));
+      const Vec3 d = outlines[p][(e.edge + 1) % outlines[p].size()] - outlines[p][e.edge];
+      interpolated.push_back({glm::length(d), static_cast<int>(p), static_cast<int>(k)});
+    }
+  // A point's radiosity is the edge's, interpolated between its ends, so that shading is
+  // continuous across the edge. Longest edges first: an end that lies on a longer edge itself
+  // takes its value from that edge before the points between it and the other end do.
+  std::sort(interpolated.begin(), interpolated.end(), [](const Interpolated& a, const Interpolated& b) {
+    return a.edgeM != b.edgeM ? a.edgeM > b.edgeM : std::pair(a.patch, a.index) < std::pair(b.patch, b.index);
+  });
+  for (const Interpolated& i : interpolated) {
+    const EdgePoint& e = edgePoints[i.patch][i.index];
+    const Patch& patch = patches[i.patch];
+    const unsigned from = corners[i.patch][e.edge], to = corners[i.patch][(e.edge + 1) % patch.vertexCount];
+    mesh.vertexSources[edgeVertices[i.patch][i.index]] =
+        alongEdge(mesh.vertexSources[from], mesh.vertexSources[to], e.t);
+  }
+
+  std::vector<Vec3> ring;
+  std::vector<unsigned> ringVertex;
+  std::vector<bool> corner;
+  for (size_t p = 0; p < patches.size(); ++p) {
+    const Patch& patch = patches[p];
+    ring.clear();
+    ringVertex.clear();
+    corner.clear();
+    size_t k = 0;
+    for (int i = 0; i < patch.vertexCount; ++i) {
+      ring.push_back(mesh.positions[corners[p][i]]);
+      ringVertex.push_back(corners[p][i]);
+      corner.push_back(true);
+      for (; k < edgePoints[p].size() && edgePoints[p][k].edge == i; ++k) {
+        ring.push_back(points.positions()[edgePoints[p][k].point]);
+        ringVertex.push_back(edgeVertices[p][k]);
+        corner.push_back(false);
+      }
+    }
+    // Without edge points, a fan from corner 0: a convex quad splits along (0, 2), which keeps
+    // both triangles counter-clockwise.
+    for (const std::array<int, 3>& t : triangulateRing(ring, corner)) {
+      mesh.indices.insert(mesh.indices.end(), {ringVertex[t[0]], ringVertex[t[1]], ringVertex[t[2]]});
       mesh.patchOfTriangle.push_back(static_cast<int>(p));
     }
   }

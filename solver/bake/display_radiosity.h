@@ -1,6 +1,7 @@
 #pragma once
 // Per-vertex radiosity for Gouraud display: patch radiosity averaged (area-weighted) onto shared
-// vertices, never across creases or material boundaries.
+// vertices, never across creases or material boundaries. One mesh serves the viewer, the
+// offscreen render and the glTF bake.
 #include <vector>
 
 #include "solver/meshing/patch.h"
@@ -17,6 +18,9 @@ struct DisplayMesh {
   std::vector<std::vector<std::pair<int, double>>> vertexSources;
 };
 
+// Without cracks: a corner of one patch that lies inside an edge of another (a T-vertex,
+// solver/bake/t_vertices.h) joins that patch's triangles, and its radiosity is interpolated
+// along the edge, so that shading is continuous across it.
 DisplayMesh buildDisplayMesh(const std::vector<Patch>& patches);
 
 // Vertex radiosity from patch radiosity (same order as patches), by the mesh's vertexSources.

@@ -1,0 +1,174 @@
+// One solve on the solver thread: how it starts (meshing, a checkpoint to resume), steps, saves,
+// and the snapshots the UI gets of it.
+#include "viewer/solver_run.h"
+
+#include <chrono>
+#include <exception>
+#include <utility>
+
+#include "solver/cells/cell_at.h"
+#include "solver/cells/find_cells.h"
+#include "solver/meshing/meshing.h"
+#include "solver/radiosity/checkpoint.h"
+#include "solver/scene/scene_error.h"
+#include "viewer/exposure.h"
+
+namespace radmesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+int lastShooter(const ProgressiveSolver& solver) {
+  const auto& history = solver.history();
+  return history.empty() || history.back().shooters.empty() ? -1 : history.back().shooters.front();
+}
+
+// The curve's next point: this iteration's figures, the running sums carried on.
+ConvergencePoint nextPoint(const std::vector<ConvergencePoint>& curve, const IterationRecord& record) {
+  ConvergencePoint point = curve.empty() ? ConvergencePoint{} : curve.back();
+  point.iteration = record.iteration;
+  point.convergence = record.convergence;
+  point.unshotFraction = record.ledger.unshotFraction();
+  point.hostSeconds += record.seconds;
+  point.shot = record.shotStats;
+  if (record.shotStats) point.machineSeconds += record.shotStats->machineSeconds;
+  return point;
+}
+
+}  // namespace
+
+void SolverThread::Run::add(const IterationRecord& record) {
+  curve.push_back(nextPoint(curve, record));
+  if (record.shotStats) lastShotStats = record.shotStats;
+}
+
+int SolverThread::Run::lastShooter() const { return cells ? -1 : radmesh::lastShooter(*solver); }
+
+void SolverThread::Run::step(const std::optional<Vec3>& eye, int upAxis) {
+  if (!cells) return add(solver->step());
+  focusOn(eye, upAxis);
+  const auto start = Clock::now();
+  cells->round();
+  IterationRecord record;  // the building's, over the round: C has no meaning across cells
+  record.iteration = cells->iterations();
+  record.ledger = cells->ledger();
+  record.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  add(record);
+}
+
+void SolverThread::Run::focusOn(const std::optional<Vec3>& eye, int upAxis) {
+  if (!eye || eye == focusedEye) return;
+  focusedEye = eye;
+  Vec3 up(0.0);
+  up[upAxis] = 1.0;
+  int cell = cellBelow(cells->patches(), *partition, *eye, up);
+  eyeInFocus = cell != kOutsideCell;
+  if (!eyeInFocus) cell = nearestCell(*partition, *eye);
+  if (cell != focus) cells->focus(cell);
+  focus = cell;
+}
+
+std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setup, std::uint64_t generation,
+                                                         const std::string& resumePath,
+                                                         const std::optional<Vec3>& eye) {
+  try {
+    auto run = std::make_unique<Run>();
+    run->setup = setup;
+    run->generation = generation;
+    std::vector<Patch> patches = meshScene(scene_, setup.cellM);
+    run->summary = summarizeScene(scene_, patches, setup.cellM);
+    if (setup.cells) {
+      if (setup.options.backend != Backend::Native)
+        throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
+      run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
+      run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, setup.options,
+                                                CellSolveSettings{setup.cellM, setup.exchangeShots});
+      run->focusOn(eye, scene_.upAxis);
+    } else {
+      run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), setup.options);
+    }
+    if (!resumePath.empty() && run->solver) {
+      resumeFromCheckpoint(resumePath, *run->solver);
+      for (const IterationRecord& record : run->solver->history()) run->add(record);
+      run->checkpointMessage = "resumed from " + resumePath;
+    }
+    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->receivers()));
+    return run;
+  } catch (const std::exception& e) {
+    publishFailure(setup, e.what());
+    return nullptr;
+  }
+}
+
+void SolverThread::save(Run& run, const std::string& path) {
+  if (run.cells) {
+    run.checkpointMessage = "a cells solve keeps no checkpoint (it is one solve per cell): restart with --cells off";
+    return;
+  }
+  try {
+    writeCheckpoint(path, *run.solver);
+    run.checkpointMessage = "saved " + path + " after iteration " + std::to_string(run.solver->history().size());
+  } catch (const std::exception& e) {
+    run.checkpointMessage = e.what();
+  }
+}
+
+std::shared_ptr<const CellsProgress> SolverThread::cellsProgress(const Run& run) {
+  auto progress = std::make_shared<CellsProgress>();
+  const std::vector<CellFigures> figures = run.cells->cellFigures();
+  for (size_t c = 0; c < figures.size(); ++c)
+    progress->cells.push_back({figures[c].name, figures[c].iterations, figures[c].ledger.unshotFraction(),
+                               run.cells->portalDistance(static_cast<int>(c))});
+  progress->rounds = run.cells->rounds();
+  progress->focus = run.focus;
+  progress->eyeInFocus = run.eyeInFocus;
+  progress->partition = run.partition;
+  return progress;
+}
+
+void SolverThread::publish(const Run& run) {
+  auto snapshot = std::make_shared<SolverSnapshot>();
+  snapshot->generation = run.generation;
+  snapshot->setup = run.setup;
+  snapshot->mesh = run.mesh;
+  snapshot->summary = run.summary;
+  if (run.cells) {
+    snapshot->vertexB = vertexRadiosity(*run.mesh, run.cells->displayRadiosity());
+    snapshot->cells = cellsProgress(run);
+  } else {
+    snapshot->effects = run.solver->effectsPlan().effects;
+    snapshot->vertexB = vertexRadiosity(*run.mesh, run.solver->displayElementRadiosity());
+    const auto& history = run.solver->history();
+    if (!history.empty()) {
+      snapshot->lastShooters = history.back().shooters;
+      snapshot->lastShooterElements = run.solver->elementsOf(snapshot->lastShooters);
+      snapshot->lastCapturedFraction = history.back().capturedFraction;
+    }
+  }
+  // Here rather than on the UI's thread: it sorts every triangle.
+  snapshot->exposure = autoExposure(*run.mesh, snapshot->vertexB);
+  snapshot->lastShotStats = run.lastShotStats;
+  snapshot->itemBuffer = run.itemBuffer;
+  snapshot->itemBufferShooter = run.itemBufferShooter;
+  snapshot->curve = run.curve;
+  snapshot->ledger = run.cells ? run.cells->ledger() : run.solver->ledger();
+  snapshot->done = run.done();
+  snapshot->checkpointMessage = run.checkpointMessage;
+  snapshot->exhausted = run.exhausted();
+  std::lock_guard lock(mutex_);
+  snapshot->playing = playing_;
+  latest_ = std::move(snapshot);
+}
+
+void SolverThread::publishFailure(const SolveSetup& setup, const std::string& error) {
+  auto snapshot = std::make_shared<SolverSnapshot>();
+  snapshot->setup = setup;
+  snapshot->error = error;
+  std::lock_guard lock(mutex_);
+  snapshot->generation = generation_;
+  snapshot->playing = playing_;
+  latest_ = std::move(snapshot);
+}
+
+}  // namespace radmesh
