@@ -114,7 +114,9 @@ nlohmann::json distributedStats(const CellSolver& solver, const std::vector<Cell
                        {"messages_per_round", t.messages / rounds},
                        {"bytes_per_round", t.bytes / rounds}});
   }
-  return {{"ranks", traffic.size()}, {"per_rank", std::move(perRank)}};
+  nlohmann::json owner = nlohmann::json::array();
+  for (int c = 0; c < solver.cellCount(); ++c) owner.push_back(solver.owner(c));
+  return {{"ranks", traffic.size()}, {"owner", std::move(owner)}, {"per_rank", std::move(perRank)}};
 }
 
 }  // namespace radmesh::cli

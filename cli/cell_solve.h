@@ -23,7 +23,8 @@ void printCellsSummary(const CellSolver& solver, double seconds);
 // The `--stats` document of a cells solve: "cells", "portals", the building's ledger and "per_cell".
 nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds);
 // A distributed solve's "distributed": per rank its cells, patches, shots and work (shots times the
-// cell's patches, own and portal), and what it sent (CellTraffic), in all and per round.
+// cell's patches, own and portal), and what it sent (CellTraffic), in all and per round; "owner":
+// each cell's rank.
 nlohmann::json distributedStats(const CellSolver& solver, const std::vector<CellTraffic>& traffic);
 
 }  // namespace radmesh::cli
