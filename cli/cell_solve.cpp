@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "cli/progress.h"
@@ -20,10 +21,10 @@ void requireCellsOptions(const SolveOptions& options) {
 }
 
 std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
-                                           const CellSolveSettings& settings) {
+                                           const CellSolveSettings& settings, CellRanks* ranks) {
   requireCellsOptions(options);
   const CellPartition partition = findCells(scene, patches);
-  auto solver = std::make_unique<CellSolver>(scene, std::move(patches), partition, options, settings);
+  auto solver = std::make_unique<CellSolver>(scene, std::move(patches), partition, options, settings, ranks);
   fmt::print("cells: {} cells, {} portals, exchanging portal light after rounds of {} shots a cell on average, "
              "shared by unshot power, {}\n",
              solver->cellCount(), solver->portalCount(), settings.exchangeShots,
@@ -84,6 +85,38 @@ nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, do
           {"ledger", ledgerJson(solver.ledger())},
           {"per_cell", std::move(perCell)}});
   return j;
+}
+
+nlohmann::json distributedStats(const CellSolver& solver, const std::vector<CellTraffic>& traffic) {
+  nlohmann::json perRank = nlohmann::json::array();
+  const std::vector<CellFigures> cells = solver.cellFigures();
+  const double rounds = std::max(solver.rounds(), 1);
+  for (size_t r = 0; r < traffic.size(); ++r) {
+    int ownCells = 0, patches = 0, shots = 0;
+    double work = 0.0;
+    for (size_t c = 0; c < cells.size(); ++c) {
+      if (solver.owner(static_cast<int>(c)) != static_cast<int>(r)) continue;
+      ++ownCells;
+      patches += cells[c].patches + cells[c].portalPatches;
+      shots += cells[c].iterations;
+      work += static_cast<double>(cells[c].iterations) * (cells[c].patches + cells[c].portalPatches);
+    }
+    const CellTraffic& t = traffic[r];
+    perRank.push_back({{"rank", r},
+                       {"cells", ownCells},
+                       {"patches", patches},
+                       {"shots", shots},
+                       {"work", work},
+                       {"messages", t.messages},
+                       {"bytes", t.bytes},
+                       {"gathers", t.gathers},
+                       {"gather_bytes", t.gatherBytes},
+                       {"messages_per_round", t.messages / rounds},
+                       {"bytes_per_round", t.bytes / rounds}});
+  }
+  nlohmann::json owner = nlohmann::json::array();
+  for (int c = 0; c < solver.cellCount(); ++c) owner.push_back(solver.owner(c));
+  return {{"ranks", traffic.size()}, {"owner", std::move(owner)}, {"per_rank", std::move(perRank)}};
 }
 
 }  // namespace radmesh::cli

@@ -13,13 +13,18 @@ namespace radmesh::cli {
 // Throws OptionError for options the cells solve does not run with (a back end other than native).
 void requireCellsOptions(const SolveOptions& options);
 // The cells of the meshed scene (findCells) and their solver; prints how many cells and portals.
+// With `ranks`, this process's part of a distributed solve (CellSolver).
 std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
-                                           const CellSolveSettings& settings);
+                                           const CellSolveSettings& settings, CellRanks* ranks = nullptr);
 // Rounds until done(), with progress on stdout unless `quiet`; returns the wall seconds.
 double solveCellsWithProgress(CellSolver& solver, bool quiet);
 // The summary lines of a cells solve: patches, cells, portals, iterations, the building's ledger.
 void printCellsSummary(const CellSolver& solver, double seconds);
 // The `--stats` document of a cells solve: "cells", "portals", the building's ledger and "per_cell".
 nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds);
+// A distributed solve's "distributed": per rank its cells, patches, shots and work (shots times the
+// cell's patches, own and portal), and what it sent (CellTraffic), in all and per round; "owner":
+// each cell's rank.
+nlohmann::json distributedStats(const CellSolver& solver, const std::vector<CellTraffic>& traffic);
 
 }  // namespace radmesh::cli

@@ -20,6 +20,9 @@
 #include "solver/io/scene_loader.h"
 #include "solver/radiosity/checkpoint.h"
 #include "solver/scene/scene_error.h"
+#ifdef RADMESH_HAVE_MPI
+#include "distributed/distributed_run.h"
+#endif
 
 namespace radmesh::cli {
 
@@ -34,6 +37,7 @@ struct SolveArgs {
   std::string checkpointPath;
   double checkpointEverySeconds = 0.0;  // 0: once, at the end
   std::string resumePath;
+  bool distributed = false;
 };
 
 // "N patches", and their elements when patches are cut into elements.
@@ -71,25 +75,30 @@ void writeBake(const std::string& path, const std::vector<Patch>& patches, const
 }
 
 // --cells auto: the rooms solved cell by cell (no checkpoints: the state is one solve per cell).
-void runCells(const SolveArgs& args, const Scene& scene, double cellM, const SolveOptions& options) {
+// With `ranks`, this process's part of a distributed solve: process 0 alone writes.
+void runCells(const SolveArgs& args, const Scene& scene, double cellM, const SolveOptions& options,
+              CellRanks* ranks) {
   if (!args.checkpointPath.empty() || !args.resumePath.empty())
     throw OptionError("--checkpoint and --resume save and restore one solve, not a cells solve: give --cells off");
-  std::unique_ptr<CellSolver> solver =
-      makeCellSolver(scene, meshScene(scene, cellM), options, {cellM, args.flags.exchangeShots, args.flags.portalBins});
+  std::unique_ptr<CellSolver> solver = makeCellSolver(
+      scene, meshScene(scene, cellM), options, {cellM, args.flags.exchangeShots, args.flags.portalBins}, ranks);
   fmt::print("solving {} cell by cell: {} patches, {} {}x{}, k={}, until {:g}% unshot\n", scene.source,
              solver->patches().size(), toString(options.projection), options.resolution, options.resolution,
              options.shooters, 100.0 * options.untilUnshot);
   const double seconds = solveCellsWithProgress(*solver, args.quiet);
   printCellsSummary(*solver, seconds);
-  warnIfFarFromConverged(solver->ledger());
+  const bool writes = !ranks || ranks->rank() == 0;
+  if (writes) warnIfFarFromConverged(solver->ledger());
   if (!args.statsPath.empty()) {
-    writeJson(args.statsPath, cellsStats(*solver, scene.source, seconds));
-    fmt::print("wrote {}\n", args.statsPath);
+    nlohmann::json stats = cellsStats(*solver, scene.source, seconds);
+    if (ranks) stats["distributed"] = distributedStats(*solver, ranks->traffic());
+    if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }
-  writeBake(args.outPath, solver->patches(), solver->displayRadiosity(), scene.upAxis);
+  const std::vector<Rgb> radiosity = args.outPath.empty() ? std::vector<Rgb>() : solver->displayRadiosity();
+  if (writes) writeBake(args.outPath, solver->patches(), radiosity, scene.upAxis);
 }
 
-void run(const SolveArgs& args) {
+void run(const SolveArgs& args, CellRanks* ranks) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
@@ -100,7 +109,7 @@ void run(const SolveArgs& args) {
   options.effects = parseEffects(args.effects);
   const CellChoice cell = args.flags.cell(scene);
   fmt::print("{}\n", cell.why);
-  if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options);
+  if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, ranks);
   if (options.subdivide != Subdivide::Off && (!args.checkpointPath.empty() || !args.resumePath.empty()))
     throw OptionError("--checkpoint and --resume do not keep elements yet: give --subdivide off");
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
@@ -147,6 +156,19 @@ void run(const SolveArgs& args) {
   writeBake(args.outPath, solver.elements(), solver.displayElementRadiosity(), scene.upAxis);
 }
 
+// --distributed: every process of the mpirun runs the solve, each its own cells (CellSolver).
+void runDistributed(const SolveArgs& args) {
+  if (!args.flags.cellsOn())
+    throw OptionError("--distributed splits a cells solve over processes: give --cells auto (the mesh machine over "
+                      "MPI, --backend mesh --distributed, is not in this build yet)");
+#ifdef RADMESH_HAVE_MPI
+  distributed::runDistributed([&](CellRanks& ranks) { run(args, &ranks); });
+#else
+  throw OptionError("--distributed: this radmesh was built without MPI; install libopenmpi-dev and openmpi-bin "
+                    "(scripts/install-deps.sh), build again, and run it under mpirun");
+#endif
+}
+
 }  // namespace
 
 void addSolveCommand(CLI::App& app) {
@@ -166,7 +188,10 @@ void addSolveCommand(CLI::App& app) {
       ->needs(checkpoint);
   cmd->add_option("--resume", args->resumePath,
                   "Go on from a checkpoint of the same scene and options; --max-iterations counts from the start");
-  cmd->callback([args] { run(*args); });
+  cmd->add_flag("--distributed", args->distributed,
+                "With --cells auto, under mpirun: each process solves some of the cells, exchanging portal light "
+                "with its neighbours (docs/cells.md); process 0 prints and writes");
+  cmd->callback([args] { args->distributed ? runDistributed(*args) : run(*args, nullptr); });
 }
 
 }  // namespace radmesh::cli

@@ -13,6 +13,7 @@
 
 #include "parallel/thread_pool.h"
 #include "solver/cells/cell_partition.h"
+#include "solver/radiosity/cell_ranks.h"
 #include "solver/radiosity/progressive_solver.h"
 
 namespace radmesh {
@@ -43,10 +44,18 @@ struct CellFigures {
 // Throws SceneError for a partition that does not fit the patches (a cell index out of range, a
 // portal joining a cell to itself, a portal that is not a polygon), and what ProgressiveSolver
 // throws. A patch of kOutsideCell goes into a cell "outside" of its own, without portals.
+//
+// Given `ranks` (a process of a distributed solve, docs/cells.md): the cells are assigned to the
+// processes (owner(), assignCellsToRanks with a cell's load its patches and portal patches times
+// 1 + cells x its share of the light it starts with), and this process makes and solves only its
+// own. Every process must call the constructor, round() and radiosity() / displayRadiosity()
+// together; everything else reads every cell's figures as of the last round, the same on every
+// process, so every process schedules the same rounds, and the answer equals the solve without
+// ranks bit for bit.
 class CellSolver {
  public:
   CellSolver(const Scene& scene, std::vector<Patch> patches, const CellPartition& partition,
-             const SolveOptions& options, const CellSolveSettings& settings);
+             const SolveOptions& options, const CellSolveSettings& settings, CellRanks* ranks = nullptr);
   ~CellSolver();
   CellSolver(const CellSolver&) = delete;
   CellSolver& operator=(const CellSolver&) = delete;
@@ -80,6 +89,8 @@ class CellSolver {
   int cellCount() const;  // with the outside cell, if any patch faces no cell
   int portalCount() const;
   std::vector<CellFigures> cellFigures() const;
+  int owner(int cell) const;  // the process solving the cell (0 without ranks)
+  // Throws std::out_of_range for a cell another process solves.
   const ProgressiveSolver& cellSolver(int cell) const;
   const SolveOptions& options() const;
   const CellSolveSettings& settings() const;

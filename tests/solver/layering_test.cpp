@@ -66,6 +66,8 @@ std::vector<std::string> layeringViolations(const std::vector<Include>& includes
     if (from == "emulator" && project && to != "emulator" && to != "parallel")
       bad("the emulator knows nothing of radiosity");
     if (from == "solver" && (to == "viewer" || to == "cli" || graphics)) bad("the core has no GL and no UI");
+    if (from == "solver" && (to == "distributed" || target == "mpi.h" || startsWith(target, "parallel/mpi/")))
+      bad("the core knows no MPI: distributed/ is its MPI side");
     const bool showsTheMachine = std::count(kShowTheMachine.begin(), kShowTheMachine.end(), file) > 0;
     if (to == "emulator" && from != "emulator" && from != "parallel" && !startsWith(file, "solver/backends/mesh/") &&
         !showsTheMachine)
@@ -105,7 +107,7 @@ std::vector<Include> includesUnder(const std::filesystem::path& root, const std:
 }
 
 TEST(Layering, TheSourcesKeepIt) {
-  const auto includes = includesUnder(test::sourceDir(), {"parallel", "emulator", "solver", "cli", "viewer", "bench"});
+  const auto includes = includesUnder(test::sourceDir(), {"parallel", "emulator", "solver", "cli", "viewer", "bench", "distributed"});
   ASSERT_GT(includes.size(), 300u);  // the walk found the sources
   const auto violations = layeringViolations(includes);
   std::string all;
@@ -127,6 +129,8 @@ TEST(Layering, EachRuleCatchesItsBreak) {
       {"bench/mesh_backend_bench.cpp", "solver/backends/native/native_backend.h"},
       {"viewer/solver_snapshot.h", "emulator/cost_counts.h"},                // emulator outside the mesh back end
       {"cli/bench_solve.cpp", "emulator/cost_model.h"},
+      {"solver/radiosity/cell_solver.cpp", "distributed/mpi_cell_ranks.h"},  // MPI in the core
+      {"solver/radiosity/cell_ranks.h", "mpi.h"},
   };
   for (const auto& include : broken)
     EXPECT_EQ(layeringViolations({include}).size(), 1u) << include.file << " -> " << include.target;
@@ -138,6 +142,7 @@ TEST(Layering, EachRuleCatchesItsBreak) {
       {"solver/backends/form_factor_backend.cpp", "solver/backends/native/native_backend.h"},
       {"viewer/solver_snapshot.h", "solver/backends/shot_stats.h"},
       {"bench/emulator_bench.cpp", "emulator/xnet.h"},  // shows the machine itself
+      {"distributed/mpi_cell_ranks.h", "solver/radiosity/cell_ranks.h"},
   };
   for (const auto& include : fine)
     EXPECT_TRUE(layeringViolations({include}).empty()) << include.file << " -> " << include.target;

@@ -1,0 +1,110 @@
+// A cells solve split over the run's processes (CellSolver with distributed::MpiCellRanks) equals
+// the solve in one process bit for bit: radiosity, ledger, iterations, rounds, per-cell figures.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <stdexcept>
+
+#include "distributed/mpi_cell_ranks.h"
+#include "solver/cells/find_cells.h"
+#include "solver/formfactors/direction_bins.h"
+#include "solver/io/builtin_scenes.h"
+#include "solver/meshing/meshing.h"
+#include "solver/radiosity/cell_solver.h"
+
+namespace radmesh {
+namespace {
+
+SolveOptions fastOptions(double untilUnshot) {
+  SolveOptions o;
+  o.projection = Projection::Hemicube;
+  o.resolution = 32;
+  o.until = 1.0;
+  o.untilUnshot = untilUnshot;
+  o.threads = 1;
+  return o;
+}
+
+void solve(CellSolver& solver) {
+  while (!solver.done()) solver.round();
+}
+
+void expectSameLedger(const Ledger& a, const Ledger& b) {
+  EXPECT_EQ(a.emitted, b.emitted);
+  EXPECT_EQ(a.absorbed, b.absorbed);
+  EXPECT_EQ(a.unshot, b.unshot);
+  EXPECT_EQ(a.notCaptured, b.notCaptured);
+  EXPECT_EQ(a.escaped, b.escaped);
+  EXPECT_EQ(a.absorbedByBackFaces, b.absorbedByBackFaces);
+  EXPECT_EQ(a.portalIn, b.portalIn);
+  EXPECT_EQ(a.portalOut, b.portalOut);
+  EXPECT_EQ(a.lightOutside, b.lightOutside);
+}
+
+// Solves `name` in this process alone and over the run's processes, and compares every figure;
+// then checks what each process sent: one message a round to each process whose cells share a
+// portal with its own, holding 3 doubles per direction bin per portal patch it sends on.
+void expectDistributedEqualsOneProcess(const std::string& name, double cellM, int portalBins, double untilUnshot) {
+  const Scene scene = builtinScene(name);
+  const std::vector<Patch> patches = meshScene(scene, cellM);
+  const CellPartition partition = findCells(scene, patches);
+  const CellSolveSettings settings{cellM, 16, portalBins};
+  CellSolver alone(scene, patches, partition, fastOptions(untilUnshot), settings);
+  solve(alone);
+  distributed::MpiCellRanks ranks;
+  CellSolver split(scene, patches, partition, fastOptions(untilUnshot), settings, &ranks);
+  solve(split);
+
+  EXPECT_EQ(split.rounds(), alone.rounds());
+  EXPECT_EQ(split.iterations(), alone.iterations());
+  expectSameLedger(split.ledger(), alone.ledger());
+  const std::vector<Rgb> a = alone.radiosity(), b = split.radiosity();
+  ASSERT_EQ(a.size(), b.size());
+  size_t differing = 0;
+  for (size_t j = 0; j < a.size(); ++j) differing += a[j] != b[j];
+  EXPECT_EQ(differing, 0u) << "patches whose radiosity differs";
+  EXPECT_EQ(split.displayRadiosity(), alone.displayRadiosity());
+  const std::vector<CellFigures> fa = alone.cellFigures(), fb = split.cellFigures();
+  ASSERT_EQ(fa.size(), fb.size());
+  for (size_t c = 0; c < fa.size(); ++c) {
+    EXPECT_EQ(fb[c].iterations, fa[c].iterations) << fa[c].name;
+    expectSameLedger(fb[c].ledger, fa[c].ledger);
+    EXPECT_EQ(split.owner(static_cast<int>(c)) == ranks.rank(), [&] {
+      try {
+        split.cellSolver(static_cast<int>(c));
+        return true;
+      } catch (const std::out_of_range&) {
+        return false;
+      }
+    }()) << "a process makes the solvers of its own cells alone";
+  }
+
+  std::set<int> neighbours;
+  long long doubles = 0;
+  for (const Portal& portal : partition.portals) {
+    const int ownerA = split.owner(portal.cellA), ownerB = split.owner(portal.cellB);
+    if (ownerA == ownerB || (ownerA != ranks.rank() && ownerB != ranks.rank())) continue;
+    neighbours.insert(ownerA == ranks.rank() ? ownerB : ownerA);
+    doubles += 3LL * directionBinCount(portalBins) * static_cast<long long>(meshScene(
+        Scene{scene.source, {Material{"portal", Rgb(0.0), Rgb(0.0)}}, {{portal.vertices, 0, "portal"}}, {}, scene.upAxis},
+        cellM).size());
+  }
+  const CellTraffic mine = ranks.traffic().at(ranks.rank());
+  EXPECT_EQ(mine.messages, static_cast<long long>(neighbours.size()) * split.rounds());
+  EXPECT_EQ(mine.bytes, doubles * 8 * split.rounds());
+  EXPECT_EQ(mine.gathers, 2LL * split.rounds() + 3);  // made, twice a round, radiosity and display radiosity
+}
+
+TEST(DistributedCells, TwoRoomsEqualsOneProcessBitForBit) { expectDistributedEqualsOneProcess("two-rooms", 0.75, 4, 0.02); }
+
+TEST(DistributedCells, TwoRoomsDiffusePortalsEqualsOneProcessBitForBit) {
+  expectDistributedEqualsOneProcess("two-rooms", 0.75, 0, 0.02);
+}
+
+// 12 cells (9 rooms, 2 corridors and the outside), 12 rounds at 15 % unshot.
+TEST(DistributedCells, Building3x3EqualsOneProcessBitForBit) {
+  expectDistributedEqualsOneProcess("building:3x3", 1.5, 2, 0.15);
+}
+
+}  // namespace
+}  // namespace radmesh
