@@ -120,7 +120,7 @@ MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
   }
   if (mesh_.mapping == MappingKind::Adaptive) {
     PhaseClock clock(machine_, stats, "adaptive mapping");
-    shot.mapping = adaptiveMapping(machine_, shot, patchesOnPe_, layout_.patches, options_.resolution);
+    shot.mapping = adaptiveMapping(machine_, shot, patchesOnPe_, options_.resolution);
   }
   ScanDepths depths = scan_->scanConvert(shot, stats);
   if (formFactors) {
@@ -150,16 +150,22 @@ void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFac
 }
 
 FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors) {
+  // The front end reads what each patch's PE made of it on this plane.
   const int n = layout_.patches;
-  const std::size_t base = static_cast<std::size_t>(plane) * n;
+  std::vector<char> seenFromFront(n, 0);
+  std::vector<double> projectedAreaPixels(n, 0.0);
+  for (int j = 0; j < n; ++j) {
+    const PatchProjection& p = shot.projection(layout_.peOf(j), layout_.slotOf(j), plane);
+    seenFromFront[j] = p.seenFromFront;
+    if (p.projected) projectedAreaPixels[j] = p.setup.areaPixels;
+  }
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
     const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
-                                  {shot.projectedAreaPixels.data() + base, static_cast<std::size_t>(n)}};
+                                  projectedAreaPixels};
     refineSubPixelReceivers(projected, hostPool_, formFactors);
   }
-  return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors,
-                              {shot.seenFromFront.data() + base, static_cast<std::size_t>(n)});
+  return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors, seenFromFront);
 }
 
 // The running counts are plain numbers: their bytes are the state, doubles bitwise.
