@@ -48,6 +48,10 @@ struct ShooterClaim {
 
 }  // namespace
 
+MeshBackendOptions meshBackendOptions(const SolveOptions& options) {
+  return {options.mapping, options.machine.rows, options.machine.cols, std::int64_t{options.machine.memoryKb} * 1024};
+}
+
 MeshBackend::MeshBackend(const Scene& scene, const std::vector<Patch>& patches,
                          const SolveOptions& options, const MeshBackendOptions& mesh)
     : MeshBackend(scene, patches, patches, options, mesh) {}
