@@ -5,7 +5,6 @@
 #include <exception>
 
 #include "cli/commands.h"
-#include "emulator/memory_ledger.h"
 #include "solver/scene/scene_error.h"
 
 int main(int argc, char** argv) {
@@ -27,12 +26,6 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const radmesh::OptionError& e) {
     fmt::print(stderr, "radmesh: error: {}\n", e.what());
-    return 2;
-  } catch (const radmesh::emu::MemoryBudgetError& e) {
-    // The emulator's fix speaks of its MachineConfig; a user sets the machine with flags.
-    const std::string what = e.what();
-    fmt::print(stderr, "radmesh: error: {} Fix: give each PE more memory (--pe-memory KB, now {}) or spread the "
-               "work over more PEs (a larger --pe-grid)\n", what.substr(0, what.find(" Fix:")), e.budgetBytes() / 1024);
     return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "radmesh: error: {}\n", e.what());

@@ -67,7 +67,7 @@ TEST(PeMachineCli, BadMachinesExit2NamingTheOptionAndTheFix) {
       {"bench solve cornell --backend mesh --pe-grid 100x100", "--pe-grid 100x100 is not a mesh"},
       // Too little memory for the patches themselves: the machine's error, with the flags that fix it.
       {"solve office --backend mesh --preset paper --pe-grid 2x2 --pe-memory 1 --max-iterations 1",
-       "Fix: give each PE more memory (--pe-memory KB, now 1) or spread the work over more PEs (a larger --pe-grid)"},
+       "budget is 1024 bytes. Fix: give each PE more memory (a larger --pe-memory KB) or spread the work over more PEs (a larger --pe-grid)"},
   };
   for (const Case& c : cases) {
     const CommandRun run = radmesh(c.arguments);

@@ -9,6 +9,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "emulator/memory_ledger.h"
 #include "emulator/reduce.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
 #include "solver/scene/scene_error.h"
@@ -34,6 +35,14 @@ const SolveOptions& checked(const SolveOptions& options, const MeshBackendOption
 emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendOptions& mesh) {
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware};
+}
+
+// The emulator's fix speaks of its MachineConfig; a user sets the machine with flags.
+[[noreturn]] void refuseMachine(const emu::MemoryBudgetError& e) {
+  const std::string what = e.what();
+  throw OptionError(what.substr(0, what.find(" Fix:")) +
+                    " Fix: give each PE more memory (a larger --pe-memory KB) or spread the work over more PEs (a "
+                    "larger --pe-grid)");
 }
 
 // A patch's claim to shoot next, ordered as the solver orders shooters: more unshot power first,
@@ -68,11 +77,15 @@ MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches, const 
       hostPool_(options.threads) {
   layout_ = {static_cast<int>(receivers.size()), machine_.size()};
   // The patches spread out equally over the PE array (section 1.5); so do the elements, beside them.
-  for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
   shooterLayout_ = {static_cast<int>(patches.size()), machine_.size()};
-  if (&receivers != &patches) {
-    shootersOnPe_ = std::make_unique<emu::PeArray<PatchRecord>>(machine_, "shooting patches");
-    for (int j = 0; j < shooterLayout_.patches; ++j) shootersOnPe_->push(shooterLayout_.peOf(j), PatchRecord{j});
+  try {
+    for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
+    if (&receivers != &patches) {
+      shootersOnPe_ = std::make_unique<emu::PeArray<PatchRecord>>(machine_, "shooting patches");
+      for (int j = 0; j < shooterLayout_.patches; ++j) shootersOnPe_->push(shooterLayout_.peOf(j), PatchRecord{j});
+    }
+  } catch (const emu::MemoryBudgetError& e) {
+    refuseMachine(e);
   }
   scan_ = std::make_unique<MeshScanConversion>(machine_, patches_, receivers_, patchesOnPe_, surface_.faces[0],
                                                sceneNearDepth(patches_));
@@ -114,7 +127,7 @@ auto MeshBackend::inPhase(const char* name, Work&& work) {
 }
 
 MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
-                              std::vector<std::vector<double>>* pixelFormFactors, MeshShotStats& stats) {
+                              std::vector<std::vector<double>>* pixelFormFactors, MeshShotStats& stats) try {
   MeshShot shot;
   shot.shooters.assign(shooters.begin(), shooters.end());
   shot.mapping = PlaneMapping::uniform(mesh_.mapping, options_.resolution, mesh_.peRows, mesh_.peCols);
@@ -139,6 +152,8 @@ MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
   stats.depthAHist = depthHistogram(stats.depthA);
   stats.depthBHist = depthHistogram(stats.depthB);
   return shot;
+} catch (const emu::MemoryBudgetError& e) {
+  refuseMachine(e);
 }
 
 void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) {
