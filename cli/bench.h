@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "solver/io/daylight.h"
+#include "solver/scene/solve_options.h"
 #include "solver/scene/up_axis.h"
 
 namespace radmesh::cli {
@@ -19,6 +20,7 @@ struct BenchSolveArgs {
   std::vector<int> resolutions{64, 128, 256, 512};
   std::vector<int> shooters{1};    // k per iteration
   std::string backend = "native";
+  PeMachine machine;  // --pe-grid, --pe-memory (mesh backend)
   double until = 0.95;
   double untilUnshot = 0.0;  // and stop at this unshot fraction (0: no such rule)
   int maxIterations = 5000;

@@ -31,6 +31,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--shooters", args->shooters, "Shooters k per iteration to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--backend", args->backend, "native or mesh (emulated MP-1)")->capture_default_str();
+  addMachineFlags(cmd, args->machine);
   cmd->add_option("--until", args->until, "Convergence to time to")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Or the unshot fraction to time to (0: none)")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per run")->capture_default_str();

@@ -99,6 +99,8 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
                "over its iterations, the median over the rounds\n",
                partition.cells.size(), partition.portals.size(), args.exchangeShots);
   const Backend backend = parseBackend(args.backend);
+  if (backend == Backend::Mesh)
+    fmt::print("PE grid {}, {} KB a PE\n", peGridText(args.machine), args.machine.memoryKb);
   fmt::print("{:<10} {:>6} {:>4} {:>14} {:>12} {:>12} {:>10} {:>8} {:>12}\n", "projection", "N", "k", "ms/iteration",
              "iterations", "s to C", "it/s", "unshot", "MP-1 s/it");
   for (const std::string& projection : args.projections) {
@@ -106,6 +108,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
       for (int k : args.shooters) {
         SolveOptions o;
         o.backend = backend;
+        o.machine = args.machine;
         o.projection = parseProjection(projection);
         o.resolution = n;
         o.shooters = k;
@@ -151,9 +154,13 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
       scaling.push_back({{"cell", cell}, {"patches", mesh.size()}, {"ms_per_iteration", t.msPerIteration}});
     }
   }
-  return {{"scene", scene.source}, {"patches", patches.size()}, {"backend", args.backend}, {"threads", args.threads},
-          {"cells", args.cellsMode}, {"until_unshot", args.untilUnshot},
-          {"clock", args.threads == 1 ? "thread cpu" : "wall"}, {"until", args.until},   {"rows", rows},               {"scaling", scaling}};
+  nlohmann::json result = {{"scene", scene.source}, {"patches", patches.size()}, {"backend", args.backend},
+                            {"threads", args.threads}, {"cells", args.cellsMode}, {"until_unshot", args.untilUnshot},
+                            {"clock", args.threads == 1 ? "thread cpu" : "wall"}, {"until", args.until},
+                            {"rows", rows}, {"scaling", scaling}};
+  if (backend == Backend::Mesh)
+    result.update({{"pe_grid", peGridText(args.machine)}, {"pe_memory_kb", args.machine.memoryKb}});
+  return result;
 }
 
 }  // namespace radmesh::cli

@@ -76,6 +76,14 @@ SolveOptions SolveFlags::resolved() const {
 bool SolveFlags::cellsOn() const { return parseCells(cells); }
 
 
+void addMachineFlags(CLI::App* cmd, PeMachine& machine) {
+  cmd->add_option_function<std::string>(
+      "--pe-grid", [&machine](const std::string& text) { parsePeGrid(text, machine); },
+      "Mesh backend: the emulated machine's PE columns x rows, powers of two (default 64x64, the MP-1's)");
+  cmd->add_option("--pe-memory", machine.memoryKb, "Mesh backend: each PE's memory in KB (the MP-1's 16)")
+      ->capture_default_str();
+}
+
 void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
@@ -91,6 +99,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
   cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size; the paper: 0.381)");
   cmd->add_option("--mapping", f.mapping, "Mesh backend: hierarchical, cut-and-stack or adaptive")->capture_default_str();
+  addMachineFlags(cmd, f.options.machine);
   cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")->capture_default_str();
   cmd->add_option("--resolution", f.options.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   cmd->add_option("--ratio", f.options.ratio, "Half-side of the single plane at height 1")->capture_default_str();

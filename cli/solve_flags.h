@@ -48,7 +48,9 @@ CellChoice commandCell(const Scene& scene, double cellM, bool given);
 // Adds --sky LUX, --sky-model uniform|cie-overcast and --sun AZIMUTH,ELEVATION[,LUX] (docs/scene-formats.md#daylight).
 void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
 
-// --cells auto (true) or off (false); throws OptionError for anything else.
+// Adds --pe-grid COLSxROWS and --pe-memory KB, the mesh back end's machine (checked by validateOptions).
+void addMachineFlags(CLI::App* cmd, PeMachine& machine);
+
 
 // Adds SCENE, --strict, --sky, --sky-model, --sun and --preset --backend --cell --projection --resolution --ratio --shooters --until
 // --until-unshot --max-iterations --threads --cache-mb --cells --exchange-shots to a subcommand. --preset is applied as it

@@ -34,10 +34,12 @@ nlohmann::json ledgerJson(const Ledger& l) {
 }
 
 nlohmann::json optionsJson(const SolveOptions& o) {
-  return {{"backend", toString(o.backend)}, {"projection", toString(o.projection)}, {"mapping", toString(o.mapping)},
+  nlohmann::json j = {{"backend", toString(o.backend)}, {"projection", toString(o.projection)}, {"mapping", toString(o.mapping)},
           {"resolution", o.resolution},     {"ratio", o.ratio},                       {"shooters", o.shooters},
           {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot},
           {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM}};
+  if (o.backend == Backend::Mesh) j.update({{"pe_grid", peGridText(o.machine)}, {"pe_memory_kb", o.machine.memoryKb}});
+  return j;
 }
 
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {

@@ -34,6 +34,11 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch)")
       ->capture_default_str();
+  app.add_option_function<std::string>(
+      "--pe-grid", [&o](const std::string& text) { radmesh::parsePeGrid(text, o.machine); },
+      "Mesh backend: the emulated machine's PE columns x rows, powers of two (default 64x64, the MP-1's)");
+  app.add_option("--pe-memory", o.machine.memoryKb, "Mesh backend: each PE's memory in KB (the MP-1's 16)")
+      ->capture_default_str();
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();

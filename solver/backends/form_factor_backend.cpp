@@ -72,7 +72,7 @@ std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene, con
   switch (options.backend) {
     case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, receivers, options);
     case Backend::Mesh:
-      return std::make_unique<MeshBackend>(scene, patches, receivers, options, MeshBackendOptions{options.mapping});
+      return std::make_unique<MeshBackend>(scene, patches, receivers, options, meshBackendOptions(options));
   }
   throw OptionError("--backend must be native or mesh");
 }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cerrno>
@@ -50,6 +51,10 @@ OptionList answerOptions(const SolveOptions& o) {
                      {"sub-pixel receivers", o.subPixelReceivers ? "on" : "off"}};
   if (o.backend == Backend::Mesh) {
     list.push_back({"--mapping", toString(o.mapping)});
+    // The machine's size orders the form factors' sums (and its counts are the saved state); the
+    // MP-1's is left out, so that checkpoints from before --pe-grid still resume.
+    if (o.machine.cols != PeMachine{}.cols || o.machine.rows != PeMachine{}.rows)
+      list.push_back({"--pe-grid", peGridText(o.machine)});
     list.push_back({"--cache-mb", fmt::format("{}", o.formFactorCacheBytes / 1048576.0)});
   }
   return list;
@@ -255,6 +260,9 @@ std::string optionDifferences(const OptionList& saved, const OptionList& now) {
       if (savedFlag == flag) there = savedValue;
     if (there != value) text += fmt::format("{}{} {} there, {} here", text.empty() ? "" : "; ", flag, there, value);
   }
+  for (const auto& [flag, value] : saved)  // set there, absent here
+    if (std::none_of(now.begin(), now.end(), [&](const auto& option) { return option.first == flag; }))
+      text += fmt::format("{}{} {} there, not set here", text.empty() ? "" : "; ", flag, value);
   return text;
 }
 

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include "solver/scene/scene_error.h"
 
@@ -12,6 +14,20 @@ namespace radmesh {
 namespace {
 
 std::string number(double value) { return fmt::format("{}", value); }  // shortest exact form
+
+constexpr int kMaxPeSide = 1024;
+constexpr int kMaxPeMemoryKb = 1024 * 1024;  // 1 GB a PE
+
+bool powerOfTwoSide(int side) { return side >= 2 && side <= kMaxPeSide && (side & (side - 1)) == 0; }
+
+void validateMachine(const PeMachine& m) {
+  if (!powerOfTwoSide(m.cols) || !powerOfTwoSide(m.rows))
+    throw OptionError("--pe-grid " + peGridText(m) + " is not a mesh the machine can sort on: give COLSxROWS with "
+                      "powers of two from 2 to " + std::to_string(kMaxPeSide) + ", e.g. 64x64 (the MP-1) or 128x128");
+  if (m.memoryKb < 1 || m.memoryKb > kMaxPeMemoryKb)
+    throw OptionError("--pe-memory " + std::to_string(m.memoryKb) + " is out of range: give each PE's memory in KB "
+                      "from 1 to " + std::to_string(kMaxPeMemoryKb) + ", e.g. 16 (the MP-1's)");
+}
 
 }  // namespace
 
@@ -38,9 +54,28 @@ void validateOptions(const SolveOptions& o) {
   if (o.threads < 0)
     throw OptionError("--threads " + std::to_string(o.threads) +
                       " is out of range: give 0 (every core) or a positive count");
+  validateMachine(o.machine);
   if (!(std::isfinite(o.minElementM) && o.minElementM >= 0.0))
     throw OptionError("--min-element " + number(o.minElementM) +
                       " is out of range: give the longest element edge in metres, e.g. 0.1 (0: every patch cut into four)");
+}
+
+void parsePeGrid(const std::string& text, PeMachine& machine) {
+  auto whole = [&](std::string_view part, int& value) {
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return !part.empty() && error == std::errc() && end == part.data() + part.size();
+  };
+  const std::string_view view = text;
+  const std::size_t x = view.find('x');
+  PeMachine parsed = machine;
+  if (x == std::string_view::npos || !whole(view.substr(0, x), parsed.cols) || !whole(view.substr(x + 1), parsed.rows))
+    throw OptionError("--pe-grid '" + text + "' is not COLSxROWS: give the PE columns and rows as powers of two "
+                      "joined by x, e.g. 128x128");
+  machine = parsed;
+}
+
+std::string peGridText(const PeMachine& machine) {
+  return std::to_string(machine.cols) + "x" + std::to_string(machine.rows);
 }
 
 const char* toString(Projection projection) {

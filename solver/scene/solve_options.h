@@ -14,10 +14,19 @@ enum class EffectsMode { Auto, All };
 // Whether patches are cut into elements that receive (solver/meshing/elements.h).
 enum class Subdivide { Off, Uniform };
 
+// The mesh back end's emulated machine: PE columns x rows, powers of two (the mesh sorts on its
+// torus), and each PE's memory (the paper's MP-1: 64 x 64 PEs of 16 KB).
+struct PeMachine {
+  int cols = 64;
+  int rows = 64;
+  int memoryKb = 16;
+};
+
 struct SolveOptions {
   Backend backend = Backend::Native;
   Projection projection = Projection::Plane;
   MappingKind mapping = MappingKind::Hierarchical;  // mesh backend only
+  PeMachine machine;                                // mesh backend only: --pe-grid, --pe-memory
   int resolution = 128;    // N: the single plane (or each hemicube face) is N x N pixels, 16..2048
   double ratio = 3.0;      // half-side of the single plane at height 1 (the paper's ratio 3)
   int shooters = 1;        // k: shooters per iteration, all shot from the same state
@@ -64,6 +73,10 @@ const char* toString(EffectsMode mode);
 EffectsMode parseEffects(const std::string& text);    // throws OptionError
 // --cells: "auto" (find the rooms and solve them cell by cell, docs/cells.md) is true, "off" false.
 bool parseCells(const std::string& text);             // throws OptionError
+// --pe-grid COLSxROWS into machine.cols and rows (checked by validateOptions); throws OptionError
+// naming the form when the text is not two whole numbers joined by x.
+void parsePeGrid(const std::string& text, PeMachine& machine);
+std::string peGridText(const PeMachine& machine);  // "64x64"
 const char* toString(Subdivide subdivide);
 Subdivide parseSubdivide(const std::string& text);    // throws OptionError
 

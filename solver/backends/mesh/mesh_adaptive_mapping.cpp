@@ -14,7 +14,7 @@ using emu::Plural;
 
 // Loads per pixel along one axis: PE p stands for pixel p.
 std::vector<double> axisLoads(emu::MeshMachine& m, const MeshShot& shot,
-                              const emu::PeArray<PatchRecord>& patchesOnPe, int patches,
+                              const emu::PeArray<PatchRecord>& patchesOnPe,
                               int resolution, bool alongRows) {
   Plural<double> difference(m, 0.0, "load differences");
   Plural<double> weight(m, 0.0, "description weight");
@@ -27,9 +27,9 @@ std::vector<double> axisLoads(emu::MeshMachine& m, const MeshShot& shot,
         for (int pe = 0; pe < m.size(); ++pe) {
           sends[pe] = false;
           if (slot >= patchesOnPe.count(pe)) continue;
-          const int e = q * patches + patchesOnPe.at(pe, slot).patch;
-          if (!shot.projected[e]) continue;
-          const PolygonSetup& s = shot.setups[e];
+          const PatchProjection& p = shot.projection(pe, slot, q);
+          if (!p.projected) continue;
+          const PolygonSetup& s = p.setup;
           const int begin = alongRows ? s.rowBegin : s.columnBegin;
           const int end = alongRows ? s.rowEnd : s.columnEnd;
           const int across = alongRows ? s.columnEnd - s.columnBegin : s.rowEnd - s.rowBegin;
@@ -54,14 +54,14 @@ std::vector<double> axisLoads(emu::MeshMachine& m, const MeshShot& shot,
 }  // namespace
 
 PlaneMapping adaptiveMapping(emu::MeshMachine& m, const MeshShot& shot,
-                             const emu::PeArray<PatchRecord>& patchesOnPe, int patches,
+                             const emu::PeArray<PatchRecord>& patchesOnPe,
                              int resolution) {
   if (resolution > m.size())
     throw OptionError("--mapping adaptive measures loads with one PE per pixel row, so it needs a "
                       "resolution of at most " + std::to_string(m.size()) + " on this mesh; use a lower "
                       "--resolution or another --mapping");
-  const auto rowLoads = axisLoads(m, shot, patchesOnPe, patches, resolution, true);
-  const auto columnLoads = axisLoads(m, shot, patchesOnPe, patches, resolution, false);
+  const auto rowLoads = axisLoads(m, shot, patchesOnPe, resolution, true);
+  const auto columnLoads = axisLoads(m, shot, patchesOnPe, resolution, false);
   return {AxisMapping::fromLoads(columnLoads, m.grid().cols), AxisMapping::fromLoads(rowLoads, m.grid().rows)};
 }
 

@@ -12,7 +12,7 @@ namespace radmesh {
 
 // Throws OptionError when the plane has more pixel rows than the mesh has PEs.
 PlaneMapping adaptiveMapping(emu::MeshMachine& machine, const MeshShot& shot,
-                             const emu::PeArray<PatchRecord>& patchesOnPe, int patches,
+                             const emu::PeArray<PatchRecord>& patchesOnPe,
                              int resolution);
 
 }  // namespace radmesh

@@ -9,6 +9,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "emulator/memory_ledger.h"
 #include "emulator/reduce.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
 #include "solver/scene/scene_error.h"
@@ -36,6 +37,14 @@ emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendO
   return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware};
 }
 
+// The emulator's fix speaks of its MachineConfig; a user sets the machine with flags.
+[[noreturn]] void refuseMachine(const emu::MemoryBudgetError& e) {
+  const std::string what = e.what();
+  throw OptionError(what.substr(0, what.find(" Fix:")) +
+                    " Fix: give each PE more memory (a larger --pe-memory KB) or spread the work over more PEs (a "
+                    "larger --pe-grid)");
+}
+
 // A patch's claim to shoot next, ordered as the solver orders shooters: more unshot power first,
 // then the lower tie rank.
 struct ShooterClaim {
@@ -47,6 +56,10 @@ struct ShooterClaim {
 };
 
 }  // namespace
+
+MeshBackendOptions meshBackendOptions(const SolveOptions& options) {
+  return {options.mapping, options.machine.rows, options.machine.cols, std::int64_t{options.machine.memoryKb} * 1024};
+}
 
 MeshBackend::MeshBackend(const Scene& scene, const std::vector<Patch>& patches,
                          const SolveOptions& options, const MeshBackendOptions& mesh)
@@ -64,11 +77,15 @@ MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches, const 
       hostPool_(options.threads) {
   layout_ = {static_cast<int>(receivers.size()), machine_.size()};
   // The patches spread out equally over the PE array (section 1.5); so do the elements, beside them.
-  for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
   shooterLayout_ = {static_cast<int>(patches.size()), machine_.size()};
-  if (&receivers != &patches) {
-    shootersOnPe_ = std::make_unique<emu::PeArray<PatchRecord>>(machine_, "shooting patches");
-    for (int j = 0; j < shooterLayout_.patches; ++j) shootersOnPe_->push(shooterLayout_.peOf(j), PatchRecord{j});
+  try {
+    for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
+    if (&receivers != &patches) {
+      shootersOnPe_ = std::make_unique<emu::PeArray<PatchRecord>>(machine_, "shooting patches");
+      for (int j = 0; j < shooterLayout_.patches; ++j) shootersOnPe_->push(shooterLayout_.peOf(j), PatchRecord{j});
+    }
+  } catch (const emu::MemoryBudgetError& e) {
+    refuseMachine(e);
   }
   scan_ = std::make_unique<MeshScanConversion>(machine_, patches_, receivers_, patchesOnPe_, surface_.faces[0],
                                                sceneNearDepth(patches_));
@@ -110,7 +127,7 @@ auto MeshBackend::inPhase(const char* name, Work&& work) {
 }
 
 MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
-                              std::vector<std::vector<double>>* pixelFormFactors, MeshShotStats& stats) {
+                              std::vector<std::vector<double>>* pixelFormFactors, MeshShotStats& stats) try {
   MeshShot shot;
   shot.shooters.assign(shooters.begin(), shooters.end());
   shot.mapping = PlaneMapping::uniform(mesh_.mapping, options_.resolution, mesh_.peRows, mesh_.peCols);
@@ -120,7 +137,7 @@ MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
   }
   if (mesh_.mapping == MappingKind::Adaptive) {
     PhaseClock clock(machine_, stats, "adaptive mapping");
-    shot.mapping = adaptiveMapping(machine_, shot, patchesOnPe_, layout_.patches, options_.resolution);
+    shot.mapping = adaptiveMapping(machine_, shot, patchesOnPe_, options_.resolution);
   }
   ScanDepths depths = scan_->scanConvert(shot, stats);
   if (formFactors) {
@@ -135,6 +152,8 @@ MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
   stats.depthAHist = depthHistogram(stats.depthA);
   stats.depthBHist = depthHistogram(stats.depthB);
   return shot;
+} catch (const emu::MemoryBudgetError& e) {
+  refuseMachine(e);
 }
 
 void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) {
@@ -150,16 +169,22 @@ void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFac
 }
 
 FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors) {
+  // The front end reads what each patch's PE made of it on this plane.
   const int n = layout_.patches;
-  const std::size_t base = static_cast<std::size_t>(plane) * n;
+  std::vector<char> seenFromFront(n, 0);
+  std::vector<double> projectedAreaPixels(n, 0.0);
+  for (int j = 0; j < n; ++j) {
+    const PatchProjection& p = shot.projection(layout_.peOf(j), layout_.slotOf(j), plane);
+    seenFromFront[j] = p.seenFromFront;
+    if (p.projected) projectedAreaPixels[j] = p.setup.areaPixels;
+  }
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
     const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
-                                  {shot.projectedAreaPixels.data() + base, static_cast<std::size_t>(n)}};
+                                  projectedAreaPixels};
     refineSubPixelReceivers(projected, hostPool_, formFactors);
   }
-  return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors,
-                              {shot.seenFromFront.data() + base, static_cast<std::size_t>(n)});
+  return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors, seenFromFront);
 }
 
 // The running counts are plain numbers: their bytes are the state, doubles bitwise.

@@ -25,6 +25,9 @@ struct MeshBackendOptions {
   std::int64_t memoryBudgetBytes = 16 * 1024;
 };
 
+// The mapping and the machine SolveOptions choose (--mapping, --pe-grid, --pe-memory).
+MeshBackendOptions meshBackendOptions(const SolveOptions& options);
+
 class MeshBackend final : public FormFactorBackend {
  public:
   // Throws OptionError for invalid options, a projection other than the single plane (the

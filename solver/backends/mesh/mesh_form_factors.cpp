@@ -49,6 +49,7 @@ std::vector<std::vector<double>> meshFormFactors(emu::MeshMachine& m, const Mesh
   const int planes = static_cast<int>(shot.shooters.size());
   const int n = layout.patches;
   const int perPe = nextPowerOfTwo(planes * scan.pixelsPerPlane());
+  // The plane's delta form factors depend on its resolution alone: every process holds them.
   const std::vector<double>& deltaFormFactor = surface.deltaFormFactors[0];
   const int width = surface.faces[0].width;
 

@@ -47,31 +47,27 @@ MeshScanConversion::MeshScanConversion(emu::MeshMachine& machine, const std::vec
       zBuffer_(machine, "item buffer pixels") {}
 
 void MeshScanConversion::project(MeshShot& shot) {
-  const int n = static_cast<int>(patches_.size());
   const int planes = static_cast<int>(shot.shooters.size());
-  const std::size_t entries = static_cast<std::size_t>(planes) * n;
-  shot.setups.assign(entries, PolygonSetup{});
-  shot.projected.assign(entries, 0);
-  shot.seenFromFront.assign(entries, 0);
-  shot.projectedAreaPixels.assign(entries, 0.0);
-  // Each PE projects its own patches onto every plane of the shot; it writes only its patches'
-  // entries, so the PEs can run on any number of host threads.
+  shot.firstSlot.assign(machine_.size(), 0);
+  for (int pe = 1; pe < machine_.size(); ++pe)
+    shot.firstSlot[pe] = shot.firstSlot[pe - 1] + patchesOnPe_.count(pe - 1);
+  const int slots = shot.firstSlot.back() + patchesOnPe_.count(machine_.size() - 1);
+  shot.projections.assign(static_cast<std::size_t>(slots) * planes, PatchProjection{});
+  // Each PE projects its own patches onto every plane of the shot into its own memory, so the PEs
+  // can run on any number of host threads.
   const AluCost cost{kProjectFlopsPerPatch * planes * patchesOnPe_.maxCount(), 0.0};
   machine_.compute(cost, [&](int pe) {
-    for (const PatchRecord& record : patchesOnPe_.list(pe))
+    for (int slot = 0; slot < patchesOnPe_.count(pe); ++slot)
       for (int q = 0; q < planes; ++q) {
-        const int j = record.patch;
+        const int j = patchesOnPe_.at(pe, slot).patch;
         const int shooter = shot.shooters[q];
         if (j == shooter && &shooters_ == &patches_) continue;
         // The projection stage's own functions, as the native back end calls them.
         const std::optional<LocalPolygon> local = inShooterView(shooters_[shooter], patches_[j]);
         if (!local) continue;
-        const std::size_t e = static_cast<std::size_t>(q) * n + j;
-        shot.seenFromFront[e] = local->seenFromFront();
-        if (setUpProjection(*local, face_, nearDepth_, j, rank_[j], shot.setups[e])) {
-          shot.projected[e] = 1;
-          shot.projectedAreaPixels[e] = shot.setups[e].areaPixels;
-        }
+        PatchProjection& p = shot.projection(pe, slot, q);
+        p.seenFromFront = local->seenFromFront();
+        p.projected = setUpProjection(*local, face_, nearDepth_, j, rank_[j], p.setup);
       }
   });
 }
@@ -109,7 +105,6 @@ ScanDepths MeshScanConversion::scanConvert(const MeshShot& shot, MeshShotStats& 
 }
 
 void MeshScanConversion::routeToUpperLeft(const MeshShot& shot, int pass, int passes, ScanDepths& depths) {
-  const int n = static_cast<int>(patches_.size());
   const emu::PeGrid& grid = machine_.grid();
   descriptions_.releaseAll();  // each pass starts with the PEs' memory as the last one found it
   Plural<Description> message(machine_, {}, "outgoing description");
@@ -122,12 +117,11 @@ void MeshScanConversion::routeToUpperLeft(const MeshShot& shot, int pass, int pa
       for (int pe = 0; pe < grid.size(); ++pe) {
         sends[pe] = false;
         if (slot >= patchesOnPe_.count(pe)) continue;
-        const int j = patchesOnPe_.at(pe, slot).patch;
-        const int e = q * n + j;
-        if (!shot.projected[e] || j % passes != pass) continue;
-        const PolygonSetup& s = shot.setups[e];
+        const PatchProjection& p = shot.projection(pe, slot, q);
+        if (!p.projected || patchesOnPe_.at(pe, slot).patch % passes != pass) continue;
+        const PolygonSetup& s = p.setup;
         sends[pe] = true;
-        message[pe] = {e, shot.mapping.rows.stepsToCover(s.rowBegin, s.rowEnd)};
+        message[pe] = {s, q, shot.mapping.rows.stepsToCover(s.rowBegin, s.rowEnd)};
         destination[pe] = grid.index(shot.mapping.rows.peOf(s.rowBegin),
                                      shot.mapping.columns.peOf(s.columnBegin));
       }
@@ -174,9 +168,8 @@ void MeshScanConversion::resetItemBuffers(const MeshShot& shot) {
 }
 
 int MeshScanConversion::zBuffer(const MeshShot& shot, int pe, const Description& d) {
-  const int n = static_cast<int>(patches_.size());
-  const PolygonSetup& s = shot.setups[d.setup];
-  const int base = d.setup / n * pixelsPerPlane();
+  const PolygonSetup& s = d.setup;
+  const int base = d.plane * pixelsPerPlane();
   const auto rows = shot.mapping.rows.pixelsOf(machine_.grid().row(pe));
   const auto columns = shot.mapping.columns.pixelsOf(machine_.grid().col(pe));
   int tests = 0;
@@ -202,10 +195,13 @@ int MeshScanConversion::zBufferAndKeep(const MeshShot& shot, int pe, Steps steps
   const auto list = descriptions_.list(pe);
   int kept = 0;
   int tests = 0;
-  for (const Description& d : list) {
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    Description& d = list[i];
     tests += zBuffer(shot, pe, d);
-    const int left = steps(d);
-    if (left > 0) list[kept++] = {d.setup, left};
+    d.stepsLeft = steps(d);
+    if (d.stepsLeft <= 0) continue;
+    if (static_cast<std::size_t>(kept) != i) list[kept] = d;
+    ++kept;
   }
   descriptions_.truncate(pe, kept);
   return tests;
@@ -219,8 +215,7 @@ void MeshScanConversion::zBufferStep(const MeshShot& shot, bool first) {
   machine_.forEachActive(kPixelTestFlops * most, [&](int pe) {
     if (first) {
       pixelTests_[pe] = zBufferAndKeep(shot, pe, [&](const Description& d) {
-        const PolygonSetup& s = shot.setups[d.setup];
-        return shot.mapping.columns.stepsToCover(s.columnBegin, s.columnEnd);
+        return shot.mapping.columns.stepsToCover(d.setup.columnBegin, d.setup.columnEnd);
       });
     } else {
       pixelTests_[pe] = zBufferAndKeep(shot, pe, [](const Description& d) { return d.stepsLeft - 1; });

@@ -7,6 +7,7 @@
 // spread right, and every PE z-buffers each description passing through against the pixels it
 // owns (the solver's covers / inverseDepthAt / closer, so the item buffer is the native one).
 // Several shooters' planes share the mesh at once, each PE holding its pixels of every plane.
+#include <type_traits>
 #include <vector>
 
 #include "emulator/pe_array.h"
@@ -21,17 +22,28 @@
 namespace radmesh {
 
 // A patch on its PE: the patch index stands for its geometry and shooter-frame matrix, which
-// never change (see the WireSize below).
+// never change (see the WireSize below). Every process of a distributed machine loads the scene,
+// so this static geometry (and the depth-tie ranks made from it) is replicated, not sent.
 struct PatchRecord {
   int patch = -1;
 };
 
-// A projected patch's description in flight: it stands for the PolygonSetup the projecting PE
-// made (immutable once made), plus the shift steps it still has to travel.
+// What a PE made of one of its patches for one plane of the shot, kept in that PE's memory (not
+// charged to its budget: the ledger counts what the scan conversion holds, as it always has).
+struct PatchProjection {
+  PolygonSetup setup;  // valid where projected
+  bool projected = false;
+  bool seenFromFront = false;
+};
+
+// A projected patch's description in flight: the PolygonSetup its projecting PE made travels
+// with it, so a PE z-buffers from the description it holds and its own memory alone.
 struct Description {
-  int setup = -1;      // plane * patches + patch: this shot's description table
+  PolygonSetup setup;
+  int plane = 0;  // which of the shot's planes it lies on
   int stepsLeft = 0;
 };
+static_assert(std::is_trivially_copyable_v<Description>, "descriptions travel between processes as bytes");
 
 // One item-buffer pixel on a PE.
 struct ZEntry {
@@ -49,8 +61,11 @@ template <>
 struct WireSize<PatchRecord> {
   static constexpr std::int64_t bytes = 29 * 4 + 4;
 };
-// Up to 5 projected vertices (a quad clipped once) as float pairs, the 1/depth plane (3 floats),
-// the patch id and depth-tie rank, a 4 x 16-bit bounding box, a 16-bit step count.
+// The set-up as the MP-1 would send it: up to 5 projected vertices (a quad clipped once) as float
+// pairs, the 1/depth plane (3 floats), the patch id and depth-tie rank, a 4 x 16-bit bounding box
+// (coordinates below 2048 leave 5 bits each spare, which carry the plane), a 16-bit step count.
+// The host carries the whole PolygonSetup (doubles, edges set up) so that the pixels stay the
+// native back end's bit for bit.
 template <>
 struct WireSize<Description> {
   static constexpr std::int64_t bytes = 5 * 8 + 12 + 4 + 4 + 8 + 2;
@@ -68,10 +83,17 @@ namespace radmesh {
 struct MeshShot {
   std::vector<int> shooters;
   PlaneMapping mapping;
-  std::vector<PolygonSetup> setups;        // [plane * patches + patch]; valid where projected
-  std::vector<char> projected;             // [plane * patches + patch]
-  std::vector<char> seenFromFront;         // [plane * patches + patch]
-  std::vector<double> projectedAreaPixels; // [plane * patches + patch]
+  // Each PE's projections of its own patches: slot s of PE pe on plane q is
+  // projections[(firstSlot[pe] + s) * planes + q]. Only that PE reads them (and the front end,
+  // reading PE memory back).
+  std::vector<PatchProjection> projections;
+  std::vector<int> firstSlot;  // [pe]
+
+  PatchProjection& projection(int pe, int slot, int plane) { return projections[index(pe, slot, plane)]; }
+  const PatchProjection& projection(int pe, int slot, int plane) const { return projections[index(pe, slot, plane)]; }
+  std::size_t index(int pe, int slot, int plane) const {
+    return (static_cast<std::size_t>(firstSlot[pe]) + slot) * shooters.size() + plane;
+  }
 };
 
 // Stage-(a) and stage-(b) depths per PE, counted from what arrived, summed over the passes.
@@ -89,7 +111,7 @@ class MeshScanConversion {
                      const std::vector<Patch>& patches, const emu::PeArray<PatchRecord>& patchesOnPe,
                      const ProjectionFace& face, double nearDepth);
 
-  // Projection phase: fills shot.setups and friends (shot.shooters set by the caller).
+  // Projection phase: fills shot.projections (shot.shooters set by the caller).
   void project(MeshShot& shot);
 
   // Stage (a), stage (b) and the rightward spread with z-buffering into the per-PE item buffers.

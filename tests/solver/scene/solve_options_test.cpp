@@ -67,6 +67,38 @@ TEST(SolveOptions, RefusalsNameTheFlagAndTheRange) {
   EXPECT_THAT(refusal(o), HasSubstr("--threads -1"));
 }
 
+TEST(SolveOptions, PeGridParsesPowersOfTwoAndRefusesOthersByName) {
+  PeMachine m;
+  parsePeGrid("256x128", m);
+  EXPECT_EQ(m.cols, 256);
+  EXPECT_EQ(m.rows, 128);
+  EXPECT_EQ(peGridText(m), "256x128");
+  for (const char* bad : {"64", "x64", "64x", "64x64x2", "ax64", "64 x 64"}) {
+    PeMachine unchanged;
+    try {
+      parsePeGrid(bad, unchanged);
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const OptionError& e) {
+      EXPECT_THAT(e.what(), AllOf(HasSubstr(std::string("--pe-grid '") + bad + "'"), HasSubstr("e.g. 128x128")));
+    }
+    EXPECT_EQ(peGridText(unchanged), "64x64") << bad;
+  }
+  SolveOptions o;
+  for (const char* good : {"2x2", "128x128", "256x256", "1024x64"}) {
+    parsePeGrid(good, o.machine);
+    EXPECT_NO_THROW(validateOptions(o)) << good;
+  }
+  for (const char* notPowerOfTwo : {"48x64", "64x0", "1x64", "2048x64", "-64x64"}) {
+    parsePeGrid(notPowerOfTwo, o.machine);
+    EXPECT_THAT(refusal(o), AllOf(HasSubstr(std::string("--pe-grid ") + notPowerOfTwo), HasSubstr("powers of two from 2 to 1024")));
+  }
+  o = {};
+  o.machine.memoryKb = 0;
+  EXPECT_THAT(refusal(o), AllOf(HasSubstr("--pe-memory 0"), HasSubstr("KB from 1 to 1048576")));
+  o.machine.memoryKb = 1024 * 1024;
+  EXPECT_NO_THROW(validateOptions(o));
+}
+
 TEST(SolveOptions, NamesRoundTripAndUnknownNamesAreRefused) {
   for (Projection p : {Projection::Plane, Projection::Hemicube, Projection::Analytic})
     EXPECT_EQ(parseProjection(toString(p)), p);
