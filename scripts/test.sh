@@ -10,13 +10,13 @@ jobs=$(nproc)
 TIMEFORMAT='   %0R s elapsed, %0U s user + %0S s system'
 
 # Ninja starts a target's compiles without waiting for the libraries it links (a folder already
-# configured keeps its generator); precompiled headers, since no ccache is in the way here.
+# configured keeps its generator).
 configure_and_build() {  # folder, targets ("all" for everything), then extra CMake options
   local dir=$1 target=$2; shift 2
   echo "== $dir: configure and build"
   local generator=()
   [ -f "$dir/CMakeCache.txt" ] || generator=(-G Ninja)
-  cmake -S . -B "$dir" "${generator[@]}" -DRADMESH_PRECOMPILE_HEADERS=ON "$@" > "$dir.log" 2>&1 || { cat "$dir.log"; exit 1; }
+  cmake -S . -B "$dir" "${generator[@]}" "$@" > "$dir.log" 2>&1 || { cat "$dir.log"; exit 1; }
   # shellcheck disable=SC2086  # the targets are words
   cmake --build "$dir" -j"$jobs" --target $target >> "$dir.log" 2>&1 || { tail -80 "$dir.log"; exit 1; }
 }
