@@ -106,7 +106,8 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
   for (const std::string& projection : args.projections) {
     for (int n : args.resolutions) {
       for (int k : args.shooters) {
-        SolveOptions o;
+        SolveOptions o = SolveFlags().options;  // `solve`'s preset and its --effects default
+        o.effects = EffectsMode::Auto;
         o.backend = backend;
         o.machine = args.machine;
         o.projection = parseProjection(projection);

@@ -3,7 +3,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config ca-certificates
+  build-essential cmake ninja-build pkg-config ca-certificates
   libglfw3-dev libosmesa6-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-glad xvfb xauth gnuplot-nox

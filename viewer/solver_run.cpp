@@ -83,7 +83,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
         throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
       run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
       run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, setup.options,
-                                                CellSolveSettings{setup.cellM, setup.exchangeShots});
+                                                CellSolveSettings{setup.cellM, setup.exchangeShots, setup.portalBins});
       run->focusOn(eye, scene_.upAxis);
     } else {
       run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), setup.options);

@@ -24,6 +24,7 @@ struct SolveSetup {
   // a step is then a round of every cell's shots and a portal exchange.
   bool cells = false;
   int exchangeShots = 16;  // with cells: the camera's cell's shots a round (CellSolveSettings)
+  int portalBins = 4;      // with cells: direction bins of light crossing a portal (CellSolveSettings)
 };
 
 // One point per iteration of the curves the panel draws.

@@ -6,6 +6,8 @@
 #include <exception>
 #include <thread>
 
+#include "cli/solve_flags.h"
+#include "solver/radiosity/cell_solver.h"
 #include "solver/scene/scene_error.h"
 #include "solver/scene/sun.h"
 #include "viewer/viewer_app.h"
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
                  "distance d shoots this >> d)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
   app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")->capture_default_str();
   app.add_option("--resume", args.resume, "Go on from a checkpoint of the same scene and options (radmesh solve "
                  "--checkpoint, or the panel's Save checkpoint)");
@@ -92,6 +95,7 @@ int main(int argc, char** argv) {
     if (args.steps > 0 && args.frames > 0)
       throw radmesh::OptionError("--steps and --frames are two different runs: give one");
     args.setup.cells = radmesh::parseCells(cells);
+    radmesh::checkPortalBins(args.setup.portalBins);
     // The cells solve runs on the host's CPU (docs/cells.md), and keeps no checkpoint.
     if (args.setup.cells && backendGiven->count() == 0) backend = "native";
     if (args.setup.cells && !args.resume.empty())

@@ -145,6 +145,12 @@ struct CellSolver::State {
   std::vector<Rgb> gatherPatches(PerCell perCell) const;
 };
 
+void checkPortalBins(int portalBins) {
+  if (portalBins < 0 || portalBins > kMaxPortalBins)
+    throw OptionError(fmt::format("--portal-bins {} is out of range: give 0 or 1 (diffuse) up to {} (an N x N "
+                                  "hemicube of direction bins)", portalBins, kMaxPortalBins));
+}
+
 CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const CellPartition& partition,
                        const SolveOptions& options, const CellSolveSettings& settings, CellRanks* ranks)
     : state_(std::make_unique<State>(std::move(patches), options, settings, ranks)) {
@@ -153,9 +159,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     throw OptionError("--cells auto stops on the unshot power of the whole building alone: give --until 1 with "
                       "--until-unshot (the bake preset does), not a convergence C");
   if (settings.exchangeShots < 1) throw OptionError("--exchange-shots must be at least 1");
-  if (settings.portalBins < 0 || settings.portalBins > kMaxPortalBins)
-    throw OptionError(fmt::format("--portal-bins {} is out of range: give 0 or 1 (diffuse) up to {} (an N x N "
-                                  "hemicube of direction bins)", settings.portalBins, kMaxPortalBins));
+  checkPortalBins(settings.portalBins);
   State& s = *state_;
   validatePartition(scene, s.patches.size(), partition);
   s.portalCount = static_cast<int>(partition.portals.size());

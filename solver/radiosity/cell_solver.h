@@ -32,6 +32,9 @@ struct CellSolveSettings {
   int portalBins = 4;
 };
 
+// Throws OptionError naming --portal-bins and its range for a count of bins out of it.
+void checkPortalBins(int portalBins);
+
 struct CellFigures {
   std::string name;
   int patches = 0;        // the cell's own
