@@ -37,7 +37,9 @@ nlohmann::json optionsJson(const SolveOptions& o) {
   return {{"backend", toString(o.backend)}, {"projection", toString(o.projection)}, {"mapping", toString(o.mapping)},
           {"resolution", o.resolution},     {"ratio", o.ratio},                       {"shooters", o.shooters},
           {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot},
-          {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM}};
+          {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM},
+          {"split_contrast", o.splitContrast}, {"split_shadows", o.splitShadows},
+          {"split_regather", o.splitRegatherAll ? "all" : "last"}};
 }
 
 nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
