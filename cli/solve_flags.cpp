@@ -118,11 +118,36 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
          },
          "Form-factor row cache budget in MiB (0: none)");
   cmd->add_option("--subdivide", f.subdivide,
-                  "off (patches shoot and receive) or uniform (patches shoot, their elements receive: docs/accuracy.md)")
+                  "off (patches shoot and receive), uniform (patches shoot, their elements receive) or adaptive "
+                  "(elements split where the light changes): docs/accuracy.md")
       ->capture_default_str();
   cmd->add_option("--min-element", f.options.minElementM,
-                  "With --subdivide uniform: longest element edge, metres (0: every patch cut into four)")
+                  "With --subdivide uniform: longest element edge, metres (0: every patch cut into four); with "
+                  "adaptive: no split makes elements shorter than this")
       ->capture_default_str();
+  cmd->add_option("--split-contrast", f.options.splitContrast,
+                  "With --subdivide adaptive: split neighbouring elements whose reflected radiosities differ by "
+                  "more than this fraction of the brightest element's")
+      ->capture_default_str();
+  cmd->add_option_function<std::string>(
+         "--split-shadows",
+         [&f](const std::string& text) {
+           if (text != "on" && text != "off")
+             throw OptionError("--split-shadows must be on (split elements a shadow edge crosses) or off, not '" +
+                               text + "'");
+           f.options.splitShadows = text == "on";
+         },
+         "With --subdivide adaptive: on splits elements a shadow edge crosses (default), off only by contrast");
+  cmd->add_option_function<std::string>(
+         "--split-regather",
+         [&f](const std::string& text) {
+           if (text != "last" && text != "all")
+             throw OptionError("--split-regather must be last (a split element's children receive the splitting "
+                               "iteration's shots anew, inheriting the rest) or all (every shot so far), not '" +
+                               text + "'");
+           f.options.splitRegatherAll = text == "all";
+         },
+         "With --subdivide adaptive: last (default) or all: the shots a split element's children receive anew");
   cmd->add_option("--cells", f.cells,
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
       ->capture_default_str();

@@ -55,7 +55,7 @@ void addMachineFlags(CLI::App* cmd, PeMachine& machine);
 // Adds SCENE, --strict, --sky, --sky-model, --sun and --preset --backend --cell --projection --resolution --ratio --shooters --until
 // --until-unshot --max-iterations --threads --cache-mb --cells --exchange-shots to a subcommand. --preset is applied as it
 // Adds SCENE, --strict, --up and --preset --backend --cell --projection --resolution --ratio --shooters --until
-// --until-unshot --max-iterations --threads --cache-mb --subdivide --min-element to a subcommand. --preset is applied as it
+// --until-unshot --max-iterations --threads --cache-mb --subdivide --min-element --split-contrast --split-shadows to a subcommand. --preset is applied as it
 // is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
 

@@ -37,7 +37,9 @@ nlohmann::json optionsJson(const SolveOptions& o) {
   nlohmann::json j = {{"backend", toString(o.backend)}, {"projection", toString(o.projection)}, {"mapping", toString(o.mapping)},
           {"resolution", o.resolution},     {"ratio", o.ratio},                       {"shooters", o.shooters},
           {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot},
-          {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM}};
+          {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM},
+          {"split_contrast", o.splitContrast}, {"split_shadows", o.splitShadows},
+          {"split_regather", o.splitRegatherAll ? "all" : "last"}};
   if (o.backend == Backend::Mesh) j.update({{"pe_grid", peGridText(o.machine)}, {"pe_memory_kb", o.machine.memoryKb}});
   return j;
 }

@@ -53,13 +53,34 @@ void cutTriangle(const Patch& p, int n, std::vector<Patch>& out) {
     }
 }
 
+// The four children of an element (Elements in elements.h gives their corners).
+void splitInFour(const Patch& e, std::vector<Patch>& out) {
+  const auto mid = [&](int a, int b) { return 0.5 * (e.vertices[a] + e.vertices[b]); };
+  if (e.vertexCount == 4) {
+    const Vec3 m01 = mid(0, 1), m12 = mid(1, 2), m23 = mid(2, 3), m30 = mid(3, 0), c = 0.5 * (m01 + m23);
+    for (auto corners : {std::initializer_list<Vec3>{e.vertices[0], m01, c, m30}, {m01, e.vertices[1], m12, c},
+                         {c, m12, e.vertices[2], m23}, {m30, c, m23, e.vertices[3]}})
+      out.push_back(elementOf(e, corners));
+  } else {
+    const Vec3 m01 = mid(0, 1), m12 = mid(1, 2), m20 = mid(2, 0);
+    for (auto corners : {std::initializer_list<Vec3>{e.vertices[0], m01, m20}, {m01, e.vertices[1], m12},
+                         {m20, m12, e.vertices[2]}, {m12, m20, m01}})
+      out.push_back(elementOf(e, corners));
+  }
+}
+
 }  // namespace
 
-int elementCuts(const Patch& patch, double minElementM) {
-  if (minElementM == 0.0) return 2;
+double longestEdge(const Patch& patch) {
   double longest = 0.0;
   for (int k = 0; k < patch.vertexCount; ++k)
     longest = std::max(longest, glm::length(patch.vertices[(k + 1) % patch.vertexCount] - patch.vertices[k]));
+  return longest;
+}
+
+int elementCuts(const Patch& patch, double minElementM) {
+  if (minElementM == 0.0) return 2;
+  const double longest = longestEdge(patch);
   // A patch exactly a whole number of elements long is cut that many times, not once more for rounding.
   // At most 2^20 cuts (more elements than any limit), so that a tiny minElementM is refused, not overflowed.
   return static_cast<int>(std::clamp(std::ceil(longest / minElementM * (1.0 - 1e-12)), 1.0, 1048576.0));
@@ -97,7 +118,39 @@ Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM,
     out.patchOf.resize(out.elements.size(), static_cast<int>(p));
   }
   out.first.push_back(static_cast<int>(out.elements.size()));
+  out.level.assign(out.elements.size(), 0);
   return out;
+}
+
+Elements patchesAsElements(const std::vector<Patch>& patches) {
+  Elements out;
+  out.elements = patches;
+  for (size_t p = 0; p <= patches.size(); ++p) out.first.push_back(static_cast<int>(p));
+  out.patchOf.assign(out.first.begin(), out.first.end() - 1);
+  out.level.assign(patches.size(), 0);
+  return out;
+}
+
+std::vector<int> splitElements(Elements& elements, const std::vector<char>& split) {
+  Elements out;
+  std::vector<int> origin;
+  for (size_t p = 0; p + 1 < elements.first.size(); ++p) {
+    out.first.push_back(static_cast<int>(out.elements.size()));
+    for (int e = elements.first[p]; e < elements.first[p + 1]; ++e) {
+      const size_t before = out.elements.size();
+      if (split[e])
+        splitInFour(elements.elements[e], out.elements);
+      else
+        out.elements.push_back(elements.elements[e]);
+      const size_t made = out.elements.size() - before;
+      origin.insert(origin.end(), made, e);
+      out.patchOf.insert(out.patchOf.end(), made, static_cast<int>(p));
+      out.level.insert(out.level.end(), made, elements.level[e] + (split[e] ? 1 : 0));
+    }
+  }
+  out.first.push_back(static_cast<int>(out.elements.size()));
+  elements = std::move(out);
+  return origin;
 }
 
 }  // namespace radmesh

@@ -10,10 +10,20 @@
 
 namespace radmesh {
 
+// Split elements (--subdivide adaptive): splitElements replaces an element, in place in the list,
+// by its four children, so elements stay listed patch by patch and a patch's elements tile it
+// exactly (no overlap, no gap). An element's corners are its Patch::vertices, counter-clockwise:
+// - a quad (v0 v1 v2 v3) splits at its edge midpoints m01 m12 m23 m30 and centre c = (m01 + m23) / 2
+//   into (v0 m01 c m30), (m01 v1 m12 c), (c m12 v2 m23), (m30 c m23 v3);
+// - a triangle (v0 v1 v2) into (v0 m01 m20), (m01 v1 m12), (m20 m12 v2) and the middle (m12 m20 m01).
+// A midpoint is (a + b) / 2 of the edge's two corners, which rounds the same from either side, so
+// an element split next to an unsplit one puts a vertex exactly on the unsplit one's edge (a
+// T-vertex): the display mesh finds those where an element's neighbour has a higher level.
 struct Elements {
   std::vector<Patch> elements;
   std::vector<int> patchOf;  // per element: the patch it was cut from
   std::vector<int> first;    // per patch p, its elements are [first[p], first[p + 1]); patches + 1 entries
+  std::vector<int> level;    // per element: how many splits made it from its first element (0: not split)
 };
 
 // The cuts per edge that make a patch's elements no longer than minElementM along any edge: its
@@ -31,5 +41,15 @@ double countElements(const std::vector<Patch>& patches, double minElementM);
 // finite and at least 0, or that would make more than maxElements elements.
 Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM,
                           std::size_t maxElements = 20'000'000);
+
+// Every patch its own single element, level 0: where adaptive subdivision starts.
+Elements patchesAsElements(const std::vector<Patch>& patches);
+
+// The longest edge of a patch or element, metres.
+double longestEdge(const Patch& patch);
+
+// Splits the elements marked in `split` (one flag per element) into four children each, in place
+// (see Elements above). Returns, per element after the split, the element it was or came from.
+std::vector<int> splitElements(Elements& elements, const std::vector<char>& split);
 
 }  // namespace radmesh

@@ -16,6 +16,7 @@
 #include "solver/formfactors/light_rows.h"
 #include "solver/formfactors/near_field.h"
 #include "solver/meshing/elements.h"
+#include "solver/radiosity/adaptive_split.h"
 #include "solver/projection/scan_conversion.h"
 #include "solver/radiosity/progressive_solver_state.h"
 #include "solver/radiosity/solver_input.h"
@@ -63,9 +64,11 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   if (!s.plan.occlusion && s.options.backend == Backend::Native) s.options.projection = Projection::Analytic;
   const size_t n = s.patches.size();
   if (s.subdivided()) {
-    s.elements = subdivideUniform(s.patches, options.minElementM);
+    s.elements = s.adaptive() ? patchesAsElements(s.patches) : subdivideUniform(s.patches, options.minElementM);
     for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
     if (s.plan.nearField) s.elementNearReceivers = findNearFieldReceivers(s.patches, s.elements.elements);
+    if (s.adaptive()) s.neighbours = elementNeighbours(s.elements);
+    if (s.adaptive()) s.shotTotal.assign(s.patches.size(), Rgb(0.0));
   }
   s.rho.resize(n);
   s.radiosity.resize(n);
@@ -119,7 +122,16 @@ void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, Itera
   }
   if (missing.empty()) return;
   std::vector<FormFactorRow> computed;
-  backend->computeRows(missing, computed);
+  computeFreshRows(missing, computed);
+  for (size_t m = 0; m < missing.size(); ++m) {
+    if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
+    rows[missingSlot[m]] = std::move(computed[m]);
+  }
+}
+
+// Rows from the back end, corrected in the near field.
+void ProgressiveSolver::State::computeFreshRows(const std::vector<int>& shooters, std::vector<FormFactorRow>& computed) {
+  backend->computeRows(shooters, computed);
   if (plan.nearField)
     for (FormFactorRow& row : computed) {
       if (subdivided())
@@ -127,10 +139,6 @@ void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, Itera
       else
         correctNearField(row, patches, plan.nearReceivers[row.shooter]);
     }
-  for (size_t m = 0; m < missing.size(); ++m) {
-    if (options.formFactorCacheBytes > 0) cache.insert(computed[m]);
-    rows[missingSlot[m]] = std::move(computed[m]);
-  }
 }
 
 // Eq. 1.2 for every shooter, all from the same state: B_j += dB_i rho_j F_ij A_i / A_j.
@@ -143,6 +151,8 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
     unshotPowerW[i] = 0.0;
     ++timesShot[i];
     record.shotPowerW += channelSum(shotPower[s]);
+    shots.push_back({i, -1, shotPower[s]});
+    if (adaptive()) shotTotal[i] += shotPower[s];
   }
   for (size_t s = 0; s < shooters.size(); ++s) {
     std::vector<Rgb>& bins = portalUnshot[shooters[s]];
@@ -167,9 +177,11 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
     if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
     const FormFactorRow row = lightRow(scene, scene.lights[k], receivers(), options.resolution, nearDepth, pool);
     deliver(row, lightPower[k]);
+    shots.push_back({-1, static_cast<int>(k), lightPower[k]});
     ledger.lightOutside += channelSum(lightPower[k]) * (row.escapedFraction() + row.backFaces);
     record.shotPowerW += channelSum(lightPower[k]);
   }
+  lightsShot = true;
   updateUnshot();
   record.capturedFraction = 1.0;
 }
@@ -215,6 +227,8 @@ const IterationRecord& ProgressiveSolver::step() {
 
   IterationRecord record;
   record.iteration = static_cast<int>(s.history.size()) + 1;
+  s.shots.clear();
+  if (s.adaptive()) s.iterationGain.assign(s.elements.elements.size(), Rgb(0.0));
   if (s.history.empty() && !s.scene.lights.empty()) {
     // The lights shoot first, once: C is measured against the strongest of them and the emitters.
     s.firstShotPowerW = *std::max_element(s.unshotPowerW.begin(), s.unshotPowerW.end());
@@ -229,6 +243,7 @@ const IterationRecord& ProgressiveSolver::step() {
     s.shoot(record.shooters, record);
     s.convergence = 1.0 - strongestW / s.firstShotPowerW;
   }
+  if (s.adaptive()) s.refine(record);
   s.exhausted = std::none_of(s.unshotPowerW.begin(), s.unshotPowerW.end(), [](double p) { return p > 0.0; });
   if (s.exhausted) s.convergence = 1.0;  // nothing is left to shoot: the solution is exact
 

@@ -32,6 +32,7 @@ struct IterationRecord {
   int reusedRowsTotal = 0;  // the same, over all iterations so far
   int cacheHits = 0;        // rows served by the form-factor cache this iteration
   Ledger ledger;            // after this iteration
+  int elementsSplit = 0;    // --subdivide adaptive: elements split after this iteration's shots
   // What this iteration did on the back end's machine (the mesh back end: the emulated cost of
   // shooter selection, the shot and the radiosity update, and the item-buffer depths, none on a
   // cache hit, where nothing is projected). Null on a back end without figures.

@@ -51,6 +51,18 @@ struct ProgressiveSolver::State {
   Elements elements;
   std::vector<Rgb> elementRadiosity;
   std::vector<std::vector<int>> elementNearReceivers;  // per shooter patch, its near elements
+  // Adaptive subdivision (adaptive_refinement.cpp): this iteration's shots, what each element
+  // received from them (reflected, W/m^2 per channel), and each element's neighbours.
+  struct Shot {
+    int patch = -1;  // the shooting patch, or -1 for scene light `light`
+    int light = -1;
+    Rgb power{0.0};
+  };
+  std::vector<Shot> shots;
+  bool lightsShot = false;
+  std::vector<Rgb> shotTotal;  // per patch: all it has shot (adaptive, --split-regather all)
+  std::vector<Rgb> iterationGain;
+  std::vector<std::vector<int>> neighbours;
   double firstShotPowerW = 0.0;
   double convergence = 0.0;
   bool exhausted = false;
@@ -66,9 +78,14 @@ struct ProgressiveSolver::State {
   void deliverToReceivers(const FormFactorRow& row, const Rgb& power);
   void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins);
   void updateUnshot();
+  void computeFreshRows(const std::vector<int>& shooters, std::vector<FormFactorRow>& computed);
+  void refine(IterationRecord& record);
+  void regather(const std::vector<int>& origin, const std::vector<char>& split,
+                const std::vector<Rgb>& parentRadiosity, const std::vector<Rgb>& parentGain);
   template <typename Value, typename Incident> void receive(const FormFactorRow& row, Incident incidentOf);
   template <typename Value, typename Incident> void receiveOnElements(const FormFactorRow& row, Incident incidentOf);
   bool subdivided() const { return options.subdivide != Subdivide::Off; }
+  bool adaptive() const { return options.subdivide == Subdivide::Adaptive; }
   const std::vector<Patch>& receivers() const { return subdivided() ? elements.elements : patches; }
   Rgb ambient() const;
   template <typename Incident> void passToPortals(const FormFactorRow& row, Incident incidentOf);
@@ -112,6 +129,7 @@ void ProgressiveSolver::State::receiveOnElements(const FormFactorRow& row, Incid
     const Value incident = incidentOf(r);
     reflected[r] = solver_state::channels<Value>(rho[elements.patchOf[e]]) * incident;
     elementRadiosity[e] += Rgb(reflected[r] / elements.elements[e].areaM2);
+    if (adaptive()) iterationGain[e] += Rgb(reflected[r] / elements.elements[e].areaM2);
     return solver_state::channelSum(incident - reflected[r]);
   });
   for (size_t r = 0; r < row.receivers.size(); ++r) {

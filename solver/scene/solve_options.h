@@ -12,7 +12,7 @@ enum class MappingKind { Hierarchical, CutAndStack, Adaptive };
 // Which effects the solver simulates (solver/radiosity/effects_plan.h).
 enum class EffectsMode { Auto, All };
 // Whether patches are cut into elements that receive (solver/meshing/elements.h).
-enum class Subdivide { Off, Uniform };
+enum class Subdivide { Off, Uniform, Adaptive };
 
 // The mesh back end's emulated machine: PE columns x rows, powers of two (the mesh sorts on its
 // torus), and each PE's memory (the paper's MP-1: 64 x 64 PEs of 16 KB).
@@ -47,8 +47,21 @@ struct SolveOptions {
   EffectsMode effects = EffectsMode::All;
   // Uniform: patches shoot, elements receive (substructuring, Cohen et al. 1986): each patch is cut
   // into elements no longer than minElementM along any edge. Off: patches shoot and receive.
+  // Adaptive (Cohen, Chen, Wallace & Greenberg 1988): each patch starts as one element, and an
+  // element splits in four where the light changes across it (docs/accuracy.md), down to elements
+  // no shorter than minElementM along their longest edge.
   Subdivide subdivide = Subdivide::Off;
-  double minElementM = 0.0;  // 0: every patch cut once along each edge (into four)
+  double minElementM = 0.0;  // uniform: 0 cuts every patch once along each edge (into four); adaptive: > 0
+  // Adaptive: an element splits where its reflected radiosity and a neighbour's differ by more
+  // than this fraction of the brightest element's (the gradient criterion), ...
+  double splitContrast = 0.1;
+  // ... and where a strong shooter's visibility changes across it (its corners disagree on which
+  // points of the shooter they see: a shadow edge).
+  bool splitShadows = true;
+  // Adaptive: what a split element's children receive anew by their own form factors. False
+  // (--split-regather last): the shots of the iteration that split it; what came before they
+  // inherit from the parent, evenly. True (all): every shot so far (one row per past shooter).
+  bool splitRegatherAll = false;
 };
 
 // Named settings (docs/accuracy.md): Bake, what a user can trust (the CLI's default: the

@@ -41,10 +41,32 @@ TEST(CliSubdivide, StatsInfoAndTheBakeCountTheSameElements) {
   EXPECT_EQ(o["subdivide"], "off");
 }
 
+TEST(CliSubdivide, AdaptiveSplitsAndStatsCountTheElements) {
+  const std::string stats = tempPath("adaptive-stats.json");
+  const CommandRun run = radmesh("solve cornell --cell 0.2 --subdivide adaptive --min-element 0.025 --split-contrast 0.4 "
+                                 "--resolution 64 --max-iterations 10 --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(stats);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["subdivide"], "adaptive");
+  EXPECT_EQ(j["split_contrast"], 0.4);
+  EXPECT_EQ(j["split_shadows"], true);
+  EXPECT_GT(j["elements"].get<int>(), j["patches"].get<int>());  // some elements split
+  EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-12);
+  EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
+}
+
 TEST(CliSubdivide, WhatIsNotBuiltYetIsRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve cornell --subdivide adaptive");
   EXPECT_EQ(run.exitCode, 2);
-  EXPECT_NE(run.output.find("--subdivide adaptive is not built yet"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("--subdivide adaptive splits elements down to --min-element"), std::string::npos)
+      << run.output;
+  run = radmesh("solve cornell --subdivide adaptive --min-element 0.1 --backend mesh");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("not built on the mesh back end"), std::string::npos) << run.output;
+  run = radmesh("solve cornell --subdivide adaptive --min-element 0.1 --split-shadows maybe");
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("--split-shadows"), std::string::npos) << run.output;
   run = radmesh("solve cornell --subdivide uniform --min-element -1");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--min-element -1"), std::string::npos) << run.output;

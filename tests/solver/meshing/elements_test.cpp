@@ -66,5 +66,28 @@ TEST(Elements, RefusesAMinElementThatIsNegativeNaNOrMakesTooMany) {
   EXPECT_EQ(subdivideUniform(patches, 0.1, 100).elements.size(), 100u);
 }
 
+TEST(Elements, SplitReplacesAnElementInPlaceByFourChildren) {
+  const std::vector<Patch> patches = {unitSquare(), rightTriangle()};
+  Elements e = patchesAsElements(patches);
+  EXPECT_EQ(e.first, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(e.patchOf, (std::vector<int>{0, 1}));
+  EXPECT_EQ(e.level, (std::vector<int>{0, 0}));
+  EXPECT_EQ(splitElements(e, {0, 1}), (std::vector<int>{0, 1, 1, 1, 1}));
+  EXPECT_EQ(e.first, (std::vector<int>{0, 1, 5}));
+  EXPECT_EQ(e.level, (std::vector<int>{0, 1, 1, 1, 1}));
+  expectCutsOf(patches[1], e, 1, 4);
+  // The middle triangle joins the edge midpoints (m12 m20 m01).
+  EXPECT_EQ(e.elements[4].vertices[0], Vec3(0.5, 0.5, 0));
+  EXPECT_EQ(e.elements[4].vertices[1], Vec3(0, 0.5, 0));
+  EXPECT_EQ(e.elements[4].vertices[2], Vec3(0.5, 0, 0));
+  // Split again: the square's children by the quadtree, the first of them at v0.
+  EXPECT_EQ(splitElements(e, {1, 0, 0, 0, 0}), (std::vector<int>{0, 0, 0, 0, 1, 2, 3, 4}));
+  expectCutsOf(patches[0], e, 0, 4);
+  EXPECT_EQ(e.elements[0].vertices[2], Vec3(0.5, 0.5, 0));
+  EXPECT_EQ(e.elements[2].vertices[2], Vec3(1, 1, 0));
+  EXPECT_EQ(e.level, (std::vector<int>{1, 1, 1, 1, 1, 1, 1, 1}));
+  EXPECT_DOUBLE_EQ(longestEdge(e.elements[1]), 0.5);
+}
+
 }  // namespace
 }  // namespace radmesh::test

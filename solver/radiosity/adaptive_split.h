@@ -1,0 +1,43 @@
+#pragma once
+// Where adaptive subdivision (--subdivide adaptive, Cohen, Chen, Wallace & Greenberg 1988) splits
+// an element: the gradient criterion (its light differs too much from a neighbour's) and the shadow
+// criterion (a shooter's visibility changes across it). Pure functions of the geometry, the rows
+// and the radiosities: the solver (progressive_solver.cpp) applies them after each iteration.
+#include <vector>
+
+#include "solver/formfactors/form_factor_row.h"
+#include "solver/meshing/elements.h"
+
+namespace radmesh {
+
+// Only shots carrying at least this fraction of the first shot's power are checked for shadow
+// edges: weaker shooters cast soft shadows the gradient criterion sees, and the check costs rays.
+inline constexpr double kShadowShotFraction = 0.05;
+
+// Per element, its neighbours: the elements of the same scene polygon whose bounding boxes touch
+// its own (sharing an edge or a corner, or, between triangles, lying close), ascending.
+std::vector<std::vector<int>> elementNeighbours(const Elements& elements);
+
+// Whether an element is long enough to split: its children (half its edges) no shorter than
+// minElementM along their longest edge.
+bool splittable(const Patch& element, double minElementM);
+
+// The gradient criterion: marks (split[e] = 1) both elements of every neighbouring pair whose
+// reflected radiosities (W/m^2 summed over RGB) differ by more than `contrast` times the brightest
+// element's: a step the eye would see in a picture exposed for the brightest, where a relative
+// step would also split the dim corners, whose errors no picture shows. Marks only splittable elements.
+void markContrast(const Elements& elements, const std::vector<std::vector<int>>& neighbours,
+                  const std::vector<double>& reflected, double contrast, double minElementM,
+                  std::vector<char>& split);
+
+// Whether the segment from a to b passes through a patch other than those of the scene polygons
+// `skipA` and `skipB` (the surfaces it starts and ends on).
+bool segmentBlocked(const Vec3& a, const Vec3& b, const std::vector<Patch>& patches, int skipA, int skipB);
+
+// The shadow criterion for one row of `shooter`: among its receivers that the row shows partly
+// hidden (form factor below 95 % of the unoccluded point-to-polygon one), marks the splittable
+// elements whose corners disagree on seeing a point of the shooter (its corners or its centroid).
+void markShadowEdges(const FormFactorRow& row, const Patch& shooter, const Elements& elements,
+                     const std::vector<Patch>& patches, double minElementM, std::vector<char>& split);
+
+}  // namespace radmesh

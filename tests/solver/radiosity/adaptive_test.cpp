@@ -1,0 +1,259 @@
+// Adaptive subdivision (--subdivide adaptive): exact, thread-independent splits, a balanced ledger,
+// refinement along shadow edges, and the exact shadow test: a square light over a floor with a
+// square occluder between them, against the closed-form direct light.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "solver/formfactors/analytic_form_factor.h"
+#include "solver/meshing/elements.h"
+#include "solver/scene/scene_error.h"
+#include "tests/solver/solver_test_helpers.h"
+
+namespace radmesh::test {
+namespace {
+
+SolveOptions adaptive(SolveOptions o, double minElementM) {
+  o.subdivide = Subdivide::Adaptive;
+  o.minElementM = minElementM;
+  return o;
+}
+
+SolveOptions uniform(SolveOptions o, double minElementM) {
+  o.subdivide = Subdivide::Uniform;
+  o.minElementM = minElementM;
+  return o;
+}
+
+// A 2 x 2 m floor (z = 0, rho 0.5, 4 x 4 patches) under a 0.3 m square light 1 m above it
+// (3 x 3 patches facing down, 100 W/m^2), with a black 0.4 m square occluder at z = 0.5 between
+// them (facing up), off the light's axis so its shadow edges cross the floor's patches. Nothing
+// the floor reflects comes back to it (the light and occluder are black, the scene open), so
+// after the light's shots the floor's B is exactly rho E F(point -> the part of the light it sees).
+struct ShadowScene {
+  static constexpr double kRho = 0.5, kEmittance = 100.0, kLightZ = 2.0, kOccluderZ = 0.4;
+  static constexpr double kLight = 0.15;  // half-side, centred on the z axis
+  static constexpr int kLightCuts = 6;    // the light is kLightCuts^2 patches
+  static constexpr double kOccluderX = 0.2, kOccluderY = 0.1;  // its centre
+  static constexpr double kOccluder = 0.25;                    // half-side
+  TestScene t;
+  ShadowScene() {
+    t.scene.source = "exact shadow";
+    t.scene.materials = {grey(kRho), grey(0.0, kEmittance), grey(0.0)};
+    const Vec3 floor(-1, -1, 0), light(-kLight, -kLight, kLightZ);
+    const Vec3 occluder(kOccluderX - kOccluder, kOccluderY - kOccluder, kOccluderZ);
+    addPolygon(t.scene, floor, Vec3(2, 0, 0), Vec3(0, 2, 0), 0);
+    addPolygon(t.scene, light, Vec3(0, 2 * kLight, 0), Vec3(2 * kLight, 0, 0), 1);  // facing down
+    addPolygon(t.scene, occluder, Vec3(2 * kOccluder, 0, 0), Vec3(0, 2 * kOccluder, 0), 2);
+    addGrid(t.patches, floor, Vec3(2, 0, 0), Vec3(0, 2, 0), 4, 4, 0, 0);
+    addGrid(t.patches, light, Vec3(0, 2 * kLight, 0), Vec3(2 * kLight, 0, 0), kLightCuts, kLightCuts, 1, 1);
+    addGrid(t.patches, occluder, Vec3(2 * kOccluder, 0, 0), Vec3(0, 2 * kOccluder, 0), 1, 1, 2, 2);
+  }
+  static double formFactor(const Vec3& p, double x0, double x1, double y0, double y1) {
+    if (!(x0 < x1 && y0 < y1)) return 0.0;
+    const std::array<Vec3, 4> corners{Vec3(x0, y0, kLightZ) - p, Vec3(x1, y0, kLightZ) - p, Vec3(x1, y1, kLightZ) - p,
+                                      Vec3(x0, y1, kLightZ) - p};
+    return pointToPolygonFormFactor(corners);
+  }
+  // The oracle: from floor point p the occluder covers, on the light's plane, the square its
+  // corners project to (scaled by kLightZ / kOccluderZ about p); what p sees of the light is the
+  // light less its overlap with that square, both axis-aligned.
+  static double exact(const Vec3& p) {
+    const double s = kLightZ / kOccluderZ;
+    const double ox0 = p.x + s * (kOccluderX - kOccluder - p.x), ox1 = p.x + s * (kOccluderX + kOccluder - p.x);
+    const double oy0 = p.y + s * (kOccluderY - kOccluder - p.y), oy1 = p.y + s * (kOccluderY + kOccluder - p.y);
+    const double seen = formFactor(p, -kLight, kLight, -kLight, kLight) -
+                        formFactor(p, std::max(-kLight, ox0), std::min(kLight, ox1), std::max(-kLight, oy0),
+                                   std::min(kLight, oy1));
+    return kRho * kEmittance * seen;
+  }
+};
+
+// The direct light of the 9 light patches: each shoots once; the floor then has all it will get.
+SolveOptions shadowOptions(int threads = 1) {
+  return fixedIterations(optionsFor(Projection::Hemicube, 256, threads), ShadowScene::kLightCuts * ShadowScene::kLightCuts);
+}
+
+// RMS over a 200 x 200 grid of floor points of the solved B (of the element holding the point)
+// less the exact, relative to the brightest exact value.
+double floorRmsError(const ProgressiveSolver& solver) {
+  constexpr int kSamples = 200;
+  std::vector<double> b(kSamples * kSamples, -1.0);
+  const auto sampleAt = [](int i) { return -1.0 + (i + 0.5) * 2.0 / kSamples; };
+  for (size_t e = 0; e < solver.elements().size(); ++e) {
+    const Patch& el = solver.elements()[e];
+    if (el.material != 0) continue;
+    double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;  // floor elements are axis-aligned squares
+    for (int k = 0; k < 4; ++k) {
+      x0 = std::min(x0, el.vertices[k].x), x1 = std::max(x1, el.vertices[k].x);
+      y0 = std::min(y0, el.vertices[k].y), y1 = std::max(y1, el.vertices[k].y);
+    }
+    for (int j = 0; j < kSamples; ++j)
+      for (int i = 0; i < kSamples; ++i)
+        if (sampleAt(i) >= x0 && sampleAt(i) < x1 && sampleAt(j) >= y0 && sampleAt(j) < y1)
+          b[j * kSamples + i] = solver.elementRadiosity()[e].r;
+  }
+  double sum = 0.0, brightest = 0.0;
+  for (int j = 0; j < kSamples; ++j)
+    for (int i = 0; i < kSamples; ++i) {
+      const double exact = ShadowScene::exact(Vec3(sampleAt(i), sampleAt(j), 0.0));
+      EXPECT_GE(b[j * kSamples + i], 0.0) << "floor point " << i << ", " << j << " is in no element";
+      sum += std::pow(b[j * kSamples + i] - exact, 2.0);
+      brightest = std::max(brightest, exact);
+    }
+  return std::sqrt(sum / (kSamples * kSamples)) / brightest;
+}
+
+struct Solved {
+  size_t elements = 0;
+  double rms = 0.0;
+};
+
+Solved solveShadow(const SolveOptions& o) {
+  const ShadowScene s;
+  ProgressiveSolver solver(s.t.scene, s.t.patches, o);
+  solveChecked(solver);
+  return {solver.elements().size(), floorRmsError(solver)};
+}
+
+TEST(ExactShadow, TheOracleIsTheUnoccludedLightOutsideTheShadow) {
+  // Far from the occluder's shadow, the whole light; under the occluder's middle, none of it.
+  const double whole = ShadowScene::formFactor(Vec3(-0.9, -0.9, 0), -0.15, 0.15, -0.15, 0.15);
+  EXPECT_NEAR(ShadowScene::exact(Vec3(-0.9, -0.9, 0)), 50.0 * whole, 1e-12);
+  EXPECT_NEAR(ShadowScene::exact(Vec3(0.25, 0.125, 0)), 0.0, 1e-12);
+}
+
+// The table in docs/accuracy.md: RMS error over the floor against the element count. Adaptive
+// (the default --split-contrast 0.1) reaches the finest uniform mesh's error with under half its
+// elements.
+TEST(ExactShadow, AdaptiveReachesTheErrorWithFewerElementsThanUniform) {
+  std::printf("| subdivide | --min-element (m) | elements | floor RMS error (of the brightest) |\n|---|---|---|---|\n");
+  Solved finestUniform;
+  for (double m : {0.25, 0.125, 0.0625, 0.03125}) {
+    finestUniform = solveShadow(uniform(shadowOptions(), m));
+    std::printf("| uniform | %g | %zu | %.4f |\n", m, finestUniform.elements, finestUniform.rms);
+  }
+  Solved finestAdaptive;
+  for (const char* regather : {"last", "all"})
+    for (double m : {0.125, 0.0625, 0.03125, 0.015625}) {
+      SolveOptions o = adaptive(shadowOptions(), m);
+      o.splitRegatherAll = std::string(regather) == "all";
+      const Solved run = solveShadow(o);
+      if (!o.splitRegatherAll) finestAdaptive = run;
+      std::printf("| adaptive, --split-regather %s | %g | %zu | %.4f |\n", regather, m, run.elements, run.rms);
+    }
+  std::fflush(stdout);
+  EXPECT_LE(finestAdaptive.rms, finestUniform.rms);
+  EXPECT_LT(2 * finestAdaptive.elements, finestUniform.elements);
+}
+
+// A patch's B against the area mean of its elements' (the split elements' listing, elements.h).
+void expectPatchesAreAreaMeans(const ProgressiveSolver& solver) {
+  std::vector<double> weighted(solver.patches().size(), 0.0), area(solver.patches().size(), 0.0);
+  std::vector<int> patchOf(solver.elements().size());
+  for (size_t p = 0; p < solver.patches().size(); ++p)
+    for (int e : solver.elementsOf({static_cast<int>(p)})) {
+      weighted[p] += solver.elementRadiosity()[e].r * solver.elements()[e].areaM2;
+      area[p] += solver.elements()[e].areaM2;
+    }
+  for (size_t p = 0; p < solver.patches().size(); ++p) {
+    EXPECT_NEAR(area[p], solver.patches()[p].areaM2, 1e-12) << "patch " << p;
+    EXPECT_NEAR(weighted[p] / area[p], solver.radiosity()[p].r, 1e-9 * (1.0 + solver.radiosity()[p].r)) << "patch " << p;
+  }
+}
+
+TEST(Adaptive, SplitCountsAreExactAndTheSameOnAnyThreadCount) {
+  const ShadowScene s;
+  ProgressiveSolver one(s.t.scene, s.t.patches, adaptive(shadowOptions(1), 0.0625));
+  ProgressiveSolver three(s.t.scene, s.t.patches, adaptive(shadowOptions(3), 0.0625));
+  solveChecked(one);
+  solveChecked(three);
+  // Every split follows the first light patch's shot: the other 35 patches' shadow edges lie
+  // within 0.04 m of its own, among elements already split to the least size.
+  std::vector<int> splits;
+  for (const IterationRecord& r : one.history()) splits.push_back(r.elementsSplit);
+  std::vector<int> expected(36, 0);
+  expected[0] = 138;
+  EXPECT_EQ(splits, expected);
+  EXPECT_EQ(one.elements().size(), 53u + 3u * 138u);  // 53 patches; each split adds three elements
+  ASSERT_EQ(three.elements().size(), one.elements().size());
+  for (size_t e = 0; e < one.elements().size(); ++e) {
+    EXPECT_EQ(three.elements()[e].vertices, one.elements()[e].vertices) << "element " << e;
+    EXPECT_EQ(three.elementRadiosity()[e], one.elementRadiosity()[e]) << "element " << e;
+  }
+  EXPECT_EQ(three.radiosity(), one.radiosity());
+}
+
+TEST(Adaptive, LedgerBalancesAndPatchesAreAreaMeansOfTheirSplitElements) {
+  for (Projection projection : {Projection::Plane, Projection::Hemicube}) {
+    SCOPED_TRACE(toString(projection));
+    // A closed box lit by its ceiling: light goes round, and elements split on every face.
+    const TestScene t = closedBox(Vec3(1.0), 2, {grey(0.6), grey(0.3, 10.0)}, {0, 1, 0, 0, 0, 0});
+    SolveOptions o = adaptive(fixedIterations(optionsFor(projection), 60), 0.06);
+    o.splitContrast = 0.2;
+    ProgressiveSolver solver(t.scene, t.patches, o);
+    solveChecked(solver);
+    EXPECT_GT(solver.elements().size(), t.patches.size());
+    EXPECT_LE(solver.ledger().imbalance(), 1e-9);
+    expectPatchesAreAreaMeans(solver);
+  }
+  const ShadowScene s;
+  ProgressiveSolver shadow(s.t.scene, s.t.patches, adaptive(shadowOptions(), 0.0625));
+  solveChecked(shadow);
+  EXPECT_LE(shadow.ledger().imbalance(), 1e-9);
+  expectPatchesAreAreaMeans(shadow);
+}
+
+TEST(Adaptive, RefinesAlongTheShadowEdge) {
+  const ShadowScene s;
+  SolveOptions o = adaptive(shadowOptions(), 0.03125);
+  o.splitContrast = 100.0;  // the shadow criterion alone
+  ProgressiveSolver solver(s.t.scene, s.t.patches, o);
+  solveChecked(solver);
+  // The edge of the occluder's shadow from the light's centre: a square, the occluder scaled by
+  // kLightZ / (kLightZ - kOccluderZ) about the light's axis. Elements within 0.1 m of it against
+  // those farther than 0.4 m.
+  constexpr double kScale = ShadowScene::kLightZ / (ShadowScene::kLightZ - ShadowScene::kOccluderZ);
+  const auto toEdge = [&](const Vec3& p) {
+    const double half = kScale * ShadowScene::kOccluder;
+    const double dx = std::abs(p.x - kScale * ShadowScene::kOccluderX) - half;
+    const double dy = std::abs(p.y - kScale * ShadowScene::kOccluderY) - half;
+    return dx > 0.0 || dy > 0.0 ? std::hypot(std::max(dx, 0.0), std::max(dy, 0.0)) : -std::max(dx, dy);
+  };
+  double nearArea = 0.0, farArea = 0.0;
+  int nearCount = 0, farCount = 0;
+  for (const Patch& e : solver.elements()) {
+    if (e.material != 0) continue;
+    const double d = toEdge(e.centroid);
+    if (d < 0.1) nearArea += e.areaM2, ++nearCount;
+    if (d > 0.4) farArea += e.areaM2, ++farCount;
+  }
+  ASSERT_GT(nearCount, 0);
+  ASSERT_GT(farCount, 0);
+  EXPECT_LT(nearArea / nearCount, 0.1 * farArea / farCount);  // the mean element 10x smaller at the edge
+  EXPECT_GT(farArea / farCount, 0.2);  // far from it, the floor's 0.25 m^2 patches mostly stay whole
+  o.splitShadows = false;  // and with neither criterion, nothing splits
+  ProgressiveSolver none(s.t.scene, s.t.patches, o);
+  solveChecked(none);
+  EXPECT_EQ(none.elements().size(), s.t.patches.size());
+}
+
+TEST(Adaptive, OptionsAreRefusedNamingTheFix) {
+  const ShadowScene s;
+  SolveOptions o = adaptive(shadowOptions(), 0.0);
+  EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
+  o.minElementM = 0.1;
+  o.backend = Backend::Mesh;
+  EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
+  o.backend = Backend::Native;
+  o.splitContrast = 0.0;
+  EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
+}
+
+}  // namespace
+}  // namespace radmesh::test
