@@ -57,6 +57,13 @@ void SolverThread::Run::step(const std::optional<Vec3>& eye, int upAxis) {
   add(record);
 }
 
+void SolverThread::Run::remeshIfSplit() {
+  const auto& elements = receivers();
+  if (elements.size() == meshedReceivers) return;
+  mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(elements));
+  meshedReceivers = elements.size();
+}
+
 void SolverThread::Run::focusOn(const std::optional<Vec3>& eye, int upAxis) {
   if (!eye || eye == focusedEye) return;
   focusedEye = eye;
@@ -94,6 +101,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
       run->checkpointMessage = "resumed from " + resumePath;
     }
     run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->receivers()));
+    run->meshedReceivers = run->receivers().size();
     return run;
   } catch (const std::exception& e) {
     publishFailure(setup, e.what());

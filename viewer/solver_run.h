@@ -23,6 +23,7 @@ struct SolverThread::Run {
   bool eyeInFocus = false;
   std::optional<Vec3> focusedEye;                  // the eye the focus was found for
   std::shared_ptr<const DisplayMesh> mesh;
+  std::size_t meshedReceivers = 0;  // the receivers the mesh was built from
   SceneSummary summary;
   std::vector<ConvergencePoint> curve;
   std::shared_ptr<const ShotStats> lastShotStats;  // the last there was (cache hits have none)
@@ -43,6 +44,9 @@ struct SolverThread::Run {
   // The cell the eye stands in, else the cell nearest it; nothing before the eye is known. The
   // look-up passes over every patch: only when the eye has moved.
   void focusOn(const std::optional<Vec3>& eye, int upAxis);
+  // With --subdivide adaptive, elements split as the light arrives: the display mesh is rebuilt
+  // from them (before a publish, not every iteration: it passes over every element).
+  void remeshIfSplit();
 };
 
 }  // namespace radmesh

@@ -208,6 +208,7 @@ void SolverThread::loop() {
     // While iterating, publish at the UI's pace; the last iteration before a pause always.
     const bool finished = !moreToDo || run->exhausted();
     if (finished || Clock::now() - lastPublish >= kPublishInterval) {
+      run->remeshIfSplit();
       refreshItemBuffer(*run, finished);
       publish(*run);
       lastPublish = Clock::now();

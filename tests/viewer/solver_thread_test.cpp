@@ -68,6 +68,32 @@ TEST(SolverThread, SnapshotHoldsWhatADirectSolveComputes) {
   EXPECT_DOUBLE_EQ(s->convergence(), direct.convergence());
 }
 
+TEST(SolverThread, AdaptiveElementsAreDrawnAsTheySplit) {
+  // With --subdivide adaptive, elements split under the first shots: the published mesh must be
+  // the split elements', with their radiosity, not the mesh the solve started from.
+  const Scene scene = loadScene("cornell");
+  SolveSetup setup = cornellSetup();
+  setup.cellM = 0.2;
+  setup.options.subdivide = Subdivide::Adaptive;
+  setup.options.minElementM = 0.05;
+  SolverThread thread(scene, setup, false);
+  const Snapshot first = waitFor(thread, [](const SolverSnapshot& s) { return s.mesh != nullptr; });
+  thread.step(3);
+  const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.iteration() >= 3; });
+
+  ProgressiveSolver direct(scene, meshScene(scene, setup.cellM), setup.options);
+  for (int i = 0; i < 3; ++i) direct.step();
+  ASSERT_GT(direct.elements().size(), direct.patches().size()) << "nothing split: the test shows nothing";
+  EXPECT_NE(s->mesh, first->mesh);
+  const DisplayMesh mesh = buildDisplayMesh(direct.elements());
+  EXPECT_EQ(s->mesh->positions.size(), mesh.positions.size());
+  EXPECT_EQ(s->mesh->indices, mesh.indices);
+  const std::vector<Rgb> expected = vertexRadiosity(mesh, direct.displayElementRadiosity());
+  ASSERT_EQ(s->vertexB.size(), expected.size());
+  for (size_t v = 0; v < expected.size(); ++v)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s->vertexB[v][c], expected[v][c], 1e-9 * (1.0 + expected[v][c]));
+}
+
 TEST(SolverThread, MeshBackEndSnapshotsCarryEmulatedSecondsAndDepths) {
   SolveSetup setup = cornellSetup();
   setup.options.backend = Backend::Mesh;
