@@ -51,12 +51,12 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
 // Adds --pe-grid COLSxROWS and --pe-memory KB, the mesh back end's machine (checked by validateOptions).
 void addMachineFlags(CLI::App* cmd, PeMachine& machine);
 
-
-// Adds SCENE, --strict, --sky, --sky-model, --sun and --preset --backend --cell --projection --resolution --ratio --shooters --until
-// --until-unshot --max-iterations --threads --cache-mb --cells --exchange-shots to a subcommand. --preset is applied as it
-// Adds SCENE, --strict, --up and --preset --backend --cell --projection --resolution --ratio --shooters --until
-// --until-unshot --max-iterations --threads --cache-mb --subdivide --min-element --split-contrast --split-shadows to a subcommand. --preset is applied as it
-// is parsed, the others after parsing: an explicit flag wins over the preset wherever it stands.
+// Adds SCENE with --strict and --up, --sky, --sky-model and --sun, --preset, and the solver's flags
+// (--backend --cell --mapping --pe-grid --pe-memory --projection --resolution --ratio --shooters
+// --until --until-unshot --max-iterations --threads --cache-mb --subdivide --min-element
+// --split-contrast --split-shadows --split-regather --cells --exchange-shots --portal-bins) to a
+// subcommand. --preset is applied as it is parsed, the others after parsing: an explicit flag wins
+// over the preset wherever it stands.
 void addSolveFlags(CLI::App* cmd, SolveFlags& flags);
 
 

@@ -7,32 +7,40 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 namespace radmesh::cli {
 namespace {
 
-// What `reports` iterations print, iteration i at i/1024 s (exact in binary).
-std::string progressText(Progress::Mode mode, int reports) {
+// What `feed` makes a Progress print, stopping at 1 % unshot.
+std::string printed(Progress::Mode mode, const std::function<void(Progress&)>& feed) {
   SolveOptions stop;
   stop.until = 1.0;
   stop.untilUnshot = 0.01;
   std::FILE* out = std::tmpfile();
   Progress progress(stop, out, mode);
-  IterationRecord r;
-  r.ledger.emitted = 1.0;
-  for (int i = 1; i <= reports; ++i) {
-    r.iteration = i;
-    r.convergence = 1.0 - 1.0 / i;
-    r.ledger.unshot = 1.0 / i;
-    progress.report(r, i / 1024.0);
-  }
-  progress.finish(r, reports / 1024.0);
+  feed(progress);
   std::string text(static_cast<size_t>(std::ftell(out)), '\0');
   std::rewind(out);
   text.resize(std::fread(text.data(), 1, text.size(), out));
   std::fclose(out);
   return text;
+}
+
+// What `reports` iterations print, iteration i at i/1024 s (exact in binary).
+std::string progressText(Progress::Mode mode, int reports) {
+  return printed(mode, [&](Progress& progress) {
+    IterationRecord r;
+    r.ledger.emitted = 1.0;
+    for (int i = 1; i <= reports; ++i) {
+      r.iteration = i;
+      r.convergence = 1.0 - 1.0 / i;
+      r.ledger.unshot = 1.0 / i;
+      progress.report(r, i / 1024.0);
+    }
+    progress.finish(r, reports / 1024.0);
+  });
 }
 
 TEST(Progress, LogPrintsALineASecondAndTheFinalOne) {
@@ -62,43 +70,29 @@ TEST(Progress, TerminalRedrawsOneLineAndEndsIt) {
 
 TEST(Progress, EstimatesTheTimeLeftFromTheUnshotPowerOnALogScale) {
   // Halfway on a log scale (10 % unshot of a 1 % target) after 2 s: about 2 s left.
-  SolveOptions stop;
-  stop.until = 1.0;
-  stop.untilUnshot = 0.01;
-  std::FILE* out = std::tmpfile();
-  Progress progress(stop, out, Progress::Mode::Log);
-  IterationRecord r;
-  r.iteration = 100;
-  r.ledger.emitted = 1.0;
-  r.ledger.unshot = 0.1;
-  progress.report(r, 2.0);
-  std::string text(200, '\0');
-  std::rewind(out);
-  text.resize(std::fread(text.data(), 1, text.size(), out));
-  std::fclose(out);
+  const std::string text = printed(Progress::Mode::Log, [](Progress& progress) {
+    IterationRecord r;
+    r.iteration = 100;
+    r.ledger.emitted = 1.0;
+    r.ledger.unshot = 0.1;
+    progress.report(r, 2.0);
+  });
   EXPECT_NE(text.find("~2 s left"), std::string::npos) << text;
 }
 
 TEST(Progress, AResumedSolveCountsOnlyTheIterationsAndProgressSinceTheCheckpoint) {
   // Resumed at iteration 1000 with 10 % unshot (halfway to 1 % on a log scale). 1 s and 100
   // iterations later, at 3.16 % (three quarters): 100 it/s, and a quarter took 1 s, so ~1 s left.
-  SolveOptions stop;
-  stop.until = 1.0;
-  stop.untilUnshot = 0.01;
-  std::FILE* out = std::tmpfile();
-  Progress progress(stop, out, Progress::Mode::Log);
-  IterationRecord r;
-  r.iteration = 1000;
-  r.ledger.emitted = 1.0;
-  r.ledger.unshot = 0.1;
-  progress.resumeFrom(r);
-  r.iteration = 1100;
-  r.ledger.unshot = std::pow(10.0, -1.5);
-  progress.report(r, 1.0);
-  std::string text(300, '\0');
-  std::rewind(out);
-  text.resize(std::fread(text.data(), 1, text.size(), out));
-  std::fclose(out);
+  const std::string text = printed(Progress::Mode::Log, [](Progress& progress) {
+    IterationRecord r;
+    r.iteration = 1000;
+    r.ledger.emitted = 1.0;
+    r.ledger.unshot = 0.1;
+    progress.resumeFrom(r);
+    r.iteration = 1100;
+    r.ledger.unshot = std::pow(10.0, -1.5);
+    progress.report(r, 1.0);
+  });
   EXPECT_NE(text.find("iteration 1100  100.0 it/s  ~1 s left"), std::string::npos) << text;
 }
 

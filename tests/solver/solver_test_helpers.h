@@ -85,6 +85,13 @@ inline SolveOptions fixedIterations(SolveOptions o, int iterations) {
   return o;
 }
 
+// Patches cut into elements (`how`: uniform or adaptive) no smaller than minElementM.
+inline SolveOptions subdivided(SolveOptions o, Subdivide how, double minElementM) {
+  o.subdivide = how;
+  o.minElementM = minElementM;
+  return o;
+}
+
 inline double areaMean(const std::vector<Patch>& patches, const std::vector<Rgb>& b, int channel = 0) {
   double weighted = 0.0, area = 0.0;
   for (size_t j = 0; j < patches.size(); ++j) {

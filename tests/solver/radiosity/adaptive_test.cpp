@@ -18,18 +18,6 @@
 namespace radmesh::test {
 namespace {
 
-SolveOptions adaptive(SolveOptions o, double minElementM) {
-  o.subdivide = Subdivide::Adaptive;
-  o.minElementM = minElementM;
-  return o;
-}
-
-SolveOptions uniform(SolveOptions o, double minElementM) {
-  o.subdivide = Subdivide::Uniform;
-  o.minElementM = minElementM;
-  return o;
-}
-
 // A 2 x 2 m floor (z = 0, rho 0.5, 4 x 4 patches) under a 0.3 m square light 1 m above it
 // (3 x 3 patches facing down, 100 W/m^2), with a black 0.4 m square occluder at z = 0.5 between
 // them (facing up), off the light's axis so its shadow edges cross the floor's patches. Nothing
@@ -135,13 +123,13 @@ TEST(ExactShadow, AdaptiveReachesTheErrorWithFewerElementsThanUniform) {
   std::printf("| subdivide | --min-element (m) | elements | floor RMS error (of the brightest) |\n|---|---|---|---|\n");
   Solved finestUniform;
   for (double m : {0.25, 0.125, 0.0625, 0.03125}) {
-    finestUniform = solveShadow(uniform(shadowOptions(), m));
+    finestUniform = solveShadow(subdivided(shadowOptions(), Subdivide::Uniform, m));
     std::printf("| uniform | %g | %zu | %.4f |\n", m, finestUniform.elements, finestUniform.rms);
   }
   Solved finestAdaptive;
   for (const char* regather : {"last", "all"})
     for (double m : {0.125, 0.0625, 0.03125, 0.015625}) {
-      SolveOptions o = adaptive(shadowOptions(), m);
+      SolveOptions o = subdivided(shadowOptions(), Subdivide::Adaptive, m);
       o.splitRegatherAll = std::string(regather) == "all";
       const Solved run = solveShadow(o);
       if (!o.splitRegatherAll) finestAdaptive = run;
@@ -169,8 +157,8 @@ void expectPatchesAreAreaMeans(const ProgressiveSolver& solver) {
 
 TEST(Adaptive, SplitCountsAreExactAndTheSameOnAnyThreadCount) {
   const ShadowScene s;
-  ProgressiveSolver one(s.t.scene, s.t.patches, adaptive(shadowOptions(1), 0.0625));
-  ProgressiveSolver three(s.t.scene, s.t.patches, adaptive(shadowOptions(3), 0.0625));
+  ProgressiveSolver one(s.t.scene, s.t.patches, subdivided(shadowOptions(1), Subdivide::Adaptive, 0.0625));
+  ProgressiveSolver three(s.t.scene, s.t.patches, subdivided(shadowOptions(3), Subdivide::Adaptive, 0.0625));
   solveChecked(one);
   solveChecked(three);
   // Every split follows the first light patch's shot: the other 35 patches' shadow edges lie
@@ -194,7 +182,7 @@ TEST(Adaptive, LedgerBalancesAndPatchesAreAreaMeansOfTheirSplitElements) {
     SCOPED_TRACE(toString(projection));
     // A closed box lit by its ceiling: light goes round, and elements split on every face.
     const TestScene t = closedBox(Vec3(1.0), 2, {grey(0.6), grey(0.3, 10.0)}, {0, 1, 0, 0, 0, 0});
-    SolveOptions o = adaptive(fixedIterations(optionsFor(projection), 60), 0.06);
+    SolveOptions o = subdivided(fixedIterations(optionsFor(projection), 60), Subdivide::Adaptive, 0.06);
     o.splitContrast = 0.2;
     ProgressiveSolver solver(t.scene, t.patches, o);
     solveChecked(solver);
@@ -203,7 +191,7 @@ TEST(Adaptive, LedgerBalancesAndPatchesAreAreaMeansOfTheirSplitElements) {
     expectPatchesAreAreaMeans(solver);
   }
   const ShadowScene s;
-  ProgressiveSolver shadow(s.t.scene, s.t.patches, adaptive(shadowOptions(), 0.0625));
+  ProgressiveSolver shadow(s.t.scene, s.t.patches, subdivided(shadowOptions(), Subdivide::Adaptive, 0.0625));
   solveChecked(shadow);
   EXPECT_LE(shadow.ledger().imbalance(), 1e-9);
   expectPatchesAreAreaMeans(shadow);
@@ -211,7 +199,7 @@ TEST(Adaptive, LedgerBalancesAndPatchesAreAreaMeansOfTheirSplitElements) {
 
 TEST(Adaptive, RefinesAlongTheShadowEdge) {
   const ShadowScene s;
-  SolveOptions o = adaptive(shadowOptions(), 0.03125);
+  SolveOptions o = subdivided(shadowOptions(), Subdivide::Adaptive, 0.03125);
   o.splitContrast = 100.0;  // the shadow criterion alone
   ProgressiveSolver solver(s.t.scene, s.t.patches, o);
   solveChecked(solver);
@@ -245,7 +233,7 @@ TEST(Adaptive, RefinesAlongTheShadowEdge) {
 
 TEST(Adaptive, OptionsAreRefusedNamingTheFix) {
   const ShadowScene s;
-  SolveOptions o = adaptive(shadowOptions(), 0.0);
+  SolveOptions o = subdivided(shadowOptions(), Subdivide::Adaptive, 0.0);
   EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
   o.minElementM = 0.1;
   o.backend = Backend::Mesh;

@@ -16,12 +16,6 @@
 namespace radmesh::test {
 namespace {
 
-SolveOptions subdivided(SolveOptions o, double minElementM) {
-  o.subdivide = Subdivide::Uniform;
-  o.minElementM = minElementM;
-  return o;
-}
-
 // A closed 1 x 1 x 1 box of 2 x 2 patches a face, lit by its ceiling.
 TestScene litBox() { return closedBox(Vec3(1.0), 2, {grey(0.6), grey(0.3, 10.0)}, {0, 1, 0, 0, 0, 0}); }
 
@@ -43,7 +37,7 @@ TEST(Substructure, LedgerBalancesAndPatchesAreAreaMeansOnEveryProjection) {
   for (Projection projection : {Projection::Plane, Projection::Hemicube, Projection::Analytic}) {
     SCOPED_TRACE(toString(projection));
     const TestScene t = litBox();
-    ProgressiveSolver solver(t.scene, t.patches, fixedIterations(subdivided(optionsFor(projection), 0.2), 60));
+    ProgressiveSolver solver(t.scene, t.patches, fixedIterations(subdivided(optionsFor(projection), Subdivide::Uniform, 0.2), 60));
     EXPECT_EQ(solver.elements().size(), 24u * 9u);  // 0.5 m patches, 0.2 m elements: 3 x 3 each
     EXPECT_EQ(solver.elementsOf({1, 3}), (std::vector<int>{9, 10, 11, 12, 13, 14, 15, 16, 17, 27, 28, 29, 30, 31, 32, 33, 34, 35}));
     solveChecked(solver);
@@ -55,7 +49,7 @@ TEST(Substructure, LedgerBalancesAndPatchesAreAreaMeansOnEveryProjection) {
 
 TEST(Substructure, LedgerBalancesOnTheMeshBackEnd) {
   const TestScene t = litBox();
-  SolveOptions o = fixedIterations(subdivided(optionsFor(Projection::Plane, 32), 0.0), 20);
+  SolveOptions o = fixedIterations(subdivided(optionsFor(Projection::Plane, 32), Subdivide::Uniform, 0.0), 20);
   o.backend = Backend::Mesh;
   ProgressiveSolver solver(t.scene, t.patches, o);
   EXPECT_EQ(solver.elements().size(), 24u * 4u);
@@ -90,7 +84,7 @@ TEST(Substructure, OffIsPatchesReceivingBitwise) {
 TEST(Substructure, OneElementPerPatchIsThePatchSolve) {
   const TestScene t = litBox();
   const SolveOptions off = fixedIterations(optionsFor(Projection::Hemicube), 30);
-  ProgressiveSolver patches(t.scene, t.patches, off), elements(t.scene, t.patches, subdivided(off, 1.0));
+  ProgressiveSolver patches(t.scene, t.patches, off), elements(t.scene, t.patches, subdivided(off, Subdivide::Uniform, 1.0));
   solveChecked(patches);
   solveChecked(elements);
   ASSERT_EQ(elements.elements().size(), t.patches.size());
@@ -138,7 +132,7 @@ TEST(Substructure, ElementsFollowTheGradientUnderASmallLight) {
   for (Projection projection : {Projection::Hemicube, Projection::Analytic}) {
     SCOPED_TRACE(toString(projection));
     const SolveOptions o = fixedIterations(optionsFor(projection, 256), 1);
-    ProgressiveSolver elements(f.t.scene, f.t.patches, subdivided(o, 0.125));
+    ProgressiveSolver elements(f.t.scene, f.t.patches, subdivided(o, Subdivide::Uniform, 0.125));
     elements.step();
     ASSERT_EQ(elements.elements().size(), 256u + 1u);  // 16 x 16 on the floor, the light whole
     const double elementError = f.worstError(elements.elements(), [&](size_t k) { return elements.elementRadiosity()[k].r; });
@@ -153,7 +147,7 @@ TEST(Substructure, ElementsFollowTheGradientUnderASmallLight) {
 
 TEST(Substructure, RefusesPortals) {
   const TestScene t = litBox();
-  ProgressiveSolver solver(t.scene, t.patches, subdivided(optionsFor(Projection::Plane), 0.0));
+  ProgressiveSolver solver(t.scene, t.patches, subdivided(optionsFor(Projection::Plane), Subdivide::Uniform, 0.0));
   EXPECT_THROW(solver.setPortalPatches({0}), OptionError);
 }
 
