@@ -81,10 +81,12 @@ TEST(CellsSolverThread, TheCamerasRoomIsSolvedFirstAndTheFocusFollowsTheEye) {
   EXPECT_EQ(second->cells->focus, farCell);
   EXPECT_EQ(second->cells->cells[farCell].portalDistance, 0);
   // The second round shot the new focus more than any other cell.
-  for (size_t c = 0; c < cells.cells.size(); ++c)
-    if (static_cast<int>(c) != farCell)
+  for (size_t c = 0; c < cells.cells.size(); ++c) {
+    if (static_cast<int>(c) != farCell) {
       EXPECT_GT(second->cells->cells[farCell].iterations - cells.cells[farCell].iterations,
                 second->cells->cells[c].iterations - cells.cells[c].iterations) << cells.cells[c].name;
+    }
+  }
 }
 
 // Before the eye is known, no cell is first: a round's budget (3 shots a cell) goes by unshot

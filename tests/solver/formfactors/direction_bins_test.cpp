@@ -42,7 +42,9 @@ TEST(DirectionBins, SplitAPolygonExactly) {
   splitOverDirectionBins(4, bin, [&](int b, double f) { parts[b] += f; });
   EXPECT_NEAR(parts[10], directionBinFormFactor(4, 10), 1e-15);
   for (const auto& [b, f] : parts) {
-    if (b != 10) EXPECT_LT(f, 1e-15) << b;
+    if (b != 10) {
+      EXPECT_LT(f, 1e-15) << b;
+    }
   }
   // A wall beside the patch, across the top and the +u side and partly below the horizon.
   const std::vector<Vec3> wall{{1, -0.7, -0.5}, {1, 0.9, -0.5}, {1, 0.9, 2.5}, {1, -0.7, 2.5}};
