@@ -39,7 +39,7 @@ time run_ctest build-asan
 # ThreadSanitizer: the programs whose tests run threads against each other: the viewer's solver
 # thread against the UI's reads, and the host thread pool (alone and under the emulator).
 time configure_and_build build-tsan "viewer_tests parallel_tests emulator_tests" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DRADMESH_TSAN=ON -DRADMESH_BUILD_BENCHMARKS=OFF
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DRADMESH_TSAN=ON -DRADMESH_BUILD_BENCHMARKS=OFF
 run_tsan_tests() {
   echo "== build-tsan: threaded viewer tests, the thread pool"
   export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
