@@ -1,0 +1,95 @@
+#pragma once
+// The state of a CellSolver, shared by the files that implement it (cell_solver_setup.cpp: the
+// cells, portals and lights made once; cell_solver.cpp: the rounds); private to solver/radiosity.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solver/formfactors/form_factor_row.h"
+#include "solver/radiosity/cell_solver.h"
+
+namespace radmesh {
+namespace cell_state {
+
+inline double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
+
+// Power reaching `patch` of `cell` moves, at the next exchange, to `twinPatch` of `twinCell`.
+struct PortalLink {
+  int cell = 0;
+  int patch = 0;
+  int twinCell = 0;
+  int twinPatch = 0;
+};
+
+struct CellState {
+  std::string name;
+  std::vector<int> buildingPatch;  // per own patch (the first of the cell solve's): the building's index
+  int portalPatches = 0;           // after the own ones
+  std::unique_ptr<ProgressiveSolver> solver;  // none where another process solves the cell
+};
+
+// One light's shot over the whole building (CellSolver::State::shootLights), cut by cell.
+struct LightShot {
+  Rgb power;
+  FormFactorRow row;
+  std::vector<FormFactorRow> perCell;
+};
+
+// A cell's figures as the schedule and the building's ledger read them, in doubles for CellRanks:
+// its ledger, iterations, whether it is exhausted, then what waits on each of its links.
+constexpr size_t kFigures = 11;
+
+inline std::vector<double> packFigures(const ProgressiveSolver& solver, std::vector<double> waitingW) {
+  const Ledger& l = solver.ledger();
+  std::vector<double> out{l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces,
+                          l.portalOut, l.portalIn, l.lightOutside, static_cast<double>(solver.history().size()),
+                          solver.exhausted() ? 1.0 : 0.0};
+  out.insert(out.end(), waitingW.begin(), waitingW.end());
+  return out;
+}
+
+}  // namespace cell_state
+
+struct CellSolver::State {
+  std::vector<Patch> patches;
+  SolveOptions options;
+  CellSolveSettings settings;
+  std::vector<cell_state::CellState> cells;
+  std::vector<cell_state::PortalLink> links;  // by cell, then patch: the exchange order
+  std::vector<size_t> firstLink;  // per cell, and one past the last: where its links start
+  std::vector<std::vector<int>> neighbours;
+  int portalCount = 0;
+  int focus = -1;
+  std::vector<int> distance;  // from the focus, -1 where no portal leads
+  int rounds = 0;
+  // The lights' shots (State::shootLights) less what they handed to the cells: escaped, the backs
+  // of one-sided patches. Part of the building's ledger, in no cell's.
+  Ledger lights;
+  ThreadPool pool;
+  CellRanks* ranks;
+  std::vector<int> owner;  // per cell: the process solving it
+  // Every cell's figures as of the last refresh(), the same on every process: what the schedule,
+  // done() and the building's ledger read.
+  std::vector<Ledger> cellLedger;
+  std::vector<int> cellIterations;
+  std::vector<char> cellExhausted;
+  std::vector<double> waitingW;  // per link: what waits on its portal patch, W
+
+  State(std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s, CellRanks* r)
+      : patches(std::move(p)), options(o), settings(s), pool(o.threads), ranks(r) {}
+
+  bool owns(int cell) const { return owner[cell] == (ranks ? ranks->rank() : 0); }
+
+  // Portals from the focus, 30 where none leads (a cell's weight halves with each).
+  int hops(int cell) const { return distance[cell] < 0 ? 30 : std::min(distance[cell], 30); }
+  std::vector<int> shotsThisRound(const Ledger& building) const;
+  void exchange();
+  std::vector<cell_state::LightShot> shootLights(const Scene& scene, const std::vector<int>& cellOf,
+                                     const std::vector<int>& localOf);
+  void receiveLights(const std::vector<cell_state::LightShot>& shots);
+  void refresh();
+  template <typename PerCell>
+  std::vector<Rgb> gatherPatches(PerCell perCell) const;
+};
+
+}  // namespace radmesh
