@@ -15,6 +15,7 @@
 
 #if RADMESH_HAS_VIEWER
 #include "cli/cell_solve.h"
+#include "cli/effects_text.h"
 #include "cli/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
@@ -111,6 +112,7 @@ Solved solveScene(const RenderArgs& args) {
     return solvedFrom(solver->patches(), solver->displayRadiosity());
   }
   ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
+  printEffects(solver.effectsPlan());
   solveWithProgress(solver, args.quiet);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
              solver.patches().size(), solver.history().size(), solver.convergence(),

@@ -32,7 +32,6 @@ struct SolveArgs {
   SolveFlags flags;
   std::string statsPath;
   std::string outPath;
-  std::string effects = "auto";
   bool quiet = false;
   std::string checkpointPath;
   double checkpointEverySeconds = 0.0;  // 0: once, at the end
@@ -106,7 +105,6 @@ void run(const SolveArgs& args, CellRanks* ranks) {
     throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",
                      "walk it with radmesh-view, describe it with radmesh info, or draw it with radmesh render");
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up);
-  options.effects = parseEffects(args.effects);
   const CellChoice cell = args.flags.cell(scene);
   fmt::print("{}\n", cell.why);
   if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, ranks);
@@ -177,8 +175,6 @@ void addSolveCommand(CLI::App& app) {
   addSolveFlags(cmd, args->flags);
   cmd->add_option("--stats", args->statsPath, "Write per-iteration figures and the energy ledger as JSON");
   cmd->add_option("--out", args->outPath, "Write the bake as glTF 2.0 binary (.glb) with COLOR_0 radiosity");
-  cmd->add_option("--effects", args->effects, "auto: simulate only what the scene calls for; all: everything")
-      ->capture_default_str();
   cmd->add_flag("--quiet", args->quiet, "No progress lines");
   CLI::Option* checkpoint = cmd->add_option(
       "--checkpoint", args->checkpointPath, "Save the solver's state to this file at the end (resume with --resume)");

@@ -58,6 +58,7 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight) {
 
 SolveOptions SolveFlags::resolved() const {
   SolveOptions o = options;
+  o.effects = parseEffects(effects);
   o.backend = parseBackend(backend);
   o.projection = parseProjection(projection);
   // The mesh back end runs the paper's single plane alone: asked for without a projection, it
@@ -96,6 +97,8 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
          "bake (the default: hemicube 256, until 1 % of the power is unshot) or paper (Varshney & Prins: single "
          "plane 128, ratio 3, until C = 0.95); flags given beside it win")
       ->trigger_on_parse();
+  cmd->add_option("--effects", f.effects, "auto: simulate only what the scene calls for; all: everything")
+      ->capture_default_str();
   cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
   cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size; the paper: 0.381)");
   cmd->add_option("--mapping", f.mapping, "Mesh backend: hierarchical, cut-and-stack or adaptive")->capture_default_str();

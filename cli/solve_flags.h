@@ -18,6 +18,7 @@ struct SolveFlags {
   std::string backend = "native";
   std::string projection;
   std::string mapping = "hierarchical";
+  std::string effects = "auto";   // --effects auto|all: simulate only what the scene calls for, or everything
   std::string subdivide = "off";  // --subdivide off|uniform (--min-element is options.minElementM)
   bool strict = false;  // --strict: a scene that needed any repair is refused
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
@@ -52,7 +53,7 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight);
 void addMachineFlags(CLI::App* cmd, PeMachine& machine);
 
 // Adds SCENE with --strict and --up, --sky, --sky-model and --sun, --preset, and the solver's flags
-// (--backend --cell --mapping --pe-grid --pe-memory --projection --resolution --ratio --shooters
+// (--effects --backend --cell --mapping --pe-grid --pe-memory --projection --resolution --ratio --shooters
 // --until --until-unshot --max-iterations --threads --cache-mb --subdivide --min-element
 // --split-contrast --split-shadows --split-regather --cells --exchange-shots --portal-bins) to a
 // subcommand. --preset is applied as it is parsed, the others after parsing: an explicit flag wins

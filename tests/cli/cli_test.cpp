@@ -434,6 +434,7 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--fov 180", "--fov"},
       {"--camera 1,2", "--camera"},
       {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2", "--camera/--look/--fov"},
+      {"--effects some", "--effects"},
   };
   for (const auto& [options, named] : cases) {
     const CommandRun run = radmesh("render cornell --cell 0.2 --iterations 1 " + options + " --out " + out);
@@ -441,6 +442,22 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
     EXPECT_NE(run.output.find(named), std::string::npos) << options << ": " << run.output;
   }
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// render simulates what solve does: only the effects the scene calls for, unless --effects all.
+TEST(Cli, RenderSimulatesTheEffectsSolveDoes) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  const std::string out = tempPath("furnace.png");
+  for (const std::string mode : {"", " --effects auto", " --effects all"}) {
+    const CommandRun run =
+        radmesh("render furnace --cell 0.381 --preset paper --until 0.5 --size 64x48 --quiet" + mode + " --out " + out);
+    ASSERT_EQ(run.exitCode, 0) << mode << run.output;
+    // The grey, closed, convex furnace needs no occlusion: skipped unless forced.
+    const bool all = mode == " --effects all";
+    EXPECT_NE(run.output.find(all ? "occlusion       on" : "occlusion       off"), std::string::npos)
+        << mode << run.output;
+  }
 }
 
 // Stats as `radmesh solve --stats` writes them, with the figures `plot paper` reads: C 0.5, 0.96, 0.99, the
@@ -588,7 +605,7 @@ TEST(Cli, PresetPaperGivesThePapersSettingsAndExplicitFlagsWin) {
 
 // What the reader repaired is listed by info, and --strict makes each repair an error on every command.
 TEST(Cli, StrictRefusesAFileThatNeededRepairs) {
-  const std::string file = "tests/data/repaired/mgf_unknown_entity.mgf";
+  const std::string file = std::string(RADMESH_SOURCE_DIR) + "/tests/data/repaired/mgf_unknown_entity.mgf";
   CommandRun run = radmesh("info " + file + " --json");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const auto warnings = nlohmann::json::parse(run.output.substr(run.output.find('{')))["warnings"];
