@@ -32,9 +32,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--effects", effects, "auto: simulate only what the scene calls for; all: everything")
       ->capture_default_str();
-  app.add_option("--subdivide", subdivide, "off, or uniform: patches shoot, their elements receive and are shown")
+  app.add_option("--subdivide", subdivide, "off; uniform: patches shoot, their elements receive and are shown; adaptive: elements split where the light changes (docs/accuracy.md)")
       ->capture_default_str();
-  app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch)")
+  app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch); with adaptive: the smallest split (above 0)")
       ->capture_default_str();
   app.add_option_function<std::string>(
       "--pe-grid", [&o](const std::string& text) { radmesh::parsePeGrid(text, o.machine); },
