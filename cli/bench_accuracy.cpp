@@ -350,7 +350,10 @@ void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) 
   }
   if (!remaining.points.empty()) conv.series.push_back(remaining);
   if (!conv.series.empty()) drawPlot(conv, stem + "-error-vs-convergence.png");  // traces follow off rows only
-  if (hasSubdivide(points) && !points.rows.empty()) drawPlot(subdivisionPlot(sceneName, points), stem + "-subdivide.png");
+  if (hasSubdivide(points)) {
+    const Plot subdivision = subdivisionPlot(sceneName, points);
+    if (subdivision.series.size() > 1) drawPlot(subdivision, stem + "-subdivide.png");  // not without the viewer
+  }
 }
 
 AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
