@@ -48,6 +48,16 @@ struct AccuracyArgs {
   double referenceUnshot = 0.001;  // and at most this fraction of the emitted power unshot
   int maxIterations = 20000;
   int threads = 0;
+  std::vector<std::string> projections{"plane", "hemicube"};  // plane: ratios 3 and 5
+  // The subdivide axis (docs/accuracy.md): off runs on every cell; uniform and adaptive on
+  // subdivideCells (empty: the coarsest), once per --min-element (adaptive: adaptiveMinElements,
+  // when given).
+  std::vector<std::string> subdivide{"off"};
+  std::vector<double> minElements{0.0};
+  std::vector<double> adaptiveMinElements;
+  std::vector<double> subdivideCells;
+  double splitContrast = 0.1;
+  double untilUnshot = 0.0;  // > 0: every point also solved on to this unshot fraction, and measured there
 };
 
 // --quick: the CI-sized sweep (well under a minute), same code and outputs.

@@ -35,16 +35,29 @@ std::string traceLabel(const std::string& setting, int n, double cellM) {
   return fmt::format("{} {}x{}, cell {}", setting, n, n, cellM);
 }
 
+// Where the receivers come from: the patches themselves (off), or elements cut from them.
+struct Subdivision {
+  Subdivide subdivide = Subdivide::Off;
+  double minElementM = 0.0;
+};
+
+std::string label(const Subdivision& s) {
+  return s.subdivide == Subdivide::Off ? "off" : fmt::format("{} {}", toString(s.subdivide), s.minElementM);
+}
+
 struct Point {
   Setting setting;
   int resolution = 0;
   double cellM = 0.0;
   size_t patches = 0;
+  Subdivision subdivision;
+  size_t elements = 0;  // at the end: adaptive ones split as the solve goes
   double msPerIteration = 0.0;
   double secondsTo95 = -1.0, secondsTo99 = -1.0;  // -1: not reached within the cap
   double error95 = -1.0, error99 = -1.0;
   double imageError95 = -1.0, imageError99 = -1.0;  // 8-bit RMSE against the finest mesh's pictures
   double memoryMiB = 0.0;
+  double secondsToUnshot = -1.0, errorAtUnshot = -1.0, imageErrorAtUnshot = -1.0;  // --until-unshot
 };
 
 // Item buffer (patch id and 1/depth) and delta form-factor table: 20 bytes a pixel.
@@ -132,23 +145,36 @@ Reference solveReference(const Scene& scene, const std::vector<Patch>& patches, 
   return ref;
 }
 
-Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setting& setting, int n, double cellM,
-              const Reference& ref, const AccuracyArgs& args, ImageErrorProbe& pictures,
-              std::vector<TracePoint>* trace) {
+SolveOptions measuredOptions(const Setting& setting, int n, const Subdivision& subdivision, const AccuracyArgs& args) {
   SolveOptions o;
   o.projection = setting.projection;
   o.ratio = setting.ratio;
   o.resolution = n;
-  o.until = trace ? 1.0 : 0.99;  // a trace goes as far as the reference
+  o.until = 1.0;  // measure() decides where to stop
   o.threads = 1;  // timed on one core, by its CPU time (below)
   o.maxIterations = args.maxIterations;
-  ProgressiveSolver solver(scene, patches, o);
-  Point p{setting, n, cellM, patches.size()};
+  o.subdivide = subdivision.subdivide;
+  o.minElementM = subdivision.minElementM;
+  o.splitContrast = args.splitContrast;
+  return o;
+}
+
+// Solves to C = 0.99 and, when asked, on to --until-unshot; a trace goes as far as the reference.
+Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setting& setting, int n, double cellM,
+              const Subdivision& subdivision, const Reference& ref, const AccuracyArgs& args,
+              ImageErrorProbe& pictures, std::vector<TracePoint>* trace) {
+  ProgressiveSolver solver(scene, patches, measuredOptions(setting, n, subdivision, args));
+  Point p{setting, n, cellM, patches.size(), subdivision};
   p.memoryMiB = projectionMiB(setting.projection, n);
   std::vector<double> perIteration;
   size_t iterationsTo99 = 0;
   double elapsed = 0.0;
-  while (!solver.done() && !(trace && asFarAsTheReference(solver, args))) {
+  auto measured = [&] {
+    return trace ? asFarAsTheReference(solver, args) : p.secondsTo99 >= 0 && (args.untilUnshot <= 0 || p.secondsToUnshot >= 0);
+  };
+  // Pictures of what a user would see: the receivers, elements where there are any.
+  auto pictureError = [&] { return pictures.error(solver.elements(), solver.displayElementRadiosity()); };
+  while (!solver.done() && !measured()) {
     const double before = threadCpuSeconds();
     const IterationRecord& r = solver.step();
     const double seconds = threadCpuSeconds() - before;
@@ -161,15 +187,21 @@ Point measure(const Scene& scene, const std::vector<Patch>& patches, const Setti
     if (p.secondsTo95 < 0 && r.convergence >= 0.95) {
       p.secondsTo95 = elapsed;
       p.error95 = relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity);
-      p.imageError95 = pictures.error(patches, solver.displayRadiosity());
+      p.imageError95 = pictureError();
     }
     if (p.secondsTo99 < 0 && r.convergence >= 0.99) {
       p.secondsTo99 = elapsed;
       p.error99 = relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity);
-      p.imageError99 = pictures.error(patches, solver.displayRadiosity());
+      p.imageError99 = pictureError();
       iterationsTo99 = perIteration.size();
     }
+    if (args.untilUnshot > 0 && p.secondsToUnshot < 0 && r.ledger.unshotFraction() <= args.untilUnshot) {
+      p.secondsToUnshot = elapsed;
+      p.errorAtUnshot = relativeRmsError(scene, patches, solver.radiosity(), ref.radiosity);
+      p.imageErrorAtUnshot = pictureError();
+    }
   }
+  p.elements = solver.elements().size();
   // The cost per iteration of the range every point covers, not of the trace's long tail.
   if (iterationsTo99 > 0) perIteration.resize(iterationsTo99);
   p.msPerIteration = 1e3 * median(perIteration);
@@ -190,14 +222,18 @@ std::vector<std::pair<double, double>> paretoFront(std::vector<std::pair<double,
 
 CsvTable pointsTable(const std::vector<Point>& points) {
   CsvTable t{.columns = {"projection", "ratio", "resolution", "cell_m", "patches", "ms_per_iteration", "seconds_to_95",
-              "seconds_to_99", "error_at_95", "error_at_99", "image_rmse_at_95", "image_rmse_at_99", "memory_mib"}};
+              "seconds_to_99", "error_at_95", "error_at_99", "image_rmse_at_95", "image_rmse_at_99", "memory_mib",
+              "subdivide", "min_element", "elements", "seconds_to_unshot", "error_at_unshot", "image_rmse_at_unshot"}};
   for (const Point& p : points)
     t.rows.push_back({toString(p.setting.projection), fmt::format("{}", p.setting.ratio), std::to_string(p.resolution),
                       fmt::format("{}", p.cellM), std::to_string(p.patches), fmt::format("{:.6g}", p.msPerIteration),
                       fmt::format("{:.6g}", p.secondsTo95), fmt::format("{:.6g}", p.secondsTo99),
                       fmt::format("{:.6g}", p.error95), fmt::format("{:.6g}", p.error99),
                       fmt::format("{:.4g}", p.imageError95), fmt::format("{:.4g}", p.imageError99),
-                      fmt::format("{:.4g}", p.memoryMiB)});
+                      fmt::format("{:.4g}", p.memoryMiB), toString(p.subdivision.subdivide),
+                      fmt::format("{}", p.subdivision.minElementM), std::to_string(p.elements),
+                      fmt::format("{:.6g}", p.secondsToUnshot), fmt::format("{:.6g}", p.errorAtUnshot),
+                      fmt::format("{:.4g}", p.imageErrorAtUnshot)});
   return t;
 }
 
@@ -221,6 +257,10 @@ CsvTable tracesTable(const std::vector<Trace>& traces) {
 
 std::string rowSetting(const CsvTable& t, size_t row) { return settingLabel(t.text(row, "projection"), t.number(row, "ratio")); }
 
+// Tables written before the subdivide axis have patches only.
+bool hasSubdivide(const CsvTable& t) { return std::ranges::find(t.columns, "subdivide") != t.columns.end(); }
+std::string rowSubdivide(const CsvTable& t, size_t row) { return hasSubdivide(t) ? t.text(row, "subdivide") : "off"; }
+
 // Error at C = 0.99 against the time to reach it, a series per setting and cell, Pareto front in black.
 Plot errorVersusTime(const std::string& title, const std::string& errorLabel, const CsvTable& points,
                      const std::string& errorColumn) {
@@ -228,13 +268,47 @@ Plot errorVersusTime(const std::string& title, const std::string& errorLabel, co
   std::vector<std::pair<double, double>> all;
   for (size_t row = 0; row < points.rows.size(); ++row) {
     const double seconds = points.number(row, "seconds_to_99"), error = points.number(row, errorColumn);
-    if (seconds <= 0 || error < 0) continue;
+    if (seconds <= 0 || error < 0 || rowSubdivide(points, row) != "off") continue;
     const std::string name = fmt::format("{} cell {}", rowSetting(points, row), points.number(row, "cell_m"));
     auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const Series& s) { return s.title == name; });
     if (it == plot.series.end()) it = plot.series.insert(plot.series.end(), Series{name, {}, "linespoints"});
     // Log axes: an exact zero is drawn at the floor.
     it->points.emplace_back(seconds, std::max(error, 1e-9));
     all.push_back(it->points.back());
+  }
+  plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
+  return plot;
+}
+
+// The subdivide axis: picture error against time, a series per subdivide mode, each point labelled
+// with its cell and element size, the Pareto front in black. At --until-unshot when it was measured.
+Plot subdivisionPlot(const std::string& sceneName, const CsvTable& points) {
+  bool atUnshot = false;
+  for (size_t row = 0; row < points.rows.size(); ++row) atUnshot |= points.number(row, "seconds_to_unshot") > 0;
+  const std::string secondsColumn = atUnshot ? "seconds_to_unshot" : "seconds_to_99";
+  const std::string errorColumn = atUnshot ? "image_rmse_at_unshot" : "image_rmse_at_99";
+  const std::string stop = atUnshot ? "the unshot stop" : "C = 0.99";
+  Plot plot{.title = "Picture error against time to " + stop + ", patches against elements: " + sceneName,
+            .xLabel = "CPU seconds to " + stop + " (one thread)", .yLabel = "RMSE of the pictures, 8-bit levels",
+            .logX = true, .logY = true};
+  const std::vector<std::pair<std::string, std::string>> modes = {
+      {"off", "patches (off)"}, {"uniform", "uniform elements"}, {"adaptive", "adaptive elements"}};
+  std::vector<std::pair<double, double>> all;
+  for (size_t m = 0; m < modes.size(); ++m) {
+    Series series{modes[m].second, {}, fmt::format("points pt {} ps 2", 5 + 2 * m)};
+    for (size_t row = 0; row < points.rows.size(); ++row) {
+      const double seconds = points.number(row, secondsColumn), error = points.number(row, errorColumn);
+      if (seconds <= 0 || error < 0 || points.text(row, "subdivide") != modes[m].first) continue;
+      series.points.emplace_back(seconds, std::max(error, 1e-9));
+      all.push_back(series.points.back());
+      const std::string what = modes[m].first == "off"
+                                   ? fmt::format("{} cell {}", rowSetting(points, row), points.text(row, "cell_m"))
+                                   : fmt::format("{} cell {} el {}", rowSetting(points, row), points.text(row, "cell_m"),
+                                                 points.text(row, "min_element"));
+      plot.settings.push_back(fmt::format("set label \"{}\" at {},{} offset 1,0.5 font ',8'", what, seconds,
+                                          std::max(error, 1e-9)));
+    }
+    if (!series.points.empty()) plot.series.push_back(series);
   }
   plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
   return plot;
@@ -275,7 +349,11 @@ void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) 
       remaining.points.emplace_back(iteration, std::max(1.0 - traces.number(row, "convergence"), 1e-9));
   }
   if (!remaining.points.empty()) conv.series.push_back(remaining);
-  drawPlot(conv, stem + "-error-vs-convergence.png");
+  if (!conv.series.empty()) drawPlot(conv, stem + "-error-vs-convergence.png");  // traces follow off rows only
+  if (hasSubdivide(points)) {
+    const Plot subdivision = subdivisionPlot(sceneName, points);
+    if (subdivision.series.size() > 1) drawPlot(subdivision, stem + "-subdivide.png");  // not without the viewer
+  }
 }
 
 AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
@@ -288,14 +366,66 @@ AccuracyArgs quickAccuracyArgs(AccuracyArgs args) {
   return args;
 }
 
+namespace {
+
+std::vector<Setting> chosenSettings(const AccuracyArgs& args) {
+  std::vector<Setting> settings;
+  for (const std::string& name : args.projections) {
+    const Projection p = parseProjection(name);
+    if (p == Projection::Plane) {
+      settings.push_back({p, 3.0});
+      settings.push_back({p, 5.0});
+    } else if (p == Projection::Hemicube) {
+      settings.push_back({p, 3.0});
+    } else {
+      throw OptionError("bench accuracy --projections '" + name + "': give plane (ratios 3 and 5) or hemicube");
+    }
+  }
+  if (settings.empty()) throw OptionError("bench accuracy needs at least one --projections value: plane or hemicube");
+  return settings;
+}
+
+// The receivers a cell is measured with: off on every cell, uniform and adaptive on the subdivided cells.
+std::vector<Subdivision> subdivisionsOf(double cell, const std::vector<double>& subdividedCells,
+                                        const AccuracyArgs& args) {
+  std::vector<Subdivision> out;
+  const bool subdivided = std::ranges::find(subdividedCells, cell) != subdividedCells.end();
+  for (const std::string& name : args.subdivide) {
+    const Subdivide mode = parseSubdivide(name);
+    if (mode == Subdivide::Off) out.push_back({mode, 0.0});
+    if (mode == Subdivide::Off || !subdivided) continue;
+    const bool ownList = mode == Subdivide::Adaptive && !args.adaptiveMinElements.empty();
+    for (double m : ownList ? args.adaptiveMinElements : args.minElements) out.push_back({mode, m});
+  }
+  return out;
+}
+
+// Every option checked before the references take their minutes.
+std::vector<double> checkedSubdividedCells(const AccuracyArgs& args, const std::vector<Setting>& settings) {
+  if (args.subdivide.empty()) throw OptionError("bench accuracy needs at least one --subdivide value: off, uniform or adaptive");
+  if (!(args.untilUnshot >= 0.0 && args.untilUnshot < 1.0))
+    throw OptionError("bench accuracy --until-unshot must be a fraction in [0, 1), e.g. 0.01 (0: C = 0.99 only)");
+  std::vector<double> subdivided = args.subdivideCells;
+  if (subdivided.empty()) subdivided.push_back(*std::ranges::max_element(args.cells));
+  for (double cell : subdivided)
+    if (std::ranges::find(args.cells, cell) == args.cells.end())
+      throw OptionError(fmt::format("bench accuracy --subdivide-cells {}: not one of --cells; give cells from that list",
+                                    cell));
+  for (const Subdivision& s : subdivisionsOf(subdivided.front(), subdivided, args))
+    validateOptions(measuredOptions(settings.front(), args.resolutions.front(), s, args));
+  return subdivided;
+}
+
+}  // namespace
+
 nlohmann::json benchAccuracy(const AccuracyArgs& args) {
   const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up);
-  const std::vector<Setting> settings = {
-      {Projection::Plane, 3.0}, {Projection::Plane, 5.0}, {Projection::Hemicube, 3.0}};
   if (args.cells.empty() || args.resolutions.empty())
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
     throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
+  const std::vector<Setting> settings = chosenSettings(args);
+  const std::vector<double> subdividedCells = checkedSubdividedCells(args, settings);
   // The finest mesh's reference is solved first: its pictures are the reference across meshes.
   std::vector<double> cells = args.cells;
   std::sort(cells.begin(), cells.end());
@@ -320,24 +450,31 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
   }
   std::vector<Point> points;
   std::vector<Trace> traces;
-  fmt::print("{:<9} {:>5} {:>7} {:>8} {:>10} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8}\n", "setting", "N", "cell m",
-             "patches", "ms/iter", "s to .95", "s to .99", "err @.95", "err @.99", "img @.99", "MiB");
+  fmt::print("{:<9} {:>5} {:>7} {:>8} {:>10} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8} {:<15} {:>8} {:>9} {:>10}\n",
+             "setting", "N", "cell m", "patches", "ms/iter", "s to .95", "s to .99", "err @.95", "err @.99",
+             "img @.99", "MiB", "subdivide", "elements", "s unshot", "img unshot");
   // Coarse to fine, as a user would try them.
   for (auto cell = cells.rbegin(); cell != cells.rend(); ++cell) {
     const std::vector<Patch>& patches = meshes[*cell];
     for (const Setting& setting : settings) {
       for (int n : args.resolutions) {
-        // Error-against-convergence traces on the coarsest mesh at the middle resolution: the
-        // paper's plane, and the hemicube.
-        const bool traced = cell == cells.rbegin() && n == args.resolutions[args.resolutions.size() / 2] &&
-                            !(setting.projection == Projection::Plane && setting.ratio == 5.0);
-        if (traced) traces.push_back({setting, n, *cell, {}});
-        const Point p = measure(scene, patches, setting, n, *cell, refs[*cell], args, pictures,
-                                traced ? &traces.back().points : nullptr);
-        fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8.2f}\n", label(setting), n,
-                   *cell, p.patches, p.msPerIteration, shown(p.secondsTo95, 3), shown(p.secondsTo99, 3),
-                   shown(p.error95, 4), shown(p.error99, 4), shown(p.imageError99, 2), p.memoryMiB);
-        points.push_back(p);
+        for (const Subdivision& subdivision : subdivisionsOf(*cell, subdividedCells, args)) {
+          // Error-against-convergence traces on the coarsest mesh at the middle resolution, patches
+          // only: the paper's plane, and the hemicube.
+          const bool traced = cell == cells.rbegin() && n == args.resolutions[args.resolutions.size() / 2] &&
+                              !(setting.projection == Projection::Plane && setting.ratio == 5.0) &&
+                              subdivision.subdivide == Subdivide::Off;
+          if (traced) traces.push_back({setting, n, *cell, {}});
+          const Point p = measure(scene, patches, setting, n, *cell, subdivision, refs[*cell], args, pictures,
+                                  traced ? &traces.back().points : nullptr);
+          fmt::print("{:<9} {:>5} {:>7.3f} {:>8} {:>10.3f} {:>9} {:>9} {:>10} {:>10} {:>8} {:>8.2f} {:<15} {:>8} {:>9} "
+                     "{:>10}\n",
+                     label(setting), n, *cell, p.patches, p.msPerIteration, shown(p.secondsTo95, 3),
+                     shown(p.secondsTo99, 3), shown(p.error95, 4), shown(p.error99, 4), shown(p.imageError99, 2),
+                     p.memoryMiB, label(subdivision), p.elements, shown(p.secondsToUnshot, 3),
+                     shown(p.imageErrorAtUnshot, 2));
+          points.push_back(p);
+        }
       }
     }
   }
@@ -348,7 +485,10 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                     {"ms_per_iteration", p.msPerIteration}, {"seconds_to_95", p.secondsTo95},
                     {"seconds_to_99", p.secondsTo99}, {"error_at_95", p.error95}, {"error_at_99", p.error99},
                     {"image_rmse_at_95", p.imageError95}, {"image_rmse_at_99", p.imageError99},
-                    {"memory_mib", p.memoryMiB}});
+                    {"memory_mib", p.memoryMiB}, {"subdivide", toString(p.subdivision.subdivide)},
+                    {"min_element", p.subdivision.minElementM}, {"elements", p.elements},
+                    {"seconds_to_unshot", p.secondsToUnshot}, {"error_at_unshot", p.errorAtUnshot},
+                    {"image_rmse_at_unshot", p.imageErrorAtUnshot}});
   nlohmann::json tracesJson = nlohmann::json::array();
   for (const Trace& trace : traces) {
     nlohmann::json points = nlohmann::json::array();
@@ -362,7 +502,8 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
   }
   nlohmann::json result = {{"scene", scene.source}, {"references", references}, {"points", rows},
                            {"traces", tracesJson},
-                           {"image_cameras", pictures.cameraCount()}};
+                           {"image_cameras", pictures.cameraCount()}, {"until_unshot", args.untilUnshot},
+                           {"split_contrast", args.splitContrast}};
   if (!args.outDir.empty()) {
     const std::string stem = (std::filesystem::path(args.outDir) / args.name).string();
     writeCsv(stem + ".csv", pointsTable(points));

@@ -71,6 +71,22 @@ void addBenchAccuracy(CLI::App* bench) {
                   "And the most unshot power the reference may leave, as a fraction of the emitted")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")->capture_default_str();
+  cmd->add_option("--projections", args->projections, "Projections: plane (ratios 3 and 5), hemicube")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--subdivide", args->subdivide,
+                  "Receivers to compare: off (patches), uniform, adaptive (elements; docs/accuracy.md)")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--min-element", args->minElements,
+                  "Element sizes, metres, for uniform (0: four a patch) and adaptive (above 0)")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--adaptive-min-element", args->adaptiveMinElements,
+                  "Element sizes, metres, for adaptive instead of --min-element")->delimiter(',');
+  cmd->add_option("--split-contrast", args->splitContrast, "With adaptive: the split threshold")->capture_default_str();
+  cmd->add_option("--subdivide-cells", args->subdivideCells,
+                  "The cells (of --cells) uniform and adaptive run on (default: the coarsest)")->delimiter(',');
+  cmd->add_option("--until-unshot", args->untilUnshot,
+                  "Also solve each point on to this unshot fraction and measure it there (0: C = 0.99 only)")
+      ->capture_default_str();
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, json, cmd] {
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;

@@ -1,5 +1,6 @@
 #include "cli/image_error.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #if RADMESH_HAS_VIEWER
@@ -15,23 +16,31 @@ namespace radmesh::cli {
 
 namespace {
 constexpr glm::ivec2 kSize{320, 240};  // enough pixels for shading gradients, cheap to draw
+
+// Adaptive elements split in place, and another solve's may sit at the same address: the mesh is
+// known by what it holds.
+bool sameMesh(const std::vector<Patch>& a, const std::vector<Patch>& b) {
+  return std::ranges::equal(a, b, [](const Patch& p, const Patch& q) {
+    return p.vertexCount == q.vertexCount && p.vertices == q.vertices && p.material == q.material;
+  });
+}
 }
 
 struct ImageErrorProbe::State {
   std::vector<RenderView> views;
   double exposure = 1.0;
   std::vector<Image> reference;
-  const std::vector<Patch>* mesh = nullptr;  // the patches renderer was built for
+  std::vector<Patch> mesh;  // the patches renderer was built for
   DisplayMesh display;
   std::unique_ptr<OffscreenRenderer> renderer;
 
   // `fixExposure`: take this frame's automatic exposure for every picture from now on.
   std::vector<Image> render(const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity,
                             bool fixExposure) {
-    if (mesh != &patches || !renderer) {
+    if (!renderer || !sameMesh(mesh, patches)) {
       display = buildDisplayMesh(patches);
       renderer = std::make_unique<OffscreenRenderer>(display, kSize);
-      mesh = &patches;
+      mesh = patches;
     }
     const std::vector<Rgb> vertexB = vertexRadiosity(display, displayRadiosity);
     if (fixExposure) exposure = autoExposure(display, vertexB);

@@ -24,7 +24,7 @@ class ImageErrorProbe {
   // Renders the reference pictures and fixes the exposure to the reference's automatic one.
   void setReference(const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity);
   // Mean over the cameras of the RMSE against the reference pictures, in 8-bit sRGB levels. The
-  // patches must stay alive and unchanged while they are the probe's current mesh.
+  // display mesh is built again whenever the patches differ from the last call's.
   double error(const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity);
 
  private:

@@ -78,5 +78,69 @@ TEST(CliSubdivide, WhatIsNotBuiltYetIsRefusedNamingTheFlag) {
   EXPECT_NE(run.output.find("--subdivide and --cells auto"), std::string::npos) << run.output;
 }
 
+// The subdivide axis of `bench accuracy`: off on every cell, uniform and adaptive on the coarsest,
+// once per element size. The furnace (a 1 m box) meshes to 6 patches at 1 m and 24 at 0.5 m.
+TEST(CliSubdivide, BenchAccuracyMeasuresEachSubdivisionOnItsCells) {
+  const std::string dir = tempPath("accuracy"), json = tempPath("furnace.json");
+  const CommandRun run = radmesh(
+      "bench accuracy furnace --cells 1,0.5 --resolutions 16 --projections hemicube --reference-resolution 32 "
+      "--subdivide off,uniform,adaptive --min-element 0,0.5 --adaptive-min-element 0.25 --until-unshot 0.05 "
+      "--threads 1 --out-dir " + dir + " --json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(json);
+  const auto j = nlohmann::json::parse(in);
+  const auto& points = j["points"];
+  ASSERT_EQ(points.size(), 5u);  // cell 1: off, uniform 0, uniform 0.5, adaptive 0.25; cell 0.5: off
+  const std::vector<std::string> subdivide = {"off", "uniform", "uniform", "adaptive", "off"};
+  const std::vector<double> cells = {1, 1, 1, 1, 0.5}, minElements = {0, 0, 0.5, 0.25, 0};
+  const std::vector<int> patches = {6, 6, 6, 6, 24};
+  for (size_t i = 0; i < points.size(); ++i) {
+    EXPECT_EQ(points[i]["subdivide"], subdivide[i]) << i;
+    EXPECT_EQ(points[i]["cell"].get<double>(), cells[i]) << i;
+    EXPECT_EQ(points[i]["min_element"].get<double>(), minElements[i]) << i;
+    EXPECT_EQ(points[i]["patches"].get<int>(), patches[i]) << i;
+    EXPECT_EQ(points[i]["projection"], "hemicube") << i;
+    // Every point reached both stops (-1: not reached).
+    EXPECT_GT(points[i]["seconds_to_99"].get<double>(), 0.0) << i;
+    EXPECT_GT(points[i]["seconds_to_unshot"].get<double>(), 0.0) << i;
+    EXPECT_GE(points[i]["error_at_unshot"].get<double>(), 0.0) << i;
+  }
+  // Uniform: four elements a patch at 0, and 0.5 m cuts 1 m patches in four too; off: the patches.
+  EXPECT_EQ(points[0]["elements"].get<int>(), 6);
+  EXPECT_EQ(points[1]["elements"].get<int>(), 24);
+  EXPECT_EQ(points[2]["elements"].get<int>(), 24);
+  EXPECT_EQ(points[4]["elements"].get<int>(), 24);
+  // Adaptive starts from the patches and each split adds three elements, down to 0.25 m (96 at most).
+  const int adaptive = points[3]["elements"].get<int>();
+  EXPECT_GE(adaptive, 6);
+  EXPECT_LE(adaptive, 96);
+  EXPECT_EQ((adaptive - 6) % 3, 0);
+  // The CSV has a row per point and the new columns after the old ones.
+  std::ifstream csv(dir + "/furnace.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.substr(header.find("memory_mib")),
+            "memory_mib,subdivide,min_element,elements,seconds_to_unshot,error_at_unshot,image_rmse_at_unshot");
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 5);
+}
+
+TEST(CliSubdivide, BenchAccuracyRefusesASubdivisionItCannotRun) {
+  CommandRun run = radmesh("bench accuracy furnace --cells 1 --subdivide adaptive --min-element 0");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--subdivide adaptive splits elements down to --min-element"), std::string::npos)
+      << run.output;
+  run = radmesh("bench accuracy furnace --cells 1,0.5 --subdivide uniform --subdivide-cells 0.3");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--subdivide-cells 0.3"), std::string::npos) << run.output;
+  run = radmesh("bench accuracy furnace --cells 1 --subdivide sometimes");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--subdivide 'sometimes' is unknown"), std::string::npos) << run.output;
+  run = radmesh("bench accuracy furnace --cells 1 --projections analytic");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--projections 'analytic'"), std::string::npos) << run.output;
+}
+
 }  // namespace
 }  // namespace radmesh
