@@ -8,23 +8,16 @@
 #include "solver/meshing/elements.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/cell_solver.h"
+#include "tests/solver/radiosity/two_rooms_cells.h"
 #include "tests/solver/solver_test_helpers.h"
 
 namespace radmesh {
 namespace {
 
-// two-rooms at the 0.75 m grid (374 patches): room A (x 0..4, lit) and room B (x 4.2..8.2, lit
-// only through the door), the portal the door in A's wall face, x = 4.
+// two-rooms at the 0.75 m grid (374 patches): room A lit, room B lit only through the door.
 constexpr double kCellM = 0.75;
-bool inRoomA(const Patch& p) { return p.centroid.x <= 4.0 + 1e-9; }
-
-CellPartition twoRoomsPartition(const std::vector<Patch>& patches) {
-  CellPartition partition;
-  partition.cells = {{"A", {0, 0, 0}, {4, 4, 2.7}}, {"B", {4, 0, 0}, {8.2, 4, 2.7}}};
-  partition.portals = {{{{4, 1.55, 0}, {4, 2.45, 0}, {4, 2.45, 2.1}, {4, 1.55, 2.1}}, 0, 1, 0.9 * 2.1}};
-  for (const Patch& p : patches) partition.cellOfPatch.push_back(inRoomA(p) ? 0 : 1);
-  return partition;
-}
+using test::reflectedInRoom;
+using test::twoRoomsPartition;
 
 SolveOptions elementOptions(Subdivide how, double untilUnshot, int threads = 1) {
   SolveOptions o;
@@ -40,18 +33,6 @@ struct TwoRooms {
   Scene scene = builtinScene("two-rooms");
   std::vector<Patch> patches = meshScene(scene, kCellM);
 };
-
-// Area-weighted mean reflected radiosity (B - E over RGB) of one room's elements.
-double reflected(const Scene& scene, const std::vector<Patch>& elements, const std::vector<Rgb>& b, bool roomA) {
-  double weighted = 0.0, area = 0.0;
-  for (size_t e = 0; e < elements.size(); ++e) {
-    if (inRoomA(elements[e]) != roomA) continue;
-    const Rgb emitted = scene.materials[elements[e].material].emittance;
-    weighted += (b[e].r + b[e].g + b[e].b - emitted.r - emitted.g - emitted.b) * elements[e].areaM2;
-    area += elements[e].areaM2;
-  }
-  return weighted / area;
-}
 
 // Each cell's ledger and the building's balance every round, with uniform and adaptive elements;
 // the building's elements tile its patches (each polygon's elements adding up to its patches' area),
@@ -119,8 +100,8 @@ TEST(CellElements, UniformLightPerRoomNearTheWholeBuildingUniformSolve) {
   while (!whole.done()) whole.step();
   const std::vector<Patch> elements = cells.elements().elements;
   const std::vector<Rgb> b = cells.elementRadiosity();
-  const double roomA = reflected(t.scene, elements, b, true) / reflected(t.scene, whole.elements(), whole.elementRadiosity(), true) - 1.0;
-  const double roomB = reflected(t.scene, elements, b, false) / reflected(t.scene, whole.elements(), whole.elementRadiosity(), false) - 1.0;
+  const double roomA = reflectedInRoom(t.scene, elements, b, true) / reflectedInRoom(t.scene, whole.elements(), whole.elementRadiosity(), true) - 1.0;
+  const double roomB = reflectedInRoom(t.scene, elements, b, false) / reflectedInRoom(t.scene, whole.elements(), whole.elementRadiosity(), false) - 1.0;
   EXPECT_LT(std::abs(roomA), 0.006) << roomA;
   EXPECT_LT(std::abs(roomB), 0.08) << roomB;
 }
