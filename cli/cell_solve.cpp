@@ -52,9 +52,13 @@ void printCellsSummary(const CellSolver& solver, double seconds) {
   const Ledger l = solver.ledger();
   double portalTransfers = 0.0;
   for (const CellFigures& cell : solver.cellFigures()) portalTransfers += cell.ledger.portalIn;
-  fmt::print("solved: {} patches in {} cells ({} portals), {} iterations in {} rounds, unshot {:.2f}%, {:.3f} s\n",
-             solver.patches().size(), solver.cellCount(), solver.portalCount(), solver.iterations(), solver.rounds(),
-             100.0 * l.unshotFraction(), seconds);
+  int elements = 0;
+  for (const CellFigures& cell : solver.cellFigures()) elements += cell.elements;
+  const std::string elementsText =
+      solver.options().subdivide == Subdivide::Off ? "" : fmt::format(" ({} elements)", elements);
+  fmt::print("solved: {} patches{} in {} cells ({} portals), {} iterations in {} rounds, unshot {:.2f}%, {:.3f} s\n",
+             solver.patches().size(), elementsText, solver.cellCount(), solver.portalCount(), solver.iterations(),
+             solver.rounds(), 100.0 * l.unshotFraction(), seconds);
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} (with what waits on portals) + not captured "
              "{:.6g} + escaped {:.6g}  (imbalance {:.1e}); {:.6g} W crossed portals\n",
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance(), portalTransfers);
@@ -63,17 +67,22 @@ void printCellsSummary(const CellSolver& solver, double seconds) {
 nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds) {
   const SolveOptions& o = solver.options();
   nlohmann::json perCell = nlohmann::json::array();
-  for (const CellFigures& cell : solver.cellFigures())
+  int elements = 0;
+  for (const CellFigures& cell : solver.cellFigures()) {
+    elements += cell.elements;
     perCell.push_back({{"name", cell.name},
                        {"patches", cell.patches},
+                       {"elements", cell.elements},
                        {"portal_patches", cell.portalPatches},
                        {"iterations", cell.iterations},
                        {"unshot_fraction", cell.ledger.unshotFraction()},
                        {"waiting", cell.waitingW},
                        {"ledger", ledgerJson(cell.ledger)}});
+  }
   nlohmann::json j = optionsJson(o);
   j.update({{"scene", scene},
           {"patches", solver.patches().size()},
+          {"elements", elements},
           {"cells", solver.cellCount()},
           {"portals", solver.portalCount()},
           {"rounds", solver.rounds()},

@@ -109,7 +109,7 @@ Solved solveScene(const RenderArgs& args) {
         makeCellSolver(scene, meshScene(scene, cell.cellM), options, {cell.cellM, args.flags.exchangeShots, args.flags.portalBins});
     printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
     if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
-    return solvedFrom(solver->patches(), solver->displayRadiosity());
+    return solvedFrom(solver->elements().elements, solver->displayElementRadiosity());
   }
   ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   printEffects(solver.effectsPlan());

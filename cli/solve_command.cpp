@@ -93,8 +93,10 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
     if (ranks) stats["distributed"] = distributedStats(*solver, ranks->traffic());
     if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }
-  const std::vector<Rgb> radiosity = args.outPath.empty() ? std::vector<Rgb>() : solver->displayRadiosity();
-  if (writes) writeBake(args.outPath, solver->patches(), radiosity, scene.upAxis);
+  if (args.outPath.empty()) return;
+  const Elements elements = solver->elements();  // every process gathers them together
+  const std::vector<Rgb> radiosity = solver->displayElementRadiosity();
+  if (writes) writeBake(args.outPath, elements.elements, radiosity, scene.upAxis);
 }
 
 void run(const SolveArgs& args, CellRanks* ranks) {

@@ -68,8 +68,6 @@ SolveOptions SolveFlags::resolved() const {
     o.projection = Projection::Plane;
   o.mapping = parseMapping(mapping);
   o.subdivide = parseSubdivide(subdivide);
-  if (o.subdivide != Subdivide::Off && cells == "auto")
-    throw OptionError("--subdivide and --cells auto do not go together yet: give --subdivide off, or --cells off");
   validateOptions(o);
   return o;
 }

@@ -57,11 +57,28 @@ void SolverThread::Run::step(const std::optional<Vec3>& eye, int upAxis) {
   add(record);
 }
 
+std::size_t SolverThread::Run::receiverCount() const {
+  if (!cells) return solver->elements().size();
+  std::size_t count = 0;
+  for (const CellFigures& cell : cells->cellFigures()) count += static_cast<std::size_t>(cell.elements);
+  return count;
+}
+
+void SolverThread::Run::buildMesh() {
+  if (!cells) {
+    mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(solver->elements()));
+  } else {
+    const Elements elements = cells->elements();
+    mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(elements.elements));
+    auto cellOf = std::make_shared<std::vector<int>>();
+    for (int p : elements.patchOf) cellOf->push_back(partition->cellOfPatch[p]);
+    cellOfReceiver = std::move(cellOf);
+  }
+  meshedReceivers = receiverCount();
+}
+
 void SolverThread::Run::remeshIfSplit() {
-  const auto& elements = receivers();
-  if (elements.size() == meshedReceivers) return;
-  mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(elements));
-  meshedReceivers = elements.size();
+  if (receiverCount() != meshedReceivers) buildMesh();
 }
 
 void SolverThread::Run::focusOn(const std::optional<Vec3>& eye, int upAxis) {
@@ -100,8 +117,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
       for (const IterationRecord& record : run->solver->history()) run->add(record);
       run->checkpointMessage = "resumed from " + resumePath;
     }
-    run->mesh = std::make_shared<const DisplayMesh>(buildDisplayMesh(run->receivers()));
-    run->meshedReceivers = run->receivers().size();
+    run->buildMesh();
     return run;
   } catch (const std::exception& e) {
     publishFailure(setup, e.what());
@@ -132,6 +148,7 @@ std::shared_ptr<const CellsProgress> SolverThread::cellsProgress(const Run& run)
   progress->focus = run.focus;
   progress->eyeInFocus = run.eyeInFocus;
   progress->partition = run.partition;
+  progress->cellOfReceiver = run.cellOfReceiver;
   return progress;
 }
 
@@ -142,7 +159,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->mesh = run.mesh;
   snapshot->summary = run.summary;
   if (run.cells) {
-    snapshot->vertexB = vertexRadiosity(*run.mesh, run.cells->displayRadiosity());
+    snapshot->vertexB = vertexRadiosity(*run.mesh, run.cells->displayElementRadiosity());
     snapshot->cells = cellsProgress(run);
   } else {
     snapshot->effects = run.solver->effectsPlan().effects;

@@ -24,6 +24,7 @@ struct SolverThread::Run {
   std::optional<Vec3> focusedEye;                  // the eye the focus was found for
   std::shared_ptr<const DisplayMesh> mesh;
   std::size_t meshedReceivers = 0;  // the receivers the mesh was built from
+  std::shared_ptr<const std::vector<int>> cellOfReceiver;  // with cells: each of them, the cell it faces
   SceneSummary summary;
   std::vector<ConvergencePoint> curve;
   std::shared_ptr<const ShotStats> lastShotStats;  // the last there was (cache hits have none)
@@ -36,8 +37,9 @@ struct SolverThread::Run {
   bool done() const { return cells ? cells->done() : solver->done(); }
   bool exhausted() const { return cells ? cells->exhausted() : solver->exhausted(); }
   int lastShooter() const;  // cells: -1, no item buffer
-  // What is drawn: the elements where patches are cut into them.
-  const std::vector<Patch>& receivers() const { return cells ? cells->patches() : solver->elements(); }
+  // What is drawn: the elements where patches are cut into them (a cells solve's, from its cells).
+  std::size_t receiverCount() const;
+  void buildMesh();
 
   // An iteration of the whole solve; a round of the cells solve, focused on the eye's cell first.
   void step(const std::optional<Vec3>& eye, int upAxis);

@@ -50,6 +50,7 @@ struct CellsProgress {
   int focus = -1;  // the cell solved first: the eye's, else the one nearest it; -1 before an eye is known
   bool eyeInFocus = false;  // the eye stands in the focused cell (not outside every cell)
   std::shared_ptr<const CellPartition> partition;  // the cells' bounds, the same for a whole solve
+  std::shared_ptr<const std::vector<int>> cellOfReceiver;  // per receiver of the mesh (patch or element): its cell
 };
 
 struct SolverSnapshot {

@@ -38,7 +38,7 @@ class SnapshotFeed {
     if (!shown_ || snapshot->generation != shown_->generation || snapshot->mesh != shown_->mesh) {
       renderer.setMesh(snapshot->mesh ? *snapshot->mesh : DisplayMesh{});
       if (snapshot->mesh && snapshot->cells)
-        renderer.setCells(snapshot->cells->partition->cellOfPatch,
+        renderer.setCells(*snapshot->cells->cellOfReceiver,
                           static_cast<int>(snapshot->cells->partition->cells.size()));
     }
     if (snapshot->mesh) {

@@ -45,11 +45,10 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
     const std::vector<Rgb> parentRadiosity = std::move(elementRadiosity), parentGain = iterationGain;
     backend.reset();  // it refers to the receivers, which change
     const std::vector<int> origin = splitElements(elements, split);
-    backend = makeFormFactorBackend(scene, patches, elements.elements, options);
+    backend = makeBackend();
     if (plan.nearField) elementNearReceivers = findNearFieldReceivers(patches, elements.elements);
     neighbours = elementNeighbours(elements);
     cache = FormFactorCache(options.formFactorCacheBytes);  // its rows index the old elements
-    isPortal.assign(elements.elements.size(), 0);
     regather(origin, split, parentRadiosity, parentGain);
   }
 }

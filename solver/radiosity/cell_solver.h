@@ -13,6 +13,7 @@
 
 #include "parallel/thread_pool.h"
 #include "solver/cells/cell_partition.h"
+#include "solver/meshing/elements.h"
 #include "solver/radiosity/cell_ranks.h"
 #include "solver/radiosity/progressive_solver.h"
 
@@ -38,6 +39,7 @@ void checkPortalBins(int portalBins);
 struct CellFigures {
   std::string name;
   int patches = 0;        // the cell's own
+  int elements = 0;       // its own patches' receivers (SolveOptions::subdivide; the patches when off)
   int portalPatches = 0;  // facing into it
   int iterations = 0;
   Ledger ledger;          // the cell's: portalOut counts what reached its portals, waiting or moved
@@ -89,6 +91,13 @@ class CellSolver {
   std::vector<Rgb> radiosity() const;         // per patch of the building, W/m^2
   std::vector<Rgb> displayRadiosity() const;  // with each cell's display-only ambient term
   const std::vector<Patch>& patches() const;
+  // The building's receivers (options.subdivide): each patch's elements in its cell's solve, patch
+  // by patch in the building's order, with the patch each came from (Elements::level empty then);
+  // with subdivide off, the patches. Each element's B, and with its cell's display-only ambient
+  // term. On every process of a distributed solve together.
+  Elements elements() const;
+  std::vector<Rgb> elementRadiosity() const;
+  std::vector<Rgb> displayElementRadiosity() const;
   int cellCount() const;  // with the outside cell, if any patch faces no cell
   int portalCount() const;
   std::vector<CellFigures> cellFigures() const;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "solver/formfactors/light_rows.h"
+#include "solver/meshing/elements.h"
 #include "solver/meshing/meshing.h"
 #include "solver/projection/projection.h"
 #include "solver/radiosity/cell_solver_state.h"
@@ -96,10 +97,10 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
   const int cellCount = own.back().empty() ? partitionCells : partitionCells + 1;
   s.neighbours.resize(cellCount);
   s.cells.resize(cellCount);
-  std::vector<int> cellOf(s.patches.size()), localOf(s.patches.size());
+  s.cellOf.resize(s.patches.size());
   for (int c = 0; c < cellCount; ++c)
-    for (size_t k = 0; k < own[c].size(); ++k) cellOf[own[c][k]] = c, localOf[own[c][k]] = static_cast<int>(k);
-  const std::vector<LightShot> lightShots = s.shootLights(scene, cellOf, localOf);
+    for (int j : own[c]) s.cellOf[j] = c;
+  const std::vector<LightShot> lightShots = s.shootLights(scene);
   std::vector<int> patchCount(cellCount);
   std::vector<double> lightW(cellCount, 0.0);
   for (int c = 0; c < cellCount; ++c) {
@@ -203,21 +204,31 @@ std::vector<int> assignCellsToRanks(const std::vector<double>& load, int ranks) 
   return owner;
 }
 
-// Each light's one shot over the whole building's patches (solver/formfactors/light_rows.h), as
-// the whole solve shoots it in its first iteration, cut by cell (receiveLights hands it on).
-std::vector<LightShot> CellSolver::State::shootLights(const Scene& scene, const std::vector<int>& cellOf,
-                                                      const std::vector<int>& localOf) {
+// Each light's one shot over the whole building's receivers (solver/formfactors/light_rows.h), as
+// the whole solve shoots it in its first iteration, cut by cell (receiveLights hands it on). The
+// receivers are the patches, or with --subdivide uniform their elements, which each cell's solve
+// makes alike (patch by patch, so a cell's are its patches' in the building's order); adaptive
+// subdivision starts from the patches.
+std::vector<LightShot> CellSolver::State::shootLights(const Scene& scene) {
   std::vector<LightShot> shots;
   if (scene.lights.empty()) return shots;
+  const bool uniform = options.subdivide == Subdivide::Uniform;
+  const Elements elements = uniform ? subdivideUniform(patches, options.minElementM) : Elements{};
+  const std::vector<Patch>& receivers = uniform ? elements.elements : patches;
+  std::vector<int> cellOfReceiver(receivers.size()), localOf(receivers.size()), next(cells.size(), 0);
+  for (size_t e = 0; e < receivers.size(); ++e) {
+    cellOfReceiver[e] = cellOf[uniform ? elements.patchOf[e] : e];
+    localOf[e] = next[cellOfReceiver[e]]++;
+  }
   const double nearDepth = sceneNearDepth(patches);
   for (const Light& light : scene.lights) {
     LightShot& shot = shots.emplace_back();
     shot.power = lightPower(scene, light);
     shot.perCell.resize(cells.size());
     if (!(channelSum(shot.power) > 0.0)) continue;  // a dark light, or a beam with no window
-    shot.row = lightRow(scene, light, patches, options.resolution, nearDepth, pool);
+    shot.row = lightRow(scene, light, receivers, options.resolution, nearDepth, pool);
     for (size_t r = 0; r < shot.row.receivers.size(); ++r) {  // ascending in the building, so in each cell
-      FormFactorRow& part = shot.perCell[cellOf[shot.row.receivers[r]]];
+      FormFactorRow& part = shot.perCell[cellOfReceiver[shot.row.receivers[r]]];
       part.receivers.push_back(localOf[shot.row.receivers[r]]);
       part.formFactors.push_back(shot.row.formFactors[r]);
     }

@@ -35,15 +35,23 @@ struct LightShot {
   std::vector<FormFactorRow> perCell;
 };
 
-// A cell's figures as the schedule and the building's ledger read them, in doubles for CellRanks:
-// its ledger, iterations, whether it is exhausted, then what waits on each of its links.
-constexpr size_t kFigures = 11;
+// The elements of the first `patches` patches of a solve (a cell's own, before its portal patches).
+inline int elementCount(const ProgressiveSolver& solver, int patches) {
+  std::vector<int> own(static_cast<size_t>(patches));
+  for (int k = 0; k < patches; ++k) own[k] = k;
+  return static_cast<int>(solver.elementsOf(own).size());
+}
 
-inline std::vector<double> packFigures(const ProgressiveSolver& solver, std::vector<double> waitingW) {
+// A cell's figures as the schedule, the building's ledger and the stats read them, in doubles for
+// CellRanks: its ledger, iterations, whether it is exhausted, its own patches' elements, then what
+// waits on each of its links.
+constexpr size_t kFigures = 12;
+
+inline std::vector<double> packFigures(const ProgressiveSolver& solver, int ownPatches, std::vector<double> waitingW) {
   const Ledger& l = solver.ledger();
   std::vector<double> out{l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces,
                           l.portalOut, l.portalIn, l.lightOutside, static_cast<double>(solver.history().size()),
-                          solver.exhausted() ? 1.0 : 0.0};
+                          solver.exhausted() ? 1.0 : 0.0, static_cast<double>(elementCount(solver, ownPatches))};
   out.insert(out.end(), waitingW.begin(), waitingW.end());
   return out;
 }
@@ -55,6 +63,7 @@ struct CellSolver::State {
   SolveOptions options;
   CellSolveSettings settings;
   std::vector<cell_state::CellState> cells;
+  std::vector<int> cellOf;  // per building patch: its cell (the outside's the last)
   std::vector<cell_state::PortalLink> links;  // by cell, then patch: the exchange order
   std::vector<size_t> firstLink;  // per cell, and one past the last: where its links start
   std::vector<std::vector<int>> neighbours;
@@ -73,6 +82,7 @@ struct CellSolver::State {
   std::vector<Ledger> cellLedger;
   std::vector<int> cellIterations;
   std::vector<char> cellExhausted;
+  std::vector<int> cellElements;
   std::vector<double> waitingW;  // per link: what waits on its portal patch, W
 
   State(std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s, CellRanks* r)
@@ -84,12 +94,15 @@ struct CellSolver::State {
   int hops(int cell) const { return distance[cell] < 0 ? 30 : std::min(distance[cell], 30); }
   std::vector<int> shotsThisRound(const Ledger& building) const;
   void exchange();
-  std::vector<cell_state::LightShot> shootLights(const Scene& scene, const std::vector<int>& cellOf,
-                                     const std::vector<int>& localOf);
+  std::vector<cell_state::LightShot> shootLights(const Scene& scene);
   void receiveLights(const std::vector<cell_state::LightShot>& shots);
   void refresh();
   template <typename PerCell>
   std::vector<Rgb> gatherPatches(PerCell perCell) const;
+  template <typename Write, typename Read>
+  void gatherElements(size_t width, Write write, Read read) const;
+  template <typename PerElement>
+  std::vector<Rgb> gatherElementRadiosity(PerElement perElement) const;
 };
 
 }  // namespace radmesh

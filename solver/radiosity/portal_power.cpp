@@ -51,20 +51,19 @@ void ProgressiveSolver::State::deliverByBins(const FormFactorRow& row, const std
   passToPortals(lit, incidentOf);
   if (!plan.interreflection) {
     for (size_t r = 0; r < lit.receivers.size(); ++r)
-      if (!isPortal[lit.receivers[r]]) ledger.absorbed += channelSum(incident[r]);
+      if (!portalReceiver(lit.receivers[r])) ledger.absorbed += channelSum(incident[r]);
   } else {
     receive<Rgb>(lit, incidentOf);
   }
   if (channelSum(uncovered) > 0.0) deliver(row, uncovered);
 }
 
-// How what reaches a portal patch from a shooter splits over the bins of its direction of travel,
+// How what reaches a portal patch (or one of its elements) from a shooter splits over the bins of its direction of travel,
 // in the frame of the portal's back (the twin patch facing into the neighbour cell: u, -v, -n),
 // where the light goes on: the directions from the shooter's centre through the patch, each bin's
 // part weighted by its cosine to the portal's normal (which for a patch small against its distance
 // is the shooter's cosine up to a constant), the shares adding up to 1.
-void ProgressiveSolver::State::arrivalShares(int shooter, int portal, std::vector<double>& shares) const {
-  const Patch& p = patches[portal];
+void ProgressiveSolver::State::arrivalShares(int shooter, const Patch& p, std::vector<double>& shares) const {
   std::array<Vec3, 4> seen{};
   for (int k = 0; k < p.vertexCount; ++k) {
     const Vec3 d = p.vertices[k] - patches[shooter].centroid;
@@ -86,9 +85,6 @@ void ProgressiveSolver::State::arrivalShares(int shooter, int portal, std::vecto
 
 void ProgressiveSolver::setPortalPatches(const std::vector<int>& portalPatches, int binsN) {
   State& s = *state_;
-  if (s.subdivided() && !portalPatches.empty())
-    throw OptionError("portal patches need patches that receive: a solve whose elements receive (subdivide) cannot "
-                      "be a cell yet");
   for (int j : portalPatches)
     if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
       throw std::invalid_argument(fmt::format("portal patch {} is not one of the {} patches", j, s.patches.size()));

@@ -75,7 +75,7 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   s.unshotRadiosity.resize(n);
   s.unshotPowerW.resize(n);
   s.timesShot.assign(n, 0);
-  s.isPortal.assign(s.receivers().size(), 0);
+  s.isPortal.assign(n, 0);
   s.portalPower.resize(n);
   s.portalUnshot.resize(n);
   for (size_t j = 0; j < n; ++j) {
@@ -92,7 +92,17 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   s.ledger.unshot = s.ledger.emitted;
   s.exhausted = !(s.ledger.emitted > 0.0);
   s.tieRank = depthTieRanks(s.patches);
-  s.backend = backend ? std::move(backend) : makeFormFactorBackend(s.scene, s.patches, s.receivers(), s.options);
+  s.backend = backend ? std::move(backend) : s.makeBackend();
+}
+
+// The back end over the receivers, with the portal patches' rows split by direction bin.
+std::unique_ptr<FormFactorBackend> ProgressiveSolver::State::makeBackend() const {
+  std::unique_ptr<FormFactorBackend> made = makeFormFactorBackend(scene, patches, receivers(), options);
+  std::vector<int> portals;
+  for (size_t j = 0; j < patches.size(); ++j)
+    if (isPortal[j]) portals.push_back(static_cast<int>(j));
+  if (directionBinCount(portalBinsN) > 1 && !portals.empty()) made->binDirections(portals, portalBinsN);
+  return made;
 }
 
 ProgressiveSolver::~ProgressiveSolver() = default;
@@ -206,7 +216,7 @@ void ProgressiveSolver::State::deliverToReceivers(const FormFactorRow& row, cons
   if (!plan.interreflection) {  // black receivers: B stays as emitted, all that arrives is absorbed
     double received = 0.0;
     for (size_t r = 0; r < row.receivers.size(); ++r)
-      if (!isPortal[row.receivers[r]]) received += row.formFactors[r];
+      if (!portalReceiver(row.receivers[r])) received += row.formFactors[r];
     ledger.absorbed += powerW * received;
   } else if (plan.colour) {
     receive<Rgb>(row, [&](size_t r) { return power * row.formFactors[r]; });
@@ -269,8 +279,8 @@ bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
 double ProgressiveSolver::receiveLight(FormFactorRow row, const Rgb& power) {
   State& s = *state_;
   for (int j : row.receivers)
-    if (j < 0 || static_cast<size_t>(j) >= s.patches.size())
-      throw std::invalid_argument(fmt::format("light receiver {} is not one of the {} patches", j, s.patches.size()));
+    if (j < 0 || static_cast<size_t>(j) >= s.receivers().size())
+      throw std::invalid_argument(fmt::format("light receiver {} is not one of the {} receivers", j, s.receivers().size()));
   row.backFaces = 0.0;  // what missed, escaped or hit a back face is the caller's to book
   const double arrivedW = channelSum(power) * row.hitFraction();
   s.ledger.emitted += arrivedW;

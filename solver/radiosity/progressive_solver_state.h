@@ -35,7 +35,7 @@ struct ProgressiveSolver::State {
   std::vector<int> timesShot;
   std::vector<int> tieRank;            // shooters of equal power go in geometric order
   std::vector<Rgb> lightPower;         // per scene light, W per channel: all shot in iteration 1
-  std::vector<char> isPortal;          // per patch (setPortalPatches)
+  std::vector<char> isPortal;          // per patch (setPortalPatches); its elements are portal receivers
   int portalBinsN = 0;                 // setPortalPatches' n: directionBinCount(n) bins per portal patch
   // Per portal patch, per bin of its direction of travel (in the frame of its back, facing the
   // neighbour cell): arrived on it, waiting to be taken.
@@ -87,9 +87,12 @@ struct ProgressiveSolver::State {
   bool subdivided() const { return options.subdivide != Subdivide::Off; }
   bool adaptive() const { return options.subdivide == Subdivide::Adaptive; }
   const std::vector<Patch>& receivers() const { return subdivided() ? elements.elements : patches; }
+  int patchOfReceiver(int r) const { return subdivided() ? elements.patchOf[r] : r; }
+  bool portalReceiver(int r) const { return isPortal[patchOfReceiver(r)] != 0; }
+  std::unique_ptr<FormFactorBackend> makeBackend() const;
   Rgb ambient() const;
   template <typename Incident> void passToPortals(const FormFactorRow& row, Incident incidentOf);
-  void arrivalShares(int shooter, int portal, std::vector<double>& shares) const;
+  void arrivalShares(int shooter, const Patch& portal, std::vector<double>& shares) const;
 };
 
 // Eq. 1.2 for one row, in three channels (Rgb) or in the one of a grey scene (double), each
@@ -126,6 +129,7 @@ void ProgressiveSolver::State::receiveOnElements(const FormFactorRow& row, Incid
   std::vector<Value> reflected(row.receivers.size());
   ledger.absorbed += backend->updateReceivers(row, kFlops, [&](size_t r) {
     const int e = row.receivers[r];
+    if (portalReceiver(e)) return 0.0;  // passToPortals took it
     const Value incident = incidentOf(r);
     reflected[r] = solver_state::channels<Value>(rho[elements.patchOf[e]]) * incident;
     elementRadiosity[e] += Rgb(reflected[r] / elements.elements[e].areaM2);
@@ -134,6 +138,7 @@ void ProgressiveSolver::State::receiveOnElements(const FormFactorRow& row, Incid
   });
   for (size_t r = 0; r < row.receivers.size(); ++r) {
     const int j = elements.patchOf[row.receivers[r]];
+    if (isPortal[j]) continue;
     const Value gain = reflected[r] / patches[j].areaM2;
     radiosity[j] += Rgb(gain);
     unshotRadiosity[j] += Rgb(gain);
@@ -141,21 +146,21 @@ void ProgressiveSolver::State::receiveOnElements(const FormFactorRow& row, Incid
   }
 }
 
-// What reaches a portal patch waits there for the neighbour cell, in receiver order, by the bins of
-// its direction of travel.
+// What reaches a portal patch (its elements, when patches are cut into elements) waits there for
+// the neighbour cell, in receiver order, by the bins of its direction of travel through the receiver.
 template <typename Incident>
 void ProgressiveSolver::State::passToPortals(const FormFactorRow& row, Incident incidentOf) {
   std::vector<double> shares;
   for (size_t r = 0; r < row.receivers.size(); ++r) {
-    const int j = row.receivers[r];
-    if (!isPortal[j]) continue;
+    if (!portalReceiver(row.receivers[r])) continue;
+    const int j = patchOfReceiver(row.receivers[r]);
     const Rgb incident = incidentOf(r);
     ledger.portalOut += solver_state::channelSum(incident);
     if (portalPower[j].size() == 1) {
       portalPower[j][0] += incident;
       continue;
     }
-    arrivalShares(row.shooter, j, shares);
+    arrivalShares(row.shooter, receivers()[row.receivers[r]], shares);
     for (size_t b = 0; b < shares.size(); ++b)
       if (shares[b] > 0.0) portalPower[j][b] += incident * shares[b];
   }

@@ -56,6 +56,31 @@ TEST(CliSubdivide, AdaptiveSplitsAndStatsCountTheElements) {
   EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
 }
 
+// --cells auto with elements: the stats count them in all and per cell, the bake shows them, the
+// ledgers balance.
+TEST(CliSubdivide, CellsAutoWithElementsBakesAndCountsThem) {
+  const std::string stats = tempPath("cells-elements.json"), bake = tempPath("cells-elements.glb");
+  const CommandRun run = radmesh("solve two-rooms --cells auto --subdivide uniform --cell 0.75 --resolution 32 "
+                                 "--until-unshot 0.2 --quiet --stats " + stats + " --out " + bake);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(stats);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["subdivide"], "uniform");
+  EXPECT_EQ(j["elements"].get<int>(), 4 * j["patches"].get<int>());  // --min-element 0: every patch in four
+  int perCell = 0;
+  for (const auto& cell : j["per_cell"]) {
+    EXPECT_EQ(cell["elements"].get<int>(), 4 * cell["patches"].get<int>()) << cell["name"];
+    EXPECT_LE(cell["ledger"]["imbalance"].get<double>(), 1e-9) << cell["name"];
+    perCell += cell["elements"].get<int>();
+  }
+  EXPECT_EQ(perCell, j["elements"].get<int>());
+  EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-9);
+  EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
+  const CommandRun baked = radmesh("info " + bake + " --json");
+  ASSERT_EQ(baked.exitCode, 0) << baked.output;
+  EXPECT_GE(nlohmann::json::parse(baked.output)["triangles"].get<int>(), j["elements"].get<int>());
+}
+
 TEST(CliSubdivide, WhatIsNotBuiltYetIsRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve cornell --subdivide adaptive");
   EXPECT_EQ(run.exitCode, 2);
@@ -73,9 +98,6 @@ TEST(CliSubdivide, WhatIsNotBuiltYetIsRefusedNamingTheFlag) {
   run = radmesh("solve cornell --subdivide uniform --checkpoint " + tempPath("subdivide.ckpt"));
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--subdivide off"), std::string::npos) << run.output;
-  run = radmesh("solve two-rooms --subdivide uniform --cells auto");
-  EXPECT_NE(run.exitCode, 0);
-  EXPECT_NE(run.output.find("--subdivide and --cells auto"), std::string::npos) << run.output;
 }
 
 // The subdivide axis of `bench accuracy`: off on every cell, uniform and adaptive on the coarsest,

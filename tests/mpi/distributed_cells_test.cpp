@@ -106,5 +106,37 @@ TEST(DistributedCells, Building3x3EqualsOneProcessBitForBit) {
   expectDistributedEqualsOneProcess("building:3x3", 1.5, 2, 0.15);
 }
 
+// Elements (--subdivide uniform and adaptive): the building's elements, their radiosity and each
+// cell's element count are gathered from their processes, the same as one process's bit for bit.
+TEST(DistributedCells, TwoRoomsWithElementsEqualsOneProcessBitForBit) {
+  const Scene scene = builtinScene("two-rooms");
+  const std::vector<Patch> patches = meshScene(scene, 0.75);
+  const CellPartition partition = findCells(scene, patches);
+  for (Subdivide how : {Subdivide::Uniform, Subdivide::Adaptive}) {
+    SolveOptions o = fastOptions(0.05);
+    o.subdivide = how;
+    o.minElementM = how == Subdivide::Adaptive ? 0.2 : 0.0;
+    CellSolver alone(scene, patches, partition, o, {0.75, 16, 4});
+    solve(alone);
+    distributed::MpiCellRanks ranks;
+    CellSolver split(scene, patches, partition, o, {0.75, 16, 4}, &ranks);
+    solve(split);
+    EXPECT_EQ(split.iterations(), alone.iterations()) << toString(how);
+    expectSameLedger(split.ledger(), alone.ledger());
+    const std::vector<Patch> a = alone.elements().elements, b = split.elements().elements;
+    ASSERT_EQ(a.size(), b.size()) << toString(how);
+    EXPECT_GT(a.size(), patches.size());
+    for (size_t e = 0; e < a.size(); ++e) {
+      ASSERT_EQ(b[e].vertices, a[e].vertices) << "element " << e;
+      ASSERT_EQ(b[e].areaM2, a[e].areaM2) << "element " << e;
+      ASSERT_EQ(b[e].polygon, a[e].polygon) << "element " << e;
+    }
+    EXPECT_EQ(split.elementRadiosity(), alone.elementRadiosity()) << toString(how);
+    EXPECT_EQ(split.displayElementRadiosity(), alone.displayElementRadiosity()) << toString(how);
+    const std::vector<CellFigures> fa = alone.cellFigures(), fb = split.cellFigures();
+    for (size_t c = 0; c < fa.size(); ++c) EXPECT_EQ(fb[c].elements, fa[c].elements) << fa[c].name;
+  }
+}
+
 }  // namespace
 }  // namespace radmesh

@@ -124,6 +124,33 @@ TEST(CellsSolverThread, AnEyeOutsideTheBuildingFocusesTheNearestRoom) {
   }
 }
 
+// With elements the mesh is the cells' elements, each grouped in its patch's cell: uniform, every
+// patch in four (listed patch by patch); adaptive, remeshed as the rooms' elements split.
+TEST(CellsSolverThread, DrawsTheCellsElements) {
+  const Scene scene = loadScene("building:1x1");
+  for (Subdivide how : {Subdivide::Uniform, Subdivide::Adaptive}) {
+    SolveSetup setup = cellsSetup();
+    setup.cellM = 0.75;
+    setup.exchangeShots = 4;
+    setup.options.subdivide = how;
+    setup.options.minElementM = how == Subdivide::Adaptive ? 0.2 : 0.0;
+    SolverThread thread(scene, setup, false);
+    thread.step(1);
+    const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 1; });
+    const std::vector<int>& cellOf = *s->cells->cellOfReceiver;
+    const std::vector<int>& cellOfPatch = s->cells->partition->cellOfPatch;
+    ASSERT_EQ(*std::max_element(s->mesh->patchOfTriangle.begin(), s->mesh->patchOfTriangle.end()) + 1,
+              static_cast<int>(cellOf.size())) << toString(how);
+    EXPECT_EQ(s->vertexB.size(), s->mesh->positions.size());
+    if (how == Subdivide::Uniform) {
+      ASSERT_EQ(cellOf.size(), 4 * cellOfPatch.size());
+      for (size_t e = 0; e < cellOf.size(); ++e) ASSERT_EQ(cellOf[e], cellOfPatch[e / 4]) << "element " << e;
+    } else {
+      EXPECT_GT(cellOf.size(), cellOfPatch.size()) << "elements split in the first round";
+    }
+  }
+}
+
 TEST(CellsSolverThread, ACellsSolveOnTheMeshBackEndIsRefusedWithTheFix) {
   SolveSetup setup = cellsSetup();
   setup.options.backend = Backend::Mesh;

@@ -139,9 +139,9 @@ void NativeBackend::addPixelBins(const EnvironmentProjection& projection, FormFa
 void NativeBackend::addAnalyticBins(int shooter, FormFactorRow& row) const {
   row.binTotals = binTotals_;
   row.binBackFaces.assign(binTotals_.size(), 0.0);
-  for (size_t j = 0; j < patches_.size(); ++j) {
+  for (size_t j = 0; j < receivers_.size(); ++j) {
     if (!(formFactors_[j] > 0.0)) continue;
-    const LocalPolygon local = toShooterFrame(patches_[shooter], patches_[j]);
+    const LocalPolygon local = toShooterFrame(patches_[shooter], receivers_[j]);
     splitOverDirectionBins(binsN_, local.corners(), [&](int bin, double f) {
       if (!(f > 0.0)) return;
       if (seenFromFront_[j])

@@ -9,21 +9,13 @@
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/cell_solver.h"
 #include "solver/scene/scene_error.h"
+#include "tests/solver/radiosity/two_rooms_cells.h"
 
 namespace radmesh {
 namespace {
 
-// Room A is x 0..4, the wall x 4..4.2 with a door at y 1.55..2.45, z 0..2.1, room B x 4.2..8.2:
-// two-rooms' plan. The portal is the door in A's face of the wall (x = 4); the passage is B's.
-constexpr double kWallFaceX = 4.0;
-
-CellPartition doorPartition(const std::vector<Patch>& patches) {
-  CellPartition partition;
-  partition.cells = {{"A", {0, 0, 0}, {4, 4, 2.7}}, {"B", {4, 0, 0}, {8.2, 4, 2.7}}};
-  partition.portals = {{{{4, 1.55, 0}, {4, 2.45, 0}, {4, 2.45, 2.1}, {4, 1.55, 2.1}}, 0, 1, 0.9 * 2.1}};
-  for (const Patch& p : patches) partition.cellOfPatch.push_back(p.centroid.x <= kWallFaceX + 1e-9 ? 0 : 1);
-  return partition;
-}
+using test::reflectedInRoom;
+using test::twoRoomsPartition;
 
 // A beam: everything black but room B's floor (rho 0.5), lit by a panel high on A's far wall
 // (x = 0, y 1.8..2.2, z 2.2..2.6) facing the door. Its light goes down through the door onto B's
@@ -71,7 +63,7 @@ double floorPower(const std::vector<Patch>& patches, const std::vector<Rgb>& b, 
 }
 
 std::vector<Rgb> solveCells(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& o, int bins) {
-  CellSolver cells(scene, patches, doorPartition(patches), o, {kDefaultCellM, 16, bins});
+  CellSolver cells(scene, patches, twoRoomsPartition(patches), o, {kDefaultCellM, 16, bins});
   while (!cells.done()) cells.round();
   return cells.radiosity();
 }
@@ -119,7 +111,7 @@ SolveOptions twoRoomsOptions(double untilUnshot, int threads = 1) {
 TEST(PortalBins, LedgerBalancesAndTheSameBitsOnOneAndTwoThreads) {
   const TwoRooms t;
   auto solve = [&](int threads) {
-    CellSolver cells(t.scene, t.patches, doorPartition(t.patches), twoRoomsOptions(0.02, threads), {kDefaultCellM, 8, 4});
+    CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), twoRoomsOptions(0.02, threads), {kDefaultCellM, 8, 4});
     while (!cells.done()) {
       cells.round();
       EXPECT_LE(cells.ledger().imbalance(), 1e-9);
@@ -137,18 +129,6 @@ TEST(PortalBins, LedgerBalancesAndTheSameBitsOnOneAndTwoThreads) {
   EXPECT_EQ(solve(1), solve(2));
 }
 
-// Area-weighted mean of room B's reflected radiosity (B - E, summed over RGB).
-double reflectedInB(const Scene& scene, const std::vector<Patch>& patches, const std::vector<Rgb>& b) {
-  double weighted = 0.0, area = 0.0;
-  for (size_t j = 0; j < patches.size(); ++j) {
-    if (patches[j].centroid.x <= kWallFaceX + 1e-9) continue;
-    const Rgb e = scene.materials[patches[j].material].emittance;
-    weighted += (b[j].r + b[j].g + b[j].b - e.r - e.g - e.b) * patches[j].areaM2;
-    area += patches[j].areaM2;
-  }
-  return weighted / area;
-}
-
 // Room B, lit only through the door, against the whole-building solve (both to 1 % unshot, same
 // mesh and hemicube 32): re-emitted diffusely its reflected light is +27 % off
 // (CellSolver.ReflectedLightPerRoomNearTheWholeBuildingSolve); measured with 4 x 4 bins +7.6 %,
@@ -159,7 +139,7 @@ TEST(PortalBins, RoomBNearTheWholeBuildingSolve) {
   ProgressiveSolver whole(t.scene, t.patches, o);
   while (!whole.done()) whole.step();
   const double error =
-      reflectedInB(t.scene, t.patches, solveCells(t.scene, t.patches, o, 8)) / reflectedInB(t.scene, t.patches, whole.radiosity()) - 1.0;
+      reflectedInRoom(t.scene, t.patches, solveCells(t.scene, t.patches, o, 8), false) / reflectedInRoom(t.scene, t.patches, whole.radiosity(), false) - 1.0;
   EXPECT_GT(error, 0.0);
   EXPECT_LT(error, 0.09);
 }
@@ -175,8 +155,8 @@ TEST(PortalBins, RefusesWhatItCannotSolve) {
   const TwoRooms t;
   const Scene& scene = t.scene;
   const std::vector<Patch>& patches = t.patches;
-  EXPECT_THROW(CellSolver(scene, patches, doorPartition(patches), hemicube(), {kDefaultCellM, 16, -1}), OptionError);
-  EXPECT_THROW(CellSolver(scene, patches, doorPartition(patches), hemicube(), {kDefaultCellM, 16, kMaxPortalBins + 1}),
+  EXPECT_THROW(CellSolver(scene, patches, twoRoomsPartition(patches), hemicube(), {kDefaultCellM, 16, -1}), OptionError);
+  EXPECT_THROW(CellSolver(scene, patches, twoRoomsPartition(patches), hemicube(), {kDefaultCellM, 16, kMaxPortalBins + 1}),
                OptionError);
   SolveOptions mesh;
   mesh.backend = Backend::Mesh;
@@ -185,7 +165,7 @@ TEST(PortalBins, RefusesWhatItCannotSolve) {
   mesh.until = 1.0;
   mesh.untilUnshot = 0.01;
   try {
-    CellSolver(scene, patches, doorPartition(patches), mesh, {kDefaultCellM, 16, 4});
+    CellSolver(scene, patches, twoRoomsPartition(patches), mesh, {kDefaultCellM, 16, 4});
     ADD_FAILURE() << "the mesh back end cannot split rows by direction";
   } catch (const OptionError& e) {
     EXPECT_NE(std::string(e.what()).find("--backend native"), std::string::npos) << e.what();
