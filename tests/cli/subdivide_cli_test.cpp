@@ -56,14 +56,26 @@ TEST(CliSubdivide, AdaptiveSplitsAndStatsCountTheElements) {
   EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
 }
 
+// On the mesh back end the PEs take the split elements: the stats count them and the split rounds.
+TEST(CliSubdivide, AdaptiveOnTheMeshBackEnd) {
+  const std::string stats = tempPath("mesh-adaptive-stats.json");
+  const CommandRun run = radmesh("solve cornell --backend mesh --pe-grid 16x16 --cell 0.2 --subdivide adaptive "
+                                 "--min-element 0.05 --split-contrast 0.4 --resolution 64 --max-iterations 6 --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(stats);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["subdivide"], "adaptive");
+  EXPECT_EQ(j["backend"], "mesh");
+  EXPECT_GT(j["elements"].get<int>(), j["patches"].get<int>());
+  EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-12);
+  EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
+}
+
 TEST(CliSubdivide, WhatIsNotBuiltYetIsRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve cornell --subdivide adaptive");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--subdivide adaptive splits elements down to --min-element"), std::string::npos)
       << run.output;
-  run = radmesh("solve cornell --subdivide adaptive --min-element 0.1 --backend mesh");
-  EXPECT_EQ(run.exitCode, 2);
-  EXPECT_NE(run.output.find("not built on the mesh back end"), std::string::npos) << run.output;
   run = radmesh("solve cornell --subdivide adaptive --min-element 0.1 --split-shadows maybe");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--split-shadows"), std::string::npos) << run.output;

@@ -35,7 +35,10 @@ nlohmann::json countsJson(const emu::CostCounts& c) {
 ShotStats shotStats(const MeshShotStats& m) {
   nlohmann::json phases = nlohmann::json::array();
   for (const MeshPhaseCost& p : m.phases)
-    phases.push_back({{"name", p.name}, {"emulated_seconds", p.emulatedSeconds}, {"host_seconds", p.hostSeconds}});
+    phases.push_back({{"name", p.name},
+                      {"emulated_seconds", p.emulatedSeconds},
+                      {"host_seconds", p.hostSeconds},
+                      {"op_counts", countsJson(p.counts)}});
   return {"emulated MP-1",
           m.emulatedSeconds,
           {{"depth_a_max", m.depthAMax},
