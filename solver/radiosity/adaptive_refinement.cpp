@@ -37,8 +37,8 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
         const FormFactorRow& row = rows[r++];
         if (channelSum(shot.power) >= kShadowShotFraction * firstShotPowerW)
           backend->testReceivers(row, kShadowTestFlops, kRayPatchFlops * static_cast<double>(patches.size()),
-                                 [&](size_t r) {
-                                   return markShadowEdge(row, r, patches[shot.patch], elements, patches,
+                                 [&](size_t k) {
+                                   return markShadowEdge(row, k, patches[shot.patch], elements, patches,
                                                          options.minElementM, split);
                                  });
       }
