@@ -385,6 +385,25 @@ TEST(MeshBackend, ASplitRoutesEachMovedElementToItsNewPe) {
   }
 }
 
+// The moving elements share the PEs' memory with the records they leave: a split that does not
+// fit is the same clear error as patches that do not fit.
+TEST(MeshBackend, ASplitThatDoesNotFitIsAClearError) {
+  const Meshed& m = builtin("cornell");
+  Elements elements = patchesAsElements(m.patches);
+  const int slots = static_cast<int>((m.patches.size() + 63) / 64);
+  // Room for the patches and their single elements (120 bytes a record), not for four times as many.
+  const MeshBackendOptions tight{MappingKind::Hierarchical, 8, 8, 2 * 120 * slots + 100};
+  MeshBackend mesh(m.scene, m.patches, elements.elements, planeOptions(64), tight);
+  const std::vector<int> origin = splitElements(elements, std::vector<char>(elements.elements.size(), 1));
+  try {
+    mesh.receiversSplit(origin);
+    FAIL() << "expected an OptionError";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("'elements in transit'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a larger --pe-memory KB"), std::string::npos) << e.what();
+  }
+}
+
 // Eq. 1.2 by hand over both back ends' rows, shooters chosen on the mesh by reduceMax: the same
 // radiosity to 1e-6 relative after 30 shots.
 TEST(MeshBackend, ShootingWithItsRowsGivesTheNativeRadiosity) {
