@@ -41,34 +41,31 @@ TEST(CliSubdivide, StatsInfoAndTheBakeCountTheSameElements) {
   EXPECT_EQ(o["subdivide"], "off");
 }
 
+// On both back ends (on the mesh the PEs take the split elements): --stats counts the elements,
+// and on the mesh the iterations that split charge the elements' moves to the router.
 TEST(CliSubdivide, AdaptiveSplitsAndStatsCountTheElements) {
-  const std::string stats = tempPath("adaptive-stats.json");
-  const CommandRun run = radmesh("solve cornell --cell 0.2 --subdivide adaptive --min-element 0.025 --split-contrast 0.4 "
-                                 "--resolution 64 --max-iterations 10 --stats " + stats);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  std::ifstream in(stats);
-  const auto j = nlohmann::json::parse(in);
-  EXPECT_EQ(j["subdivide"], "adaptive");
-  EXPECT_EQ(j["split_contrast"], 0.4);
-  EXPECT_EQ(j["split_shadows"], true);
-  EXPECT_GT(j["elements"].get<int>(), j["patches"].get<int>());  // some elements split
-  EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-12);
-  EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
-}
-
-// On the mesh back end the PEs take the split elements: the stats count them and the split rounds.
-TEST(CliSubdivide, AdaptiveOnTheMeshBackEnd) {
-  const std::string stats = tempPath("mesh-adaptive-stats.json");
-  const CommandRun run = radmesh("solve cornell --backend mesh --pe-grid 16x16 --cell 0.2 --subdivide adaptive "
-                                 "--min-element 0.05 --split-contrast 0.4 --resolution 64 --max-iterations 6 --stats " + stats);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  std::ifstream in(stats);
-  const auto j = nlohmann::json::parse(in);
-  EXPECT_EQ(j["subdivide"], "adaptive");
-  EXPECT_EQ(j["backend"], "mesh");
-  EXPECT_GT(j["elements"].get<int>(), j["patches"].get<int>());
-  EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-12);
-  EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
+  for (const std::string backend : {"native", "mesh"}) {
+    SCOPED_TRACE(backend);
+    const std::string stats = tempPath(backend + "-adaptive-stats.json");
+    const CommandRun run = radmesh("solve cornell --backend " + backend + " --pe-grid 16x16 --cell 0.2 --subdivide adaptive "
+                                   "--min-element 0.05 --split-contrast 0.4 --resolution 64 --max-iterations 6 --stats " + stats);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(stats);
+    const auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["backend"], backend);
+    EXPECT_EQ(j["subdivide"], "adaptive");
+    EXPECT_EQ(j["split_contrast"], 0.4);
+    EXPECT_EQ(j["split_shadows"], true);
+    EXPECT_GT(j["elements"].get<int>(), j["patches"].get<int>());  // some elements split
+    EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-12);
+    EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
+    if (backend != "mesh") continue;
+    std::int64_t moved = 0;
+    for (const auto& iteration : j["per_iteration"])
+      for (const auto& phase : iteration["phases"])
+        if (phase["name"] == "element split") moved += phase["op_counts"]["router"]["messages"].get<std::int64_t>();
+    EXPECT_GT(moved, 0);
+  }
 }
 
 TEST(CliSubdivide, WhatIsNotBuiltYetIsRefusedNamingTheFlag) {
