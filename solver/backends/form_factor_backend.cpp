@@ -60,6 +60,11 @@ double FormFactorBackend::updateReceivers(const FormFactorRow& row, double,
   return absorbed;
 }
 
+void FormFactorBackend::testReceivers(const FormFactorRow& row, double, double,
+                                      const std::function<int(std::size_t)>& test) {
+  for (std::size_t r = 0; r < row.receivers.size(); ++r) test(r);
+}
+
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
                                                          const std::vector<Patch>& patches,
                                                          const SolveOptions& options) {

@@ -61,6 +61,18 @@ class FormFactorBackend {
   // floating-point operations each, and sums by reduceAdd.
   virtual double updateReceivers(const FormFactorRow& row, double flopsPerUpdate,
                                  const std::function<double(std::size_t)>& update);
+
+  // Adaptive subdivision (solver/radiosity/adaptive_refinement.cpp). A test of every receiver of
+  // a row (the shadow criterion): runs test(r) for each receiver r, which returns the rays it cast
+  // (0 for none). Here in receiver order on the host; the mesh back end runs each test on the PE
+  // holding the receiver, flopsPerTest each, and as many ray steps as the busiest PE casts at
+  // flopsPerRay each (SIMD: every PE steps through the most rays any PE casts).
+  virtual void testReceivers(const FormFactorRow& row, double flopsPerTest, double flopsPerRay,
+                             const std::function<int(std::size_t)>& test);
+  // The receivers (held by reference) were split in place: receiver e now is, or descends from,
+  // old receiver origin[e]. The back end takes the new set (the mesh back end moves the element
+  // records to their new PEs); rows from now on index the new receivers.
+  virtual void receiversSplit(std::span<const int> origin) = 0;
 };
 
 // Throws SolveError naming the first patch whose unshot power is NaN: such a patch can neither be

@@ -36,16 +36,19 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
         if (shot.patch < 0) continue;
         const FormFactorRow& row = rows[r++];
         if (channelSum(shot.power) >= kShadowShotFraction * firstShotPowerW)
-          markShadowEdges(row, patches[shot.patch], elements, patches, options.minElementM, split);
+          backend->testReceivers(row, kShadowTestFlops, kRayPatchFlops * static_cast<double>(patches.size()),
+                                 [&](size_t k) {
+                                   return markShadowEdge(row, k, patches[shot.patch], elements, patches,
+                                                         options.minElementM, split);
+                                 });
       }
     }
     const auto count = static_cast<size_t>(std::count(split.begin(), split.end(), 1));
     if (count == 0 || n + 3 * count > kMaxAdaptiveElements) return;
     record.elementsSplit += static_cast<int>(count);
     const std::vector<Rgb> parentRadiosity = std::move(elementRadiosity), parentGain = iterationGain;
-    backend.reset();  // it refers to the receivers, which change
     const std::vector<int> origin = splitElements(elements, split);
-    backend = makeBackend();
+    backend->receiversSplit(origin);
     if (plan.nearField) elementNearReceivers = findNearFieldReceivers(patches, elements.elements);
     neighbours = elementNeighbours(elements);
     cache = FormFactorCache(options.formFactorCacheBytes);  // its rows index the old elements

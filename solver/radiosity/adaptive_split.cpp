@@ -107,26 +107,26 @@ bool segmentBlocked(const Vec3& a, const Vec3& b, const std::vector<Patch>& patc
   return false;
 }
 
-void markShadowEdges(const FormFactorRow& row, const Patch& shooter, const Elements& elements,
-                     const std::vector<Patch>& patches, double minElementM, std::vector<char>& split) {
-  const std::vector<Vec3> lightPoints = samplePoints(shooter);
-  for (size_t r = 0; r < row.receivers.size(); ++r) {
-    const int e = row.receivers[r];
-    const Patch& element = elements.elements[e];
-    if (split[e] || !splittable(element, minElementM)) continue;
-    const double unoccluded = pointToPolygonFormFactor(toShooterFrame(shooter, element).corners());
-    if (!(row.formFactors[r] < kPartlyHidden * unoccluded)) continue;
-    std::vector<Vec3> corners = samplePoints(element);
-    corners.pop_back();  // the corners alone
-    for (const Vec3& light : lightPoints) {
-      int seen = 0;
-      for (const Vec3& corner : corners) seen += segmentBlocked(corner, light, patches, element.polygon, shooter.polygon) ? 0 : 1;
-      if (seen > 0 && seen < static_cast<int>(corners.size())) {
-        split[e] = 1;
-        break;
-      }
+int markShadowEdge(const FormFactorRow& row, std::size_t r, const Patch& shooter, const Elements& elements,
+                   const std::vector<Patch>& patches, double minElementM, std::vector<char>& split) {
+  const int e = row.receivers[r];
+  const Patch& element = elements.elements[e];
+  if (split[e] || !splittable(element, minElementM)) return 0;
+  const double unoccluded = pointToPolygonFormFactor(toShooterFrame(shooter, element).corners());
+  if (!(row.formFactors[r] < kPartlyHidden * unoccluded)) return 0;
+  std::vector<Vec3> corners = samplePoints(element);
+  corners.pop_back();  // the corners alone
+  int rays = 0;
+  for (const Vec3& light : samplePoints(shooter)) {
+    int seen = 0;
+    for (const Vec3& corner : corners) seen += segmentBlocked(corner, light, patches, element.polygon, shooter.polygon) ? 0 : 1;
+    rays += static_cast<int>(corners.size());
+    if (seen > 0 && seen < static_cast<int>(corners.size())) {
+      split[e] = 1;
+      break;
     }
   }
+  return rays;
 }
 
 }  // namespace radmesh

@@ -34,10 +34,17 @@ void markContrast(const Elements& elements, const std::vector<std::vector<int>>&
 // `skipA` and `skipB` (the surfaces it starts and ends on).
 bool segmentBlocked(const Vec3& a, const Vec3& b, const std::vector<Patch>& patches, int skipA, int skipB);
 
-// The shadow criterion for one row of `shooter`: among its receivers that the row shows partly
-// hidden (form factor below 95 % of the unoccluded point-to-polygon one), marks the splittable
-// elements whose corners disagree on seeing a point of the shooter (its corners or its centroid).
-void markShadowEdges(const FormFactorRow& row, const Patch& shooter, const Elements& elements,
-                     const std::vector<Patch>& patches, double minElementM, std::vector<char>& split);
+// The shadow criterion for receiver r of a row of `shooter`: when the row shows the element
+// partly hidden (form factor below 95 % of the unoccluded point-to-polygon one), marks it if it
+// is splittable and its corners disagree on seeing a point of the shooter (its corners or its
+// centroid). Touches split[row.receivers[r]] alone; returns the rays it cast (segmentBlocked calls).
+int markShadowEdge(const FormFactorRow& row, std::size_t r, const Patch& shooter, const Elements& elements,
+                   const std::vector<Patch>& patches, double minElementM, std::vector<char>& split);
+
+// Declared MP-1 work of markShadowEdge (docs/emulator-cost-model.md) for the mesh back end: the
+// unoccluded form factor of an element's 4 corners (4 edges at about 40 flops) and the compare;
+// a ray's box and plane-crossing test against one patch (about 30 flops).
+inline constexpr double kShadowTestFlops = 170.0;
+inline constexpr double kRayPatchFlops = 30.0;
 
 }  // namespace radmesh

@@ -11,6 +11,7 @@
 
 #include "emulator/memory_ledger.h"
 #include "emulator/reduce.h"
+#include "emulator/router.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
 #include "solver/scene/scene_error.h"
 #include "solver/projection/single_plane.h"
@@ -55,7 +56,38 @@ struct ShooterClaim {
   }
 };
 
+// Fills `onPe` with of(j) for every item j of the layout, at its PE and slot.
+template <class T, class Of>
+void lay(emu::PeArray<T>& onPe, const PatchLayout& layout, Of of) {
+  for (int j = 0; j < layout.patches; ++j) onPe.push(layout.peOf(j), of(j));
+}
+
+// An element on its way to its PE after a split: its record, and the light it carries (its
+// radiosity and this iteration's gain, RGB).
+struct ElementInTransit {
+  PatchRecord record;
+  // routerSend compiles every combine; an element only ever arrives by Overwrite.
+  friend ElementInTransit operator+(const ElementInTransit&, const ElementInTransit& b) { return b; }
+  friend bool operator<(const ElementInTransit& a, const ElementInTransit& b) { return a.record.patch < b.record.patch; }
+};
+
+// Declared MP-1 work of a split (docs/emulator-cost-model.md): making an element from its parent
+// (edge midpoints and centre, then the child's normal, area, centroid and projection frame, as
+// solver/meshing/elements.cpp does) about 100 flops; its new PE and slot, 6 integer operations.
+constexpr double kMakeElementFlops = 100.0;
+constexpr double kPlaceElementIntOps = 6.0;
+
 }  // namespace
+}  // namespace radmesh
+
+namespace radmesh::emu {
+template <>
+struct WireSize<radmesh::ElementInTransit> {
+  static constexpr std::int64_t bytes = kWireBytes<radmesh::PatchRecord> + 6 * 4;
+};
+}  // namespace radmesh::emu
+
+namespace radmesh {
 
 MeshBackendOptions meshBackendOptions(const SolveOptions& options) {
   return {options.mapping, options.machine.rows, options.machine.cols, std::int64_t{options.machine.memoryKb} * 1024};
@@ -78,15 +110,20 @@ MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches, const 
   layout_ = {static_cast<int>(receivers.size()), machine_.size()};
   // The patches spread out equally over the PE array (section 1.5); so do the elements, beside them.
   shooterLayout_ = {static_cast<int>(patches.size()), machine_.size()};
+  const auto record = [](int j) { return PatchRecord{j}; };
   try {
-    for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
+    lay(patchesOnPe_, layout_, record);
     if (&receivers != &patches) {
       shootersOnPe_ = std::make_unique<emu::PeArray<PatchRecord>>(machine_, "shooting patches");
-      for (int j = 0; j < shooterLayout_.patches; ++j) shootersOnPe_->push(shooterLayout_.peOf(j), PatchRecord{j});
+      lay(*shootersOnPe_, shooterLayout_, record);
     }
   } catch (const emu::MemoryBudgetError& e) {
     refuseMachine(e);
   }
+  makeScanConversion();
+}
+
+void MeshBackend::makeScanConversion() {
   scan_ = std::make_unique<MeshScanConversion>(machine_, patches_, receivers_, patchesOnPe_, surface_.faces[0],
                                                sceneNearDepth(patches_));
 }
@@ -241,11 +278,16 @@ std::vector<int> MeshBackend::selectShooters(std::span<const double> unshotPower
   });
 }
 
+std::vector<int> MeshBackend::rowIndexOf(const FormFactorRow& row) const {
+  std::vector<int> index(layout_.patches, -1);
+  for (std::size_t r = 0; r < row.receivers.size(); ++r) index[row.receivers[r]] = static_cast<int>(r);
+  return index;
+}
+
 double MeshBackend::updateReceivers(const FormFactorRow& row, double flopsPerUpdate,
                                     const std::function<double(std::size_t)>& update) {
   return inPhase("radiosity update", [&] {
-    std::vector<int> receiverOf(layout_.patches, -1);  // where a PE finds its patch's F_ij
-    for (std::size_t r = 0; r < row.receivers.size(); ++r) receiverOf[row.receivers[r]] = static_cast<int>(r);
+    const std::vector<int> receiverOf = rowIndexOf(row);
     emu::Plural<double> absorbed(machine_, 0.0, "absorbed power");
     const double slots = layout_.slotsPerPe();
     machine_.compute({flopsPerUpdate * slots, 2.0 * slots}, [&](int pe) {
@@ -254,6 +296,64 @@ double MeshBackend::updateReceivers(const FormFactorRow& row, double flopsPerUpd
     });
     return emu::reduceAdd(machine_, absorbed);
   });
+}
+
+void MeshBackend::testReceivers(const FormFactorRow& row, double flopsPerTest, double flopsPerRay,
+                                const std::function<int(std::size_t)>& test) {
+  inPhase("shadow test", [&] {
+    const std::vector<int> receiverOf = rowIndexOf(row);
+    emu::Plural<double> rays(machine_, 0.0, "rays cast");
+    const double slots = layout_.slotsPerPe();
+    machine_.forEachActive(flopsPerTest * slots, [&](int pe) {
+      for (const PatchRecord& p : patchesOnPe_.list(pe))
+        if (receiverOf[p.patch] >= 0) rays[pe] += test(receiverOf[p.patch]);
+    });
+    const double most = emu::reduceMax(machine_, rays).value;
+    machine_.chargeAlu({flopsPerTest * slots + flopsPerRay * most, 2.0 * slots});
+    return most;
+  });
+}
+
+void MeshBackend::receiversSplit(std::span<const int> origin) try {
+  inPhase("element split", [&] {
+    const PatchLayout before = layout_;
+    layout_ = {static_cast<int>(receivers_.size()), machine_.size()};
+    scan_.reset();  // its buffers are free between shots: made again over the new elements below
+    // Per PE, the new elements made from the records it holds, in element order.
+    std::vector<std::vector<int>> madeOn(machine_.size());
+    for (int e = 0; e < layout_.patches; ++e) madeOn[before.peOf(origin[e])].push_back(e);
+    std::size_t rounds = 0;
+    for (const std::vector<int>& made : madeOn) rounds = std::max(rounds, made.size());
+    emu::PeArray<ElementInTransit> arrived(machine_, "elements in transit");
+    lay(arrived, layout_, [](int) { return ElementInTransit{}; });
+    emu::Plural<ElementInTransit> element(machine_, {}, "element made");
+    emu::Plural<int> to(machine_, 0, "its new PE"), slot(machine_, 0, "its new slot");
+    emu::Plural<bool> moves(machine_, false, "element moves");
+    for (std::size_t round = 0; round < rounds; ++round) {
+      // Each PE makes its round's element; one that stays on its PE goes to its new slot in place.
+      machine_.compute({kMakeElementFlops, kPlaceElementIntOps}, [&](int pe) {
+        moves[pe] = false;
+        if (round >= madeOn[pe].size()) return;
+        const int e = madeOn[pe][round];
+        element[pe] = {PatchRecord{e}};
+        to[pe] = layout_.peOf(e);
+        slot[pe] = layout_.slotOf(e);
+        moves[pe] = to[pe] != pe;
+        if (!moves[pe]) arrived.at(pe, slot[pe]) = element[pe];
+      });
+      emu::ActiveScope scope(machine_, moves);
+      emu::routerSend(machine_, arrived, element, to, slot, emu::Combine::Overwrite);
+    }
+    // Each PE copies what arrived into its element list, and the transit buffer is freed.
+    patchesOnPe_.clearAll();
+    lay(patchesOnPe_, layout_, [&](int e) { return arrived.at(layout_.peOf(e), layout_.slotOf(e)).record; });
+    machine_.chargeAlu({0.0, 2.0 * layout_.slotsPerPe()});
+    makeScanConversion();
+    return rounds;
+  });
+  shotPending_ = true;
+} catch (const emu::MemoryBudgetError& e) {
+  refuseMachine(e);
 }
 
 }  // namespace radmesh

@@ -59,6 +59,16 @@ class MeshBackend final : public FormFactorBackend {
   // then one reduceAdd sums the absorbed power.
   double updateReceivers(const FormFactorRow& row, double flopsPerUpdate,
                          const std::function<double(std::size_t)>& update) override;
+  // Each PE tests the receivers it holds; one reduceMax gives the array control unit the most
+  // rays any PE casts, and the machine steps that many (phase "shadow test").
+  void testReceivers(const FormFactorRow& row, double flopsPerTest, double flopsPerRay,
+                     const std::function<int(std::size_t)>& test) override;
+  // The elements lie on the PEs cyclically again, in the new order: each parent's PE makes its
+  // children (an unsplit element is its own), and every one whose PE changes is routed to its
+  // new PE and slot, as many router sends as the busiest PE makes elements (phase "element
+  // split"). Old and new records share the PEs' memory while they move, within the budget. The
+  // children's shots that follow (the solver's regathering) count in the same iteration.
+  void receiversSplit(std::span<const int> origin) override;
 
   const MeshShotStats& lastShot() const { return lastShot_; }
   const emu::MeshMachine& machine() const { return machine_; }
@@ -75,6 +85,10 @@ class MeshBackend final : public FormFactorBackend {
   // Runs work() as the iteration's phase `name` (its cost added to lastShot_) and totals.
   template <class Work> auto inPhase(const char* name, Work&& work);
   FormFactorRow assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors);
+  // Per receiver, its index in the row (-1 when not in it): where a PE finds its receiver's entry.
+  std::vector<int> rowIndexOf(const FormFactorRow& row) const;
+  // The scan conversion over the receivers as they are now.
+  void makeScanConversion();
 
   const std::vector<Patch>& patches_;
   const std::vector<Patch>& receivers_;  // patches_ itself, or their elements

@@ -34,8 +34,16 @@ nlohmann::json countsJson(const emu::CostCounts& c) {
 
 ShotStats shotStats(const MeshShotStats& m) {
   nlohmann::json phases = nlohmann::json::array();
-  for (const MeshPhaseCost& p : m.phases)
-    phases.push_back({{"name", p.name}, {"emulated_seconds", p.emulatedSeconds}, {"host_seconds", p.hostSeconds}});
+  for (const MeshPhaseCost& p : m.phases) {
+    nlohmann::json counts = countsJson(p.counts);
+    // The peaks are the machine's since the iteration began, not the phase's own.
+    counts.erase("max_collisions");
+    counts.erase("memory_high_water_bytes");
+    phases.push_back({{"name", p.name},
+                      {"emulated_seconds", p.emulatedSeconds},
+                      {"host_seconds", p.hostSeconds},
+                      {"op_counts", std::move(counts)}});
+  }
   return {"emulated MP-1",
           m.emulatedSeconds,
           {{"depth_a_max", m.depthAMax},

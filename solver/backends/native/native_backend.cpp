@@ -43,13 +43,20 @@ NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patch
       receivers_(receivers),
       options_(options),
       nearDepth_(sceneNearDepth(patches)),
-      pool_(options.threads),
-      formFactors_(receivers.size(), 0.0),
-      seenFromFront_(receivers.size(), 0) {
+      pool_(options.threads) {
   validateOptions(options);
-  if (auto surface = surfaceFor(options))
-    projection_ = std::make_unique<EnvironmentProjection>(receivers, std::move(*surface), nearDepth_, pool_);
+  takeReceivers();
 }
+
+void NativeBackend::takeReceivers() {
+  formFactors_.assign(receivers_.size(), 0.0);
+  seenFromFront_.assign(receivers_.size(), 0);
+  singlePlane_.reset();
+  if (auto surface = surfaceFor(options_))
+    projection_ = std::make_unique<EnvironmentProjection>(receivers_, std::move(*surface), nearDepth_, pool_);
+}
+
+void NativeBackend::receiversSplit(std::span<const int>) { takeReceivers(); }
 
 NativeBackend::~NativeBackend() = default;
 

@@ -23,10 +23,14 @@ class NativeBackend final : public FormFactorBackend {
   void binDirections(std::span<const int> shooters, int n) override;
 
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
+  // Makes the projection (and the per-receiver buffers) anew over the split receivers.
+  void receiversSplit(std::span<const int> origin) override;
 
   double nearDepth() const { return nearDepth_; }
 
  private:
+  // The per-receiver buffers and the projection over receivers_ as they are now.
+  void takeReceivers();
   FormFactorRow projectedRow(EnvironmentProjection& projection, int shooter);
   FormFactorRow analyticRow(int shooter);
   // A directional shooter's split by bin: from the item buffers of its projection, or analytic.

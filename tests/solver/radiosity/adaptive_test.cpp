@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/backends/mesh/mesh_backend.h"
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/meshing/elements.h"
 #include "solver/scene/scene_error.h"
@@ -231,14 +232,46 @@ TEST(Adaptive, RefinesAlongTheShadowEdge) {
   EXPECT_EQ(none.elements().size(), s.t.patches.size());
 }
 
+// The mesh back end splits as the native one does: the same rows from the same item buffers on
+// the paper's single plane, so the same elements and the same floor error; its ledger exact; and
+// bitwise the same elements, light and machine counts on 1 and 3 threads.
+TEST(MeshAdaptive, SplitsAsTheNativeBackEndDoesOnAnyThreadCount) {
+  const auto options = [](Backend backend, int threads) {
+    SolveOptions o = fixedIterations(optionsFor(Projection::Plane, 128, threads), ShadowScene::kLightCuts * ShadowScene::kLightCuts);
+    o.backend = backend;
+    o.machine = {16, 16, 16};
+    return subdivided(o, Subdivide::Adaptive, 0.0625);
+  };
+  const ShadowScene s;
+  ProgressiveSolver native(s.t.scene, s.t.patches, options(Backend::Native, 1));
+  ProgressiveSolver one(s.t.scene, s.t.patches, options(Backend::Mesh, 1));
+  ProgressiveSolver three(s.t.scene, s.t.patches, options(Backend::Mesh, 3));
+  for (ProgressiveSolver* solver : {&native, &one, &three}) solveChecked(*solver);
+  ASSERT_GT(native.elements().size(), s.t.patches.size());
+  EXPECT_EQ(one.elements().size(), native.elements().size());
+  const double nativeRms = floorRmsError(native), meshRms = floorRmsError(one);
+  EXPECT_NEAR(meshRms, nativeRms, 1e-9);
+  std::printf("| adaptive, plane 128², native | 0.0625 | %zu | %.4f |\n| adaptive, plane 128², mesh | 0.0625 | %zu | %.4f |\n",
+              native.elements().size(), nativeRms, one.elements().size(), meshRms);
+  std::fflush(stdout);
+  EXPECT_LE(one.ledger().imbalance(), 1e-9);
+  expectPatchesAreAreaMeans(one);
+  ASSERT_EQ(three.elements().size(), one.elements().size());
+  for (size_t e = 0; e < one.elements().size(); ++e) {
+    EXPECT_EQ(three.elements()[e].vertices, one.elements()[e].vertices) << "element " << e;
+    EXPECT_EQ(three.elementRadiosity()[e], one.elementRadiosity()[e]) << "element " << e;
+  }
+  const auto counts = [](ProgressiveSolver& solver) {
+    return dynamic_cast<MeshBackend&>(solver.backend()).machine().costs().summary();  // host seconds left out
+  };
+  EXPECT_EQ(counts(three), counts(one));
+}
+
 TEST(Adaptive, OptionsAreRefusedNamingTheFix) {
   const ShadowScene s;
   SolveOptions o = subdivided(shadowOptions(), Subdivide::Adaptive, 0.0);
   EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
   o.minElementM = 0.1;
-  o.backend = Backend::Mesh;
-  EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
-  o.backend = Backend::Native;
   o.splitContrast = 0.0;
   EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
 }

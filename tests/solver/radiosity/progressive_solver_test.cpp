@@ -306,6 +306,7 @@ class LightMakingBackend final : public FormFactorBackend {
   }
   ProjectionSummary projectionSummary() const override { return native_.projectionSummary(); }
   ItemBuffer singlePlaneItemBuffer(int shooter) override { return native_.singlePlaneItemBuffer(shooter); }
+  void receiversSplit(std::span<const int> origin) override { native_.receiversSplit(origin); }
 
  private:
   std::vector<Patch> patches_;

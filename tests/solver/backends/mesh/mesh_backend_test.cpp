@@ -13,6 +13,7 @@
 
 #include "emulator/memory_ledger.h"
 #include "solver/backends/native/native_backend.h"
+#include "solver/meshing/elements.h"
 #include "solver/radiosity/progressive_solver.h"
 #include "solver/scene/scene_error.h"
 #include "tests/solver/backends/mesh/mesh_agreement.h"
@@ -345,6 +346,61 @@ TEST(MeshBackend, PatchesThatDoNotFitAreAClearError) {
     EXPECT_NE(std::string(e.what()).find("'patches'"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("per-PE budget is 100 bytes. Fix: give each PE more memory (a larger --pe-memory KB)"),
               std::string::npos) << e.what();
+  }
+}
+
+// After a split the elements lie cyclically in their new order: each one whose PE changes is one
+// router message, in as many sends as the busiest PE makes elements; the rows and item buffers
+// are then the native back end's over the split elements.
+TEST(MeshBackend, ASplitRoutesEachMovedElementToItsNewPe) {
+  const Meshed& m = builtin("cornell");
+  Elements elements = patchesAsElements(m.patches);
+  const SolveOptions o = planeOptions(64);
+  const MeshBackendOptions small{MappingKind::Hierarchical, 8, 8, 16 * 1024};
+  MeshBackend mesh(m.scene, m.patches, elements.elements, o, small);
+  std::vector<char> split(elements.elements.size(), 0);
+  for (std::size_t e = 0; e < split.size(); e += 7) split[e] = 1;
+  const std::vector<int> origin = splitElements(elements, split);
+  const emu::CostCounts before = mesh.machine().costs();
+  mesh.receiversSplit(origin);
+  const emu::CostCounts cost = mesh.machine().costs() - before;
+  const int pes = 64;
+  std::int64_t moved = 0;
+  std::vector<int> made(pes, 0);
+  for (std::size_t e = 0; e < origin.size(); ++e) {
+    moved += origin[e] % pes != static_cast<int>(e) % pes ? 1 : 0;
+    ++made[origin[e] % pes];
+  }
+  EXPECT_EQ(origin.size(), m.patches.size() + 3 * static_cast<std::size_t>(std::count(split.begin(), split.end(), 1)));
+  EXPECT_EQ(cost.router.messages, moved);
+  EXPECT_EQ(cost.router.ops, *std::max_element(made.begin(), made.end()));
+  NativeBackend native(m.scene, m.patches, elements.elements, o);
+  const std::vector<int> shooters = someShooters(m, 3);
+  std::vector<FormFactorRow> meshRows, nativeRows;
+  mesh.computeRows(shooters, meshRows);
+  native.computeRows(shooters, nativeRows);
+  for (std::size_t s = 0; s < shooters.size(); ++s) {
+    expectSameRow(meshRows[s], nativeRows[s], 1e-9);
+    EXPECT_TRUE(sameItemBuffer(mesh.singlePlaneItemBuffer(shooters[s]), native.singlePlaneItemBuffer(shooters[s])));
+  }
+}
+
+// The moving elements share the PEs' memory with the records they leave: a split that does not
+// fit is the same clear error as patches that do not fit.
+TEST(MeshBackend, ASplitThatDoesNotFitIsAClearError) {
+  const Meshed& m = builtin("cornell");
+  Elements elements = patchesAsElements(m.patches);
+  const int slots = static_cast<int>((m.patches.size() + 63) / 64);
+  // Room for the patches and their single elements (120 bytes a record), not for four times as many.
+  const MeshBackendOptions tight{MappingKind::Hierarchical, 8, 8, 2 * 120 * slots + 100};
+  MeshBackend mesh(m.scene, m.patches, elements.elements, planeOptions(64), tight);
+  const std::vector<int> origin = splitElements(elements, std::vector<char>(elements.elements.size(), 1));
+  try {
+    mesh.receiversSplit(origin);
+    FAIL() << "expected an OptionError";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("'elements in transit'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a larger --pe-memory KB"), std::string::npos) << e.what();
   }
 }
 
