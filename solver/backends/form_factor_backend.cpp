@@ -22,6 +22,11 @@ void FormFactorBackend::binDirections(std::span<const int>, int) {
                     "pixel into its receiver alone): give --backend native, or --portal-bins 1");
 }
 
+void FormFactorBackend::receiversChanged() {
+  throw OptionError("this back end holds a fixed set of receivers, so its elements cannot split "
+                    "(--subdivide adaptive): give --backend native, or --subdivide uniform");
+}
+
 void refuseNaNUnshotPower(std::span<const double> unshotPowerW) {
   for (std::size_t j = 0; j < unshotPowerW.size(); ++j)
     if (std::isnan(unshotPowerW[j]))

@@ -34,6 +34,10 @@ class FormFactorBackend {
   // directionBinCount(n) bins (FormFactorRow::binShares). Throws OptionError on a back end that
   // cannot: the base, for the mesh back end (its machine sums a pixel into its patch alone).
   virtual void binDirections(std::span<const int> shooters, int n);
+  // The receivers (held by reference) changed, e.g. elements split (--subdivide adaptive): from
+  // now on, rows index them as a back end made anew for them would. Throws OptionError on a back
+  // end that holds a fixed set of receivers: the base, for the mesh back end.
+  virtual void receiversChanged();
   // The single plane's item buffer for a shooter, at the options' resolution and ratio, whatever
   // the projection in use: what the viewer shows, and where the back ends must agree pixel for pixel.
   virtual ItemBuffer singlePlaneItemBuffer(int shooter) = 0;

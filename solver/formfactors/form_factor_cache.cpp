@@ -1,5 +1,6 @@
 #include "solver/formfactors/form_factor_cache.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace radmesh {
@@ -24,6 +25,28 @@ void FormFactorCache::insert(const FormFactorRow& row) {
   order_.push_front(std::move(kept));
   bytes_ += need;
   byShooter_[row.shooter] = order_.begin();
+}
+
+void FormFactorCache::renumberReceivers(const std::vector<int>& newIndex) {
+  for (auto row = order_.begin(); row != order_.end();) {
+    const bool split = std::any_of(row->receivers.begin(), row->receivers.end(), [&](int r) { return newIndex[r] < 0; });
+    if (split) {
+      const int shooter = row->shooter;
+      ++row;
+      erase(shooter);
+      continue;
+    }
+    for (int& r : row->receivers) r = newIndex[r];
+    ++row;
+  }
+}
+
+void FormFactorCache::erase(int shooter) {
+  const auto it = byShooter_.find(shooter);
+  if (it == byShooter_.end()) return;
+  bytes_ -= it->second->bytes();
+  order_.erase(it->second);
+  byShooter_.erase(it);
 }
 
 }  // namespace radmesh

@@ -58,6 +58,13 @@ ProjectionSummary NativeBackend::projectionSummary() const {
   return {projection_->surface().capturedFraction, projection_->surface().tableSum};
 }
 
+void NativeBackend::receiversChanged() {
+  formFactors_.assign(receivers_.size(), 0.0);
+  seenFromFront_.assign(receivers_.size(), 0);
+  if (projection_) projection_->patchesChanged();
+  if (singlePlane_) singlePlane_->patchesChanged();
+}
+
 void NativeBackend::binDirections(std::span<const int> shooters, int n) {
   directional_.assign(patches_.size(), 0);
   for (int j : shooters) directional_.at(static_cast<size_t>(j)) = 1;

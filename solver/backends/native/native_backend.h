@@ -21,6 +21,7 @@ class NativeBackend final : public FormFactorBackend {
   void computeRows(std::span<const int> shooters, std::vector<FormFactorRow>& rows) override;
   ProjectionSummary projectionSummary() const override;
   void binDirections(std::span<const int> shooters, int n) override;
+  void receiversChanged() override;
 
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
 
