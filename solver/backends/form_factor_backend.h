@@ -71,7 +71,8 @@ class FormFactorBackend {
                              const std::function<int(std::size_t)>& test);
   // The receivers (held by reference) were split in place: receiver e now is, or descends from,
   // old receiver origin[e]. The back end takes the new set (the mesh back end moves the element
-  // records to their new PEs); rows from now on index the new receivers.
+  // records to their new PEs); rows from now on index the new receivers, as a back end made anew
+  // for them would.
   virtual void receiversSplit(std::span<const int> origin) = 0;
 };
 

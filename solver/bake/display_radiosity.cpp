@@ -8,7 +8,7 @@
 #include <span>
 #include <utility>
 
-#include "solver/bake/point_grid.h"
+#include "solver/geometry/point_grid.h"
 #include "solver/bake/t_vertices.h"
 
 namespace radmesh {

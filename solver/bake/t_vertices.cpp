@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "solver/bake/point_grid.h"
+#include "solver/geometry/point_grid.h"
 
 namespace radmesh {
 

@@ -1,5 +1,6 @@
 #include "solver/formfactors/form_factor_cache.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace radmesh {
@@ -24,6 +25,32 @@ void FormFactorCache::insert(const FormFactorRow& row) {
   order_.push_front(std::move(kept));
   bytes_ += need;
   byShooter_[row.shooter] = order_.begin();
+}
+
+void FormFactorCache::renumberReceivers(const std::vector<int>& newIndex) {
+  for (auto row = order_.begin(); row != order_.end();) {
+    const auto gone = [&](int r) { return newIndex[r] < 0; };
+    const bool split = std::any_of(row->receivers.begin(), row->receivers.end(), gone) ||
+                       std::any_of(row->binShares.begin(), row->binShares.end(),
+                                   [&](const FormFactorRow::BinShare& share) { return gone(share.patch); });
+    if (split) {
+      const int shooter = row->shooter;
+      ++row;
+      erase(shooter);
+      continue;
+    }
+    for (int& r : row->receivers) r = newIndex[r];
+    for (FormFactorRow::BinShare& share : row->binShares) share.patch = newIndex[share.patch];  // receivers too
+    ++row;
+  }
+}
+
+void FormFactorCache::erase(int shooter) {
+  const auto it = byShooter_.find(shooter);
+  if (it == byShooter_.end()) return;
+  bytes_ -= it->second->bytes();
+  order_.erase(it->second);
+  byShooter_.erase(it);
 }
 
 }  // namespace radmesh

@@ -20,6 +20,13 @@ class FormFactorCache {
   // the whole budget is not kept.
   void insert(const FormFactorRow& row);
 
+  // After the receivers were renumbered (adaptive subdivision split some): newIndex gives each old
+  // receiver's new index, or -1 for one that split. Rows that reach a split receiver are dropped
+  // (their light on its children is unknown); the others are renumbered, in the same order of use.
+  void renumberReceivers(const std::vector<int>& newIndex);
+  // Drops a shooter's row, if cached.
+  void erase(int shooter);
+
   // The cached rows, most recently used first: inserted back to front into an empty cache of the
   // same budget, they make it again as it was.
   std::vector<FormFactorRow> contents() const { return {order_.begin(), order_.end()}; }

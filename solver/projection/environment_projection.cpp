@@ -18,12 +18,7 @@ EnvironmentProjection::EnvironmentProjection(const std::vector<Patch>& patches,
     : patches_(patches),
       surface_(std::move(surface)),
       nearDepth_(nearDepth),
-      pool_(pool),
-      rank_(depthTieRanks(patches)),
-      slotOfPatch_(pool.size(), std::vector<int>(patches.size(), -1)),
-      pixelFormFactors_(patches.size(), 0.0),
-      projectedArea_(patches.size(), 0.0),
-      seenFromFront_(patches.size(), 0) {
+      pool_(pool) {
   const int faces = static_cast<int>(surface_.faces.size());
   for (int f = 0; f < faces; ++f) {
     const ProjectionFace& face = surface_.faces[f];
@@ -32,8 +27,19 @@ EnvironmentProjection::EnvironmentProjection(const std::vector<Patch>& patches,
     for (int row = 0; row < face.height; row += kBandRows)
       bands_.push_back({f, row, std::min(row + kBandRows, face.height), {}, {}});
   }
-  const size_t chunks = (patches.size() + kChunkPatches - 1) / kChunkPatches;
-  chunkSetups_.assign(chunks, std::vector<std::vector<PolygonSetup>>(faces));
+  patchesChanged();
+}
+
+void EnvironmentProjection::patchesChanged() {
+  const size_t n = patches_.size();
+  rank_ = depthTieRanks(patches_);
+  slotOfPatch_.assign(pool_.size(), std::vector<int>(n, -1));
+  pixelFormFactors_.assign(n, 0.0);
+  projectedArea_.assign(n, 0.0);
+  seenFromFront_.assign(n, 0);
+  for (Band& band : bands_) band.setups.clear();  // they point into chunkSetups_
+  chunkSetups_.assign((n + kChunkPatches - 1) / kChunkPatches,
+                      std::vector<std::vector<PolygonSetup>>(surface_.faces.size()));
 }
 
 void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {

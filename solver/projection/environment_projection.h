@@ -20,6 +20,10 @@ class EnvironmentProjection {
   EnvironmentProjection(const std::vector<Patch>& patches, ProjectionSurface surface,
                         double nearDepth, ThreadPool& pool);
 
+  // The list of patches (held by reference) changed, e.g. elements split: what is kept per patch
+  // is made again for it, as a new projection would make it.
+  void patchesChanged();
+
   void project(int shooter);
   // From a viewpoint that is no patch (a light: its position and frame), every patch but `skip`
   // (-1: none) projected.

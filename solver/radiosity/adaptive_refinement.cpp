@@ -20,6 +20,15 @@ namespace {
 
 constexpr size_t kMaxAdaptiveElements = 4'000'000;  // splitting stops short of this many elements
 
+// Per element before a split, its index after it, or -1 for one that split (origin and split as
+// refine has them).
+std::vector<int> newIndices(const std::vector<int>& origin, const std::vector<char>& split) {
+  std::vector<int> index(split.size(), -1);
+  for (size_t e = 0; e < origin.size(); ++e)
+    if (!split[origin[e]]) index[origin[e]] = static_cast<int>(e);
+  return index;
+}
+
 }  // namespace
 
 void ProgressiveSolver::State::refine(IterationRecord& record) {
@@ -51,7 +60,7 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
     backend->receiversSplit(origin);
     if (plan.nearField) elementNearReceivers = findNearFieldReceivers(patches, elements.elements);
     neighbours = elementNeighbours(elements);
-    cache = FormFactorCache(options.formFactorCacheBytes);  // its rows index the old elements
+    cache.renumberReceivers(newIndices(origin, split));
     regather(origin, split, parentRadiosity, parentGain);
   }
 }
@@ -131,6 +140,12 @@ void ProgressiveSolver::State::regather(const std::vector<int>& origin, const st
     if (shot.patch >= 0)
       current.push_back(*std::find_if(fresh.begin(), fresh.end(), [&](const FormFactorRow& row) { return row.shooter == shot.patch; }));
   rows = std::move(current);
+  // They are what the back end would compute now: the cache keeps them for the shooters' next shots.
+  if (options.formFactorCacheBytes > 0)
+    for (const FormFactorRow& row : rows) {
+      cache.erase(row.shooter);
+      cache.insert(row);
+    }
 }
 
 }  // namespace radmesh

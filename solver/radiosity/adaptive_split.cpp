@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "solver/geometry/point_grid.h"
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/projection/projection.h"
 
@@ -56,6 +57,53 @@ bool crosses(const Vec3& a, const Vec3& b, const Patch& p) {
   return true;
 }
 
+// Whether an edge of `a` and an edge of `b` lie on one line and overlap over more than `slack`.
+bool shareEdge(const Patch& a, const Patch& b, double slack) {
+  for (int i = 0; i < a.vertexCount; ++i) {
+    const Vec3 p = a.vertices[i], d = a.vertices[(i + 1) % a.vertexCount] - p;
+    const double length = glm::length(d);
+    const Vec3 u = d / length;
+    for (int k = 0; k < b.vertexCount; ++k) {
+      const Vec3 q0 = b.vertices[k] - p, q1 = b.vertices[(k + 1) % b.vertexCount] - p;
+      if (glm::length(glm::cross(u, q0)) > slack || glm::length(glm::cross(u, q1)) > slack) continue;
+      const double t0 = glm::dot(u, q0), t1 = glm::dot(u, q1);
+      if (std::min(length, std::max(t0, t1)) - std::max(0.0, std::min(t0, t1)) > slack) return true;
+    }
+  }
+  return false;
+}
+
+// Whether light can pass between elements of two polygons meeting at an edge: coplanar, or a
+// concave fold (each in front of the other). Not a convex fold (each behind the other: the seam is
+// an outline, whose step is geometry) nor two faces back to back.
+bool facing(const Patch& a, const Patch& b, double slack) {
+  return glm::dot(a.normal, b.normal) > -0.9 && glm::dot(a.normal, b.centroid - a.centroid) >= -slack &&
+         glm::dot(b.normal, a.centroid - b.centroid) >= -slack;
+}
+
+// Pairs of elements of different polygons sharing part of an edge (and facing), added to
+// `neighbours`: found through a grid of element centroids, each looked up within its box grown by
+// half the largest element's extent.
+void addCrossPolygonNeighbours(const std::vector<Patch>& es, const std::vector<Box>& boxes,
+                               std::vector<std::vector<int>>& neighbours) {
+  double extent = 0.0;
+  for (const Box& b : boxes) extent = std::max(extent, glm::length(b.hi - b.lo));
+  if (!(extent > 0.0)) return;
+  PointGrid grid(extent);
+  for (size_t e = 0; e < es.size(); ++e) grid.insert(es[e].centroid, static_cast<int>(e));
+  for (size_t a = 0; a < es.size(); ++a) {
+    const double slack = 1e-6 * longestEdge(es[a]);
+    grid.anyInBox(boxes[a].lo - Vec3(0.5 * extent), boxes[a].hi + Vec3(0.5 * extent), [&](int b) {
+      if (b > static_cast<int>(a) && es[b].polygon != es[a].polygon && overlap(boxes[a], boxes[b]) &&
+          facing(es[a], es[b], slack) && shareEdge(es[a], es[b], slack)) {
+        neighbours[a].push_back(b);
+        neighbours[b].push_back(static_cast<int>(a));
+      }
+      return false;
+    });
+  }
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> elementNeighbours(const Elements& elements) {
@@ -80,6 +128,7 @@ std::vector<std::vector<int>> elementNeighbours(const Elements& elements) {
       neighbours[b].push_back(a);
     }
   }
+  addCrossPolygonNeighbours(es, boxes, neighbours);
   for (std::vector<int>& n : neighbours) std::sort(n.begin(), n.end());
   return neighbours;
 }

@@ -14,8 +14,11 @@ namespace radmesh {
 // edges: weaker shooters cast soft shadows the gradient criterion sees, and the check costs rays.
 inline constexpr double kShadowShotFraction = 0.05;
 
-// Per element, its neighbours: the elements of the same scene polygon whose bounding boxes touch
-// its own (sharing an edge or a corner, or, between triangles, lying close), ascending.
+// Per element, its neighbours, ascending: the elements of the same scene polygon whose bounding
+// boxes touch its own (sharing an edge or a corner, or, between triangles, lying close), and the
+// elements of other polygons sharing part of an edge with it where light passes between the two
+// (coplanar, or a concave fold such as a wall meeting the floor; not a convex fold such as a table's
+// edge, whose step is its outline, nor faces back to back).
 std::vector<std::vector<int>> elementNeighbours(const Elements& elements);
 
 // Whether an element is long enough to split: its children (half its edges) no shorter than

@@ -51,9 +51,14 @@ NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patch
 void NativeBackend::takeReceivers() {
   formFactors_.assign(receivers_.size(), 0.0);
   seenFromFront_.assign(receivers_.size(), 0);
-  singlePlane_.reset();
-  if (auto surface = surfaceFor(options_))
-    projection_ = std::make_unique<EnvironmentProjection>(receivers_, std::move(*surface), nearDepth_, pool_);
+  if (!projection_) {
+    if (auto surface = surfaceFor(options_))
+      projection_ = std::make_unique<EnvironmentProjection>(receivers_, std::move(*surface), nearDepth_, pool_);
+    return;
+  }
+  // Split elements: the projections keep their surfaces and pixel tables, and re-read the receivers.
+  projection_->patchesChanged();
+  if (singlePlane_) singlePlane_->patchesChanged();
 }
 
 void NativeBackend::receiversSplit(std::span<const int>) { takeReceivers(); }

@@ -23,13 +23,13 @@ class NativeBackend final : public FormFactorBackend {
   void binDirections(std::span<const int> shooters, int n) override;
 
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
-  // Makes the projection (and the per-receiver buffers) anew over the split receivers.
+  // The per-receiver buffers sized anew; the projections keep their surfaces and re-read the receivers.
   void receiversSplit(std::span<const int> origin) override;
 
   double nearDepth() const { return nearDepth_; }
 
  private:
-  // The per-receiver buffers and the projection over receivers_ as they are now.
+  // The per-receiver buffers, and the projection over receivers_ as they are now (made on the first call).
   void takeReceivers();
   FormFactorRow projectedRow(EnvironmentProjection& projection, int shooter);
   FormFactorRow analyticRow(int shooter);

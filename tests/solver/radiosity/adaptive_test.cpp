@@ -13,6 +13,7 @@
 #include "solver/backends/mesh/mesh_backend.h"
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/meshing/elements.h"
+#include "solver/radiosity/adaptive_split.h"
 #include "solver/scene/scene_error.h"
 #include "tests/solver/solver_test_helpers.h"
 
@@ -265,6 +266,96 @@ TEST(MeshAdaptive, SplitsAsTheNativeBackEndDoesOnAnyThreadCount) {
     return dynamic_cast<MeshBackend&>(solver.backend()).machine().costs().summary();  // host seconds left out
   };
   EXPECT_EQ(counts(three), counts(one));
+}
+
+// A split round updates the back end's receivers in place (receiversSplit) instead of making a
+// new back end: its rows must be bitwise those of a back end made anew for the split elements.
+TEST(Adaptive, ReceiversChangedComputesTheRowsOfANewBackend) {
+  const ShadowScene s;
+  for (Projection projection : {Projection::Plane, Projection::Hemicube, Projection::Analytic})
+    for (int threads : {1, 3}) {
+      SCOPED_TRACE(std::string(toString(projection)) + ", threads " + std::to_string(threads));
+      const SolveOptions o = optionsFor(projection, 128, threads);
+      Elements elements = patchesAsElements(s.t.patches);
+      NativeBackend updated(s.t.scene, s.t.patches, elements.elements, o);
+      std::vector<FormFactorRow> before;
+      updated.computeRows(range(16, 52), before);  // item buffers and scratch sized for the old elements
+      for (int round = 0; round < 2; ++round) {  // every third element, then every second, splits
+        std::vector<char> split(elements.elements.size(), 0);
+        for (size_t e = 0; e < split.size(); e += 3 - round) split[e] = 1;
+        updated.receiversSplit(splitElements(elements, split));
+      }
+      NativeBackend fresh(s.t.scene, s.t.patches, elements.elements, o);
+      std::vector<FormFactorRow> got, expected;
+      updated.computeRows(range(16, 53), got);
+      fresh.computeRows(range(16, 53), expected);
+      ASSERT_EQ(got.size(), expected.size());
+      for (size_t r = 0; r < got.size(); ++r) {
+        EXPECT_EQ(got[r].receivers, expected[r].receivers) << "shooter " << got[r].shooter;
+        EXPECT_EQ(got[r].formFactors, expected[r].formFactors) << "shooter " << got[r].shooter;
+        EXPECT_EQ(got[r].backFaces, expected[r].backFaces) << "shooter " << got[r].shooter;
+        EXPECT_EQ(got[r].capturedFraction, expected[r].capturedFraction) << "shooter " << got[r].shooter;
+      }
+      EXPECT_EQ(updated.singlePlaneItemBuffer(20).items, fresh.singlePlaneItemBuffer(20).items);
+    }
+}
+
+// Neighbours across polygons: elements of two polygons sharing part of an edge, coplanar or at a
+// concave fold; not at a convex fold, nor back to back.
+TEST(Adaptive, NeighboursCrossPolygonSeamsWhereLightPasses) {
+  // A closed box cut 2 x 2 a face (normals inward: every fold concave): each patch touches its
+  // face's three others and shares an edge with one patch of each of the two faces it borders.
+  const TestScene box = closedBox(Vec3(1.0), 2, {grey(0.5)});
+  const std::vector<std::vector<int>> n = elementNeighbours(patchesAsElements(box.patches));
+  for (size_t e = 0; e < n.size(); ++e) {
+    EXPECT_EQ(n[e].size(), 5u) << "patch " << e;
+    EXPECT_EQ(std::count_if(n[e].begin(), n[e].end(), [&](int o) { return box.patches[o].polygon != box.patches[e].polygon; }), 2)
+        << "patch " << e;
+  }
+  EXPECT_EQ(n[0], (std::vector<int>{1, 2, 3, 8, 16}));  // the floor's corner at the origin
+  // Coplanar: a 1 m patch of polygon 0 beside two 0.5 m patches of polygon 1, whose edges lie on
+  // its own (a T-junction), and a third of polygon 2 touching it at a corner only.
+  std::vector<Patch> flat{makePatch({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}, 0, 0),
+                          makePatch({Vec3(1, 0, 0), Vec3(1.5, 0, 0), Vec3(1.5, 0.5, 0), Vec3(1, 0.5, 0)}, 0, 1),
+                          makePatch({Vec3(1, 0.5, 0), Vec3(1.5, 0.5, 0), Vec3(1.5, 1, 0), Vec3(1, 1, 0)}, 0, 1),
+                          makePatch({Vec3(1, 1, 0), Vec3(1.5, 1, 0), Vec3(1.5, 1.5, 0), Vec3(1, 1.5, 0)}, 0, 2)};
+  const std::vector<std::vector<int>> coplanar = elementNeighbours(patchesAsElements(flat));
+  EXPECT_EQ(coplanar[0], (std::vector<int>{1, 2}));
+  EXPECT_EQ(coplanar[3], (std::vector<int>{2}));  // polygon 2 borders polygon 1's patch 2 along y = 1
+  // A convex fold (a ridge: each face behind the other) and a face back to back with the first:
+  // no neighbours.
+  const std::vector<Patch> ridge{makePatch({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 1), Vec3(0, 1, 1)}, 0, 0),
+                                 makePatch({Vec3(0, 1, 1), Vec3(1, 1, 1), Vec3(1, 2, 0), Vec3(0, 2, 0)}, 0, 1),
+                                 makePatch({Vec3(0, 0, 0), Vec3(0, 1, 1), Vec3(1, 1, 1), Vec3(1, 0, 0)}, 0, 2)};
+  for (const std::vector<int>& none : elementNeighbours(patchesAsElements(ridge))) EXPECT_TRUE(none.empty());
+}
+
+// A step in the light along a seam between two polygons splits the elements on both sides: a floor
+// of two 1 x 1 m polygons (rho 0.8 and 0.2, 2 x 2 patches of 0.5 m each) under a 1 m^2 light 10 m
+// up, whose light varies by under 4 % over the floor: only the seam's step splits.
+TEST(Adaptive, AStepAcrossAPolygonSeamSplits) {
+  TestScene t;
+  t.scene.source = "seam";
+  t.scene.materials = {grey(0.8), grey(0.2), grey(0.0, 100.0)};
+  const Vec3 left(-1, -0.5, 0), right(0, -0.5, 0), light(-0.5, -0.5, 10);
+  addPolygon(t.scene, left, Vec3(1, 0, 0), Vec3(0, 1, 0), 0);
+  addPolygon(t.scene, right, Vec3(1, 0, 0), Vec3(0, 1, 0), 1);
+  addPolygon(t.scene, light, Vec3(0, 1, 0), Vec3(1, 0, 0), 2);  // facing down
+  addGrid(t.patches, left, Vec3(1, 0, 0), Vec3(0, 1, 0), 2, 2, 0, 0);
+  addGrid(t.patches, right, Vec3(1, 0, 0), Vec3(0, 1, 0), 2, 2, 1, 1);
+  addGrid(t.patches, light, Vec3(0, 1, 0), Vec3(1, 0, 0), 1, 1, 2, 2);
+  ProgressiveSolver solver(t.scene, t.patches, subdivided(fixedIterations(optionsFor(Projection::Analytic), 1),
+                                                          Subdivide::Adaptive, 0.125));
+  solveChecked(solver);
+  // The four patches on the seam split (round 1), then the two children of each on the seam
+  // (round 2), down to 0.125 m: 4 + 8 splits, three elements more each.
+  EXPECT_EQ(solver.history().front().elementsSplit, 12);
+  EXPECT_EQ(solver.elements().size(), t.patches.size() + 3u * 12u);
+  for (const Patch& e : solver.elements())  // the 0.125 m elements are those within 0.25 m of the seam
+    if (e.material != 2) {
+      const double toSeam = std::min(std::abs(e.vertices[0].x), std::abs(e.vertices[2].x));  // opposite corners
+      EXPECT_EQ(longestEdge(e) < 0.2, toSeam < 0.2) << "element at " << e.centroid.x << ", " << e.centroid.y;
+    }
 }
 
 TEST(Adaptive, OptionsAreRefusedNamingTheFix) {

@@ -1,7 +1,8 @@
 #pragma once
 // Points hashed into cubic buckets of one size, looked up by box: the welding of coincident corners
 // (buckets the size of the tolerance) and the search for points on patch edges (buckets the size
-// of an edge) in display_radiosity.cpp.
+// of an edge) in solver/bake/display_radiosity.cpp; and the elements sharing an edge
+// across polygons in solver/radiosity/adaptive_split.cpp.
 #include <cmath>
 #include <cstdint>
 #include <functional>
