@@ -65,7 +65,7 @@ TEST(PortalMessage, FullBinsWhereShorterThanTheRuns) {
 
 TEST(PortalMessage, ARunOutsideTheLinksIsRefused) {
   std::vector<double> message;
-  appendPortalRuns(std::vector<Rgb>(2, Rgb(1.0)), 1, message);  // bins 2-3: a second link
+  appendPortalRuns(std::vector<Rgb>(4, Rgb(1.0)), 1, message);  // bins 4-7: a second link
   EXPECT_THROW(readPortalMessage(message, 1, 4), std::runtime_error);
   message.pop_back();  // a run cut short
   EXPECT_THROW(readPortalMessage(message, 2, 4), std::runtime_error);
