@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "solver/io/daylight.h"
+#include "solver/radiosity/cell_ranks.h"
 #include "solver/scene/solve_options.h"
 #include "solver/scene/up_axis.h"
 
@@ -31,9 +32,13 @@ struct BenchSolveArgs {
   std::vector<double> cells;  // patch-count scaling sweep; empty: skipped
   int scalingResolution = 256;
   int scalingIterations = 20;
+  bool distributed = false;  // --distributed: the cells solve over the mpirun's processes
+  std::string csvStem;       // with it: STEM-ranks.csv (a row per process) and STEM-model.csv
 };
 
-nlohmann::json benchSolve(const BenchSolveArgs& args);
+// With `ranks`, this process's part of a distributed run (rank 0 alone prints and writes): each
+// cells row gains the per-rank figures and the model (cli/bench_ranks.h).
+nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks = nullptr);
 
 struct AccuracyArgs {
   std::string scene = "office";

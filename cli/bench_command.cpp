@@ -7,6 +7,7 @@
 #include "cli/bench.h"
 #include "cli/scene_input.h"
 #include "cli/commands.h"
+#include "cli/distributed_command.h"
 #include "cli/output_path.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
@@ -45,10 +46,18 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
+  cmd->add_flag("--distributed", args->distributed,
+                "With --cells auto, under mpirun: the cells solve over the processes, with each rank's work, "
+                "messages, bytes and MPI wait and the model on more ranks (docs/scaling.md); rank 0 prints and writes");
+  cmd->add_option("--csv", args->csvStem, "With --distributed: write STEM-ranks.csv and STEM-model.csv");
   cmd->callback([args, json, cmd] {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");
     args->cellGiven = cmd->count("--cell") > 0;
-    writeJsonIfAsked(*json, benchSolve(*args));
+    if (!args->distributed) return writeJsonIfAsked(*json, benchSolve(*args));
+    runDistributedCells(parseCells(args->cellsMode), [&](CellRanks& ranks) {
+      const nlohmann::json result = benchSolve(*args, &ranks);
+      if (ranks.rank() == 0) writeJsonIfAsked(*json, result);
+    });
   });
 }
 

@@ -2,14 +2,18 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <chrono>
 #include <nlohmann/json.hpp>
 
 #include "cli/bench.h"
+#include "cli/bench_ranks.h"
 #include "cli/bench_timing.h"
 #include "cli/cell_solve.h"
 #include "solver/cells/find_cells.h"
+#include "solver/formfactors/direction_bins.h"
 #include "solver/radiosity/cell_solver.h"
 #include "cli/stats_json.h"
+#include "solver/scene/scene_error.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/progressive_solver.h"
 #include "cli/scene_input.h"
@@ -30,7 +34,15 @@ struct Timing {
   bool reached = false;
   double unshotFraction = 0.0;            // left at the end
   double emulatedSecondsPerIteration = 0.0;  // mesh back end: mean emulated MP-1 time
+  double absorbedW = 0.0;
+  int rounds = 0;                       // cells solve
+  std::vector<RankFigures> ranks = {};  // a distributed run's processes
+  RunShape shape = {};
 };
+
+double wallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 // Solves until `until` (or the cap), timing every iteration; the median is robust to the noise of
 // a shared machine.
@@ -48,6 +60,7 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
   }
   Timing t;
   t.unshotFraction = solver.ledger().unshotFraction();
+  t.absorbedW = solver.ledger().absorbed;
   t.emulatedSecondsPerIteration = perIteration.empty() ? 0.0 : emulated / double(perIteration.size());
   t.secondsToUntil = benchSeconds(options.threads) - start;
   t.msPerIteration = 1e3 * median(perIteration);
@@ -57,32 +70,58 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
 }
 
 // The cells solve, round by round: its time per iteration is a round's time over the iterations
-// the cells shot in it, the median over the rounds.
+// the cells shot in it, the median over the rounds. With `ranks`, this process's part of a
+// distributed solve: every process's figures, and each cell's shots per round for the model.
 Timing timeCells(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
-                 SolveOptions options, int maxIterations, const CellSolveSettings& settings) {
+                 SolveOptions options, int maxIterations, const CellSolveSettings& settings, CellRanks* ranks) {
   options.maxIterations = maxIterations;
+  const std::vector<CellTraffic> sentBefore = ranks ? ranks->traffic() : std::vector<CellTraffic>();
+  const double wallStart = wallSeconds();
   const double start = benchSeconds(options.threads);
-  CellSolver solver(scene, patches, partition, options, settings);
+  CellSolver solver(scene, patches, partition, options, settings, ranks);
   std::vector<double> perIteration;
+  Timing t;
+  std::vector<int> shotsBefore(solver.cellCount(), 0);
   while (!solver.done()) {
     const double before = benchSeconds(options.threads);
     const int iterations = solver.iterations();
     solver.round();
     if (solver.iterations() > iterations)
       perIteration.push_back((benchSeconds(options.threads) - before) / (solver.iterations() - iterations));
+    if (!ranks) continue;
+    const std::vector<CellFigures> cells = solver.cellFigures();
+    std::vector<int>& shots = t.shape.shotsPerRound.emplace_back();
+    for (size_t c = 0; c < cells.size(); ++c) shots.push_back(cells[c].iterations - shotsBefore[c]), shotsBefore[c] = cells[c].iterations;
   }
-  Timing t;
   t.unshotFraction = solver.ledger().unshotFraction();
+  t.absorbedW = solver.ledger().absorbed;
+  t.rounds = solver.rounds();
   t.secondsToUntil = benchSeconds(options.threads) - start;
   t.msPerIteration = 1e3 * median(perIteration);
   t.iterationsToUntil = solver.iterations();
   t.reached = reachedUnshot(options, t.unshotFraction);
+  if (ranks) {
+    const double wall = wallSeconds() - wallStart;
+    std::vector<CellTraffic> sent = ranks->traffic();
+    for (size_t r = 0; r < sent.size(); ++r) sent[r] = sent[r] - sentBefore[r];
+    t.ranks = rankFigures(solver, sent);
+    const std::vector<double> walls = ranks->allGather(wall);
+    for (size_t r = 0; r < walls.size(); ++r) t.ranks[r].wallSeconds = walls[r];
+    for (const CellFigures& cell : solver.cellFigures()) t.shape.cellPatches.push_back(cell.patches + cell.portalPatches);
+    t.shape.cellLoads = solver.cellLoads();
+    t.shape.links = solver.portalTraffic();
+    t.shape.rounds = solver.rounds();
+    t.shape.bins = static_cast<size_t>(directionBinCount(settings.portalBins));
+    t.shape.figureBytes = 8.0 * static_cast<double>(solver.figureDoubles());
+  }
   return t;
 }
 
 }  // namespace
 
-nlohmann::json benchSolve(const BenchSolveArgs& args) {
+nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
+  if (!args.csvStem.empty() && !ranks)
+    throw OptionError("--csv writes the per-rank figures of a distributed run: give --distributed (under mpirun)");
   const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up);
   const CellChoice cell = commandCell(scene, args.cellM, args.cellGiven);
   fmt::print("{}\n", cell.why);
@@ -90,6 +129,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
   const bool cells = parseCells(args.cellsMode);
   const CellPartition partition = cells ? findCells(scene, patches) : CellPartition{};
   nlohmann::json rows = nlohmann::json::array();
+  CsvTable ranksCsv = ranksCsvTable(), modelCsv = modelCsvTable();
   fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}; times are {}\n", scene.source, patches.size(),
              args.threads, args.until,
              args.untilUnshot > 0.0 ? fmt::format(" or {:g}% unshot", 100.0 * args.untilUnshot) : "",
@@ -119,7 +159,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
         validateOptions(o);
         if (cells) requireCellsOptions(o);
         const Timing t = cells ? timeCells(scene, patches, partition, o, args.maxIterations,
-                                           {cell.cellM, args.exchangeShots, args.portalBins})
+                                           {cell.cellM, args.exchangeShots, args.portalBins}, ranks)
                                : timeSolve(scene, patches, o, args.maxIterations);
         fmt::print("{:<10} {:>6} {:>4} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f} {:>7.2f}% {:>12.4f}\n", projection, n, k,
                    t.msPerIteration, t.iterationsToUntil, t.reached ? " " : "+", t.secondsToUntil,
@@ -133,7 +173,12 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
                         {"seconds_to_until", t.secondsToUntil},
                         {"reached_until", t.reached},
                         {"unshot_fraction", t.unshotFraction},
-                        {"emulated_seconds_per_iteration", t.emulatedSecondsPerIteration}});
+                        {"emulated_seconds_per_iteration", t.emulatedSecondsPerIteration},
+                        {"absorbed_w", t.absorbedW}});
+        if (cells) rows.back()["rounds"] = t.rounds;
+        if (ranks)
+          rows.back()["distributed"] = reportRanks(t.ranks, t.shape, {projection, std::to_string(n), std::to_string(k)},
+                                                   ranksCsv, modelCsv);
       }
     }
   }
@@ -159,6 +204,12 @@ nlohmann::json benchSolve(const BenchSolveArgs& args) {
                             {"threads", args.threads}, {"cells", args.cellsMode}, {"until_unshot", args.untilUnshot},
                             {"clock", args.threads == 1 ? "thread cpu" : "wall"}, {"until", args.until},
                             {"rows", rows}, {"scaling", scaling}};
+  if (ranks) result["ranks"] = ranks->size();
+  if (!args.csvStem.empty() && ranks->rank() == 0) {
+    writeCsv(args.csvStem + "-ranks.csv", ranksCsv);
+    writeCsv(args.csvStem + "-model.csv", modelCsv);
+    fmt::print("wrote {0}-ranks.csv, {0}-model.csv\n", args.csvStem);
+  }
   if (backend == Backend::Mesh)
     result.update({{"pe_grid", peGridText(args.machine)}, {"pe_memory_kb", args.machine.memoryKb}});
   return result;

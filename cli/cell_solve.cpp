@@ -96,32 +96,39 @@ nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, do
   return j;
 }
 
+std::vector<RankFigures> rankFigures(const CellSolver& solver, const std::vector<CellTraffic>& traffic) {
+  std::vector<RankFigures> out(traffic.size());
+  const std::vector<CellFigures> cells = solver.cellFigures();
+  for (size_t c = 0; c < cells.size(); ++c) {
+    RankFigures& r = out.at(static_cast<size_t>(solver.owner(static_cast<int>(c))));
+    const int patches = cells[c].patches + cells[c].portalPatches;
+    ++r.cells;
+    r.patches += patches;
+    r.shots += cells[c].iterations;
+    r.work += static_cast<double>(cells[c].iterations) * patches;
+  }
+  for (size_t r = 0; r < out.size(); ++r) out[r].sent = traffic[r];
+  return out;
+}
+
 nlohmann::json distributedStats(const CellSolver& solver, const std::vector<CellTraffic>& traffic) {
   nlohmann::json perRank = nlohmann::json::array();
-  const std::vector<CellFigures> cells = solver.cellFigures();
   const double rounds = std::max(solver.rounds(), 1);
-  for (size_t r = 0; r < traffic.size(); ++r) {
-    int ownCells = 0, patches = 0, shots = 0;
-    double work = 0.0;
-    for (size_t c = 0; c < cells.size(); ++c) {
-      if (solver.owner(static_cast<int>(c)) != static_cast<int>(r)) continue;
-      ++ownCells;
-      patches += cells[c].patches + cells[c].portalPatches;
-      shots += cells[c].iterations;
-      work += static_cast<double>(cells[c].iterations) * (cells[c].patches + cells[c].portalPatches);
-    }
-    const CellTraffic& t = traffic[r];
+  const std::vector<RankFigures> ranks = rankFigures(solver, traffic);
+  for (size_t r = 0; r < ranks.size(); ++r) {
+    const CellTraffic& t = ranks[r].sent;
     perRank.push_back({{"rank", r},
-                       {"cells", ownCells},
-                       {"patches", patches},
-                       {"shots", shots},
-                       {"work", work},
+                       {"cells", ranks[r].cells},
+                       {"patches", ranks[r].patches},
+                       {"shots", ranks[r].shots},
+                       {"work", ranks[r].work},
                        {"messages", t.messages},
                        {"bytes", t.bytes},
                        {"gathers", t.gathers},
                        {"gather_bytes", t.gatherBytes},
                        {"messages_per_round", t.messages / rounds},
-                       {"bytes_per_round", t.bytes / rounds}});
+                       {"bytes_per_round", t.bytes / rounds},
+                       {"mpi_wait_seconds", t.waitSeconds}});
   }
   nlohmann::json owner = nlohmann::json::array();
   for (int c = 0; c < solver.cellCount(); ++c) owner.push_back(solver.owner(c));

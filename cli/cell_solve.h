@@ -22,9 +22,19 @@ double solveCellsWithProgress(CellSolver& solver, bool quiet);
 void printCellsSummary(const CellSolver& solver, double seconds);
 // The `--stats` document of a cells solve: "cells", "portals", the building's ledger and "per_cell".
 nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds);
-// A distributed solve's "distributed": per rank its cells, patches, shots and work (shots times the
-// cell's patches, own and portal), and what it sent (CellTraffic), in all and per round; "owner":
-// each cell's rank.
+// One process of a distributed solve.
+struct RankFigures {
+  int cells = 0;
+  int patches = 0;  // its cells', own and portal
+  long long shots = 0;
+  double work = 0.0;  // the load model's units: shots times the cell's patches (patch shots)
+  CellTraffic sent;
+  double wallSeconds = 0.0;  // where the caller timed it
+};
+// Every process's figures, by rank, from the solver's cells and each process's `traffic`.
+std::vector<RankFigures> rankFigures(const CellSolver& solver, const std::vector<CellTraffic>& traffic);
+// A distributed solve's "distributed": per rank its RankFigures (without the wall time), what it
+// sent in all and per round; "owner": each cell's rank.
 nlohmann::json distributedStats(const CellSolver& solver, const std::vector<CellTraffic>& traffic);
 
 }  // namespace radmesh::cli

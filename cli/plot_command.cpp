@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/bench.h"
+#include "cli/bench_ranks.h"
 #include "cli/commands.h"
 #include "cli/csv.h"
 #include "cli/plot.h"
@@ -195,6 +196,16 @@ void addPlotCommand(CLI::App& app) {
       plot->add_subcommand("accuracy", "Draw the figures of docs/accuracy.md from STEM.csv and STEM-traces.csv");
   accuracy->add_option("stem", *stem, "DIR/NAME of `radmesh bench accuracy --out-dir DIR --name NAME`")->required();
   accuracy->callback([stem] { drawAccuracyFigures(*stem, std::filesystem::path(*stem).filename().string()); });
+  auto model = std::make_shared<std::string>();
+  auto scaling = std::make_shared<std::vector<std::string>>();
+  CLI::App* scalingCmd = plot->add_subcommand(
+      "scaling", "Draw docs/scaling.md's figures from `bench solve --distributed --csv STEM` on 1, 2, 4 ranks");
+  scalingCmd->add_option("model", *model, "The model's CSV (STEM-model.csv)")->required();
+  scalingCmd->add_option("ranks", *scaling, "The runs' per-rank CSVs (STEM-ranks.csv), a 1-rank run among them")
+      ->required();
+  auto png = std::make_shared<std::string>();
+  scalingCmd->add_option("--png", *png, "Stem of the PNGs: STEM-speedup.png, STEM-bytes.png")->required();
+  scalingCmd->callback([model, scaling, png] { drawScalingFigures(*model, *scaling, *png); });
 }
 
 }  // namespace radmesh::cli

@@ -7,6 +7,7 @@
 
 #include "cli/cell_solve.h"
 #include "cli/commands.h"
+#include "cli/distributed_command.h"
 #include "cli/scene_input.h"
 #include "cli/effects_text.h"
 #include "cli/output_path.h"
@@ -20,9 +21,6 @@
 #include "solver/io/scene_loader.h"
 #include "solver/radiosity/checkpoint.h"
 #include "solver/scene/scene_error.h"
-#ifdef RADMESH_HAVE_MPI
-#include "distributed/distributed_run.h"
-#endif
 
 namespace radmesh::cli {
 
@@ -158,15 +156,7 @@ void run(const SolveArgs& args, CellRanks* ranks) {
 
 // --distributed: every process of the mpirun runs the solve, each its own cells (CellSolver).
 void runDistributed(const SolveArgs& args) {
-  if (!args.flags.cellsOn())
-    throw OptionError("--distributed splits a cells solve over processes: give --cells auto (the mesh machine over "
-                      "MPI, --backend mesh --distributed, is not in this build yet)");
-#ifdef RADMESH_HAVE_MPI
-  distributed::runDistributed([&](CellRanks& ranks) { run(args, &ranks); });
-#else
-  throw OptionError("--distributed: this radmesh was built without MPI; install libopenmpi-dev and openmpi-bin "
-                    "(scripts/install-deps.sh), build again, and run it under mpirun");
-#endif
+  runDistributedCells(args.flags.cellsOn(), [&](CellRanks& ranks) { run(args, &ranks); });
 }
 
 }  // namespace

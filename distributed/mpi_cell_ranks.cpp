@@ -37,9 +37,11 @@ void MpiCellRanks::shareCells(const std::vector<int>& owner, std::vector<std::ve
   for (std::size_t c = 0; c < perCell.size(); ++c)
     if (owner[c] == rank_) mine.insert(mine.end(), perCell[c].begin(), perCell[c].end());
   std::vector<double> all(total);
+  const double start = MPI_Wtime();
   mpi::check(MPI_Allgatherv(mine.data(), mpiCount(mine.size()), MPI_DOUBLE, all.data(), recvCounts.data(),
                             displacements.data(), MPI_DOUBLE, comm_),
              "MPI_Allgatherv");
+  sent_.waitSeconds += MPI_Wtime() - start;
   ++sent_.gathers;
   sent_.gatherBytes += static_cast<long long>(mine.size() * sizeof(double)) * (size_ - 1);
   std::vector<std::size_t> at(displacements.begin(), displacements.end());
@@ -51,13 +53,14 @@ void MpiCellRanks::shareCells(const std::vector<int>& owner, std::vector<std::ve
 }
 
 std::vector<std::vector<double>> MpiCellRanks::exchange(const std::vector<std::vector<double>>& outgoing,
-                                                         const std::vector<std::size_t>& incomingSizes) {
+                                                         const std::vector<std::size_t>& incomingLimits) {
+  const double start = MPI_Wtime();
   std::vector<std::vector<double>> incoming(size_);
   std::vector<MPI_Request> requests;
   std::vector<int> sources;
   for (int r = 0; r < size_; ++r) {
-    if (incomingSizes[r] == 0) continue;
-    incoming[r].resize(incomingSizes[r]);
+    if (incomingLimits[r] == 0) continue;
+    incoming[r].resize(incomingLimits[r]);
     requests.emplace_back();
     sources.push_back(r);
     mpi::check(MPI_Irecv(incoming[r].data(), mpiCount(incoming[r].size()), MPI_DOUBLE, r, kPortalPowerTag, comm_,
@@ -65,8 +68,7 @@ std::vector<std::vector<double>> MpiCellRanks::exchange(const std::vector<std::v
                "MPI_Irecv");
   }
   const std::size_t receives = requests.size();
-  for (int r = 0; r < size_; ++r) {
-    if (outgoing[r].empty()) continue;
+  for (int r : sources) {  // neighbours are mutual: a message to each, empty when its portals are dark
     requests.emplace_back();
     mpi::check(MPI_Isend(outgoing[r].data(), mpiCount(outgoing[r].size()), MPI_DOUBLE, r, kPortalPowerTag, comm_,
                          &requests.back()),
@@ -75,25 +77,40 @@ std::vector<std::vector<double>> MpiCellRanks::exchange(const std::vector<std::v
     sent_.bytes += static_cast<long long>(outgoing[r].size() * sizeof(double));
   }
   std::vector<MPI_Status> statuses(requests.size());
-  mpi::check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), statuses.data()), "MPI_Waitall");
-  for (std::size_t k = 0; k < receives; ++k) {  // a shorter message than the links call for
+  const int waited = MPI_Waitall(static_cast<int>(requests.size()), requests.data(), statuses.data());
+  for (std::size_t k = 0; waited == MPI_ERR_IN_STATUS && k < receives; ++k)
+    if (statuses[k].MPI_ERROR == MPI_ERR_TRUNCATE)
+      throw mpi::MpiError("rank " + std::to_string(rank_) + ": rank " + std::to_string(sources[k]) +
+                          " sent more portal power than its links to this rank's cells can hold");
+  mpi::check(waited, "MPI_Waitall");
+  for (std::size_t k = 0; k < receives; ++k) {  // what came: at most the limit
     int count = 0;
     mpi::check(MPI_Get_count(&statuses[k], MPI_DOUBLE, &count), "MPI_Get_count");
-    if (static_cast<std::size_t>(count) != incomingSizes[sources[k]])
-      throw mpi::MpiError("rank " + std::to_string(rank_) + ": rank " + std::to_string(sources[k]) + " sent " +
-                          std::to_string(count) + " doubles of portal power, not the " +
-                          std::to_string(incomingSizes[sources[k]]) + " its links to this rank's cells hold");
+    incoming[sources[k]].resize(static_cast<std::size_t>(count));
   }
+  sent_.waitSeconds += MPI_Wtime() - start;
   return incoming;
 }
 
 std::vector<CellTraffic> MpiCellRanks::traffic() {
-  const long long mine[4] = {sent_.messages, sent_.bytes, sent_.gathers, sent_.gatherBytes};
-  std::vector<long long> all(4 * static_cast<std::size_t>(size_));
-  mpi::check(MPI_Allgather(mine, 4, MPI_LONG_LONG, all.data(), 4, MPI_LONG_LONG, comm_), "MPI_Allgather");
+  // Counts as doubles: exact below 2^53.
+  const double mine[5] = {static_cast<double>(sent_.messages), static_cast<double>(sent_.bytes),
+                          static_cast<double>(sent_.gathers), static_cast<double>(sent_.gatherBytes), sent_.waitSeconds};
+  std::vector<double> all(5 * static_cast<std::size_t>(size_));
+  mpi::check(MPI_Allgather(mine, 5, MPI_DOUBLE, all.data(), 5, MPI_DOUBLE, comm_), "MPI_Allgather");
   std::vector<CellTraffic> out(size_);
-  for (int r = 0; r < size_; ++r) out[r] = {all[4 * r], all[4 * r + 1], all[4 * r + 2], all[4 * r + 3]};
+  for (int r = 0; r < size_; ++r) {
+    const double* a = &all[5 * static_cast<std::size_t>(r)];
+    out[r] = {static_cast<long long>(a[0]), static_cast<long long>(a[1]), static_cast<long long>(a[2]),
+              static_cast<long long>(a[3]), a[4]};
+  }
   return out;
+}
+
+std::vector<double> MpiCellRanks::allGather(double value) {
+  std::vector<double> all(static_cast<std::size_t>(size_));
+  mpi::check(MPI_Allgather(&value, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, comm_), "MPI_Allgather");
+  return all;
 }
 
 }  // namespace radmesh::distributed

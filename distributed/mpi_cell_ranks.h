@@ -1,7 +1,7 @@
 #pragma once
 // CellRanks over MPI: every cell's figures by MPI_Allgatherv, portal power by MPI_Isend /
 // MPI_Irecv between the processes whose cells share a portal, and nothing else. Counts what it
-// sends (docs/scaling.md, the stats' "distributed").
+// sends and the wall time in those calls (docs/scaling.md, the stats' "distributed").
 #include <mpi.h>
 
 #include "solver/radiosity/cell_ranks.h"
@@ -16,8 +16,9 @@ class MpiCellRanks : public CellRanks {
   int size() const override { return size_; }
   void shareCells(const std::vector<int>& owner, std::vector<std::vector<double>>& perCell) override;
   std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& outgoing,
-                                            const std::vector<std::size_t>& incomingSizes) override;
+                                            const std::vector<std::size_t>& incomingLimits) override;
   std::vector<CellTraffic> traffic() override;
+  std::vector<double> allGather(double value) override;
 
  private:
   MPI_Comm comm_;

@@ -94,31 +94,48 @@ void CellSolver::State::refresh() {
 
 // In link order (by cell, then patch), on every process: a link whose cells are both this
 // process's moves its power directly; one from another process's cell takes its power from that
-// process's message, which holds its links to this process's cells in the same order. A cell
-// receives in the same order as without ranks, so its sums are the same bit for bit.
+// process's message, which holds its links to this process's cells in the same order (portalMessage:
+// the runs of lit bins, or the full bins where shorter). A cell receives in the same order as
+// without ranks, so its sums are the same bit for bit. Every link records its runs' length, what
+// it sends or would send were its cells on two processes (portalTraffic: docs/scaling.md's model).
 void CellSolver::State::exchange() {
   const size_t bins = static_cast<size_t>(directionBinCount(settings.portalBins));
   const int processes = ranks ? ranks->size() : 1;
-  std::vector<std::vector<double>> outgoing(processes);
-  std::vector<size_t> incomingSizes(processes, 0);
-  for (const PortalLink& link : links) {
-    if (owns(link.cell) && !owns(link.twinCell))
-      for (const Rgb& bin : cells[link.cell].solver->takePortalPower(link.patch))
-        outgoing[owner[link.twinCell]].insert(outgoing[owner[link.twinCell]].end(), {bin.r, bin.g, bin.b});
-    if (!owns(link.cell) && owns(link.twinCell)) incomingSizes[owner[link.cell]] += 3 * bins;
+  std::vector<std::vector<double>> runs(processes), outgoing(processes);
+  std::vector<std::vector<Rgb>> full(processes);
+  std::vector<size_t> linksTo(processes, 0), linksFrom(processes, 0), incomingLimits(processes, 0);
+  std::vector<int>& runDoubles = linkRunDoubles.emplace_back(links.size(), 0);
+  for (size_t k = 0; k < links.size(); ++k) {
+    const PortalLink& link = links[k];
+    if (owns(link.cell) && !owns(link.twinCell)) {
+      const int to = owner[link.twinCell];
+      const std::vector<Rgb> power = cells[link.cell].solver->takePortalPower(link.patch);
+      runDoubles[k] = static_cast<int>(appendPortalRuns(power, linksTo[to]++, runs[to]));
+      full[to].insert(full[to].end(), power.begin(), power.end());
+    }
+    if (!owns(link.cell) && owns(link.twinCell)) ++linksFrom[owner[link.cell]], incomingLimits[owner[link.cell]] += 3 * bins;
   }
+  for (int r = 0; r < processes; ++r) outgoing[r] = portalMessage(std::move(runs[r]), full[r]);
   std::vector<std::vector<double>> incoming(processes);
-  if (ranks) incoming = ranks->exchange(outgoing, incomingSizes);
+  if (ranks) incoming = ranks->exchange(outgoing, incomingLimits);
+  std::vector<std::vector<Rgb>> received(processes);
+  for (int r = 0; r < processes; ++r)
+    if (linksFrom[r] > 0) received[r] = readPortalMessage(incoming[r], linksFrom[r], bins);
   std::vector<size_t> read(processes, 0);
-  for (const PortalLink& link : links) {
+  std::vector<double> unsent;
+  for (size_t k = 0; k < links.size(); ++k) {
+    const PortalLink& link = links[k];
     if (!owns(link.twinCell)) continue;
     std::vector<Rgb> power;
     if (owns(link.cell)) {
       power = cells[link.cell].solver->takePortalPower(link.patch);
+      unsent.clear();
+      runDoubles[k] = static_cast<int>(appendPortalRuns(power, 0, unsent));
     } else {
-      const std::vector<double>& message = incoming[owner[link.cell]];
+      const std::vector<Rgb>& message = received[owner[link.cell]];
       size_t& at = read[owner[link.cell]];
-      for (size_t b = 0; b < bins; ++b, at += 3) power.emplace_back(message[at], message[at + 1], message[at + 2]);
+      power.assign(message.begin() + static_cast<std::ptrdiff_t>(at), message.begin() + static_cast<std::ptrdiff_t>(at + bins));
+      at += bins;
     }
     cells[link.twinCell].solver->addPortalPower(link.twinPatch, power);
   }
@@ -316,6 +333,26 @@ const ProgressiveSolver& CellSolver::cellSolver(int cell) const {
   if (!solver) throw std::out_of_range(fmt::format("cell {} is solved by process {}", cell, owner(cell)));
   return *solver;
 }
+std::vector<PortalLinkTraffic> CellSolver::portalTraffic() const {
+  const State& s = *state_;
+  const size_t exchanges = s.linkRunDoubles.size();
+  std::vector<std::vector<double>> perCell(s.cells.size());  // per link, per exchange
+  for (size_t c = 0; c < s.cells.size(); ++c)
+    for (size_t k = s.firstLink[c]; k < s.firstLink[c + 1]; ++k)
+      for (const std::vector<int>& exchange : s.linkRunDoubles) perCell[c].push_back(exchange[k]);
+  if (s.ranks) s.ranks->shareCells(s.owner, perCell);
+  std::vector<PortalLinkTraffic> out;
+  for (size_t c = 0; c < s.cells.size(); ++c)
+    for (size_t k = s.firstLink[c]; k < s.firstLink[c + 1]; ++k) {
+      const auto first = perCell[c].begin() + static_cast<std::ptrdiff_t>((k - s.firstLink[c]) * exchanges);
+      out.push_back({s.links[k].cell, s.links[k].twinCell, std::vector<int>(first, first + static_cast<std::ptrdiff_t>(exchanges))});
+    }
+  return out;
+}
+
+std::size_t CellSolver::figureDoubles() const { return kFigures * state_->cells.size() + state_->links.size(); }
+
+std::vector<double> CellSolver::cellLoads() const { return state_->load; }
 const SolveOptions& CellSolver::options() const { return state_->options; }
 const CellSolveSettings& CellSolver::settings() const { return state_->settings; }
 

@@ -57,6 +57,15 @@ struct CellFigures {
 // together; everything else reads every cell's figures as of the last round, the same on every
 // process, so every process schedules the same rounds, and the answer equals the solve without
 // ranks bit for bit.
+// A portal patch of `cell` whose power moves to its twin in `twinCell`: the length of its runs of
+// lit bins at each exchange (appendPortalRuns), what it sends to another process (or would, were
+// the two cells on two), before portalMessage's choice of the shorter for a whole message.
+struct PortalLinkTraffic {
+  int cell = 0;
+  int twinCell = 0;
+  std::vector<int> runDoubles;  // per exchange (round)
+};
+
 class CellSolver {
  public:
   CellSolver(const Scene& scene, std::vector<Patch> patches, const CellPartition& partition,
@@ -102,6 +111,11 @@ class CellSolver {
   int portalCount() const;
   std::vector<CellFigures> cellFigures() const;
   int owner(int cell) const;  // the process solving the cell (0 without ranks)
+  std::vector<double> cellLoads() const;  // per cell: the load the cells were assigned to processes by
+  // Per portal link, in the exchanges' order (by cell, then patch), every exchange so far; the
+  // same on every process, which must all call it together (docs/scaling.md's model).
+  std::vector<PortalLinkTraffic> portalTraffic() const;
+  std::size_t figureDoubles() const;  // every cell's figures, shared by all processes twice a round
   // Throws std::out_of_range for a cell another process solves.
   const ProgressiveSolver& cellSolver(int cell) const;
   const SolveOptions& options() const;

@@ -31,7 +31,7 @@ Patch turned(const Patch& p) {
 // The load of each cell: its patches (own and portal, what a shot projects) times 1 + cells x its
 // share of the light it starts with (its emitters and what the lights sent it), the rounds' budget
 // being shared by unshot power.
-std::vector<double> cellLoads(const std::vector<int>& patchCount, const std::vector<double>& lightW) {
+std::vector<double> loadOfCells(const std::vector<int>& patchCount, const std::vector<double>& lightW) {
   double total = 0.0;
   for (double w : lightW) total += w;
   std::vector<double> load(patchCount.size());
@@ -125,7 +125,8 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     patchCount[portal.cellA] += static_cast<int>(portalMesh[p].size());
     patchCount[portal.cellB] += static_cast<int>(portalMesh[p].size());
   }
-  s.owner = assignCellsToRanks(cellLoads(patchCount, lightW), ranks ? ranks->size() : 1);
+  s.load = loadOfCells(patchCount, lightW);
+  s.owner = assignCellsToRanks(s.load, ranks ? ranks->size() : 1);
 
   // Per cell: a scene of the polygons its patches came from (in the building's order) and its
   // portals, the building's materials and a black "portal" one (the solver passes portal light on).

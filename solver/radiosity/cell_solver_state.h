@@ -76,7 +76,9 @@ struct CellSolver::State {
   Ledger lights;
   ThreadPool pool;
   CellRanks* ranks;
-  std::vector<int> owner;  // per cell: the process solving it
+  std::vector<double> load;  // per cell: what assignCellsToRanks cut by
+  std::vector<int> owner;    // per cell: the process solving it
+  std::vector<std::vector<int>> linkRunDoubles;  // per exchange, per link: its runs' length (exchange())
   // Every cell's figures as of the last refresh(), the same on every process: what the schedule,
   // done() and the building's ledger read.
   std::vector<Ledger> cellLedger;

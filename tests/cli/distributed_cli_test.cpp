@@ -1,6 +1,7 @@
 // `radmesh solve --cells auto --distributed` under mpirun, as a user runs it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -12,11 +13,24 @@ namespace radmesh {
 namespace {
 
 constexpr const char* kCells = "solve two-rooms --cells auto --cell 0.75 --resolution 32 --until-unshot 0.05 --quiet";
+constexpr const char* kBench = "bench solve two-rooms --cells auto --cell 0.75 --projections hemicube --resolutions 32 "
+                               "--until 1 --until-unshot 0.05 --threads 1";
 
 TEST(DistributedCli, NeedsCellsAuto) {
-  const CommandRun run = radmesh("solve two-rooms --distributed");
+  for (const char* command : {"solve two-rooms --distributed", "bench solve two-rooms --distributed"}) {
+    const CommandRun run = radmesh(command);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("--distributed splits a cells solve over processes: give --cells auto"),
+              std::string::npos)
+        << run.output;
+  }
+}
+
+TEST(DistributedCli, BenchCsvNeedsDistributed) {
+  const CommandRun run = radmesh(std::string(kBench) + " --csv " + tempPath("stem"));
   EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("--distributed splits a cells solve over processes: give --cells auto"), std::string::npos)
+  EXPECT_NE(run.output.find("--csv writes the per-rank figures of a distributed run: give --distributed"),
+            std::string::npos)
       << run.output;
 }
 
@@ -56,11 +70,65 @@ TEST(DistributedCli, TwoRanksWriteTheOneProcessStatsAndBake) {
   for (const nlohmann::json& rank : distributed["per_rank"]) {
     shots += rank["shots"].get<int>();
     EXPECT_EQ(rank["messages"], b["rounds"]) << "one message a round to the one neighbour";
-    // The one portal's patches, 48 direction bins (4 x 4) of 3 doubles each.
-    EXPECT_EQ(rank["bytes"], b["rounds"].get<int>() * b["per_cell"][0]["portal_patches"].get<int>() * 48 * 3 * 8);
+    // Less than the one portal's patches' 48 direction bins (4 x 4) of 3 doubles each every round:
+    // only the lit bins go (their exact count: DistributedCells.* and the bench's test below).
+    EXPECT_LT(rank["bytes"].get<long long>(),
+              b["rounds"].get<int>() * b["per_cell"][0]["portal_patches"].get<int>() * 48 * 3 * 8);
+    EXPECT_EQ(rank["bytes"].get<long long>() % 8, 0);
   }
   EXPECT_EQ(shots, a["iterations"]);
   EXPECT_EQ(fileBytes(splitBake), fileBytes(aloneBake));
+}
+
+// bench solve --distributed on 2 ranks: the one-process bench's shots and absorbed power, and each
+// rank's figures: its cells' shots, one message a round to its one neighbour, its bytes what the
+// model (from the same run) says its links sent, and only rank 0 prints the table.
+TEST(DistributedCli, BenchSolveOnTwoRanksReportsEachRanksFigures) {
+  const std::string alone = tempPath("bench-alone.json"), split = tempPath("bench-split.json");
+  const std::string stem = tempPath("bench-split");
+  const CommandRun one = radmesh(std::string(kBench) + " --json " + alone);
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CommandRun two = radmeshOnRanks(2, std::string(kBench) + " --distributed --json " + split + " --csv " + stem);
+  ASSERT_EQ(two.exitCode, 0) << two.output;
+  size_t tables = 0;
+  for (size_t at = two.output.find("per rank (2 ranks"); at != std::string::npos;
+       at = two.output.find("per rank (2 ranks", at + 1))
+    ++tables;
+  EXPECT_EQ(tables, 1u) << two.output;
+
+  const nlohmann::json a = nlohmann::json::parse(fileBytes(alone))["rows"][0];
+  const nlohmann::json b = nlohmann::json::parse(fileBytes(split))["rows"][0];
+  EXPECT_EQ(b["iterations_to_until"], a["iterations_to_until"]);
+  EXPECT_EQ(b["absorbed_w"].get<double>(), a["absorbed_w"].get<double>());  // bit for bit
+  EXPECT_EQ(b["rounds"], a["rounds"]);
+  const int rounds = b["rounds"].get<int>();
+  const nlohmann::json& ranks = b["distributed"]["per_rank"];
+  ASSERT_EQ(ranks.size(), 2u);
+  int shots = 0, cells = 0;
+  double maxBytesPerRound = 0.0, allBytes = 0.0;
+  for (const nlohmann::json& rank : ranks) {
+    shots += rank["shots"].get<int>();
+    cells += rank["cells"].get<int>();
+    EXPECT_EQ(rank["cells"], 1) << "two rooms, one each";
+    EXPECT_EQ(rank["messages"], rounds) << "one message a round to the one neighbour";
+    EXPECT_EQ(rank["gathers"], 2 * rounds + 1) << "made, then twice a round";
+    EXPECT_GT(rank["wall_seconds"].get<double>(), 0.0);
+    EXPECT_LE(rank["mpi_wait_seconds"].get<double>(), rank["wall_seconds"].get<double>());
+    maxBytesPerRound = std::max(maxBytesPerRound, rank["bytes_per_round"].get<double>());
+    allBytes += rank["bytes"].get<double>();
+  }
+  EXPECT_EQ(shots, a["iterations_to_until"]);
+  EXPECT_EQ(cells, 2);
+  const nlohmann::json& model = b["distributed"]["model"];
+  ASSERT_EQ(model[1]["ranks"], 2);
+  EXPECT_EQ(model[1]["max_messages_per_round"], 1);
+  EXPECT_EQ(model[1]["max_bytes_per_round"].get<double>(), maxBytesPerRound) << "the model's 2 ranks are the run's";
+  EXPECT_DOUBLE_EQ(model[1]["all_bytes_per_round"].get<double>(), allBytes / rounds);
+  EXPECT_EQ(model[0]["all_bytes_per_round"], 0.0);
+  // The CSV: a row per rank, a row per model point.
+  const std::string ranksCsv = fileBytes(stem + "-ranks.csv"), modelCsv = fileBytes(stem + "-model.csv");
+  EXPECT_EQ(std::count(ranksCsv.begin(), ranksCsv.end(), '\n'), 3);
+  EXPECT_EQ(std::count(modelCsv.begin(), modelCsv.end(), '\n'), 10);
 }
 
 // Rank 0 cannot write its stats (the path is a folder) while rank 1 waits for it in the bake's
@@ -76,9 +144,11 @@ TEST(DistributedCli, AnErrorOnOneRankEndsTheRunNamingTheRank) {
 }
 #else
 TEST(DistributedCli, RefusedWithoutMpi) {
-  const CommandRun run = radmesh(std::string(kCells) + " --distributed");
-  EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("built without MPI"), std::string::npos) << run.output;
+  for (const char* command : {kCells, kBench}) {
+    const CommandRun run = radmesh(std::string(command) + " --distributed");
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("built without MPI"), std::string::npos) << run.output;
+  }
 }
 #endif
 
