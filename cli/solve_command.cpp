@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -22,6 +23,7 @@
 #include "solver/scene/scene_error.h"
 #ifdef RADMESH_HAVE_MPI
 #include "distributed/distributed_run.h"
+#include "distributed/mesh_processes.h"
 #endif
 
 namespace radmesh::cli {
@@ -38,6 +40,15 @@ struct SolveArgs {
   double checkpointEverySeconds = 0.0;  // 0: once, at the end
   std::string resumePath;
   bool distributed = false;
+};
+
+// This process's part of a distributed run (--distributed): process 0 alone writes.
+struct Processes {
+  CellRanks& ranks;  // the cells solve's; and which process this is
+  // --backend mesh without --cells: the PE machine split over the processes, and the stats'
+  // "distributed" of the solve (collective: every process asks).
+  std::shared_ptr<emu::Transport> meshMachine;
+  std::function<nlohmann::json(const ProgressiveSolver&)> meshStats;
 };
 
 // "N patches", and their elements when patches are cut into elements.
@@ -98,7 +109,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
   if (writes) writeBake(args.outPath, solver->patches(), radiosity, scene.upAxis);
 }
 
-void run(const SolveArgs& args, CellRanks* ranks) {
+void run(const SolveArgs& args, Processes* processes) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
@@ -109,7 +120,9 @@ void run(const SolveArgs& args, CellRanks* ranks) {
   options.effects = parseEffects(args.effects);
   const CellChoice cell = args.flags.cell(scene);
   fmt::print("{}\n", cell.why);
-  if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, ranks);
+  if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, processes ? &processes->ranks : nullptr);
+  if (processes) options.meshTransport = processes->meshMachine;
+  const bool writes = !processes || processes->ranks.rank() == 0;
   if (options.subdivide != Subdivide::Off && (!args.checkpointPath.empty() || !args.resumePath.empty()))
     throw OptionError("--checkpoint and --resume do not keep elements yet: give --subdivide off");
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
@@ -138,31 +151,70 @@ void run(const SolveArgs& args, CellRanks* ranks) {
   double lastCheckpoint = 0.0;
   const double seconds = solveWithProgress(solver, args.quiet, [&](double elapsed) {
     if (args.checkpointEverySeconds > 0.0 && elapsed - lastCheckpoint >= args.checkpointEverySeconds) {
-      writeCheckpoint(args.checkpointPath, solver);
+      if (writes) writeCheckpoint(args.checkpointPath, solver);
       lastCheckpoint = elapsed;
     }
   });
-  if (!args.checkpointPath.empty()) {
+  if (!args.checkpointPath.empty() && writes) {
     writeCheckpoint(args.checkpointPath, solver);
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
   printSummary(solver, seconds);
-  warnIfFarFromConverged(solver.ledger());
+  if (writes) warnIfFarFromConverged(solver.ledger());
 
   if (!args.statsPath.empty()) {
-    writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
-    fmt::print("wrote {}\n", args.statsPath);
+    nlohmann::json stats = solveStats(solver, scene.source, seconds);
+    if (processes) stats["distributed"] = processes->meshStats(solver);
+    if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }
-  writeBake(args.outPath, solver.elements(), solver.displayElementRadiosity(), scene.upAxis);
+  if (writes) writeBake(args.outPath, solver.elements(), solver.displayElementRadiosity(), scene.upAxis);
 }
 
-// --distributed: every process of the mpirun runs the solve, each its own cells (CellSolver).
-void runDistributed(const SolveArgs& args) {
-  if (!args.flags.cellsOn())
-    throw OptionError("--distributed splits a cells solve over processes: give --cells auto (the mesh machine over "
-                      "MPI, --backend mesh --distributed, is not in this build yet)");
 #ifdef RADMESH_HAVE_MPI
-  distributed::runDistributed([&](CellRanks& ranks) { run(args, &ranks); });
+// The stats' "distributed" of a mesh solve over the processes: per rank its block of PEs and what
+// it sent, in all and per iteration, by channel (docs/scaling.md).
+nlohmann::json meshDistributedStats(const emu::Transport& processes, const ProgressiveSolver& solver) {
+  const SolveOptions& o = solver.options();
+  const double iterations = std::max<double>(static_cast<double>(solver.history().size()), 1.0);
+  nlohmann::json perRank = nlohmann::json::array();
+  for (const distributed::MeshRankTraffic& r : distributed::meshTraffic(processes, o.machine.rows, o.machine.cols)) {
+    long long messages = 0, bytes = 0;
+    nlohmann::json channels = nlohmann::json::object();
+    for (const distributed::ChannelTraffic& c : r.channels) {
+      channels[c.channel] = {{"messages", c.messages}, {"bytes", c.bytes}};
+      messages += c.messages, bytes += c.bytes;
+    }
+    perRank.push_back({{"rank", r.rank},
+                       {"rank_row", r.rankRow},
+                       {"rank_col", r.rankCol},
+                       {"pes", r.pes},
+                       {"messages", messages},
+                       {"bytes", bytes},
+                       {"messages_per_iteration", messages / iterations},
+                       {"bytes_per_iteration", bytes / iterations},
+                       {"channels", std::move(channels)}});
+  }
+  return {{"ranks", perRank.size()}, {"split", "mesh machine"}, {"per_rank", std::move(perRank)}};
+}
+#endif
+
+// --distributed: every process of the mpirun runs the solve, each its own cells (CellSolver) or,
+// with --backend mesh, its own block of the PE machine.
+void runDistributed(const SolveArgs& args) {
+  if (!args.flags.cellsOn() && args.flags.backend != "mesh")
+    throw OptionError("--distributed splits a solve over processes: give --cells auto (each process solves some "
+                      "cells) or --backend mesh (each process holds a block of the PE machine)");
+#ifdef RADMESH_HAVE_MPI
+  distributed::runDistributed([&](CellRanks& ranks) {
+    Processes processes{ranks, nullptr, nullptr};
+    if (!args.flags.cellsOn()) {
+      processes.meshMachine = distributed::meshProcesses();
+      processes.meshStats = [&](const ProgressiveSolver& solver) {
+        return meshDistributedStats(*processes.meshMachine, solver);
+      };
+    }
+    run(args, &processes);
+  });
 #else
   throw OptionError("--distributed: this radmesh was built without MPI; install libopenmpi-dev and openmpi-bin "
                     "(scripts/install-deps.sh), build again, and run it under mpirun");
@@ -189,8 +241,9 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--resume", args->resumePath,
                   "Go on from a checkpoint of the same scene and options; --max-iterations counts from the start");
   cmd->add_flag("--distributed", args->distributed,
-                "With --cells auto, under mpirun: each process solves some of the cells, exchanging portal light "
-                "with its neighbours (docs/cells.md); process 0 prints and writes");
+                "Under mpirun, with --cells auto: each process solves some of the cells, exchanging portal light "
+                "with its neighbours (docs/cells.md); with --backend mesh: each process holds a block of the PE "
+                "machine (docs/scaling.md); process 0 prints and writes");
   cmd->callback([args] { args->distributed ? runDistributed(*args) : run(*args, nullptr); });
 }
 

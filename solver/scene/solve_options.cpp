@@ -64,6 +64,9 @@ void validateOptions(const SolveOptions& o) {
   if (o.subdivide == Subdivide::Adaptive && o.backend == Backend::Mesh)
     throw OptionError("--subdivide adaptive is not built on the mesh back end yet (its PEs hold a fixed set of "
                       "elements): give --backend native, or --subdivide uniform");
+  if (o.meshTransport && o.backend != Backend::Mesh)
+    throw OptionError("--distributed splits the mesh back end's machine over processes: give --backend mesh (or "
+                      "--cells auto, which splits the cells)");
   if (!(std::isfinite(o.splitContrast) && o.splitContrast > 0.0))
     throw OptionError("--split-contrast " + number(o.splitContrast) +
                       " is out of range: give a fraction of the brightest element's radiosity above 0, e.g. 0.1");

@@ -9,6 +9,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "emulator/front_end.h"
 #include "emulator/memory_ledger.h"
 #include "emulator/reduce.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
@@ -34,7 +35,14 @@ const SolveOptions& checked(const SolveOptions& options, const MeshBackendOption
 
 emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendOptions& mesh) {
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware};
+  if (const emu::Transport* t = options.meshTransport.get()) try {
+      emu::blockOf({mesh.peRows, mesh.peCols}, t->rankGrid(), t->rankRow(), t->rankCol());
+    } catch (const std::invalid_argument& e) {
+      throw OptionError(fmt::format("--distributed over {} processes ({} x {}): {}; or give a --pe-grid they divide",
+                                    t->rankGrid().size(), t->rankGrid().rows, t->rankGrid().cols, e.what()));
+    }
+  return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware,
+          options.meshTransport};
 }
 
 // The emulator's fix speaks of its MachineConfig; a user sets the machine with flags.
@@ -78,11 +86,17 @@ MeshBackend::MeshBackend(const Scene&, const std::vector<Patch>& patches, const 
   layout_ = {static_cast<int>(receivers.size()), machine_.size()};
   // The patches spread out equally over the PE array (section 1.5); so do the elements, beside them.
   shooterLayout_ = {static_cast<int>(patches.size()), machine_.size()};
+  // Each process loads the patches of its own PEs; PE 0 holds the most, which every PE reserves.
+  auto load = [&](emu::PeArray<PatchRecord>& onPe, const PatchLayout& layout) {
+    onPe.reserve(layout.slotsPerPe());
+    for (int j = 0; j < layout.patches; ++j)
+      if (machine_.holds(layout.peOf(j))) onPe.push(layout.peOf(j), PatchRecord{j});
+  };
   try {
-    for (int j = 0; j < layout_.patches; ++j) patchesOnPe_.push(layout_.peOf(j), PatchRecord{j});
+    load(patchesOnPe_, layout_);
     if (&receivers != &patches) {
       shootersOnPe_ = std::make_unique<emu::PeArray<PatchRecord>>(machine_, "shooting patches");
-      for (int j = 0; j < shooterLayout_.patches; ++j) shootersOnPe_->push(shooterLayout_.peOf(j), PatchRecord{j});
+      load(*shootersOnPe_, shooterLayout_);
     }
   } catch (const emu::MemoryBudgetError& e) {
     refuseMachine(e);
@@ -170,14 +184,22 @@ void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFac
 
 FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors) {
   // The front end reads what each patch's PE made of it on this plane.
-  const int n = layout_.patches;
-  std::vector<char> seenFromFront(n, 0);
-  std::vector<double> projectedAreaPixels(n, 0.0);
-  for (int j = 0; j < n; ++j) {
+  struct Seen {
+    int pe = 0;
+    int patch = 0;
+    bool seenFromFront = false;
+    double areaPixels = 0.0;  // 0 where not projected
+  };
+  std::vector<Seen> held;
+  for (int j = 0; j < layout_.patches; ++j) {
+    if (!machine_.holds(layout_.peOf(j))) continue;
     const PatchProjection& p = shot.projection(layout_.peOf(j), layout_.slotOf(j), plane);
-    seenFromFront[j] = p.seenFromFront;
-    if (p.projected) projectedAreaPixels[j] = p.setup.areaPixels;
+    held.push_back({layout_.peOf(j), j, p.seenFromFront, p.projected ? p.setup.areaPixels : 0.0});
   }
+  std::vector<char> seenFromFront(layout_.patches, 0);
+  std::vector<double> projectedAreaPixels(layout_.patches, 0.0);
+  for (const Seen& s : emu::gatherByPe(machine_, std::move(held)))
+    seenFromFront[s.patch] = s.seenFromFront, projectedAreaPixels[s.patch] = s.areaPixels;
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
     const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
@@ -234,8 +256,8 @@ std::vector<int> MeshBackend::selectShooters(std::span<const double> unshotPower
       emu::ActiveScope scope(machine_, has);
       const emu::Located<ShooterClaim> top = emu::reduceMax(machine_, best);
       if (top.pe < 0) break;
-      shooters.push_back(bestPatch[top.pe]);
-      chosen[bestPatch[top.pe]] = 1;
+      shooters.push_back(emu::readPe(bestPatch, top.pe));
+      chosen[shooters.back()] = 1;
     }
     return shooters;
   });
@@ -252,6 +274,9 @@ double MeshBackend::updateReceivers(const FormFactorRow& row, double flopsPerUpd
       for (const PatchRecord& p : patchesOnPe_.list(pe))
         if (receiverOf[p.patch] >= 0) absorbed[pe] += update(receiverOf[p.patch]);
     });
+    // Every process's front end keeps the whole solve: it updates the other processes' receivers too.
+    for (int j = 0; j < layout_.patches; ++j)
+      if (!machine_.holds(layout_.peOf(j)) && receiverOf[j] >= 0) update(receiverOf[j]);
     return emu::reduceAdd(machine_, absorbed);
   });
 }
