@@ -54,9 +54,11 @@ void addBenchSolve(CLI::App* bench) {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");
     args->cellGiven = cmd->count("--cell") > 0;
     if (!args->distributed) return writeJsonIfAsked(*json, benchSolve(*args));
-    runDistributedCells(parseCells(args->cellsMode), [&](CellRanks& ranks) {
-      const nlohmann::json result = benchSolve(*args, &ranks);
-      if (ranks.rank() == 0) writeJsonIfAsked(*json, result);
+    if (!parseCells(args->cellsMode))
+      throw OptionError("bench solve --distributed measures a cells solve over processes: give --cells auto");
+    runDistributed(true, false, [&](Processes& processes) {
+      const nlohmann::json result = benchSolve(*args, &processes.ranks);
+      if (processes.ranks.rank() == 0) writeJsonIfAsked(*json, result);
     });
   });
 }

@@ -1,14 +1,32 @@
 #pragma once
 // `--distributed` (solve, bench solve): every process of the mpirun runs `body` with its part of the
-// run. Refused, naming the fix, without --cells auto or in a build without MPI. The one place a
-// command's distributed run starts: another back end over MPI (the mesh machine, --backend mesh)
-// would be dispatched here, with its own transport beside CellRanks.
+// run, the one place a command's distributed run starts.
 #include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
 
 #include "solver/radiosity/cell_ranks.h"
 
+namespace radmesh {
+class ProgressiveSolver;
+namespace emu {
+class Transport;
+}
+}  // namespace radmesh
+
 namespace radmesh::cli {
 
-void runDistributedCells(bool cellsOn, const std::function<void(CellRanks&)>& body);
+// This process's part of a distributed run: process 0 alone writes.
+struct Processes {
+  CellRanks& ranks;  // the cells solve's; and which process this is
+  // --backend mesh without --cells: the PE machine split over the processes, and the stats'
+  // "distributed" of the solve (collective: every process asks).
+  std::shared_ptr<emu::Transport> meshMachine;
+  std::function<nlohmann::json(const ProgressiveSolver&)> meshStats;
+};
+
+// With cellsOn each process solves some cells; else, with meshBackend, each holds a block of the
+// PE machine. Refused, naming the fix, with neither or in a build without MPI.
+void runDistributed(bool cellsOn, bool meshBackend, const std::function<void(Processes&)>& body);
 
 }  // namespace radmesh::cli

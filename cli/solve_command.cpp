@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -97,7 +98,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
   if (writes) writeBake(args.outPath, elements.elements, radiosity, scene.upAxis);
 }
 
-void run(const SolveArgs& args, CellRanks* ranks) {
+void run(const SolveArgs& args, Processes* processes) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   SolveOptions options = args.flags.resolved();
@@ -107,7 +108,9 @@ void run(const SolveArgs& args, CellRanks* ranks) {
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up);
   const CellChoice cell = args.flags.cell(scene);
   fmt::print("{}\n", cell.why);
-  if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, ranks);
+  if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, processes ? &processes->ranks : nullptr);
+  if (processes) options.meshTransport = processes->meshMachine;
+  const bool writes = !processes || processes->ranks.rank() == 0;
   if (options.subdivide != Subdivide::Off && (!args.checkpointPath.empty() || !args.resumePath.empty()))
     throw OptionError("--checkpoint and --resume do not keep elements yet: give --subdivide off");
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
@@ -136,27 +139,30 @@ void run(const SolveArgs& args, CellRanks* ranks) {
   double lastCheckpoint = 0.0;
   const double seconds = solveWithProgress(solver, args.quiet, [&](double elapsed) {
     if (args.checkpointEverySeconds > 0.0 && elapsed - lastCheckpoint >= args.checkpointEverySeconds) {
-      writeCheckpoint(args.checkpointPath, solver);
+      if (writes) writeCheckpoint(args.checkpointPath, solver);
       lastCheckpoint = elapsed;
     }
   });
-  if (!args.checkpointPath.empty()) {
+  if (!args.checkpointPath.empty() && writes) {
     writeCheckpoint(args.checkpointPath, solver);
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
   printSummary(solver, seconds);
-  warnIfFarFromConverged(solver.ledger());
+  if (writes) warnIfFarFromConverged(solver.ledger());
 
   if (!args.statsPath.empty()) {
-    writeJson(args.statsPath, solveStats(solver, scene.source, seconds));
-    fmt::print("wrote {}\n", args.statsPath);
+    nlohmann::json stats = solveStats(solver, scene.source, seconds);
+    if (processes) stats["distributed"] = processes->meshStats(solver);
+    if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }
-  writeBake(args.outPath, solver.elements(), solver.displayElementRadiosity(), scene.upAxis);
+  if (writes) writeBake(args.outPath, solver.elements(), solver.displayElementRadiosity(), scene.upAxis);
 }
 
-// --distributed: every process of the mpirun runs the solve, each its own cells (CellSolver).
+// --distributed: every process of the mpirun runs the solve, each its own cells (CellSolver) or,
+// with --backend mesh, its own block of the PE machine.
 void runDistributed(const SolveArgs& args) {
-  runDistributedCells(args.flags.cellsOn(), [&](CellRanks& ranks) { run(args, &ranks); });
+  cli::runDistributed(args.flags.cellsOn(), args.flags.backend == "mesh",
+                      [&](Processes& processes) { run(args, &processes); });
 }
 
 }  // namespace
@@ -177,8 +183,9 @@ void addSolveCommand(CLI::App& app) {
   cmd->add_option("--resume", args->resumePath,
                   "Go on from a checkpoint of the same scene and options; --max-iterations counts from the start");
   cmd->add_flag("--distributed", args->distributed,
-                "With --cells auto, under mpirun: each process solves some of the cells, exchanging portal light "
-                "with its neighbours (docs/cells.md); process 0 prints and writes");
+                "Under mpirun, with --cells auto: each process solves some of the cells, exchanging portal light "
+                "with its neighbours (docs/cells.md); with --backend mesh: each process holds a block of the PE "
+                "machine (docs/scaling.md); process 0 prints and writes");
   cmd->callback([args] { args->distributed ? runDistributed(*args) : run(*args, nullptr); });
 }
 

@@ -53,6 +53,11 @@ class MeshMachine {
   int local(int pe) const { return transport_ ? block_.localIndex(grid_, pe) : pe; }
   int globalPe(int local) const { return transport_ ? block_.globalPe(grid_, local) : local; }
   int ownerOf(int pe) const;  // the rank holding pe (only when distributed())
+  // The front end's walk over this process's PEs, in increasing global id (serial, not charged).
+  template <class Visit>
+  void forEachPe(Visit visit) const {
+    for (int i = 0; i < blockSize(); ++i) visit(globalPe(i));
+  }
 
   // SIMD `if`: narrow the active set, flip to the `else` branch, restore (see ActiveScope). The
   // mask covers this process's block; conditions are block-sized (Plural<bool>::values()).

@@ -57,6 +57,12 @@ class PeArray {
     charged_ = length;
     if (length > stride_) regrow(std::max(length, 2 * stride_));
   }
+  // reserve() for the longest `length` any process has (each names its PE that needs it), so that
+  // every process reserves alike; collective when distributed.
+  void reserveAcross(int length, int pe) {
+    const detail::MaxAt need = detail::allMaxAt(*machine_, Channel::Reduce, {length, pe});
+    reserve(static_cast<int>(need.value), need.pe);
+  }
   // Appends to one PE's list (front-end or serial code: may grow every PE's reservation).
   void push(int pe, const T& value) {
     int& count = counts_[machine_->local(pe)];

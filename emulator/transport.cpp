@@ -3,7 +3,7 @@
 namespace radmesh::emu {
 
 const char* toString(Channel channel) {
-  static constexpr const char* kNames[] = {"xnet", "router", "reduce", "scan", "sort"};
+  static constexpr const char* kNames[] = {"xnet", "router", "reduce", "scan", "sort", "front end"};
   return kNames[static_cast<int>(channel)];
 }
 

@@ -21,9 +21,10 @@ namespace radmesh::emu {
 
 using Bytes = std::vector<std::byte>;
 
-// The operation class a transfer belongs to (as in CostCounts).
-enum class Channel { Xnet, Router, Reduce, Scan, Sort };
-inline constexpr int kChannels = 5;
+// The operation class a transfer belongs to (as in CostCounts), or the front end reading PE
+// memory (front_end.h), which the MP-1 does over its own bus and CostCounts leave out.
+enum class Channel { Xnet, Router, Reduce, Scan, Sort, FrontEnd };
+inline constexpr int kChannels = 6;
 const char* toString(Channel channel);
 
 // Point-to-point messages and payload bytes this rank sent to other ranks (a transfer to itself is

@@ -61,6 +61,9 @@ void validateOptions(const SolveOptions& o) {
   if (o.subdivide == Subdivide::Adaptive && !(o.minElementM > 0.0))
     throw OptionError("--subdivide adaptive splits elements down to --min-element, so it needs one above 0: give "
                       "e.g. --min-element 0.05 (metres)");
+  if (o.meshTransport && o.backend != Backend::Mesh)
+    throw OptionError("--distributed splits the mesh back end's machine over processes: give --backend mesh (or "
+                      "--cells auto, which splits the cells)");
   if (!(std::isfinite(o.splitContrast) && o.splitContrast > 0.0))
     throw OptionError("--split-contrast " + number(o.splitContrast) +
                       " is out of range: give a fraction of the brightest element's radiosity above 0, e.g. 0.1");

@@ -1,7 +1,12 @@
 #pragma once
 // What a user chooses for a solve; shared by the CLI, the viewer and the benchmarks.
 #include <cstddef>
+#include <memory>
 #include <string>
+
+namespace radmesh::emu {
+class Transport;  // emulator/transport.h: only the mesh back end sees it (tests/solver/layering_test.cpp)
+}
 
 namespace radmesh {
 
@@ -27,6 +32,9 @@ struct SolveOptions {
   Projection projection = Projection::Plane;
   MappingKind mapping = MappingKind::Hierarchical;  // mesh backend only
   PeMachine machine;                                // mesh backend only: --pe-grid, --pe-memory
+  // Mesh backend only: the processes its machine is split over (--distributed; distributed/ makes
+  // it over MPI), every process running the same solve. Null: this process holds the whole machine.
+  std::shared_ptr<emu::Transport> meshTransport;
   int resolution = 128;    // N: the single plane (or each hemicube face) is N x N pixels, 16..2048
   double ratio = 3.0;      // half-side of the single plane at height 1 (the paper's ratio 3)
   int shooters = 1;        // k: shooters per iteration, all shot from the same state

@@ -1,4 +1,5 @@
-// `radmesh solve --cells auto --distributed` under mpirun, as a user runs it.
+// `radmesh solve --cells auto --distributed` and `--backend mesh --distributed` under mpirun, as a
+// user runs them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,14 +17,21 @@ constexpr const char* kCells = "solve two-rooms --cells auto --cell 0.75 --resol
 constexpr const char* kBench = "bench solve two-rooms --cells auto --cell 0.75 --projections hemicube --resolutions 32 "
                                "--until 1 --until-unshot 0.05 --threads 1";
 
-TEST(DistributedCli, NeedsCellsAuto) {
-  for (const char* command : {"solve two-rooms --distributed", "bench solve two-rooms --distributed"}) {
-    const CommandRun run = radmesh(command);
-    EXPECT_EQ(run.exitCode, 2) << run.output;
-    EXPECT_NE(run.output.find("--distributed splits a cells solve over processes: give --cells auto"),
-              std::string::npos)
-        << run.output;
-  }
+constexpr const char* kMesh =
+    "solve cornell --backend mesh --pe-grid 16x16 --resolution 32 --max-iterations 3 --shooters 2 --threads 1 --quiet";
+
+TEST(DistributedCli, NeedsCellsAutoOrBackendMesh) {
+  const CommandRun run = radmesh("solve two-rooms --distributed");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--distributed splits a solve over processes: give --cells auto (each process solves "
+                            "some cells) or --backend mesh (each process holds a block of the PE machine)"),
+            std::string::npos)
+      << run.output;
+  const CommandRun bench = radmesh("bench solve two-rooms --distributed");
+  EXPECT_EQ(bench.exitCode, 2) << bench.output;
+  EXPECT_NE(bench.output.find("bench solve --distributed measures a cells solve over processes: give --cells auto"),
+            std::string::npos)
+      << bench.output;
 }
 
 TEST(DistributedCli, BenchCsvNeedsDistributed) {
@@ -129,6 +137,43 @@ TEST(DistributedCli, BenchSolveOnTwoRanksReportsEachRanksFigures) {
   const std::string ranksCsv = fileBytes(stem + "-ranks.csv"), modelCsv = fileBytes(stem + "-model.csv");
   EXPECT_EQ(std::count(ranksCsv.begin(), ranksCsv.end(), '\n'), 3);
   EXPECT_EQ(std::count(modelCsv.begin(), modelCsv.end(), '\n'), 10);
+}
+
+// The stats without what differs from run to run: wall and host seconds, and the split itself.
+nlohmann::json withoutTimes(nlohmann::json j) {
+  if (j.is_object()) {
+    for (const char* key : {"seconds", "host_seconds", "distributed"}) j.erase(key);
+    for (auto& [key, value] : j.items()) value = withoutTimes(value);
+  } else if (j.is_array()) {
+    for (auto& value : j) value = withoutTimes(value);
+  }
+  return j;
+}
+
+// The mesh machine over two processes: the stats (shooters, ledger, depths, cost counts per
+// iteration) and the bake are one process's, bit for bit; the "distributed" section gives each
+// process its block of the 256 PEs and what it sent, which the router and the gathers make non-zero.
+TEST(DistributedCli, MeshOnTwoRanksWritesTheOneProcessStatsAndBake) {
+  const std::string alone = tempPath("mesh-alone.json"), split = tempPath("mesh-split.json");
+  const std::string aloneBake = tempPath("mesh-alone.glb"), splitBake = tempPath("mesh-split.glb");
+  const CommandRun one = radmesh(std::string(kMesh) + " --stats " + alone + " --out " + aloneBake);
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CommandRun two = radmeshOnRanks(2, std::string(kMesh) + " --distributed --stats " + split + " --out " + splitBake);
+  ASSERT_EQ(two.exitCode, 0) << two.output;
+  EXPECT_EQ(two.output.find("solved: "), two.output.rfind("solved: ")) << "rank 0 alone prints\n" << two.output;
+
+  const nlohmann::json a = nlohmann::json::parse(fileBytes(alone)), b = nlohmann::json::parse(fileBytes(split));
+  ASSERT_EQ(a["iterations"], 3);
+  EXPECT_EQ(withoutTimes(b), withoutTimes(a));
+  const nlohmann::json& distributed = b["distributed"];
+  ASSERT_EQ(distributed["ranks"], 2) << distributed.dump();
+  for (const nlohmann::json& rank : distributed["per_rank"]) {
+    EXPECT_EQ(rank["pes"], 128);
+    EXPECT_GT(rank["channels"]["router"]["messages"].get<long long>(), 0);
+    EXPECT_GT(rank["channels"]["front end"]["bytes"].get<long long>(), 0);
+    EXPECT_EQ(rank["messages_per_iteration"].get<double>(), rank["messages"].get<double>() / 3);
+  }
+  EXPECT_EQ(fileBytes(splitBake), fileBytes(aloneBake));
 }
 
 // Rank 0 cannot write its stats (the path is a folder) while rank 1 waits for it in the bake's

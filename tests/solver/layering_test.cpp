@@ -1,7 +1,8 @@
 // The layering docs/architecture.md draws, checked on the sources: each stage of solver/ includes
 // only the stages before it, the back ends do not include each other, nothing but the factory
 // sees a back end's own folder (the rest, the CLI, the viewer and the benches included, goes
-// through FormFactorBackend and ShotStats), only the mesh back end sees the emulator, and the core
+// through FormFactorBackend and ShotStats), only the mesh back end sees the emulator (and
+// distributed/, which makes its MPI transport), and the core
 // never sees the viewer, the CLI or GL.
 #include <gtest/gtest.h>
 
@@ -69,8 +70,9 @@ std::vector<std::string> layeringViolations(const std::vector<Include>& includes
     if (from == "solver" && (to == "distributed" || target == "mpi.h" || startsWith(target, "parallel/mpi/")))
       bad("the core knows no MPI: distributed/ is its MPI side");
     const bool showsTheMachine = std::count(kShowTheMachine.begin(), kShowTheMachine.end(), file) > 0;
-    if (to == "emulator" && from != "emulator" && from != "parallel" && !startsWith(file, "solver/backends/mesh/") &&
-        !showsTheMachine)
+    // distributed/ makes the machine's MPI transport (the solver gets it as an emu::Transport).
+    if (to == "emulator" && from != "emulator" && from != "parallel" && from != "distributed" &&
+        !startsWith(file, "solver/backends/mesh/") && !showsTheMachine)
       bad("only the mesh back end sees emulator types");
     if (!backendOf(target).empty() && backendOf(file).empty() && file != kFactory)
       bad("a back end's folder is its own: the rest uses FormFactorBackend and ShotStats");
@@ -143,6 +145,7 @@ TEST(Layering, EachRuleCatchesItsBreak) {
       {"viewer/solver_snapshot.h", "solver/backends/shot_stats.h"},
       {"bench/emulator_bench.cpp", "emulator/xnet.h"},  // shows the machine itself
       {"distributed/mpi_cell_ranks.h", "solver/radiosity/cell_ranks.h"},
+      {"distributed/mesh_processes.cpp", "emulator/mpi/mpi_transport.h"},
   };
   for (const auto& include : fine)
     EXPECT_TRUE(layeringViolations({include}).empty()) << include.file << " -> " << include.target;

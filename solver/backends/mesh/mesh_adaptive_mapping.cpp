@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "emulator/front_end.h"
 #include "emulator/router.h"
 #include "emulator/scan.h"
 #include "solver/scene/scene_error.h"
@@ -24,31 +25,41 @@ std::vector<double> axisLoads(emu::MeshMachine& m, const MeshShot& shot,
     for (int slot = 0; slot < patchesOnPe.maxCount(); ++slot)
       for (int edge = 0; edge < 2; ++edge) {  // +weight where the box begins, -weight past its end
         m.chargeAlu({1.0, 4.0});
-        for (int pe = 0; pe < m.size(); ++pe) {
+        m.forEachPe([&](int pe) {
           sends[pe] = false;
-          if (slot >= patchesOnPe.count(pe)) continue;
+          if (slot >= patchesOnPe.count(pe)) return;
           const PatchProjection& p = shot.projection(pe, slot, q);
-          if (!p.projected) continue;
+          if (!p.projected) return;
           const PolygonSetup& s = p.setup;
           const int begin = alongRows ? s.rowBegin : s.columnBegin;
           const int end = alongRows ? s.rowEnd : s.columnEnd;
           const int across = alongRows ? s.columnEnd - s.columnBegin : s.rowEnd - s.rowBegin;
-          if (edge == 1 && end >= resolution) continue;
+          if (edge == 1 && end >= resolution) return;
           sends[pe] = true;
           to[pe] = edge == 0 ? begin : end;
           weight[pe] = edge == 0 ? across : -across;
-        }
+        });
         emu::ActiveScope scope(m, sends);
         emu::routerSend(m, difference, weight, to, emu::Combine::Add);
       }
   Plural<double> load(m, 0.0, "pixel load");
   Plural<bool> pixel(m, false, "stands for a pixel"), noStarts(m, false, "segment starts");
-  for (int pe = 0; pe < resolution; ++pe) pixel[pe] = true;
+  m.forEachPe([&](int pe) { pixel[pe] = pe < resolution; });
   {
     emu::ActiveScope scope(m, pixel);
     emu::segmentedScan(m, load, difference, noStarts, emu::ScanKind::Inclusive);
   }
-  return std::vector<double>(load.data(), load.data() + resolution);
+  struct PixelLoad {
+    int pe = 0;
+    double load = 0.0;
+  };
+  std::vector<PixelLoad> held;
+  m.forEachPe([&](int pe) {
+    if (pe < resolution) held.push_back({pe, load[pe]});
+  });
+  std::vector<double> loads(resolution, 0.0);
+  for (const PixelLoad& l : emu::gatherByPe(m, std::move(held))) loads[l.pe] = l.load;
+  return loads;
 }
 
 }  // namespace

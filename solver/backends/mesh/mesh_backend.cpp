@@ -9,6 +9,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "emulator/front_end.h"
 #include "emulator/memory_ledger.h"
 #include "emulator/reduce.h"
 #include "emulator/router.h"
@@ -35,7 +36,14 @@ const SolveOptions& checked(const SolveOptions& options, const MeshBackendOption
 
 emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendOptions& mesh) {
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware};
+  if (const emu::Transport* t = options.meshTransport.get()) try {
+      emu::blockOf({mesh.peRows, mesh.peCols}, t->rankGrid(), t->rankRow(), t->rankCol());
+    } catch (const std::invalid_argument& e) {
+      throw OptionError(fmt::format("--distributed over {} processes ({} x {}): {}; or give a --pe-grid they divide",
+                                    t->rankGrid().size(), t->rankGrid().rows, t->rankGrid().cols, e.what()));
+    }
+  return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware,
+          options.meshTransport};
 }
 
 // The emulator's fix speaks of its MachineConfig; a user sets the machine with flags.
@@ -56,10 +64,13 @@ struct ShooterClaim {
   }
 };
 
-// Fills `onPe` with of(j) for every item j of the layout, at its PE and slot.
+// Fills `onPe` with of(j) for every item j of the layout, at its PE and slot: on a machine split
+// over processes, those of this process's PEs; PE 0 holds the most, which every PE reserves.
 template <class T, class Of>
 void lay(emu::PeArray<T>& onPe, const PatchLayout& layout, Of of) {
-  for (int j = 0; j < layout.patches; ++j) onPe.push(layout.peOf(j), of(j));
+  onPe.reserve(layout.slotsPerPe());
+  for (int j = 0; j < layout.patches; ++j)
+    if (onPe.machine().holds(layout.peOf(j))) onPe.push(layout.peOf(j), of(j));
 }
 
 // An element on its way to its PE after a split: its record, and the light it carries (its
@@ -207,14 +218,22 @@ void MeshBackend::computeRows(std::span<const int> shooters, std::vector<FormFac
 
 FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors) {
   // The front end reads what each patch's PE made of it on this plane.
-  const int n = layout_.patches;
-  std::vector<char> seenFromFront(n, 0);
-  std::vector<double> projectedAreaPixels(n, 0.0);
-  for (int j = 0; j < n; ++j) {
+  struct Seen {
+    int pe = 0;
+    int patch = 0;
+    bool seenFromFront = false;
+    double areaPixels = 0.0;  // 0 where not projected
+  };
+  std::vector<Seen> held;
+  for (int j = 0; j < layout_.patches; ++j) {
+    if (!machine_.holds(layout_.peOf(j))) continue;
     const PatchProjection& p = shot.projection(layout_.peOf(j), layout_.slotOf(j), plane);
-    seenFromFront[j] = p.seenFromFront;
-    if (p.projected) projectedAreaPixels[j] = p.setup.areaPixels;
+    held.push_back({layout_.peOf(j), j, p.seenFromFront, p.projected ? p.setup.areaPixels : 0.0});
   }
+  std::vector<char> seenFromFront(layout_.patches, 0);
+  std::vector<double> projectedAreaPixels(layout_.patches, 0.0);
+  for (const Seen& s : emu::gatherByPe(machine_, std::move(held)))
+    seenFromFront[s.patch] = s.seenFromFront, projectedAreaPixels[s.patch] = s.areaPixels;
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
     const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
@@ -271,8 +290,8 @@ std::vector<int> MeshBackend::selectShooters(std::span<const double> unshotPower
       emu::ActiveScope scope(machine_, has);
       const emu::Located<ShooterClaim> top = emu::reduceMax(machine_, best);
       if (top.pe < 0) break;
-      shooters.push_back(bestPatch[top.pe]);
-      chosen[bestPatch[top.pe]] = 1;
+      shooters.push_back(emu::readPe(bestPatch, top.pe));
+      chosen[shooters.back()] = 1;
     }
     return shooters;
   });
@@ -294,6 +313,9 @@ double MeshBackend::updateReceivers(const FormFactorRow& row, double flopsPerUpd
       for (const PatchRecord& p : patchesOnPe_.list(pe))
         if (receiverOf[p.patch] >= 0) absorbed[pe] += update(receiverOf[p.patch]);
     });
+    // Every process's front end keeps the whole solve: it updates the other processes' receivers too.
+    for (int j = 0; j < layout_.patches; ++j)
+      if (!machine_.holds(layout_.peOf(j)) && receiverOf[j] >= 0) update(receiverOf[j]);
     return emu::reduceAdd(machine_, absorbed);
   });
 }

@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "emulator/front_end.h"
 #include "emulator/mesh_sort.h"
 #include "emulator/router.h"
 #include "emulator/scan.h"
@@ -34,7 +35,7 @@ void rowMajorNeighbour(emu::MeshMachine& m, Plural<int>& dst, const Plural<int>&
   const int lastColumn = m.grid().cols - 1;
   const int edgeColumn = fromPredecessor ? 0 : lastColumn;
   Plural<bool> atEdge(m, false, "at the row's edge");
-  for (int pe = 0; pe < m.size(); ++pe) atEdge[pe] = m.grid().col(pe) == edgeColumn;
+  m.forEachPe([&](int pe) { atEdge[pe] = m.grid().col(pe) == edgeColumn; });
   emu::ActiveScope scope(m, atEdge);
   emu::xnetShift(m, dst, src, fromPredecessor ? Direction::SE : Direction::NW, 1);
   scope.elseBranch();
@@ -73,17 +74,18 @@ std::vector<std::vector<double>> meshFormFactors(emu::MeshMachine& m, const Mesh
 
   // Runs of equal keys are segments; a run may cross from one PE to the next in row-major order.
   Plural<int> firstKey(m, kNoItem, "first key"), lastKey(m, kNoItem, "last key");
-  for (int pe = 0; pe < m.size(); ++pe) firstKey[pe] = keys.at(pe, 0), lastKey[pe] = keys.at(pe, perPe - 1);
+  m.forEachPe([&](int pe) { firstKey[pe] = keys.at(pe, 0), lastKey[pe] = keys.at(pe, perPe - 1); });
   Plural<int> predecessorKey(m, kNoItem, "predecessor's last key"), successorKey(m, kNoItem, "successor's first key");
   rowMajorNeighbour(m, predecessorKey, lastKey, true);
   rowMajorNeighbour(m, successorKey, firstKey, false);
   PeArray<bool> starts(m, perPe, false, "segment starts");
   m.chargeAlu({0.0, kFlagIntOps * perPe});
-  for (int pe = 0; pe < m.size(); ++pe)
+  m.forEachPe([&](int pe) {
     for (int t = 0; t < perPe; ++t) {
       const int before = t > 0 ? keys.at(pe, t - 1) : (pe > 0 ? predecessorKey[pe] : kNoItem);
       starts.at(pe, t) = keys.at(pe, t) != before;
     }
+  });
   PeArray<double> sums(m, "segment sums");
   emu::segmentedScan(m, sums, values, starts, emu::ScanKind::Inclusive);
 
@@ -94,25 +96,34 @@ std::vector<std::vector<double>> meshFormFactors(emu::MeshMachine& m, const Mesh
   Plural<bool> sends(m, false, "ends a run");
   for (int t = 0; t < perPe; ++t) {
     m.chargeAlu({0.0, kFlagIntOps});
-    for (int pe = 0; pe < m.size(); ++pe) {
+    m.forEachPe([&](int pe) {
       const int key = keys.at(pe, t);
       const int after = t + 1 < perPe ? keys.at(pe, t + 1) : (pe + 1 < m.size() ? successorKey[pe] : kNoItem);
       sends[pe] = key != kNoItem && key != after;
-      if (!sends[pe]) continue;
+      if (!sends[pe]) return;
       const int patch = key % n;
       sum[pe] = sums.at(pe, t);
       toPe[pe] = layout.peOf(patch);
       toSlot[pe] = key / n * layout.slotsPerPe() + layout.slotOf(patch);
-    }
+    });
     emu::ActiveScope scope(m, sends);
     emu::routerSend(m, formFactors, sum, toPe, toSlot, emu::Combine::Add);
   }
 
   // The front end reads each patch's form factors from its PE.
-  std::vector<std::vector<double>> result(planes, std::vector<double>(n, 0.0));
+  struct Read {
+    int pe = 0;
+    int plane = 0;
+    int patch = 0;
+    double formFactor = 0.0;
+  };
+  std::vector<Read> held;
   for (int q = 0; q < planes; ++q)
     for (int j = 0; j < n; ++j)
-      result[q][j] = formFactors.at(layout.peOf(j), q * layout.slotsPerPe() + layout.slotOf(j));
+      if (m.holds(layout.peOf(j)))
+        held.push_back({layout.peOf(j), q, j, formFactors.at(layout.peOf(j), q * layout.slotsPerPe() + layout.slotOf(j))});
+  std::vector<std::vector<double>> result(planes, std::vector<double>(n, 0.0));
+  for (const Read& r : emu::gatherByPe(m, std::move(held))) result[r.plane][r.patch] = r.formFactor;
   return result;
 }
 

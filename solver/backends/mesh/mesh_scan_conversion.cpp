@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "emulator/front_end.h"
 #include "emulator/memory_ledger.h"
 #include "emulator/router.h"
 #include "emulator/xnet.h"
@@ -48,10 +49,10 @@ MeshScanConversion::MeshScanConversion(emu::MeshMachine& machine, const std::vec
 
 void MeshScanConversion::project(MeshShot& shot) {
   const int planes = static_cast<int>(shot.shooters.size());
+  auto held = [&](int pe) { return machine_.holds(pe) ? patchesOnPe_.count(pe) : 0; };  // this process's PEs only
   shot.firstSlot.assign(machine_.size(), 0);
-  for (int pe = 1; pe < machine_.size(); ++pe)
-    shot.firstSlot[pe] = shot.firstSlot[pe - 1] + patchesOnPe_.count(pe - 1);
-  const int slots = shot.firstSlot.back() + patchesOnPe_.count(machine_.size() - 1);
+  for (int pe = 1; pe < machine_.size(); ++pe) shot.firstSlot[pe] = shot.firstSlot[pe - 1] + held(pe - 1);
+  const int slots = shot.firstSlot.back() + held(machine_.size() - 1);
   shot.projections.assign(static_cast<std::size_t>(slots) * planes, PatchProjection{});
   // Each PE projects its own patches onto every plane of the shot into its own memory, so the PEs
   // can run on any number of host threads.
@@ -95,6 +96,7 @@ ScanDepths MeshScanConversion::scanConvert(const MeshShot& shot, MeshShotStats& 
       }
       descriptions_.releaseAll();  // the next phase needs the room
       forward_.releaseAll();
+      gatherDepths(depths);
       return depths;
     } catch (const emu::MemoryBudgetError&) {
       descriptions_.releaseAll();
@@ -114,44 +116,52 @@ void MeshScanConversion::routeToUpperLeft(const MeshShot& shot, int pass, int pa
   for (int q = 0; q < static_cast<int>(shot.shooters.size()); ++q)
     for (int slot = 0; slot < patchesOnPe_.maxCount(); ++slot) {
       machine_.chargeAlu({0.0, kRouteIntOps});
-      for (int pe = 0; pe < grid.size(); ++pe) {
+      machine_.forEachPe([&](int pe) {
         sends[pe] = false;
-        if (slot >= patchesOnPe_.count(pe)) continue;
+        if (slot >= patchesOnPe_.count(pe)) return;
         const PatchProjection& p = shot.projection(pe, slot, q);
-        if (!p.projected || patchesOnPe_.at(pe, slot).patch % passes != pass) continue;
+        if (!p.projected || patchesOnPe_.at(pe, slot).patch % passes != pass) return;
         const PolygonSetup& s = p.setup;
         sends[pe] = true;
         message[pe] = {s, q, shot.mapping.rows.stepsToCover(s.rowBegin, s.rowEnd)};
         destination[pe] = grid.index(shot.mapping.rows.peOf(s.rowBegin),
                                      shot.mapping.columns.peOf(s.columnBegin));
-      }
+      });
       emu::ActiveScope scope(machine_, sends);
       const emu::RouterStats routed = emu::routerSendAppend(machine_, descriptions_, message, destination);
-      for (int pe = 0; pe < grid.size(); ++pe) depths.a[pe] += routed.arrivals[pe];
+      machine_.forEachPe([&](int pe) { depths.a[pe] += routed.arrivals[pe]; });
     }
 }
 
 void MeshScanConversion::spreadDown(ScanDepths& depths) {
-  const int size = machine_.size();
-  for (int pe = 0; pe < size; ++pe)
+  // What goes on down is counted first, so that every process reserves the longest list.
+  int most = 0, mostAt = 0;
+  machine_.forEachPe([&](int pe) {
+    int going = 0;
+    for (int i = 0; i < descriptions_.count(pe); ++i) going += descriptions_.at(pe, i).stepsLeft > 0;
+    if (going > most) most = going, mostAt = pe;
+  });
+  forward_.reserveAcross(most, mostAt);
+  machine_.forEachPe([&](int pe) {
     for (int i = 0; i < descriptions_.count(pe); ++i)
-      if (descriptions_.at(pe, i).stepsLeft > 0) forward_.push(pe, i);
+      if (descriptions_.at(pe, i).stepsLeft > 0) forward_.pushReserved(pe, i);
+  });
   machine_.chargeAlu({0.0, kSpreadIntOpsPerItem * descriptions_.maxCount()});
   // One xnet step south per round: every PE keeps (accumulates) what reaches it, and sends on
   // what must go further.
   while (forward_.maxCount() > 0) {
     emu::xnetForward(machine_, descriptions_, forward_, Direction::S, 1);
     machine_.chargeAlu({0.0, kSpreadIntOpsPerItem * forward_.maxCount()});
-    for (int pe = 0; pe < size; ++pe) {
+    machine_.forEachPe([&](int pe) {
       const auto arrived = forward_.list(pe);
       int kept = 0;
       for (int index : arrived)
         if (--descriptions_.at(pe, index).stepsLeft > 0) arrived[kept++] = index;
       forward_.truncate(pe, kept);
-    }
+    });
   }
   forward_.releaseAll();
-  for (int pe = 0; pe < size; ++pe) depths.b[pe] += descriptions_.count(pe);
+  machine_.forEachPe([&](int pe) { depths.b[pe] += descriptions_.count(pe); });
 }
 
 void MeshScanConversion::resetItemBuffers(const MeshShot& shot) {
@@ -160,10 +170,10 @@ void MeshScanConversion::resetItemBuffers(const MeshShot& shot) {
   const int length = static_cast<int>(shot.shooters.size()) * pixelsPerPlane();
   zBuffer_.releaseAll();  // an adaptive mapping sizes it anew each shot
   zBuffer_.reserve(length);
-  for (int pe = 0; pe < machine_.size(); ++pe) {
+  machine_.forEachPe([&](int pe) {
     zBuffer_.clear(pe);
     for (int i = 0; i < length; ++i) zBuffer_.pushReserved(pe, ZEntry{});
-  }
+  });
   machine_.chargeAlu({0.0, static_cast<double>(length)});
 }
 
@@ -221,7 +231,7 @@ void MeshScanConversion::zBufferStep(const MeshShot& shot, bool first) {
       pixelTests_[pe] = zBufferAndKeep(shot, pe, [](const Description& d) { return d.stepsLeft - 1; });
     }
   });
-  const int pairs = *std::max_element(pixelTests_.begin(), pixelTests_.end());
+  const auto pairs = emu::mostOverProcesses(machine_, *std::max_element(pixelTests_.begin(), pixelTests_.end()));
   machine_.chargeAlu({kPixelTestFlops * pairs, kSpreadIntOpsPerItem * most});
 }
 
@@ -232,25 +242,44 @@ void MeshScanConversion::spreadRight(const MeshShot& shot) {
   emu::Plural<bool> busy(machine_, false, "has arrivals");
   while (descriptions_.maxCount() > 0) {
     emu::xnetShift(machine_, descriptions_, descriptions_, Direction::E, 1);
-    for (int pe = 0; pe < machine_.size(); ++pe) busy[pe] = descriptions_.count(pe) > 0;
+    machine_.forEachPe([&](int pe) { busy[pe] = descriptions_.count(pe) > 0; });
     emu::ActiveScope scope(machine_, busy);
     zBufferStep(shot, false);
   }
 }
 
+void MeshScanConversion::gatherDepths(ScanDepths& depths) const {
+  if (!machine_.distributed()) return;  // one process counted every PE
+  struct Depth {
+    int pe = 0;
+    int a = 0;
+    int b = 0;
+  };
+  std::vector<Depth> held;
+  machine_.forEachPe([&](int pe) { held.push_back({pe, depths.a[pe], depths.b[pe]}); });
+  for (const Depth& d : emu::gatherByPe(machine_, std::move(held))) depths.a[d.pe] = d.a, depths.b[d.pe] = d.b;
+}
+
 ItemBuffer MeshScanConversion::gatherItemBuffer(const MeshShot& shot, int plane) const {
   ItemBuffer buffer(face_.width, face_.height);
-  for (int pe = 0; pe < machine_.size(); ++pe) {
+  struct Pixel {
+    int pe = 0;
+    int index = 0;  // in the buffer
+    ZEntry z;
+  };
+  std::vector<Pixel> held;
+  machine_.forEachPe([&](int pe) {
     const auto rows = shot.mapping.rows.pixelsOf(machine_.grid().row(pe));
     const auto columns = shot.mapping.columns.pixelsOf(machine_.grid().col(pe));
     for (std::size_t a = 0; a < rows.size(); ++a)
-      for (std::size_t b = 0; b < columns.size(); ++b) {
-        const ZEntry& z = zBuffer_.at(pe, plane * pixelsPerPlane() + static_cast<int>(a) * columnsPerPe_ +
-                                              static_cast<int>(b));
-        const int q = buffer.index(columns[b], rows[a]);
-        buffer.items[q] = z.item;
-        buffer.inverseDepth[q] = z.inverseDepth;
-      }
+      for (std::size_t b = 0; b < columns.size(); ++b)
+        held.push_back({pe, buffer.index(columns[b], rows[a]),
+                        zBuffer_.at(pe, plane * pixelsPerPlane() + static_cast<int>(a) * columnsPerPe_ +
+                                            static_cast<int>(b))});
+  });
+  for (const Pixel& p : emu::gatherByPe(machine_, std::move(held))) {
+    buffer.items[p.index] = p.z.item;
+    buffer.inverseDepth[p.index] = p.z.inverseDepth;
   }
   return buffer;
 }

@@ -133,6 +133,8 @@ class MeshScanConversion {
 
  private:
   void resetItemBuffers(const MeshShot& shot);
+  // Distributed, each process counted its own PEs' depths: the front end reads every PE's.
+  void gatherDepths(ScanDepths& depths) const;
   void routeToUpperLeft(const MeshShot& shot, int pass, int passes, ScanDepths& depths);
   void spreadDown(ScanDepths& depths);
   void spreadRight(const MeshShot& shot);
