@@ -6,6 +6,7 @@
 // the ledger in cell order, the same numbers on every process) and the power on the portals its
 // cells share with theirs.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace radmesh {
@@ -31,6 +32,11 @@ class CellRanks {
   // from every r where that is not 0; returns what came, by process. Only neighbours talk.
   virtual std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& outgoing,
                                                     const std::vector<std::size_t>& incomingSizes) = 0;
+  // Every process's bytes, by rank, on process 0; empty elsewhere (all must call it together).
+  // A checkpoint's cells: not counted in traffic().
+  virtual std::vector<std::string> gatherOnFirst(const std::string& bytes) = 0;
+  // Process 0's flag on every process (all must call it together): a decision on one clock.
+  virtual bool firstSays(bool flag) = 0;
   // Every process's traffic so far, by rank, on every process (all must call it together).
   virtual std::vector<CellTraffic> traffic() = 0;
 };

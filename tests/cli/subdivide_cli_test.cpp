@@ -70,9 +70,6 @@ TEST(CliSubdivide, WhatIsNotBuiltYetIsRefusedNamingTheFlag) {
   run = radmesh("solve cornell --subdivide uniform --min-element -1");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--min-element -1"), std::string::npos) << run.output;
-  run = radmesh("solve cornell --subdivide uniform --checkpoint " + tempPath("subdivide.ckpt"));
-  EXPECT_NE(run.exitCode, 0);
-  EXPECT_NE(run.output.find("--subdivide off"), std::string::npos) << run.output;
   run = radmesh("solve two-rooms --subdivide uniform --cells auto");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--subdivide and --cells auto"), std::string::npos) << run.output;
