@@ -33,7 +33,7 @@ std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch
   return solver;
 }
 
-double solveCellsWithProgress(CellSolver& solver, bool quiet) {
+double solveCellsWithProgress(CellSolver& solver, bool quiet, const std::function<void(double seconds)>& afterRound) {
   Progress progress(solver.options());
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -43,6 +43,7 @@ double solveCellsWithProgress(CellSolver& solver, bool quiet) {
     record.iteration = solver.iterations();
     record.ledger = solver.ledger();
     if (!quiet) progress.report(record, elapsed());
+    if (afterRound) afterRound(elapsed());
   }
   if (!quiet && record.iteration > 0) progress.finish(record, elapsed());
   return elapsed();

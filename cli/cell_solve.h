@@ -1,6 +1,7 @@
 #pragma once
 // `--cells auto` (docs/cells.md): the building's rooms found from its geometry and solved cell by
 // cell, for solve, render and bench.
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,8 +17,10 @@ void requireCellsOptions(const SolveOptions& options);
 // With `ranks`, this process's part of a distributed solve (CellSolver).
 std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
                                            const CellSolveSettings& settings, CellRanks* ranks = nullptr);
-// Rounds until done(), with progress on stdout unless `quiet`; returns the wall seconds.
-double solveCellsWithProgress(CellSolver& solver, bool quiet);
+// Rounds until done(), with progress on stdout unless `quiet`, calling afterRound (if any) with
+// the wall seconds so far after each round; returns the wall seconds.
+double solveCellsWithProgress(CellSolver& solver, bool quiet,
+                              const std::function<void(double seconds)>& afterRound = {});
 // The summary lines of a cells solve: patches, cells, portals, iterations, the building's ledger.
 void printCellsSummary(const CellSolver& solver, double seconds);
 // The `--stats` document of a cells solve: "cells", "portals", the building's ledger and "per_cell".

@@ -72,20 +72,34 @@ void writeBake(const std::string& path, const std::vector<Patch>& patches, const
   fmt::print("wrote {}\n", path);
 }
 
-// --cells auto: the rooms solved cell by cell (no checkpoints: the state is one solve per cell).
-// With `ranks`, this process's part of a distributed solve: process 0 alone writes.
+// --cells auto: the rooms solved cell by cell. With `ranks`, this process's part of a distributed
+// solve: process 0 alone writes (checkpoints too, every process's cells gathered).
 void runCells(const SolveArgs& args, const Scene& scene, double cellM, const SolveOptions& options,
               CellRanks* ranks) {
-  if (!args.checkpointPath.empty() || !args.resumePath.empty())
-    throw OptionError("--checkpoint and --resume save and restore one solve, not a cells solve: give --cells off");
+  const bool writes = !ranks || ranks->rank() == 0;
+  if (!args.checkpointPath.empty() && writes) checkCheckpointWritable(args.checkpointPath);
   std::unique_ptr<CellSolver> solver = makeCellSolver(
       scene, meshScene(scene, cellM), options, {cellM, args.flags.exchangeShots, args.flags.portalBins}, ranks);
+  if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
+    resumeCellsFromCheckpoint(args.resumePath, scene, *solver);
+    fmt::print("resumed from {} after round {} ({} iterations)\n", args.resumePath, solver->rounds(),
+               solver->iterations());
+  }
   fmt::print("solving {} cell by cell: {} patches, {} {}x{}, k={}, until {:g}% unshot\n", scene.source,
              solver->patches().size(), toString(options.projection), options.resolution, options.resolution,
              options.shooters, 100.0 * options.untilUnshot);
-  const double seconds = solveCellsWithProgress(*solver, args.quiet);
+  double lastCheckpoint = 0.0;
+  const double seconds = solveCellsWithProgress(*solver, args.quiet, [&](double elapsed) {
+    if (!(args.checkpointEverySeconds > 0.0)) return;
+    bool due = elapsed - lastCheckpoint >= args.checkpointEverySeconds;
+    if (ranks) due = ranks->firstSays(due);  // process 0's clock decides for all: all take part
+    if (due) writeCellsCheckpoint(args.checkpointPath, scene, *solver), lastCheckpoint = elapsed;
+  });
+  if (!args.checkpointPath.empty()) {
+    writeCellsCheckpoint(args.checkpointPath, scene, *solver);
+    fmt::print("wrote checkpoint {}\n", args.checkpointPath);
+  }
   printCellsSummary(*solver, seconds);
-  const bool writes = !ranks || ranks->rank() == 0;
   if (writes) warnIfFarFromConverged(solver->ledger());
   if (!args.statsPath.empty()) {
     nlohmann::json stats = cellsStats(*solver, scene.source, seconds);
@@ -111,8 +125,6 @@ void run(const SolveArgs& args, Processes* processes) {
   if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, processes ? &processes->ranks : nullptr);
   if (processes) options.meshTransport = processes->meshMachine;
   const bool writes = !processes || processes->ranks.rank() == 0;
-  if (options.subdivide != Subdivide::Off && (!args.checkpointPath.empty() || !args.resumePath.empty()))
-    throw OptionError("--checkpoint and --resume do not keep elements yet: give --subdivide off");
   if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
   ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written

@@ -1,6 +1,10 @@
 #include "distributed/mpi_cell_ranks.h"
 
 #include <climits>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -15,7 +19,7 @@ constexpr int kPortalPowerTag = 14;
 int mpiCount(std::size_t n) {
   if (n > static_cast<std::size_t>(INT_MAX))
     throw mpi::MpiError("rank " + std::to_string(mpi::worldRank()) + ": a message of " + std::to_string(n) +
-                        " doubles is more than MPI's int count holds");
+                        " elements is more than MPI's int count holds");
   return static_cast<int>(n);
 }
 
@@ -24,6 +28,24 @@ int mpiCount(std::size_t n) {
 MpiCellRanks::MpiCellRanks(MPI_Comm comm) : comm_(comm) {
   mpi::check(MPI_Comm_rank(comm_, &rank_), "MPI_Comm_rank");
   mpi::check(MPI_Comm_size(comm_, &size_), "MPI_Comm_size");
+  if (const char* fault = std::getenv("RADMESH_TEST_FAULT")) {
+    int rank = -1;
+    long long exchange = 0;
+    char how[8] = {};
+    if (std::sscanf(fault, "%d:%lld:%7s", &rank, &exchange, how) != 3 || exchange < 1 ||
+        (std::strcmp(how, "kill") != 0 && std::strcmp(how, "fail") != 0))
+      throw std::invalid_argument(std::string("RADMESH_TEST_FAULT=") + fault + " is not RANK:EXCHANGE:kill or fail");
+    if (rank == rank_) faultExchange_ = exchange, faultKills_ = std::strcmp(how, "kill") == 0;
+  }
+}
+
+// A process that dies, or a message that fails, on purpose: what a run must survive with
+// --checkpoint (docs/cells.md).
+void MpiCellRanks::injectFault() {
+  if (++exchanges_ != faultExchange_) return;
+  if (faultKills_) std::raise(SIGKILL);
+  throw mpi::MpiError("rank " + std::to_string(rank_) + ": MPI_Isend failed: RADMESH_TEST_FAULT at exchange " +
+                      std::to_string(exchanges_));
 }
 
 void MpiCellRanks::shareCells(const std::vector<int>& owner, std::vector<std::vector<double>>& perCell) {
@@ -55,6 +77,7 @@ void MpiCellRanks::shareCells(const std::vector<int>& owner, std::vector<std::ve
 std::vector<std::vector<double>> MpiCellRanks::exchange(const std::vector<std::vector<double>>& outgoing,
                                                          const std::vector<std::size_t>& incomingLimits) {
   const double start = MPI_Wtime();
+  injectFault();
   std::vector<std::vector<double>> incoming(size_);
   std::vector<MPI_Request> requests;
   std::vector<int> sources;
@@ -90,6 +113,31 @@ std::vector<std::vector<double>> MpiCellRanks::exchange(const std::vector<std::v
   }
   sent_.waitSeconds += MPI_Wtime() - start;
   return incoming;
+}
+
+std::vector<std::string> MpiCellRanks::gatherOnFirst(const std::string& bytes) {
+  const unsigned long long size = bytes.size();
+  std::vector<unsigned long long> sizes(size_);
+  mpi::check(MPI_Gather(&size, 1, MPI_UNSIGNED_LONG_LONG, sizes.data(), 1, MPI_UNSIGNED_LONG_LONG, 0, comm_),
+             "MPI_Gather");
+  std::vector<int> counts(size_), displacements(size_);
+  std::size_t total = 0;
+  if (rank_ == 0)
+    for (int r = 0; r < size_; ++r) counts[r] = mpiCount(sizes[r]), displacements[r] = mpiCount(total), total += sizes[r];
+  std::string all(total, '\0');
+  mpi::check(MPI_Gatherv(bytes.data(), mpiCount(bytes.size()), MPI_CHAR, all.data(), counts.data(),
+                         displacements.data(), MPI_CHAR, 0, comm_),
+             "MPI_Gatherv");
+  std::vector<std::string> byRank;
+  if (rank_ == 0)
+    for (int r = 0; r < size_; ++r) byRank.push_back(all.substr(displacements[r], sizes[r]));
+  return byRank;
+}
+
+bool MpiCellRanks::firstSays(bool flag) {
+  int value = flag ? 1 : 0;
+  mpi::check(MPI_Bcast(&value, 1, MPI_INT, 0, comm_), "MPI_Bcast");
+  return value != 0;
 }
 
 std::vector<CellTraffic> MpiCellRanks::traffic() {

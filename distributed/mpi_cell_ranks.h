@@ -17,14 +17,23 @@ class MpiCellRanks : public CellRanks {
   void shareCells(const std::vector<int>& owner, std::vector<std::vector<double>>& perCell) override;
   std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& outgoing,
                                             const std::vector<std::size_t>& incomingLimits) override;
+  std::vector<std::string> gatherOnFirst(const std::string& bytes) override;
+  bool firstSays(bool flag) override;
   std::vector<CellTraffic> traffic() override;
   std::vector<double> allGather(double value) override;
 
  private:
+  void injectFault();
+
   MPI_Comm comm_;
   int rank_ = 0;
   int size_ = 1;
   CellTraffic sent_;
+  long long exchanges_ = 0;
+  // RADMESH_TEST_FAULT=RANK:EXCHANGE:kill|fail (tests): at its EXCHANGE-th portal exchange (1-based),
+  // process RANK dies (SIGKILL) or fails its message (MpiError); exchange 0: none.
+  long long faultExchange_ = 0;
+  bool faultKills_ = false;
 };
 
 }  // namespace radmesh::distributed

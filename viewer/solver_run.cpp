@@ -116,6 +116,9 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
       resumeFromCheckpoint(resumePath, *run->solver);
       for (const IterationRecord& record : run->solver->history()) run->add(record);
       run->checkpointMessage = "resumed from " + resumePath;
+    } else if (!resumePath.empty()) {
+      resumeCellsFromCheckpoint(resumePath, scene_, *run->cells);
+      run->checkpointMessage = "resumed from " + resumePath + " after round " + std::to_string(run->cells->rounds());
     }
     run->buildMesh();
     return run;
@@ -126,11 +129,12 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
 }
 
 void SolverThread::save(Run& run, const std::string& path) {
-  if (run.cells) {
-    run.checkpointMessage = "a cells solve keeps no checkpoint (it is one solve per cell): restart with --cells off";
-    return;
-  }
   try {
+    if (run.cells) {
+      writeCellsCheckpoint(path, scene_, *run.cells);
+      run.checkpointMessage = "saved " + path + " after round " + std::to_string(run.cells->rounds());
+      return;
+    }
     writeCheckpoint(path, *run.solver);
     run.checkpointMessage = "saved " + path + " after iteration " + std::to_string(run.solver->history().size());
   } catch (const std::exception& e) {

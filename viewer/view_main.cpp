@@ -96,10 +96,8 @@ int main(int argc, char** argv) {
       throw radmesh::OptionError("--steps and --frames are two different runs: give one");
     args.setup.cells = radmesh::parseCells(cells);
     radmesh::checkPortalBins(args.setup.portalBins);
-    // The cells solve runs on the host's CPU (docs/cells.md), and keeps no checkpoint.
+    // The cells solve runs on the host's CPU (docs/cells.md).
     if (args.setup.cells && backendGiven->count() == 0) backend = "native";
-    if (args.setup.cells && !args.resume.empty())
-      throw radmesh::OptionError("--resume goes on from one solve, not a cells solve: give --cells off");
     if (std::sscanf(size.c_str(), "%dx%d", &args.windowSize.x, &args.windowSize.y) != 2 || args.windowSize.x < 64 ||
         args.windowSize.y < 64)
       throw radmesh::OptionError("--size must be WxH with both at least 64, e.g. 1280x720");

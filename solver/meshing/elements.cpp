@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <string>
 
 #include "solver/scene/scene_error.h"
@@ -151,6 +153,35 @@ std::vector<int> splitElements(Elements& elements, const std::vector<char>& spli
   out.first.push_back(static_cast<int>(out.elements.size()));
   elements = std::move(out);
   return origin;
+}
+
+Elements splitToLevels(const std::vector<Patch>& patches, const std::vector<int>& levels) {
+  constexpr int kMaxLevel = 31;  // a leaf's share of its patch, 4^-level, counted in a u64
+  int deepest = 0;
+  for (int level : levels) {
+    if (level < 0 || level > kMaxLevel) throw std::invalid_argument(fmt::format("an element of level {}", level));
+    deepest = std::max(deepest, level);
+  }
+  auto share = [&](int level) { return std::uint64_t{1} << (2 * (deepest - level)); };
+  Elements elements = patchesAsElements(patches);
+  // Each pass splits the elements whose leaves lie deeper: every element takes the leaves that
+  // cover it, in order, and splits unless that is one leaf of its own level.
+  for (bool splitting = true; splitting;) {
+    std::vector<char> split(elements.elements.size(), 0);
+    size_t at = 0;
+    for (size_t e = 0; e < elements.elements.size(); ++e) {
+      const std::uint64_t needed = share(elements.level[e]);
+      std::uint64_t covered = 0;
+      const size_t from = at;
+      while (covered < needed && at < levels.size()) covered += share(levels[at++]);
+      if (covered != needed) throw std::invalid_argument("element levels that do not tile their patches");
+      split[e] = at - from > 1;
+    }
+    if (at != levels.size()) throw std::invalid_argument("more element levels than the patches hold");
+    splitting = std::find(split.begin(), split.end(), 1) != split.end();
+    if (splitting) splitElements(elements, split);
+  }
+  return elements;
 }
 
 }  // namespace radmesh

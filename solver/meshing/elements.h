@@ -52,4 +52,11 @@ double longestEdge(const Patch& patch);
 // (see Elements above). Returns, per element after the split, the element it was or came from.
 std::vector<int> splitElements(Elements& elements, const std::vector<char>& split);
 
+// The elements adaptive subdivision split `patches` into, from their levels alone (a checkpoint
+// keeps those): a patch's leaves in order, with their levels, name its split tree, since splitting
+// puts an element's children where it was; an element's corners depend on its tree alone, not on
+// when it split. Throws std::invalid_argument for levels that tile no patch (each patch's leaves
+// must cover it exactly: those of level L a quarter of their level L - 1 parent), or above 31.
+Elements splitToLevels(const std::vector<Patch>& patches, const std::vector<int>& levels);
+
 }  // namespace radmesh

@@ -7,6 +7,7 @@
 // cells share with theirs.
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "solver/scene/scene.h"
@@ -39,6 +40,11 @@ class CellRanks {
   // incomingLimits[r] doubles from it; returns what came, by process. Only neighbours talk.
   virtual std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& outgoing,
                                                     const std::vector<std::size_t>& incomingLimits) = 0;
+  // Every process's bytes, by rank, on process 0; empty elsewhere (all must call it together).
+  // A checkpoint's cells: not counted in traffic().
+  virtual std::vector<std::string> gatherOnFirst(const std::string& bytes) = 0;
+  // Process 0's flag on every process (all must call it together): a decision on one clock.
+  virtual bool firstSays(bool flag) = 0;
   // Every process's traffic so far, by rank, on every process (all must call it together).
   virtual std::vector<CellTraffic> traffic() = 0;
   // Every process's `value`, by rank, on every process (all must call it together; not counted).

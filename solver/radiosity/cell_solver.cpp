@@ -3,6 +3,7 @@
 #include "solver/radiosity/cell_solver.h"
 
 #include <algorithm>
+#include <cstring>
 #include <deque>
 #include <fmt/format.h>
 #include <stdexcept>
@@ -355,6 +356,47 @@ std::size_t CellSolver::figureDoubles() const { return kFigures * state_->cells.
 std::vector<double> CellSolver::cellLoads() const { return state_->load; }
 const SolveOptions& CellSolver::options() const { return state_->options; }
 const CellSolveSettings& CellSolver::settings() const { return state_->settings; }
+
+bool CellSolver::solvesHere(int cell) const { return state_->owns(cell); }
+bool CellSolver::writesHere() const { return !state_->ranks || state_->ranks->rank() == 0; }
+const Ledger& CellSolver::lightsLedger() const { return state_->lights; }
+
+std::vector<std::string> CellSolver::gatherOnFirst(std::vector<std::string> perCell) const {
+  const State& s = *state_;
+  if (!s.ranks) return perCell;
+  // This process's cells in cell order, each as its length (8 bytes) and its bytes.
+  std::string mine;
+  for (size_t c = 0; c < perCell.size(); ++c) {
+    if (!s.owns(static_cast<int>(c))) continue;
+    const std::uint64_t size = perCell[c].size();
+    mine.append(reinterpret_cast<const char*>(&size), sizeof size).append(perCell[c]);
+  }
+  const std::vector<std::string> byRank = s.ranks->gatherOnFirst(mine);
+  if (!writesHere()) return perCell;
+  std::vector<size_t> at(byRank.size(), 0);
+  for (size_t c = 0; c < perCell.size(); ++c) {
+    const std::string& from = byRank.at(static_cast<size_t>(s.owner[c]));
+    size_t& next = at[s.owner[c]];
+    std::uint64_t size = 0;
+    if (from.size() - next < sizeof size) throw std::runtime_error(fmt::format("cell {}'s state did not arrive", c));
+    std::memcpy(&size, from.data() + next, sizeof size);
+    next += sizeof size;
+    if (from.size() - next < size) throw std::runtime_error(fmt::format("cell {}'s state arrived cut short", c));
+    perCell[c] = from.substr(next, size);
+    next += size;
+  }
+  return perCell;
+}
+
+void CellSolver::restoreProgress(int rounds, const Ledger& lights,
+                                 const std::function<void(int cell, ProgressiveSolver& solver)>& restoreCell) {
+  State& s = *state_;
+  for (int c = 0; c < cellCount(); ++c)
+    if (s.owns(c)) restoreCell(c, *s.cells[c].solver);
+  s.rounds = rounds;
+  s.lights = lights;
+  s.refresh();
+}
 
 std::vector<CellFigures> CellSolver::cellFigures() const {
   const State& s = *state_;

@@ -7,6 +7,7 @@
 // exchanges the cells shoot in parallel, each on its own, so results are bitwise the same for any
 // number of threads. Lights without a patch (KHR, the sun) shoot once over the whole building when
 // the solver is made; each cell receives what landed on its patches.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -120,6 +121,18 @@ class CellSolver {
   const ProgressiveSolver& cellSolver(int cell) const;
   const SolveOptions& options() const;
   const CellSolveSettings& settings() const;
+
+  // For checkpoints (solver/radiosity/checkpoint.h):
+  bool solvesHere(int cell) const;  // this process solves the cell (every cell without ranks)
+  bool writesHere() const;          // process 0, or no ranks: the one process that writes files
+  const Ledger& lightsLedger() const;  // the lights' shots less what they handed to the cells
+  // perCell[c] as given by the process solving cell c, every cell's on process 0; elsewhere
+  // perCell unchanged. Every process calls it together.
+  std::vector<std::string> gatherOnFirst(std::vector<std::string> perCell) const;
+  // Goes on from a saved solve: its rounds and lights' ledger, and restoreCell(c, solver) for each
+  // of this process's cells; then every cell's figures are shared. Every process calls it together.
+  void restoreProgress(int rounds, const Ledger& lights,
+                       const std::function<void(int cell, ProgressiveSolver& solver)>& restoreCell);
 
  private:
   struct State;

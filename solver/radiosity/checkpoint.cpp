@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <climits>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -57,6 +58,13 @@ OptionList answerOptions(const SolveOptions& o) {
       list.push_back({"--pe-grid", peGridText(o.machine)});
     list.push_back({"--cache-mb", fmt::format("{}", o.formFactorCacheBytes / 1048576.0)});
   }
+  list.push_back({"--subdivide", toString(o.subdivide)});
+  if (o.subdivide != Subdivide::Off) list.push_back({"--min-element", fmt::format("{}", o.minElementM)});
+  if (o.subdivide == Subdivide::Adaptive) {
+    list.push_back({"--split-contrast", fmt::format("{}", o.splitContrast)});
+    list.push_back({"--split-shadows", o.splitShadows ? "on" : "off"});
+    list.push_back({"--split-regather", o.splitRegatherAll ? "all" : "last"});
+  }
   return list;
 }
 
@@ -68,11 +76,32 @@ struct Identity {
   OptionList options;
 };
 
-// What a checkpoint holds besides the header.
+// What a checkpoint of one solve holds besides the header; in a cells checkpoint, each cell's.
 struct Contents {
   Identity identity;
   SolverProgress progress;
 };
+
+// A cell of a cells solve as the partition made it: what a resume must find again.
+struct CellEntry {
+  std::string name;
+  std::int64_t patches = 0;
+  std::int64_t portalPatches = 0;
+};
+
+// What a checkpoint of a cells solve holds: the building's identity (its options with the cells'
+// settings), its cells, the rounds so far, the lights' ledger and each cell's Contents as bytes.
+struct CellsContents {
+  Identity identity;
+  std::vector<CellEntry> cells;
+  std::int64_t rounds = 0;
+  Ledger lights;
+  std::vector<std::string> cellStates;
+};
+
+// The payload starts with what solve it is of.
+constexpr const char* kOneSolve = "solve";
+constexpr const char* kCellsSolve = "cells";
 
 // One field list per type serves writing and reading: transfer(io, x) with io a Writer or a Reader.
 class Writer {
@@ -106,6 +135,7 @@ class Reader {
     return static_cast<std::size_t>(c);
   }
   bool atEnd() const { return at_ == bytes_.size(); }
+  std::string_view rest() const { return bytes_.substr(at_); }
   static constexpr bool reading = true;
 
  private:
@@ -133,8 +163,11 @@ template <class Io> void transfer(Io& io, Ledger& l);
 template <class Io> void transfer(Io& io, nlohmann::json& j);
 template <class Io> void transfer(Io& io, ShotStats& s);
 template <class Io> void transfer(Io& io, IterationRecord& r);
+template <class Io> void transfer(Io& io, FormFactorRow::BinShare& b);
 template <class Io> void transfer(Io& io, FormFactorRow& r);
 template <class Io> void transfer(Io& io, Contents& c);
+template <class Io> void transfer(Io& io, CellEntry& c);
+template <class Io> void transfer(Io& io, CellsContents& c);
 template <class Io, class A, class B> void transfer(Io& io, std::pair<A, B>& p);
 template <class Io, class T> void transfer(Io& io, std::vector<T>& v);
 template <class Io, class T> void transfer(Io& io, std::optional<T>& v);
@@ -160,7 +193,8 @@ template <class Io, class T> void transfer(Io& io, std::shared_ptr<const T>& v) 
 }
 template <class Io> void transfer(Io& io, Rgb& c) { fields(io, c.r, c.g, c.b); }
 template <class Io> void transfer(Io& io, Ledger& l) {
-  fields(io, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, l.lightOutside);
+  fields(io, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, l.lightOutside,
+         l.portalOut, l.portalIn);
 }
 // JSON as its text: nlohmann writes the shortest decimal that reads back to the same double.
 template <class Io> void transfer(Io& io, nlohmann::json& j) {
@@ -174,17 +208,39 @@ template <class Io> void transfer(Io& io, nlohmann::json& j) {
 template <class Io> void transfer(Io& io, ShotStats& s) { fields(io, s.machine, s.machineSeconds, s.figures); }
 template <class Io> void transfer(Io& io, IterationRecord& r) {
   fields(io, r.iteration, r.shooters, r.shotPowerW, r.convergence, r.seconds, r.capturedFraction, r.reusedRows,
-         r.reusedRowsTotal, r.cacheHits, r.ledger, r.shotStats);
+         r.reusedRowsTotal, r.cacheHits, r.ledger, r.elementsSplit, r.shotStats);
 }
+template <class Io> void transfer(Io& io, FormFactorRow::BinShare& b) { fields(io, b.patch, b.bin, b.formFactor); }
 template <class Io> void transfer(Io& io, FormFactorRow& r) {
-  fields(io, r.shooter, r.receivers, r.formFactors, r.backFaces, r.capturedFraction, r.reused);
+  fields(io, r.shooter, r.receivers, r.formFactors, r.backFaces, r.capturedFraction, r.reused, r.binShares,
+         r.binBackFaces, r.binTotals);
 }
 template <class Io> void transfer(Io& io, Contents& c) {
   Identity& i = c.identity;
   SolverProgress& p = c.progress;
   fields(io, i.sceneHash, i.sceneSource, i.patches, i.options, p.radiosity, p.unshotRadiosity, p.unshotPowerW,
          p.timesShot, p.ledger, p.history, p.firstShotPowerW, p.convergence, p.exhausted, p.machineState,
-         p.cachedRows);
+         p.cachedRows, p.elementRadiosity, p.elementLevels, p.shotTotal, p.portalPower, p.portalUnshot);
+}
+template <class Io> void transfer(Io& io, CellEntry& c) { fields(io, c.name, c.patches, c.portalPatches); }
+template <class Io> void transfer(Io& io, CellsContents& c) {
+  Identity& i = c.identity;
+  fields(io, i.sceneHash, i.sceneSource, i.patches, i.options, c.cells, c.rounds, c.lights, c.cellStates);
+}
+
+template <class T> std::string bytesOf(T& value) {
+  Writer writer;
+  transfer(writer, value);
+  return std::move(writer.bytes);
+}
+
+// Throws Malformed unless bytes hold exactly one T.
+template <class T> T parsed(std::string_view bytes) {
+  T value;
+  Reader reader(bytes);
+  transfer(reader, value);
+  if (!reader.atEnd()) throw Malformed{};
+  return value;
 }
 
 std::string errnoText() { return std::strerror(errno); }
@@ -251,6 +307,23 @@ Identity identityOf(const ProgressiveSolver& solver) {
           answerOptions(solver.options())};
 }
 
+// The building's, with the settings that change a cells solve's answer.
+Identity identityOf(const Scene& scene, const CellSolver& solver) {
+  const CellSolveSettings& cells = solver.settings();
+  OptionList options = answerOptions(solver.options());
+  options.insert(options.end(), {{"--cells", "auto"},
+                                 {"--cell", fmt::format("{}", cells.cellM)},
+                                 {"--exchange-shots", std::to_string(cells.exchangeShots)},
+                                 {"--portal-bins", std::to_string(cells.portalBins)}});
+  return {meshedSceneHash(scene, solver.patches()), scene.source, solver.patches().size(), std::move(options)};
+}
+
+std::vector<CellEntry> cellsOf(const CellSolver& solver) {
+  std::vector<CellEntry> cells;
+  for (const CellFigures& cell : solver.cellFigures()) cells.push_back({cell.name, cell.patches, cell.portalPatches});
+  return cells;
+}
+
 // "--resolution 128 there, 256 here; ..." for the options that differ; empty if none.
 std::string optionDifferences(const OptionList& saved, const OptionList& now) {
   std::string text;
@@ -290,10 +363,13 @@ std::uint64_t meshedSceneHash(const Scene& scene, const std::vector<Patch>& patc
   return hash;
 }
 
-void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
-  Contents contents{identityOf(solver), solver.progress()};
+namespace {
+
+// The file: header, then the payload (what solve it is of, then its contents).
+void writeFile(const std::string& path, std::string kind, const std::string& contents) {
   Writer payload;
-  transfer(payload, contents);
+  transfer(payload, kind);
+  payload.bytes += contents;
   Writer file;
   file.bytes.append(kMagic, sizeof kMagic);
   std::uint32_t version = kCheckpointVersion;
@@ -305,14 +381,14 @@ void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
   writeAtomically(path, file.bytes + payload.bytes);
 }
 
-void checkCheckpointWritable(const std::string& path) {
-  const TempFile temp = createTempBeside(path);
-  ::close(temp.fd);
-  ::unlink(temp.path.c_str());
+SceneError refusal(const std::string& path, const std::string& problem, const std::string& fix) {
+  return SceneError(path, "", problem, fix);
 }
 
-void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {
-  auto refuse = [&](const std::string& problem, const std::string& fix) { return SceneError(path, "", problem, fix); };
+// The contents of the checkpoint at path, of a solve of `kind`, its header and checksum checked.
+// Throws SceneError naming the file, what is wrong and the fix.
+template <class T> T readFile(const std::string& path, const std::string& kind) {
+  auto refuse = [&](const std::string& problem, const std::string& fix) { return refusal(path, problem, fix); };
   std::ifstream in(path, std::ios::binary);
   if (!in) throw refuse("cannot be read: " + errnoText(), "give --resume a checkpoint written by --checkpoint");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -340,30 +416,107 @@ void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {
   const std::string_view payload = std::string_view(bytes).substr(kHeaderBytes);
   if (fnv1a(payload.data(), payload.size()) != checksum)
     throw refuse("is corrupted: its checksum does not match its contents", kStartOver);
-  Contents saved;
+  std::string savedKind;
   try {
     Reader reader(payload);
-    transfer(reader, saved);
-    if (!reader.atEnd()) throw Malformed{};
+    transfer(reader, savedKind);
+    if (savedKind == kind) return parsed<T>(reader.rest());
   } catch (const Malformed&) {
-    throw refuse("is corrupted: its contents do not parse although its checksum matches", kStartOver);
   }
+  if (savedKind != kind && (savedKind == kOneSolve || savedKind == kCellsSolve))
+    throw refuse(savedKind == kCellsSolve ? "is a checkpoint of a cells solve (--cells auto), not of one solve"
+                                          : "is a checkpoint of one solve (--cells off), not of a cells solve",
+                 fmt::format("resume it with --cells {}, or solve from scratch without --resume",
+                             savedKind == kCellsSolve ? "auto" : "off"));
+  throw refuse("is corrupted: its contents do not parse although its checksum matches", kStartOver);
+}
 
-  const Identity& was = saved.identity;
-  const Identity now = identityOf(solver);
+// Refuses a checkpoint of another meshed scene or of other options that change the answer.
+void checkSameSolve(const std::string& path, const Identity& was, const Identity& now) {
   if (was.sceneHash != now.sceneHash || was.patches != now.patches)
-    throw refuse(fmt::format("was written for another meshed scene ({}, {} patches; here {}, {} patches): the "
-                             "patches' vertices, materials or emission differ",
-                             was.sceneSource, was.patches, now.sceneSource, now.patches),
-                 "resume with the scene and --cell it was written with, or solve from scratch without --resume");
+    throw refusal(path,
+                  fmt::format("was written for another meshed scene ({}, {} patches; here {}, {} patches): the "
+                              "patches' vertices, materials or emission differ",
+                              was.sceneSource, was.patches, now.sceneSource, now.patches),
+                  "resume with the scene and --cell it was written with, or solve from scratch without --resume");
   if (const std::string differences = optionDifferences(was.options, now.options); !differences.empty())
-    throw refuse("was written with other options: " + differences,
-                 "resume with the options it was written with, or solve from scratch without --resume");
+    throw refusal(path, "was written with other options: " + differences,
+                  "resume with the options it was written with, or solve from scratch without --resume");
+}
+
+void restore(const std::string& path, Contents saved, ProgressiveSolver& solver) {
+  checkSameSolve(path, saved.identity, identityOf(solver));
   try {
     solver.restoreProgress(std::move(saved.progress));
   } catch (const std::invalid_argument& e) {
-    throw refuse(fmt::format("is corrupted: {}", e.what()), kStartOver);
+    throw refusal(path, fmt::format("is corrupted: {}", e.what()), kStartOver);
   }
+}
+
+// "12 cells there, 11 here", or the first cell that differs; empty if none.
+std::string cellDifferences(const std::vector<CellEntry>& was, const std::vector<CellEntry>& now) {
+  if (was.size() != now.size()) return fmt::format("{} cells there, {} here", was.size(), now.size());
+  for (size_t c = 0; c < was.size(); ++c)
+    if (was[c].name != now[c].name || was[c].patches != now[c].patches || was[c].portalPatches != now[c].portalPatches)
+      return fmt::format("cell {} is {} of {} patches and {} portal patches there, {} of {} and {} here", c, was[c].name,
+                         was[c].patches, was[c].portalPatches, now[c].name, now[c].patches, now[c].portalPatches);
+  return {};
+}
+
+}  // namespace
+
+void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
+  Contents contents{identityOf(solver), solver.progress()};
+  writeFile(path, kOneSolve, bytesOf(contents));
+}
+
+void checkCheckpointWritable(const std::string& path) {
+  const TempFile temp = createTempBeside(path);
+  ::close(temp.fd);
+  ::unlink(temp.path.c_str());
+}
+
+void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {
+  restore(path, readFile<Contents>(path, kOneSolve), solver);
+}
+
+void writeCellsCheckpoint(const std::string& path, const Scene& scene, const CellSolver& solver) {
+  std::vector<std::string> cellStates(static_cast<size_t>(solver.cellCount()));
+  for (int c = 0; c < solver.cellCount(); ++c) {
+    if (!solver.solvesHere(c)) continue;
+    Contents cell{identityOf(solver.cellSolver(c)), solver.cellSolver(c).progress()};
+    cellStates[c] = bytesOf(cell);
+  }
+  cellStates = solver.gatherOnFirst(std::move(cellStates));
+  if (!solver.writesHere()) return;
+  CellsContents contents{identityOf(scene, solver), cellsOf(solver), solver.rounds(), solver.lightsLedger(),
+                         std::move(cellStates)};
+  writeFile(path, kCellsSolve, bytesOf(contents));
+}
+
+void resumeCellsFromCheckpoint(const std::string& path, const Scene& scene, CellSolver& solver) {
+  CellsContents saved = readFile<CellsContents>(path, kCellsSolve);
+  checkSameSolve(path, saved.identity, identityOf(scene, solver));
+  if (const std::string differences = cellDifferences(saved.cells, cellsOf(solver)); !differences.empty())
+    throw refusal(path, "was written for other cells: " + differences,
+                  "resume with the radmesh, scene and options it was written with, or solve from scratch without "
+                  "--resume");
+  if (saved.cellStates.size() != saved.cells.size() || saved.rounds < 0 || saved.rounds > INT_MAX)
+    throw refusal(path, "is corrupted: its cells' states do not match its cells", kStartOver);
+  // This process's cells parsed and checked before any is restored.
+  std::vector<Contents> cells(saved.cells.size());
+  for (int c = 0; c < solver.cellCount(); ++c) {
+    if (!solver.solvesHere(c)) continue;
+    try {
+      cells[c] = parsed<Contents>(saved.cellStates[c]);
+    } catch (const Malformed&) {
+      throw refusal(path, fmt::format("is corrupted: the state of cell {} does not parse", c), kStartOver);
+    }
+    checkSameSolve(path, cells[c].identity, identityOf(solver.cellSolver(c)));
+  }
+  solver.restoreProgress(static_cast<int>(saved.rounds), saved.lights, [&](int cell, ProgressiveSolver& cellSolver) {
+    restore(path, std::move(cells[cell]), cellSolver);
+  });
 }
 
 }  // namespace radmesh

@@ -8,12 +8,14 @@
 #include <vector>
 
 #include "solver/meshing/patch.h"
+#include "solver/radiosity/cell_solver.h"
 #include "solver/radiosity/progressive_solver.h"
 #include "solver/scene/scene.h"
 
 namespace radmesh {
 
-inline constexpr std::uint32_t kCheckpointVersion = 2;  // 2: the ledger keeps lightOutside
+// 2: the ledger keeps lightOutside; 3: elements (--subdivide), portal patches and cells solves.
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 
 // Writes the solver's state to path atomically: a temporary file in the same folder, flushed to
 // disk, then renamed over path, so that a kill at any moment leaves the last good checkpoint.
@@ -28,6 +30,18 @@ void checkCheckpointWritable(const std::string& path);
 // a checkpoint of another scene or other options, or a truncated or corrupted one; the solver is
 // then untouched.
 void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver);
+
+// A cells solve's checkpoint (--cells auto): the building's identity and options with the cells'
+// settings, its cells, the rounds so far, the lights' ledger and each cell's solver as
+// writeCheckpoint saves one solve. In a distributed solve every process calls it: process 0
+// gathers every cell's state and alone writes the one file (atomically, as writeCheckpoint).
+void writeCellsCheckpoint(const std::string& path, const Scene& scene, const CellSolver& solver);
+
+// Puts the state saved in path into a cells solver just made of the same scene and options, on
+// any number of processes (each takes its own cells; every process calls it). Throws SceneError
+// naming the file, what differs (the scene, an option, the cells) and the fix; then the solver is
+// untouched, except for a cell state corrupted past its checksum, after which it is to be dropped.
+void resumeCellsFromCheckpoint(const std::string& path, const Scene& scene, CellSolver& solver);
 
 // FNV-1a 64 over the patches' vertices, their materials' reflectance and emission, and the lights, bitwise.
 std::uint64_t meshedSceneHash(const Scene& scene, const std::vector<Patch>& patches);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -36,8 +37,13 @@ bool fitsPatches(const SolverProgress& p, size_t n, size_t elements) {
   const size_t receivers = elements > 0 ? elements : n;
   auto receiverIndex = [receivers](int j) { return j >= 0 && static_cast<size_t>(j) < receivers; };
   auto rowFits = [&](const FormFactorRow& row) {
+    auto shareFits = [&](const FormFactorRow::BinShare& b) {
+      return receiverIndex(b.patch) && b.bin >= 0 && static_cast<size_t>(b.bin) < row.binTotals.size();
+    };
     return patchIndex(row.shooter) && row.receivers.size() == row.formFactors.size() &&
-           std::all_of(row.receivers.begin(), row.receivers.end(), receiverIndex);
+           std::all_of(row.receivers.begin(), row.receivers.end(), receiverIndex) &&
+           row.binBackFaces.size() == row.binTotals.size() &&
+           std::all_of(row.binShares.begin(), row.binShares.end(), shareFits);
   };
   auto recordFits = [&](const IterationRecord& r) { return std::all_of(r.shooters.begin(), r.shooters.end(), patchIndex); };
   return p.radiosity.size() == n && p.unshotRadiosity.size() == n && p.unshotPowerW.size() == n &&
@@ -315,15 +321,37 @@ SolverProgress ProgressiveSolver::progress() const {
   const State& s = *state_;
   return {s.radiosity, s.unshotRadiosity, s.unshotPowerW, s.timesShot, s.ledger, s.history,
           s.firstShotPowerW, s.convergence, s.exhausted, s.backend->machineState(), s.cache.contents(),
-          s.elementRadiosity};
+          s.elementRadiosity, s.adaptive() ? s.elements.level : std::vector<int>(), s.shotTotal,
+          s.portalPower, s.portalUnshot};
 }
 
 void ProgressiveSolver::restoreProgress(SolverProgress p) {
   State& s = *state_;
   const size_t n = s.patches.size();
-  if (!fitsPatches(p, n, s.elementRadiosity.size()) || p.machineState.empty() != s.backend->machineState().empty())
+  // Adaptive: the elements split so far, from their levels (their geometry follows from them).
+  std::optional<Elements> split;
+  if (s.adaptive()) split = splitToLevels(s.patches, p.elementLevels);  // throws std::invalid_argument
+  else if (!p.elementLevels.empty()) throw std::invalid_argument("element levels of an adaptive solve");
+  auto binsFit = [&](const std::vector<std::vector<Rgb>>& saved, const std::vector<std::vector<Rgb>>& now) {
+    return saved.size() == now.size() && std::equal(saved.begin(), saved.end(), now.begin(), [](const auto& a, const auto& b) {
+             return a.size() == b.size();
+           });
+  };
+  const size_t elements = split ? split->elements.size() : s.elementRadiosity.size();
+  if (!fitsPatches(p, n, elements) || p.machineState.empty() != s.backend->machineState().empty() ||
+      p.shotTotal.size() != s.shotTotal.size() || !binsFit(p.portalPower, s.portalPower) ||
+      !binsFit(p.portalUnshot, s.portalUnshot))
     throw std::invalid_argument(fmt::format(
-        "solver progress of another solve: not {} patches, shooters of other patches, or another back end", n));
+        "solver progress of another solve: not {} patches, shooters of other patches, other portal patches, or "
+        "another back end", n));
+  if (split) {  // as refine() leaves them after a split
+    s.backend.reset();
+    s.elements = std::move(*split);
+    s.backend = makeFormFactorBackend(s.scene, s.patches, s.elements.elements, s.options);
+    if (s.plan.nearField) s.elementNearReceivers = findNearFieldReceivers(s.patches, s.elements.elements);
+    s.neighbours = elementNeighbours(s.elements);
+    s.isPortal.assign(s.elements.elements.size(), 0);
+  }
   s.backend->restoreMachineState(p.machineState);  // throws, changing nothing, for another machine's
   s.radiosity = std::move(p.radiosity);
   s.unshotRadiosity = std::move(p.unshotRadiosity);
@@ -335,6 +363,10 @@ void ProgressiveSolver::restoreProgress(SolverProgress p) {
   s.convergence = p.convergence;
   s.exhausted = p.exhausted;
   s.elementRadiosity = std::move(p.elementRadiosity);
+  s.shotTotal = std::move(p.shotTotal);
+  s.portalPower = std::move(p.portalPower);
+  s.portalUnshot = std::move(p.portalUnshot);
+  s.lightsShot = !s.history.empty() && !s.scene.lights.empty();  // iteration 1 shot them
   s.cache = FormFactorCache(s.options.formFactorCacheBytes);
   for (auto row = p.cachedRows.rbegin(); row != p.cachedRows.rend(); ++row) s.cache.insert(*row);
 }

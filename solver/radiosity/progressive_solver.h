@@ -56,6 +56,14 @@ struct SolverProgress {
   // other shooters beside it differs in its last bits, so which rows the cache serves matters.
   std::vector<FormFactorRow> cachedRows;
   std::vector<Rgb> elementRadiosity;  // per element when patches are cut into elements; else empty
+  // --subdivide adaptive: per element, its level (its patch's split tree, splitToLevels in
+  // solver/meshing/elements.h), and per patch all it has shot (for --split-regather all); else empty.
+  std::vector<int> elementLevels;
+  std::vector<Rgb> shotTotal;
+  // Portal patches (setPortalPatches): per patch, the power waiting on it and its unshot power per
+  // direction bin; empty for other patches.
+  std::vector<std::vector<Rgb>> portalPower;
+  std::vector<std::vector<Rgb>> portalUnshot;
 };
 
 // Throws SceneError for input it cannot solve (NaN or infinite coordinates or emittance, an area
@@ -118,8 +126,8 @@ class ProgressiveSolver {
   const EffectsPlan& effectsPlan() const;  // what is simulated and why
 
   SolverProgress progress() const;
-  // Goes on from a progress of the same scene and options. Throws std::invalid_argument when its
-  // sizes are not this solve's.
+  // Goes on from a progress of the same scene and options (and portal patches). Throws
+  // std::invalid_argument, changing nothing, when its sizes are not this solve's.
   void restoreProgress(SolverProgress progress);
 
   // What the projection surface catches (closed form and sum of delta form factors).

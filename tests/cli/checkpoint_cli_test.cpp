@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/cli/cli_run.h"
@@ -21,27 +22,63 @@ std::string readBytes(const std::string& path) {
 const std::string kOptions = "--quiet --resolution 64 --shooters 2 --until 1 --until-unshot 0 ";
 const std::string kSolve = "solve cornell --cell 0.381 " + kOptions;
 
-void expectResumedBakeIsTheStraightOne(const std::string& backend) {
-  const std::string straight = tempPath("straight-" + backend + ".glb");
-  const std::string resumed = tempPath("resumed-" + backend + ".glb");
-  const std::string checkpoint = tempPath(backend + ".ckpt");
-  const std::string solve = kSolve + "--backend " + backend + " ";
-  CommandRun run = radmesh(solve + "--max-iterations 80 --out " + straight);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  run = radmesh(solve + "--max-iterations 40 --checkpoint " + checkpoint);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
+// The stats but the wall times, which no two runs share.
+nlohmann::json withoutSeconds(nlohmann::json stats) {
+  if (stats.is_object()) {
+    stats.erase("seconds");
+    stats.erase("host_seconds");
+    for (auto& [key, value] : stats.items()) value = withoutSeconds(value);
+  } else if (stats.is_array()) {
+    for (auto& value : stats) value = withoutSeconds(value);
+  }
+  return stats;
+}
+
+// `solve` to `total` iterations straight, and stopped at `first` with a checkpoint then resumed:
+// the same bake, bitwise, and the same stats but the times. Returns the resumed run's output.
+std::string expectResumedRunIsTheStraightOne(const std::string& solve, int first, int total,
+                                             const std::string& name) {
+  const std::string straight = tempPath("straight-" + name + ".glb"), resumed = tempPath("resumed-" + name + ".glb");
+  const std::string straightStats = tempPath("straight-" + name + ".json");
+  const std::string resumedStats = tempPath("resumed-" + name + ".json");
+  const std::string checkpoint = tempPath(name + ".ckpt");
+  const std::string to = " --max-iterations " + std::to_string(total);
+  CommandRun run = radmesh(solve + to + " --out " + straight + " --stats " + straightStats);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  run = radmesh(solve + " --max-iterations " + std::to_string(first) + " --checkpoint " + checkpoint);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("wrote checkpoint " + checkpoint), std::string::npos) << run.output;
-  run = radmesh(solve + "--max-iterations 80 --resume " + checkpoint + " --out " + resumed);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("resumed from " + checkpoint + " after iteration 40"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find(", 80 iterations,"), std::string::npos) << run.output;
+  run = radmesh(solve + to + " --resume " + checkpoint + " --out " + resumed + " --stats " + resumedStats);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("resumed from " + checkpoint), std::string::npos) << run.output;
   const std::string expected = readBytes(straight);
-  ASSERT_GT(expected.size(), 1000u);
+  EXPECT_GT(expected.size(), 1000u);
   EXPECT_TRUE(readBytes(resumed) == expected) << "the resumed bake differs from the straight one";
+  const nlohmann::json a = nlohmann::json::parse(readBytes(straightStats), nullptr, false);
+  const nlohmann::json b = nlohmann::json::parse(readBytes(resumedStats), nullptr, false);
+  EXPECT_FALSE(a.is_discarded());
+  EXPECT_EQ(withoutSeconds(b).dump(), withoutSeconds(a).dump());
+  return run.output;
+}
+
+void expectResumedBakeIsTheStraightOne(const std::string& backend) {
+  const std::string output = expectResumedRunIsTheStraightOne(kSolve + "--backend " + backend, 40, 80, backend);
+  EXPECT_NE(output.find("after iteration 40"), std::string::npos) << output;
+  EXPECT_NE(output.find(", 80 iterations,"), std::string::npos) << output;
 }
 
 TEST(CliCheckpoint, ResumedBakeIsBitwiseTheStraightOneNative) { expectResumedBakeIsTheStraightOne("native"); }
 TEST(CliCheckpoint, ResumedBakeIsBitwiseTheStraightOneMesh) { expectResumedBakeIsTheStraightOne("mesh"); }
+
+// Elements: uniform ones, and the adaptive tree split on after the stop.
+TEST(CliCheckpoint, ResumedBakeIsBitwiseTheStraightOneWithUniformElements) {
+  expectResumedRunIsTheStraightOne(kSolve + "--subdivide uniform --min-element 0.2", 20, 40, "uniform");
+}
+TEST(CliCheckpoint, ResumedBakeIsBitwiseTheStraightOneWithAdaptiveElements) {
+  const std::string output = expectResumedRunIsTheStraightOne(
+      kSolve + "--subdivide adaptive --min-element 0.05 --split-contrast 0.2", 8, 16, "adaptive");
+  EXPECT_NE(output.find("after iteration 8"), std::string::npos) << output;
+}
 
 TEST(CliCheckpoint, PeriodicCheckpointsLeaveOneGoodFile) {
   const std::string checkpoint = tempPath("every.ckpt");
@@ -79,6 +116,7 @@ TEST(CliCheckpoint, RefusesACheckpointThatDoesNotFit) {
   expectRefused("solve furnace --quiet --resolution 64 --shooters 2", checkpoint, "another meshed scene");
   expectRefused("solve cornell --cell 0.2 " + kOptions, checkpoint, "another meshed scene");
   expectRefused(kSolve + "--ratio 2", checkpoint, "--ratio 3 there, 2 here");
+  expectRefused(kSolve + "--subdivide uniform", checkpoint, "--subdivide off there, uniform here");
 
   std::ofstream(checkpoint, std::ios::binary) << good.substr(0, good.size() / 2);
   expectRefused(kSolve, checkpoint, "is truncated");
@@ -87,6 +125,44 @@ TEST(CliCheckpoint, RefusesACheckpointThatDoesNotFit) {
   std::ofstream(checkpoint, std::ios::binary) << flipped;
   expectRefused(kSolve, checkpoint, "is corrupted");
   expectRefused(kSolve, tempPath("missing.ckpt"), "cannot be read");
+  std::string older = good;  // before elements, portals and cells were kept
+  older[8] = 2;
+  std::ofstream(checkpoint, std::ios::binary) << older;
+  expectRefused(kSolve, checkpoint, "is a version 2 checkpoint; this radmesh reads version 3");
+}
+
+// Two rooms, each a cell, the light through the door kept by direction bin; about 30 rounds.
+const std::string kCells = "solve two-rooms --cells auto --cell 0.75 --resolution 32 --until-unshot 0.02 --quiet";
+
+TEST(CliCheckpoint, CellsResumedBakeIsBitwiseTheStraightOne) {
+  const std::string output = expectResumedRunIsTheStraightOne(kCells, 150, 1000000, "cells");
+  EXPECT_NE(output.find("after round "), std::string::npos) << output;
+}
+
+TEST(CliCheckpoint, CellsRefuseACheckpointOfOtherCellsOrOfOneSolve) {
+  const std::string cells = tempPath("cells.ckpt"), one = tempPath("one.ckpt");
+  CommandRun run = radmesh(kCells + " --max-iterations 50 --checkpoint " + cells);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const std::string whole = "solve two-rooms --cell 0.75 --resolution 32 --until 1 --until-unshot 0.02 --quiet";
+  run = radmesh(whole + " --max-iterations 5 --checkpoint " + one);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  expectRefused(kCells + " --exchange-shots 8", cells, "--exchange-shots 16 there, 8 here");
+  expectRefused(kCells + " --portal-bins 2", cells, "--portal-bins 4 there, 2 here");
+  expectRefused("solve two-rooms --cells auto --cell 0.5 --resolution 32 --until-unshot 0.02 --quiet", cells,
+                "another meshed scene");
+  expectRefused(whole, cells, "is a checkpoint of a cells solve (--cells auto), not of one solve");
+  expectRefused(kCells, one, "is a checkpoint of one solve (--cells off), not of a cells solve");
+}
+
+TEST(CliCheckpoint, RefusesOtherSubdivideOptionsNamingThem) {
+  const std::string adaptive = kSolve + "--subdivide adaptive --min-element 0.05";
+  const std::string checkpoint = tempPath("adaptive.ckpt");
+  const CommandRun run = radmesh(adaptive + " --max-iterations 3 --checkpoint " + checkpoint);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  expectRefused(adaptive + " --split-contrast 0.3", checkpoint, "--split-contrast 0.1 there, 0.3 here");
+  expectRefused(kSolve + "--subdivide adaptive --min-element 0.1", checkpoint, "--min-element 0.05 there, 0.1 here");
+  expectRefused(kSolve + "--subdivide uniform --min-element 0.05", checkpoint, "--subdivide adaptive there, uniform here");
+  expectRefused(kSolve, checkpoint, "--subdivide adaptive there, off here");
 }
 
 TEST(CliCheckpoint, CheckpointEveryNeedsACheckpointFile) {

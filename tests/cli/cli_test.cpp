@@ -176,9 +176,6 @@ TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve two-rooms --cells some");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--cells 'some' is unknown"), std::string::npos) << run.output;
-  run = radmesh("solve two-rooms --cells auto --checkpoint " + tempPath("x.ckpt"));
-  EXPECT_NE(run.exitCode, 0);
-  EXPECT_NE(run.output.find("--cells off"), std::string::npos) << run.output;
   run = radmesh("solve two-rooms --cells auto --backend mesh");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("a machine per cell"), std::string::npos) << run.output;

@@ -43,12 +43,13 @@ TEST(DistributedCli, BenchCsvNeedsDistributed) {
 }
 
 #ifdef RADMESH_MPIEXEC
-// Two processes under mpirun (as root too, more ranks than cores).
-CommandRun radmeshOnRanks(int ranks, const std::string& arguments) {
+// Processes under mpirun (as root too, more ranks than cores), with `environment` (NAME=value).
+CommandRun radmeshOnRanks(int ranks, const std::string& arguments, const std::string& environment = "") {
+  const std::string name = environment.substr(0, environment.find('='));
   return runCommand(std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
                                 "OMPI_MCA_rmaps_base_oversubscribe=1 ") +
-                    RADMESH_MPIEXEC + " -np " + std::to_string(ranks) + " " +
-                    (test::binaryDir() / "cli" / "radmesh").string() + " " + arguments);
+                    environment + " " + RADMESH_MPIEXEC + (name.empty() ? "" : " -x " + name) + " -np " +
+                    std::to_string(ranks) + " " + (test::binaryDir() / "cli" / "radmesh").string() + " " + arguments);
 }
 
 std::string fileBytes(const std::string& path) {
@@ -186,6 +187,69 @@ TEST(DistributedCli, AnErrorOnOneRankEndsTheRunNamingTheRank) {
   EXPECT_NE(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("radmesh: rank 0: error: " + folder + ": cannot open for writing"), std::string::npos)
       << run.output;
+}
+// The stats but the wall time and the run's own traffic (a resumed run sends only its rounds').
+nlohmann::json withoutTimeAndTraffic(nlohmann::json stats) {
+  stats.erase("seconds");
+  stats.erase("distributed");
+  return stats;
+}
+
+// A straight one-process run's stats and bake: what every resumed run below must give.
+struct Straight {
+  nlohmann::json stats;
+  std::string bake;
+};
+Straight straightRun() {
+  const std::string stats = tempPath("straight.json"), bake = tempPath("straight.glb");
+  const CommandRun run = radmesh(std::string(kCells) + " --stats " + stats + " --out " + bake);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  return {withoutTimeAndTraffic(nlohmann::json::parse(fileBytes(stats))), fileBytes(bake)};
+}
+
+// `run` (a resume writing `stats` and `bake`) gave the straight run's, bit for bit.
+void expectTheStraightRun(const CommandRun& run, const Straight& straight, const std::string& stats,
+                          const std::string& bake) {
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(withoutTimeAndTraffic(nlohmann::json::parse(fileBytes(stats))).dump(), straight.stats.dump());
+  EXPECT_TRUE(fileBytes(bake) == straight.bake) << "the resumed bake differs from the straight one";
+}
+
+// Rank 0 gathers both processes' cells into one checkpoint, which resumes on two processes or on
+// one to the one process's stats and bake.
+TEST(DistributedCli, ACheckpointOfTwoRanksResumesOnTwoOrOne) {
+  const Straight straight = straightRun();
+  const std::string checkpoint = tempPath("two.ckpt"), stats = tempPath("resumed.json"), bake = tempPath("resumed.glb");
+  CommandRun run = radmeshOnRanks(2, std::string(kCells) + " --distributed --max-iterations 60 --checkpoint " + checkpoint);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("wrote checkpoint " + checkpoint), std::string::npos) << run.output;
+  run = radmeshOnRanks(2, std::string(kCells) + " --distributed --resume " + checkpoint + " --stats " + stats +
+                              " --out " + bake);
+  EXPECT_NE(run.output.find("resumed from " + checkpoint + " after round "), std::string::npos) << run.output;
+  expectTheStraightRun(run, straight, stats, bake);
+  run = radmesh(std::string(kCells) + " --resume " + checkpoint + " --stats " + stats + " --out " + bake);
+  expectTheStraightRun(run, straight, stats, bake);
+}
+
+// A process that dies (SIGKILL) or whose message fails in round 3 stops the run, non-zero,
+// naming the rank, before any output; the checkpoint of round 2 resumes to the straight run.
+TEST(DistributedCli, ARankThatDiesOrAFailedMessageStopsTheRunAndItResumes) {
+  const Straight straight = straightRun();
+  for (const std::string how : {"kill", "fail"}) {
+    const std::string checkpoint = tempPath(how + ".ckpt"), stats = tempPath(how + ".json");
+    const std::string bake = tempPath(how + ".glb");
+    CommandRun run = radmeshOnRanks(2, std::string(kCells) + " --distributed --checkpoint " + checkpoint +
+                                           " --checkpoint-every 0.000001 --out " + bake,
+                                    "RADMESH_TEST_FAULT=1:3:" + how);
+    EXPECT_NE(run.exitCode, 0) << run.output;
+    const std::string names = how == "kill" ? "process rank 1" : "radmesh: rank 1: error: rank 1: MPI_Isend failed";
+    EXPECT_NE(run.output.find(names), std::string::npos) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(bake));
+    run = radmeshOnRanks(2, std::string(kCells) + " --distributed --resume " + checkpoint + " --stats " + stats +
+                                " --out " + bake);
+    EXPECT_NE(run.output.find("after round 2 "), std::string::npos) << run.output;
+    expectTheStraightRun(run, straight, stats, bake);
+  }
 }
 #else
 TEST(DistributedCli, RefusedWithoutMpi) {

@@ -1,6 +1,9 @@
 // Substructuring's elements (solver/meshing/elements.h): exact counts, areas and orientation.
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <stdexcept>
+
 #include "solver/meshing/elements.h"
 #include "solver/scene/scene_error.h"
 #include "tests/solver/patch_fixtures.h"
@@ -87,6 +90,27 @@ TEST(Elements, SplitReplacesAnElementInPlaceByFourChildren) {
   EXPECT_EQ(e.elements[2].vertices[2], Vec3(1, 1, 0));
   EXPECT_EQ(e.level, (std::vector<int>{1, 1, 1, 1, 1, 1, 1, 1}));
   EXPECT_DOUBLE_EQ(longestEdge(e.elements[1]), 0.5);
+}
+
+// The levels alone give back the elements, split in any order, bitwise; levels that tile no
+// patch are refused.
+TEST(Elements, SplitToLevelsRemakesTheElementsFromTheirLevels) {
+  const std::vector<Patch> patches = {unitSquare(), rightTriangle()};
+  Elements e = patchesAsElements(patches);
+  splitElements(e, {1, 1});
+  splitElements(e, {0, 0, 1, 0, 0, 0, 0, 1});  // the square's third child, the triangle's middle
+  splitElements(e, {0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  ASSERT_EQ(e.level, (std::vector<int>{1, 1, 2, 3, 3, 3, 3, 2, 2, 1, 1, 1, 1, 2, 2, 2, 2}));
+  const Elements again = splitToLevels(patches, e.level);
+  EXPECT_EQ(again.first, e.first);
+  EXPECT_EQ(again.patchOf, e.patchOf);
+  EXPECT_EQ(again.level, e.level);
+  ASSERT_EQ(again.elements.size(), e.elements.size());
+  EXPECT_EQ(std::memcmp(again.elements.data(), e.elements.data(), sizeof(Patch) * e.elements.size()), 0);
+  EXPECT_EQ(splitToLevels(patches, {0, 0}).elements.size(), 2u);
+  for (const std::vector<int>& wrong : std::vector<std::vector<int>>{
+           {0}, {0, 0, 0}, {1, 1, 1, 0}, {1, 1, 1, 1, 1}, {0, 2, 1, 1, 1}, {-1, 0}, {0, 40}})
+    EXPECT_THROW(splitToLevels(patches, wrong), std::invalid_argument) << ::testing::PrintToString(wrong);
 }
 
 }  // namespace

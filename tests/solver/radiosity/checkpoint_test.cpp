@@ -8,6 +8,7 @@
 #include <iterator>
 #include <memory>
 
+#include "solver/cells/find_cells.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
@@ -70,15 +71,24 @@ nlohmann::json withoutHostSeconds(nlohmann::json figures) {
   return figures;
 }
 
-void expectResumeIsBitwiseStraight(Backend backend, int first, int total) {
+void expectResumeIsBitwiseStraight(Backend backend, int first, int total, Subdivide subdivide = Subdivide::Off,
+                                   bool regatherAll = false) {
   TempDir dir;
   const auto path = (dir / "solve.ckpt").string();
   const Meshed m = cornell();
-  const auto straight = solved(m, options(backend, total));
+  auto optionsTo = [&](int iterations) {
+    SolveOptions o = options(backend, iterations);
+    if (subdivide == Subdivide::Off) return o;
+    o = test::subdivided(o, subdivide, subdivide == Subdivide::Adaptive ? 0.05 : 0.2);
+    o.splitContrast = 0.05;
+    o.splitRegatherAll = regatherAll;
+    return o;
+  };
+  const auto straight = solved(m, optionsTo(total));
   ASSERT_EQ(static_cast<int>(straight->history().size()), total);
-  writeCheckpoint(path, *solved(m, options(backend, first)));
+  writeCheckpoint(path, *solved(m, optionsTo(first)));
 
-  ProgressiveSolver resumed(m.scene, m.patches, options(backend, total));
+  ProgressiveSolver resumed(m.scene, m.patches, optionsTo(total));
   resumeFromCheckpoint(path, resumed);
   ASSERT_EQ(static_cast<int>(resumed.history().size()), first);
   while (!resumed.done()) resumed.step();
@@ -86,6 +96,9 @@ void expectResumeIsBitwiseStraight(Backend backend, int first, int total) {
   ASSERT_EQ(resumed.history().size(), straight->history().size());
   EXPECT_TRUE(bitwiseEqual(resumed.radiosity(), straight->radiosity()));
   EXPECT_TRUE(bitwiseEqual(resumed.displayRadiosity(), straight->displayRadiosity()));
+  ASSERT_EQ(resumed.elements().size(), straight->elements().size());
+  EXPECT_EQ(std::memcmp(resumed.elements().data(), straight->elements().data(), sizeof(Patch) * resumed.elements().size()), 0);
+  EXPECT_TRUE(bitwiseEqual(resumed.elementRadiosity(), straight->elementRadiosity()));
   EXPECT_EQ(std::memcmp(&resumed.ledger(), &straight->ledger(), sizeof(Ledger)), 0);
   for (size_t i = 0; i < straight->history().size(); ++i) {
     const IterationRecord& a = resumed.history()[i];
@@ -94,6 +107,7 @@ void expectResumeIsBitwiseStraight(Backend backend, int first, int total) {
     EXPECT_EQ(a.convergence, b.convergence) << "iteration " << i + 1;
     EXPECT_EQ(a.reusedRowsTotal, b.reusedRowsTotal) << "iteration " << i + 1;
     EXPECT_EQ(a.cacheHits, b.cacheHits) << "iteration " << i + 1;
+    EXPECT_EQ(a.elementsSplit, b.elementsSplit) << "iteration " << i + 1;
     ASSERT_EQ(a.shotStats != nullptr, b.shotStats != nullptr) << "iteration " << i + 1;
     // The emulated machine goes on from its saved counts: each shot costs bitwise the same.
     if (a.shotStats && b.shotStats) {
@@ -102,15 +116,32 @@ void expectResumeIsBitwiseStraight(Backend backend, int first, int total) {
           << "iteration " << i + 1;
     }
   }
-  int hitsAfterTheStop = 0;
+  int hitsAfterTheStop = 0, splitBefore = 0, splitAfter = 0;
+  for (int i = 0; i < total; ++i) (i < first ? splitBefore : splitAfter) += straight->history()[i].elementsSplit;
   for (int i = first; i < total; ++i) hitsAfterTheStop += straight->history()[i].cacheHits;
-  EXPECT_GT(hitsAfterTheStop, 0) << "no row served from the cache after the stop: the saved cache untested";
+  if (subdivide != Subdivide::Adaptive)  // a split empties the cache
+    EXPECT_GT(hitsAfterTheStop, 0) << "no row served from the cache after the stop: the saved cache untested";
+  if (subdivide == Subdivide::Adaptive) {  // the saved tree is split further after the stop
+    EXPECT_GT(splitBefore, 0) << "after " << splitAfter;
+    EXPECT_GT(splitAfter, 0) << "before " << splitBefore;
+  }
 }
 
 TEST(Checkpoint, NativeResumeIsBitwiseTheStraightSolve) { expectResumeIsBitwiseStraight(Backend::Native, 40, 80); }
 
 TEST(Checkpoint, MeshResumeIsBitwiseTheStraightSolveWithTheSameEmulatedCosts) {
   expectResumeIsBitwiseStraight(Backend::Mesh, 12, 24);
+}
+
+TEST(Checkpoint, UniformElementsResumeBitwise) { expectResumeIsBitwiseStraight(Backend::Native, 20, 40, Subdivide::Uniform); }
+TEST(Checkpoint, UniformElementsOnTheMeshResumeBitwise) {
+  expectResumeIsBitwiseStraight(Backend::Mesh, 6, 12, Subdivide::Uniform);
+}
+// The split tree, the elements' radiosity and all each patch shot are saved: the resumed solve
+// splits on as the straight one does.
+TEST(Checkpoint, AdaptiveElementsResumeBitwise) { expectResumeIsBitwiseStraight(Backend::Native, 3, 10, Subdivide::Adaptive); }
+TEST(Checkpoint, AdaptiveElementsRegatheringEveryShotResumeBitwise) {
+  expectResumeIsBitwiseStraight(Backend::Native, 3, 10, Subdivide::Adaptive, true);
 }
 
 TEST(Checkpoint, WritesAtomicallyLeavingNoTemporaryFile) {
@@ -165,6 +196,8 @@ TEST_F(CheckpointRefusal, OfOtherOptionsNamingThem) {
   SolveOptions other = options(Backend::Native, 10);
   other.resolution = 128;
   expectRefused(path, m, other, "--resolution 64 there, 128 here");
+  other = test::subdivided(options(Backend::Native, 10), Subdivide::Uniform, 0.1);
+  expectRefused(path, m, other, "--subdivide off there, uniform here; --min-element not set there, 0.1 here");
   other = options(Backend::Mesh, 10);
   expectRefused(path, m, other, "--backend native there, mesh here");
   // Options that do not change the answer are free to change.
@@ -212,6 +245,70 @@ TEST(Checkpoint, RestoreRefusesAProgressOfOtherPatchesAndLeavesTheSolverAsItWas)
   EXPECT_THROW(solver->restoreProgress(other), std::invalid_argument);
   EXPECT_EQ(solver->history().size(), 3u);
   EXPECT_EQ(solver->history().back().shooters.size(), 2u);
+}
+
+// A cells solve stopped after some rounds, saved and resumed in a new solver: bitwise the solve that
+// never stopped (each cell's solver, the light waiting on portal patches by direction bin, the
+// rounds); a resume with other cells' settings, or into one solve, is refused naming what differs.
+TEST(Checkpoint, CellsResumeIsBitwiseTheStraightSolve) {
+  TempDir dir;
+  const auto path = (dir / "cells.ckpt").string();
+  const Scene scene = loadScene("two-rooms");
+  const std::vector<Patch> patches = meshScene(scene, 0.75);
+  const CellPartition partition = findCells(scene, patches);
+  SolveOptions o = test::optionsFor(Projection::Hemicube, 32);
+  o.until = 1.0;
+  o.untilUnshot = 0.02;
+  o.formFactorCacheBytes = 16 << 20;
+  const CellSolveSettings settings{0.75, 16, 4};
+  CellSolver straight(scene, patches, partition, o, settings);
+  while (!straight.done()) straight.round();
+  ASSERT_GT(straight.rounds(), 4);
+  {
+    CellSolver stopped(scene, patches, partition, o, settings);
+    for (int r = 0; r < 3; ++r) stopped.round();
+    writeCellsCheckpoint(path, scene, stopped);
+  }
+  CellSolver resumed(scene, patches, partition, o, settings);
+  resumeCellsFromCheckpoint(path, scene, resumed);
+  EXPECT_EQ(resumed.rounds(), 3);
+  while (!resumed.done()) resumed.round();
+  EXPECT_EQ(resumed.rounds(), straight.rounds());
+  EXPECT_EQ(resumed.iterations(), straight.iterations());
+  const Ledger a = resumed.ledger(), b = straight.ledger();
+  EXPECT_EQ(std::memcmp(&a, &b, sizeof(Ledger)), 0);
+  EXPECT_TRUE(bitwiseEqual(resumed.radiosity(), straight.radiosity()));
+  EXPECT_TRUE(bitwiseEqual(resumed.displayRadiosity(), straight.displayRadiosity()));
+
+  auto refused = [&](const SolveOptions& options, const CellSolveSettings& cells, const std::string& says,
+                     const CellPartition& cellsFound) {
+    CellSolver other(scene, patches, cellsFound, options, cells);
+    try {
+      resumeCellsFromCheckpoint(path, scene, other);
+      ADD_FAILURE() << "accepted; expected: " << says;
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+      EXPECT_EQ(other.rounds(), 0);
+    }
+  };
+  refused(o, {0.75, 8, 4}, "--exchange-shots 16 there, 8 here", partition);
+  refused(o, {0.75, 16, 0}, "--portal-bins 4 there, 0 here", partition);
+  SolveOptions finer = o;
+  finer.resolution = 64;
+  refused(finer, settings, "--resolution 32 there, 64 here", partition);
+  CellPartition merged = partition;  // the same patches, other cells
+  merged.portals.clear();
+  for (int& cell : merged.cellOfPatch) cell = 0;
+  merged.cells.resize(1);
+  refused(o, settings, "was written for other cells: " + std::to_string(straight.cellCount()) + " cells there, 1 here", merged);
+  ProgressiveSolver one(scene, patches, o);
+  try {
+    resumeFromCheckpoint(path, one);
+    ADD_FAILURE() << "a cells checkpoint resumed into one solve";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a checkpoint of a cells solve (--cells auto), not of one solve"),
+              std::string::npos) << e.what();
+  }
 }
 
 TEST(Checkpoint, MeshedSceneHashFollowsVerticesAndEmissionBitwise) {
