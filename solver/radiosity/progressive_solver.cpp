@@ -347,10 +347,9 @@ void ProgressiveSolver::restoreProgress(SolverProgress p) {
   if (split) {  // as refine() leaves them after a split
     s.backend.reset();
     s.elements = std::move(*split);
-    s.backend = makeFormFactorBackend(s.scene, s.patches, s.elements.elements, s.options);
+    s.backend = s.makeBackend();  // with the portal patches' direction bins
     if (s.plan.nearField) s.elementNearReceivers = findNearFieldReceivers(s.patches, s.elements.elements);
     s.neighbours = elementNeighbours(s.elements);
-    s.isPortal.assign(s.elements.elements.size(), 0);
   }
   s.backend->restoreMachineState(p.machineState);  // throws, changing nothing, for another machine's
   s.radiosity = std::move(p.radiosity);
