@@ -135,5 +135,20 @@ TEST(DistributedMeshSolve, ABlockOfPartClustersIsRefused) {
   }
 }
 
+// Adaptive elements move between PEs at a split, into lists of other processes: refused, naming
+// the fix, on any number of processes (with a transport, even of one).
+TEST(DistributedMeshSolve, AdaptiveElementsAreRefused) {
+  SolveOptions o = split(smallMachine(MappingKind::Hierarchical));
+  o.subdivide = Subdivide::Adaptive;
+  o.minElementM = 0.05;
+  try {
+    validateOptions(o);
+    FAIL() << "adaptive elements over processes";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("--subdivide adaptive is not built over processes"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace radmesh
