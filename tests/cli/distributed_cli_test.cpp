@@ -177,6 +177,22 @@ TEST(DistributedCli, MeshOnTwoRanksWritesTheOneProcessStatsAndBake) {
   EXPECT_EQ(fileBytes(splitBake), fileBytes(aloneBake));
 }
 
+// The mesh machine over two processes stopped after one iteration with a checkpoint (rank 0 writes
+// it) and resumed over two: the one-process solve's bake, byte for byte.
+TEST(DistributedCli, AMeshCheckpointOfTwoRanksResumesToTheOneProcessBake) {
+  const std::string alone = tempPath("mesh-ckpt-alone.glb"), resumed = tempPath("mesh-ckpt-resumed.glb");
+  const std::string checkpoint = tempPath("mesh.ckpt");
+  std::string first = kMesh;
+  first.replace(first.find("--max-iterations 3"), 18, "--max-iterations 1");
+  ASSERT_EQ(radmesh(std::string(kMesh) + " --out " + alone).exitCode, 0);
+  CommandRun run = radmeshOnRanks(2, first + " --distributed --checkpoint " + checkpoint);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  run = radmeshOnRanks(2, std::string(kMesh) + " --distributed --resume " + checkpoint + " --out " + resumed);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("resumed from " + checkpoint + " after iteration 1"), std::string::npos) << run.output;
+  EXPECT_EQ(fileBytes(resumed), fileBytes(alone));
+}
+
 // Rank 0 cannot write its stats (the path is a folder) while rank 1 waits for it in the bake's
 // gather: the run ends, non-zero, with the rank in the message.
 TEST(DistributedCli, AnErrorOnOneRankEndsTheRunNamingTheRank) {
