@@ -1,11 +1,8 @@
 #include "solver/radiosity/checkpoint.h"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <climits>
 #include <cerrno>
@@ -18,6 +15,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "solver/io/atomic_file.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -245,60 +243,13 @@ template <class T> T parsed(std::string_view bytes) {
 
 std::string errnoText() { return std::strerror(errno); }
 
-std::runtime_error writeError(const std::string& path, const std::string& what) {
-  return std::runtime_error(fmt::format("cannot write checkpoint {}: {}: {} (fix: give --checkpoint a path in a "
-                                        "writable folder with room)",
-                                        path, what, errnoText()));
-}
-
-// A new temporary file beside path (named by the pid and a count, with the permissions the umask
-// gives), open for writing.
-struct TempFile {
-  std::string path;
-  int fd = -1;
-};
-TempFile createTempBeside(const std::string& path) {
-  namespace fs = std::filesystem;
-  static std::atomic<unsigned> count{0};
-  const fs::path target(path);
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  TempFile temp{(folder / fmt::format("{}.tmp-{}-{}", target.filename().string(), ::getpid(), count++)).string()};
-  temp.fd = ::open(temp.path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (temp.fd < 0) throw writeError(path, "cannot create " + temp.path);
-  return temp;
-}
-
-// Writes bytes to a new temporary file beside path, flushes it to disk and renames it over path.
-void writeAtomically(const std::string& path, const std::string& bytes) {
-  const TempFile temp = createTempBeside(path);
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(temp.fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    done += static_cast<std::size_t>(n);
-  }
-  const bool flushed = done == bytes.size() && ::fsync(temp.fd) == 0;
-  const int writeErrno = errno;
-  ::close(temp.fd);
-  std::string failed;
-  if (!flushed) {
-    errno = writeErrno;
-    failed = "writing " + temp.path;
-  } else if (std::rename(temp.path.c_str(), path.c_str()) != 0) {
-    failed = "renaming " + temp.path;
-  }
-  if (!failed.empty()) {
-    const std::runtime_error error = writeError(path, failed);
-    ::unlink(temp.path.c_str());
-    throw error;
-  }
-  // The rename itself reaches the disk with the folder.
-  const std::filesystem::path folder = std::filesystem::path(temp.path).parent_path();
-  const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
-  if (dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
+// An atomic write's failure as the checkpoint's, with the fix.
+template <class Write> void writeOrRefuse(const std::string& path, Write write) {
+  try {
+    write();
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(fmt::format(
+        "cannot write checkpoint {}: {} (fix: give --checkpoint a path in a writable folder with room)", path, e.what()));
   }
 }
 
@@ -378,7 +329,7 @@ void writeFile(const std::string& path, std::string kind, const std::string& con
   file.scalar(version);
   file.scalar(size);
   file.scalar(checksum);
-  writeAtomically(path, file.bytes + payload.bytes);
+  writeOrRefuse(path, [&] { writeAtomically(path, file.bytes + payload.bytes); });
 }
 
 SceneError refusal(const std::string& path, const std::string& problem, const std::string& fix) {
@@ -471,9 +422,7 @@ void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
 }
 
 void checkCheckpointWritable(const std::string& path) {
-  const TempFile temp = createTempBeside(path);
-  ::close(temp.fd);
-  ::unlink(temp.path.c_str());
+  writeOrRefuse(path, [&] { checkWritableBeside(path); });
 }
 
 void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {

@@ -1,0 +1,79 @@
+#include "solver/io/atomic_file.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+namespace radmesh {
+namespace {
+
+// What failed, with errno's reason.
+std::runtime_error failure(const std::string& what) {
+  return std::runtime_error(fmt::format("{}: {}", what, std::strerror(errno)));
+}
+
+// A new temporary file beside path (named by the pid and a count, with the permissions the umask
+// gives), open for writing.
+struct TempFile {
+  std::string path;
+  int fd = -1;
+};
+TempFile createTempBeside(const std::string& path) {
+  namespace fs = std::filesystem;
+  static std::atomic<unsigned> count{0};
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  TempFile temp{(folder / fmt::format("{}.tmp-{}-{}", target.filename().string(), ::getpid(), count++)).string()};
+  temp.fd = ::open(temp.path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (temp.fd < 0) throw failure("cannot create " + temp.path);
+  return temp;
+}
+
+}  // namespace
+
+void writeAtomically(const std::string& path, const std::string& bytes) {
+  const TempFile temp = createTempBeside(path);
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(temp.fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  const bool flushed = done == bytes.size() && ::fsync(temp.fd) == 0;
+  const int writeErrno = errno;
+  ::close(temp.fd);
+  std::string failed;
+  if (!flushed) {
+    errno = writeErrno;
+    failed = "writing " + temp.path;
+  } else if (std::rename(temp.path.c_str(), path.c_str()) != 0) {
+    failed = "renaming " + temp.path;
+  }
+  if (!failed.empty()) {
+    const std::runtime_error error = failure(failed);
+    ::unlink(temp.path.c_str());
+    throw error;
+  }
+  // The rename itself reaches the disk with the folder.
+  const std::filesystem::path folder = std::filesystem::path(temp.path).parent_path();
+  const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
+}
+
+void checkWritableBeside(const std::string& path) {
+  const TempFile temp = createTempBeside(path);
+  ::close(temp.fd);
+  ::unlink(temp.path.c_str());
+}
+
+}  // namespace radmesh
