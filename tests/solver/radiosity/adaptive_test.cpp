@@ -270,7 +270,7 @@ TEST(MeshAdaptive, SplitsAsTheNativeBackEndDoesOnAnyThreadCount) {
 
 // A split round updates the back end's receivers in place (receiversSplit) instead of making a
 // new back end: its rows must be bitwise those of a back end made anew for the split elements.
-TEST(Adaptive, ReceiversChangedComputesTheRowsOfANewBackend) {
+TEST(Adaptive, ReceiversSplitComputesTheRowsOfANewBackend) {
   const ShadowScene s;
   for (Projection projection : {Projection::Plane, Projection::Hemicube, Projection::Analytic})
     for (int threads : {1, 3}) {
