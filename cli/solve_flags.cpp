@@ -126,6 +126,11 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
                   "With --subdivide uniform: longest element edge, metres (0: every patch cut into four); with "
                   "adaptive: no split makes elements shorter than this")
       ->capture_default_str();
+  cmd->add_option_function<std::string>(
+         "--element-rows", [&f](const std::string& text) { f.options.elementRows = parseElementRows(text); },
+         "With --subdivide: share (native default: patches on the item buffer, each one's form factor shared "
+         "among its elements by their analytic form factors and visible pixels) or rasterise (every element "
+         "on the item buffer: the mesh back end's way)");
   cmd->add_option("--split-contrast", f.options.splitContrast,
                   "With --subdivide adaptive: split neighbouring elements whose reflected radiosities differ by "
                   "more than this fraction of the brightest element's")

@@ -68,16 +68,19 @@ void FormFactorBackend::testReceivers(const FormFactorRow& row, double, double,
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
                                                          const std::vector<Patch>& patches,
                                                          const SolveOptions& options) {
-  return makeFormFactorBackend(scene, patches, patches, options);
+  switch (options.backend) {
+    case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, options);
+    case Backend::Mesh: return std::make_unique<MeshBackend>(scene, patches, options, meshBackendOptions(options));
+  }
+  throw OptionError("--backend must be native or mesh");
 }
 
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene, const std::vector<Patch>& patches,
-                                                         const std::vector<Patch>& receivers,
-                                                         const SolveOptions& options) {
+                                                         const Elements& elements, const SolveOptions& options) {
   switch (options.backend) {
-    case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, receivers, options);
+    case Backend::Native: return std::make_unique<NativeBackend>(scene, patches, elements, options);
     case Backend::Mesh:
-      return std::make_unique<MeshBackend>(scene, patches, receivers, options, meshBackendOptions(options));
+      return std::make_unique<MeshBackend>(scene, patches, elements.elements, options, meshBackendOptions(options));
   }
   throw OptionError("--backend must be native or mesh");
 }

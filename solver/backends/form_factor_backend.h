@@ -12,6 +12,7 @@
 #include "solver/formfactors/form_factor_row.h"
 #include "solver/projection/item_buffer.h"
 #include "solver/backends/shot_stats.h"
+#include "solver/meshing/elements.h"
 #include "solver/meshing/patch.h"
 #include "solver/scene/scene.h"
 #include "solver/scene/solve_options.h"
@@ -84,10 +85,9 @@ void refuseNaNUnshotPower(std::span<const double> unshotPowerW);
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene,
                                                          const std::vector<Patch>& patches,
                                                          const SolveOptions& options);
-// The same, with patches shooting and `receivers` (their elements, solver/meshing/elements.h)
-// receiving: rows index receivers.
+// The same, with patches shooting and their elements (solver/meshing/elements.h, held by
+// reference: a split changes them in place) receiving: rows index elements.elements.
 std::unique_ptr<FormFactorBackend> makeFormFactorBackend(const Scene& scene, const std::vector<Patch>& patches,
-                                                         const std::vector<Patch>& receivers,
-                                                         const SolveOptions& options);
+                                                         const Elements& elements, const SolveOptions& options);
 
 }  // namespace radmesh

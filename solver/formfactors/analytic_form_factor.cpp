@@ -1,5 +1,6 @@
 #include "solver/formfactors/analytic_form_factor.h"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -37,6 +38,23 @@ double pointToPolygonFormFactor(std::span<const Vec3> vertices) {
     sum += std::atan2(length, glm::dot(a, b)) * c.z / length;
   }
   return std::abs(sum) / (2.0 * std::numbers::pi);
+}
+
+double smallPolygonFormFactor(std::span<const Vec3> vertices, Vec3 centroid, Vec3 normal, double areaM2) {
+  const double r2 = glm::dot(centroid, centroid);
+  double diameter2 = 0.0;
+  bool inFront = true;
+  for (size_t k = 0; k < vertices.size(); ++k) {
+    inFront = inFront && vertices[k].z > 0.0;
+    for (size_t m = k + 1; m < vertices.size(); ++m) {
+      const Vec3 d = vertices[k] - vertices[m];
+      diameter2 = std::max(diameter2, glm::dot(d, d));
+    }
+  }
+  if (!inFront || !(diameter2 <= kSmallPolygonRatio * kSmallPolygonRatio * r2))
+    return pointToPolygonFormFactor(vertices);
+  const double cosHere = centroid.z, cosThere = std::abs(glm::dot(normal, centroid));  // each times r
+  return cosHere * cosThere * areaM2 / (std::numbers::pi * r2 * r2);
 }
 
 }  // namespace radmesh

@@ -18,6 +18,13 @@ double diameter(const Patch& p) {
   return d;
 }
 
+// Every vertex of `patch` on or in front of the plane of `of` (to rounding at size `scale`).
+bool whollyInFront(const Patch& patch, const Patch& of, double scale) {
+  for (int k = 0; k < patch.vertexCount; ++k)
+    if (glm::dot(patch.vertices[k] - of.centroid, of.normal) < -1e-9 * scale) return false;
+  return true;
+}
+
 // Some vertex of `patch` strictly in front of the plane of `of` (beyond rounding at size `scale`).
 bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
   for (int k = 0; k < patch.vertexCount; ++k)
@@ -39,11 +46,14 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
   const bool selfReceives = &patches == &receivers;
   std::vector<std::vector<int>> near(n);
   std::vector<double> size(n);
-  double cellSize = 0.0;
-  for (int i = 0; i < n; ++i) cellSize = std::max(cellSize, size[i] = diameter(patches[i]));
+  for (int i = 0; i < n; ++i) size[i] = diameter(patches[i]);
+  // Centroids bucketed in cells as wide as the median diameter: a shooter's near receivers lie
+  // within as many cells of its own as its diameter spans (a few large patches then search more
+  // cells, rather than every shooter searching cells as wide as the largest).
+  std::vector<double> sizes = size;
+  std::nth_element(sizes.begin(), sizes.begin() + n / 2, sizes.end());
+  const double cellSize = n > 0 ? sizes[n / 2] : 0.0;
   if (!(cellSize > 0.0)) return near;
-  // Centroids bucketed in cells as wide as the largest diameter: every near receiver of a
-  // shooter lies in the 27 cells around the shooter's.
   auto cellOf = [&](const Vec3& c) {
     return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
                 std::llround(std::floor(c.z / cellSize))};
@@ -53,25 +63,33 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
   std::sort(sorted.begin(), sorted.end());
   for (int i = 0; i < n; ++i) {
     const Patch& shooter = patches[i];
+    auto consider = [&](int j) {
+      if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < size[i])) return;
+      if (partlyInFront(receivers[j], shooter, size[i]) && partlyInFront(shooter, receivers[j], size[i]))
+        near[i].push_back(j);
+    };
     const Cell home = cellOf(shooter.centroid);
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
+    const long long reach = std::llround(std::ceil(size[i] / cellSize));
+    if (static_cast<double>(2 * reach + 1) * (2 * reach + 1) * (2 * reach + 1) > static_cast<double>(sorted.size())) {
+      for (int j = 0; j < static_cast<int>(receivers.size()); ++j) consider(j);  // fewer receivers than cells
+      continue;
+    }
+    for (long long dx = -reach; dx <= reach; ++dx)
+      for (long long dy = -reach; dy <= reach; ++dy)
+        for (long long dz = -reach; dz <= reach; ++dz) {
           const Cell cell{home[0] + dx, home[1] + dy, home[2] + dz};
           auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{cell, -1});
-          for (; it != sorted.end() && it->first == cell; ++it) {
-            const int j = it->second;
-            if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < size[i])) continue;
-            if (partlyInFront(receivers[j], shooter, size[i]) && partlyInFront(shooter, receivers[j], size[i]))
-              near[i].push_back(j);
-          }
+          for (; it != sorted.end() && it->first == cell; ++it) consider(it->second);
         }
     std::sort(near[i].begin(), near[i].end());
   }
   return near;
 }
 
-double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions) {
+namespace {
+
+// The mean over the shooter's area of the point-to-polygon form factor to the receiver.
+double meanFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions) {
   const LocalPolygon local = toShooterFrame(shooter, receiver);
   std::array<Vec3, 4> shifted{};
   const std::span<const Vec3> polygon{shifted.data(), static_cast<size_t>(local.vertexCount)};
@@ -102,12 +120,32 @@ double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int sub
   return area > 0.0 ? weighted / area : 0.0;
 }
 
-void correctNearField(FormFactorRow& row, const std::vector<Patch>& patches, const std::vector<int>& nearReceivers) {
-  correctNearField(row, patches[row.shooter], patches, nearReceivers);
+}  // namespace
+
+double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions) {
+  // Reciprocity (A_s F_sr = A_r F_rs): a receiver smaller than the shooter (an element) is sampled
+  // instead, at sub-triangles no larger, so far fewer points. Exact where each lies wholly in front
+  // of the other, so that neither clips the other.
+  const double shooterSize = diameter(shooter), receiverSize = diameter(receiver);
+  if (receiverSize < shooterSize && whollyInFront(receiver, shooter, shooterSize) &&
+      whollyInFront(shooter, receiver, shooterSize) && receiver.areaM2 > 0.0 && shooter.areaM2 > 0.0) {
+    const int m = std::max(2, static_cast<int>(std::ceil(subdivisions * receiverSize / shooterSize)));
+    return meanFormFactor(receiver, shooter, m) * (receiver.areaM2 / shooter.areaM2);
+  }
+  return meanFormFactor(shooter, receiver, subdivisions);
 }
 
-void correctNearField(FormFactorRow& row, const Patch& shooter, const std::vector<Patch>& patches,
-                      const std::vector<int>& nearReceivers) {
+std::vector<NearFieldPair> nearFieldPairs(const Patch& shooter, const std::vector<Patch>& receivers,
+                                          const std::vector<int>& nearReceivers) {
+  std::vector<NearFieldPair> pairs;
+  pairs.reserve(nearReceivers.size());
+  for (int j : nearReceivers)
+    pairs.push_back({pointToPolygonFormFactor(toShooterFrame(shooter, receivers[j]).corners()),
+                     areaToAreaFormFactor(shooter, receivers[j])});
+  return pairs;
+}
+
+void correctNearField(FormFactorRow& row, const std::vector<int>& nearReceivers, std::span<const NearFieldPair> pairs) {
   if (nearReceivers.empty()) return;
   const double before = row.hitFraction();
   const bool enclosed = row.escapedFraction() == 0.0;
@@ -117,9 +155,7 @@ void correctNearField(FormFactorRow& row, const Patch& shooter, const std::vecto
     const int j = row.receivers[r];
     next = std::lower_bound(next, nearReceivers.end(), j);
     if (next == nearReceivers.end() || *next != j) continue;
-    const LocalPolygon local = toShooterFrame(shooter, patches[j]);
-    const double point = pointToPolygonFormFactor(local.corners());
-    const double area = areaToAreaFormFactor(shooter, patches[j]);
+    const auto [point, area] = pairs[static_cast<size_t>(next - nearReceivers.begin())];
     if (!(point > 0.0) || !(area > 0.0)) continue;  // edge-on to the centroid: nothing to scale
     row.formFactors[r] = std::min(1.0, row.formFactors[r] / point) * area;
     changed = true;

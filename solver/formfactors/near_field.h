@@ -5,6 +5,7 @@
 // perpendicular ones sharing an edge: 0.2000 against 0.1901). For those pairs only, the form factor becomes an area-to-area estimate: the analytic
 // point-to-polygon form factor averaged over sub-points of the shooter, times the visibility the
 // projection measured.
+#include <span>
 #include <vector>
 
 #include "solver/formfactors/form_factor_row.h"
@@ -24,17 +25,26 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
 
 // The mean over the shooter's area of the point-to-polygon form factor to the receiver, without
 // occlusion: the shooter's triangles cut into subdivisions^2 triangles each, one point at the
-// centroid of each, weighted by its area.
+// centroid of each, weighted by its area. A receiver smaller than the shooter, each wholly in front
+// of the other, is sampled instead, by reciprocity, at sub-triangles no larger (at least 2 cuts).
 double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions = kNearFieldSubdivisions);
+
+// A near pair's unoccluded form factors: from the shooter's centroid (pointToPolygonFormFactor) and
+// area to area. Geometry alone, so a solve computes them once per shooter, when it first shoots: a
+// patch shoots about three times, and the area-to-area estimate is 128 closed forms.
+struct NearFieldPair {
+  double point = 0.0;
+  double area = 0.0;
+};
+// Per receiver in nearReceivers (one shooter's, from findNearFieldReceivers), its pair.
+std::vector<NearFieldPair> nearFieldPairs(const Patch& shooter, const std::vector<Patch>& receivers,
+                                          const std::vector<int>& nearReceivers);
 
 // Replaces row entries of the near receivers by area-to-area estimates scaled by the visible
 // fraction the projection measured (row entry over the unoccluded centroid form factor, at most
 // 1). No power is created: the row then sums to at most what the projection surface caught and,
 // for an enclosed shooter (whatever it sent out landed on a patch), to what it summed before, so
-// that the correction moves light between receivers but never lets it escape.
-void correctNearField(FormFactorRow& row, const std::vector<Patch>& patches, const std::vector<int>& nearReceivers);
-// The same for a row of `shooter` over `receivers` (elements).
-void correctNearField(FormFactorRow& row, const Patch& shooter, const std::vector<Patch>& receivers,
-                      const std::vector<int>& nearReceivers);
+// that the correction moves light between receivers but never lets it escape. pairs: nearFieldPairs'.
+void correctNearField(FormFactorRow& row, const std::vector<int>& nearReceivers, std::span<const NearFieldPair> pairs);
 
 }  // namespace radmesh

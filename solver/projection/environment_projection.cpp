@@ -25,7 +25,7 @@ EnvironmentProjection::EnvironmentProjection(const std::vector<Patch>& patches,
     buffers_.emplace_back(face.width, face.height);
     firstBandOfFace_.push_back(static_cast<int>(bands_.size()));
     for (int row = 0; row < face.height; row += kBandRows)
-      bands_.push_back({f, row, std::min(row + kBandRows, face.height), {}, {}});
+      bands_.push_back({f, row, std::min(row + kBandRows, face.height), {}, {}, {}});
   }
   patchesChanged();
 }
@@ -36,6 +36,8 @@ void EnvironmentProjection::patchesChanged() {
   slotOfPatch_.assign(pool_.size(), std::vector<int>(n, -1));
   pixelFormFactors_.assign(n, 0.0);
   projectedArea_.assign(n, 0.0);
+  coveredPixels_.assign(n, 0);
+  shownPixels_.assign(n, 0);
   seenFromFront_.assign(n, 0);
   for (Band& band : bands_) band.setups.clear();  // they point into chunkSetups_
   chunkSetups_.assign((n + kChunkPatches - 1) / kChunkPatches,
@@ -53,8 +55,7 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
       projectedArea_[j] = 0.0;
       seenFromFront_[j] = 0;
       if (j == skip) continue;
-      const std::optional<LocalPolygon> local =
-          surface_.wholeSphere ? toShooterFrame(from, patches_[j]) : inShooterView(from, patches_[j]);
+      const std::optional<LocalPolygon> local = inSurfaceView(surface_, from, patches_[j]);
       if (!local) continue;
       // A parallel beam meets a front that faces against it, wherever the patch lies.
       seenFromFront_[j] = parallel ? local->normal.z < 0.0 : local->seenFromFront();
@@ -80,7 +81,9 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
 void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
   ItemBuffer& buffer = buffers_[band.face];
   buffer.clearRows(band.rowBegin, band.rowEnd);
-  for (const PolygonSetup* setup : band.setups) rasterise(*setup, buffer, band.rowBegin, band.rowEnd, rank_);
+  band.covered.clear();
+  for (const PolygonSetup* setup : band.setups)
+    band.covered.push_back(rasterise(*setup, buffer, band.rowBegin, band.rowEnd, rank_));
 
   // Form-factor phase: the delta form factor of every pixel goes to the patch seen there.
   std::vector<int>& slot = slotOfPatch_[worker];
@@ -93,12 +96,14 @@ void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
     if (id == ItemBuffer::kNone) continue;
     if (slot[id] < 0) {
       slot[id] = static_cast<int>(band.sums.size());
-      band.sums.emplace_back(id, df[q]);
+      band.sums.push_back({id, df[q], 1});
     } else {
-      band.sums[slot[id]].second += df[q];
+      Band::Seen& seen = band.sums[slot[id]];
+      seen.formFactor += df[q];
+      ++seen.pixels;
     }
   }
-  for (const auto& [id, sum] : band.sums) slot[id] = -1;
+  for (const Band::Seen& seen : band.sums) slot[seen.patch] = -1;
 }
 
 void EnvironmentProjection::project(int shooter) { projectFrom(patches_[shooter], shooter); }
@@ -109,8 +114,15 @@ void EnvironmentProjection::projectFrom(const Patch& viewpoint, int skip) {
                     [&](int b, int worker) { rasteriseBand(bands_[b], worker); });
   // Bands are summed in a fixed order: the same bits whatever thread did which band.
   std::fill(pixelFormFactors_.begin(), pixelFormFactors_.end(), 0.0);
-  for (const Band& band : bands_)
-    for (const auto& [id, sum] : band.sums) pixelFormFactors_[id] += sum;
+  std::fill(coveredPixels_.begin(), coveredPixels_.end(), 0);
+  std::fill(shownPixels_.begin(), shownPixels_.end(), 0);
+  for (const Band& band : bands_) {
+    for (const Band::Seen& seen : band.sums) {
+      pixelFormFactors_[seen.patch] += seen.formFactor;
+      shownPixels_[seen.patch] += seen.pixels;
+    }
+    for (size_t k = 0; k < band.setups.size(); ++k) coveredPixels_[band.setups[k]->id] += band.covered[k];
+  }
 }
 
 }  // namespace radmesh

@@ -37,14 +37,24 @@ class EnvironmentProjection {
   const std::vector<double>& pixelFormFactors() const { return pixelFormFactors_; }
   const std::vector<double>& projectedAreaPixels() const { return projectedArea_; }
   const std::vector<char>& seenFromFront() const { return seenFromFront_; }
+  // After project(), per patch: the pixel centres its projection covers over all faces, and how
+  // many of them show it (fewer: something hides part of it, or a coplanar neighbour won a tie).
+  const std::vector<long long>& coveredPixels() const { return coveredPixels_; }
+  const std::vector<long long>& shownPixels() const { return shownPixels_; }
 
  private:
   struct Band {  // rows [rowBegin, rowEnd) of one face
     int face = 0;
     int rowBegin = 0;
     int rowEnd = 0;
-    std::vector<const PolygonSetup*> setups;     // polygons reaching these rows, in patch order
-    std::vector<std::pair<int, double>> sums;    // per patch seen in the band, in first-seen order
+    struct Seen {
+      int patch = 0;
+      double formFactor = 0.0;  // its pixels' delta form factors
+      long long pixels = 0;
+    };
+    std::vector<const PolygonSetup*> setups;  // polygons reaching these rows, in patch order
+    std::vector<long long> covered;           // per setup: the pixel centres it covers in these rows
+    std::vector<Seen> sums;                   // per patch seen in the band, in first-seen order
   };
 
   void setUpPatches(const Patch& from, int skip);
@@ -62,6 +72,8 @@ class EnvironmentProjection {
   std::vector<std::vector<int>> slotOfPatch_;                        // [worker] scratch, -1 when free
   std::vector<double> pixelFormFactors_;
   std::vector<double> projectedArea_;
+  std::vector<long long> coveredPixels_;
+  std::vector<long long> shownPixels_;
   std::vector<char> seenFromFront_;
 };
 

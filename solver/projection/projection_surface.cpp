@@ -24,4 +24,9 @@ void scaleToCapturedFraction(ProjectionSurface& surface, double capturedFraction
     for (double& df : table) df *= capturedFraction / sum;
 }
 
+std::optional<LocalPolygon> inSurfaceView(const ProjectionSurface& surface, const Patch& shooter, const Patch& patch) {
+  if (surface.wholeSphere) return toShooterFrame(shooter, patch);
+  return inShooterView(shooter, patch);
+}
+
 }  // namespace radmesh

@@ -2,6 +2,7 @@
 // A projection surface (the paper's section 1.2): planar faces above the shooter, each split into
 // pixels that carry a delta form factor. The single plane has one face, the hemicube five.
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "solver/projection/projection.h"
@@ -18,6 +19,10 @@ struct ProjectionSurface {
   // The faces see all around a point (a point light's cube), not only above the shooter's plane.
   bool wholeSphere = false;
 };
+
+// A patch in the shooter's frame as the surface's projection takes it: the whole sphere's faces
+// every patch, the others only a patch not wholly behind the shooter (inShooterView).
+std::optional<LocalPolygon> inSurfaceView(const ProjectionSurface& surface, const Patch& shooter, const Patch& patch);
 
 // Delta form factor of a pixel centred at face coordinates (a, b), of area pixelArea at depth 1.
 using DeltaFormFactorFn = std::function<double(double a, double b, double pixelArea)>;

@@ -137,49 +137,56 @@ std::vector<int> depthTieRanks(const std::vector<Patch>& patches) {
   return rank;
 }
 
-void rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int rowEnd,
-               std::span<const int> rankOf) {
+std::pair<int, int> rowSpan(const PolygonSetup& setup, int row) {
+  const double cy = row + 0.5;
+  int left = setup.columnBegin;
+  int right = setup.columnEnd;
+  for (int k = 0; k < setup.edgeCount && left < right; ++k) {
+    const EdgeFunction& e = setup.edges[k];
+    auto pass = [&](int column) { return inside(e, column + 0.5, cy); };
+    if (e.dirY == 0.0) {  // parallel to the rows: all of the row or none
+      if (!pass(left)) right = left;
+      continue;
+    }
+    // The first column whose centre lies past the edge (on the inside for a left edge, the
+    // outside for a right one): ceil(t). When the crossing is clear of every pixel centre by
+    // more than rounding can move it, that is exact; otherwise the edge function decides,
+    // column by column. (Integer ceil: std::ceil is a library call on baseline x86-64.)
+    const double t = e.startX + (cy - e.startY) * e.inverseSlope - 0.5;
+    const double slack = e.crossingSlack;
+    int first;
+    if (t >= left - 2.0 && t <= right + 2.0) {
+      int g = static_cast<int>(t);  // truncation: ceil for negative t ...
+      g += g < t;                   // ... and for positive t after this (no branch to mispredict)
+      if (g - t > slack && t - (g - 1) > slack)
+        first = std::clamp(g, left, right);
+      else
+        first = e.dirY > 0.0 ? firstPassing(g, left, right, pass)
+                             : firstPassing(g, left, right, [&](int column) { return !pass(column); });
+    } else if (slack < 1.0 && t < left) {
+      first = left;  // crossing well left of the span
+    } else if (slack < 1.0 && t > right) {
+      first = right;  // well right of it
+    } else {  // not a number, or magnitudes rounding can move by pixels
+      first = e.dirY > 0.0 ? firstPassing(left, left, right, pass)
+                           : firstPassing(left, left, right, [&](int column) { return !pass(column); });
+    }
+    if (e.dirY > 0.0)
+      left = first;
+    else
+      right = first;
+  }
+  return {left, std::max(left, right)};
+}
+
+long long rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int rowEnd,
+                    std::span<const int> rankOf) {
   const int firstRow = std::max(rowBegin, setup.rowBegin);
   const int lastRow = std::min(rowEnd, setup.rowEnd);
+  long long covered = 0;
   for (int row = firstRow; row < lastRow; ++row) {
-    const double cy = row + 0.5;
-    int left = setup.columnBegin;
-    int right = setup.columnEnd;
-    for (int k = 0; k < setup.edgeCount && left < right; ++k) {
-      const EdgeFunction& e = setup.edges[k];
-      auto pass = [&](int column) { return inside(e, column + 0.5, cy); };
-      if (e.dirY == 0.0) {  // parallel to the rows: all of the row or none
-        if (!pass(left)) right = left;
-        continue;
-      }
-      // The first column whose centre lies past the edge (on the inside for a left edge, the
-      // outside for a right one): ceil(t). When the crossing is clear of every pixel centre by
-      // more than rounding can move it, that is exact; otherwise the edge function decides,
-      // column by column. (Integer ceil: std::ceil is a library call on baseline x86-64.)
-      const double t = e.startX + (cy - e.startY) * e.inverseSlope - 0.5;
-      const double slack = e.crossingSlack;
-      int first;
-      if (t >= left - 2.0 && t <= right + 2.0) {
-        int g = static_cast<int>(t);  // truncation: ceil for negative t ...
-        g += g < t;                   // ... and for positive t after this (no branch to mispredict)
-        if (g - t > slack && t - (g - 1) > slack)
-          first = std::clamp(g, left, right);
-        else
-          first = e.dirY > 0.0 ? firstPassing(g, left, right, pass)
-                               : firstPassing(g, left, right, [&](int column) { return !pass(column); });
-      } else if (slack < 1.0 && t < left) {
-        first = left;  // crossing well left of the span
-      } else if (slack < 1.0 && t > right) {
-        first = right;  // well right of it
-      } else {  // not a number, or magnitudes rounding can move by pixels
-        first = e.dirY > 0.0 ? firstPassing(left, left, right, pass)
-                             : firstPassing(left, left, right, [&](int column) { return !pass(column); });
-      }
-      if (e.dirY > 0.0)
-        left = first;
-      else
-        right = first;
-    }
+    const auto [left, right] = rowSpan(setup, row);
+    covered += right - left;
     int* items = buffer.items.data() + static_cast<std::ptrdiff_t>(row) * buffer.width;
     double* depths = buffer.inverseDepth.data() + static_cast<std::ptrdiff_t>(row) * buffer.width;
     const double rowPart = rowInverseDepth(setup, row);
@@ -192,6 +199,7 @@ void rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int 
       }
     }
   }
+  return covered;
 }
 
 }  // namespace radmesh

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "solver/projection/item_buffer.h"
@@ -74,9 +75,13 @@ inline bool closer(double inverseDepthA, int rankA, double inverseDepthB, int ra
 // coplanar overlaps resolve the same way whatever order the scene lists its polygons in.
 std::vector<int> depthTieRanks(const std::vector<Patch>& patches);
 
+// The pixels [first, second) of `row` whose centres the polygon covers (empty: first == second),
+// by the rule covers() applies pixel by pixel.
+std::pair<int, int> rowSpan(const PolygonSetup& setup, int row);
+
 // z-buffers the polygon into rows [rowBegin, rowEnd) of the buffer, span by span; rankOf gives
-// the rank of a patch already in the buffer.
-void rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int rowEnd,
+// the rank of a patch already in the buffer. Returns how many pixel centres it covers there.
+long long rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int rowEnd,
                std::span<const int> rankOf);
 
 }  // namespace radmesh

@@ -58,7 +58,7 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
     const std::vector<Rgb> parentRadiosity = std::move(elementRadiosity), parentGain = iterationGain;
     const std::vector<int> origin = splitElements(elements, split);
     backend->receiversSplit(origin);
-    if (plan.nearField) elementNearReceivers = findNearFieldReceivers(patches, elements.elements);
+    findNearField();
     neighbours = elementNeighbours(elements);
     cache.renumberReceivers(newIndices(origin, split));
     regather(origin, split, parentRadiosity, parentGain);

@@ -72,10 +72,10 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   if (s.subdivided()) {
     s.elements = s.adaptive() ? patchesAsElements(s.patches) : subdivideUniform(s.patches, options.minElementM);
     for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
-    if (s.plan.nearField) s.elementNearReceivers = findNearFieldReceivers(s.patches, s.elements.elements);
     if (s.adaptive()) s.neighbours = elementNeighbours(s.elements);
     if (s.adaptive()) s.shotTotal.assign(s.patches.size(), Rgb(0.0));
   }
+  s.findNearField();
   s.rho.resize(n);
   s.radiosity.resize(n);
   s.unshotRadiosity.resize(n);
@@ -103,7 +103,8 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
 
 // The back end over the receivers, with the portal patches' rows split by direction bin.
 std::unique_ptr<FormFactorBackend> ProgressiveSolver::State::makeBackend() const {
-  std::unique_ptr<FormFactorBackend> made = makeFormFactorBackend(scene, patches, receivers(), options);
+  std::unique_ptr<FormFactorBackend> made = subdivided() ? makeFormFactorBackend(scene, patches, elements, options)
+                                                         : makeFormFactorBackend(scene, patches, options);
   std::vector<int> portals;
   for (size_t j = 0; j < patches.size(); ++j)
     if (isPortal[j]) portals.push_back(static_cast<int>(j));
@@ -150,11 +151,17 @@ void ProgressiveSolver::State::computeFreshRows(const std::vector<int>& shooters
   backend->computeRows(shooters, computed);
   if (plan.nearField)
     for (FormFactorRow& row : computed) {
-      if (subdivided())
-        correctNearField(row, patches[row.shooter], elements.elements, elementNearReceivers[row.shooter]);
-      else
-        correctNearField(row, patches, plan.nearReceivers[row.shooter]);
+      const std::vector<int>& near =
+          subdivided() ? elementNearReceivers[row.shooter] : plan.nearReceivers[row.shooter];
+      std::vector<NearFieldPair>& pairs = nearPairs[row.shooter];
+      if (pairs.size() != near.size()) pairs = nearFieldPairs(patches[row.shooter], receivers(), near);
+      correctNearField(row, near, pairs);
     }
+}
+
+void ProgressiveSolver::State::findNearField() {
+  if (plan.nearField && subdivided()) elementNearReceivers = findNearFieldReceivers(patches, elements.elements);
+  nearPairs.assign(patches.size(), {});
 }
 
 // Eq. 1.2 for every shooter, all from the same state: B_j += dB_i rho_j F_ij A_i / A_j.
@@ -348,7 +355,7 @@ void ProgressiveSolver::restoreProgress(SolverProgress p) {
     s.backend.reset();
     s.elements = std::move(*split);
     s.backend = s.makeBackend();  // with the portal patches' direction bins
-    if (s.plan.nearField) s.elementNearReceivers = findNearFieldReceivers(s.patches, s.elements.elements);
+    s.findNearField();
     s.neighbours = elementNeighbours(s.elements);
   }
   s.backend->restoreMachineState(p.machineState);  // throws, changing nothing, for another machine's

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solver/formfactors/form_factor_cache.h"
+#include "solver/formfactors/near_field.h"
 #include "solver/meshing/elements.h"
 #include "solver/radiosity/progressive_solver.h"
 
@@ -51,6 +52,7 @@ struct ProgressiveSolver::State {
   Elements elements;
   std::vector<Rgb> elementRadiosity;
   std::vector<std::vector<int>> elementNearReceivers;  // per shooter patch, its near elements
+  std::vector<std::vector<NearFieldPair>> nearPairs;   // per shooter patch, once it has shot
   // Adaptive subdivision (adaptive_refinement.cpp): this iteration's shots, what each element
   // received from them (reflected, W/m^2 per channel), and each element's neighbours.
   struct Shot {
@@ -79,6 +81,9 @@ struct ProgressiveSolver::State {
   void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins);
   void updateUnshot();
   void computeFreshRows(const std::vector<int>& shooters, std::vector<FormFactorRow>& computed);
+  // The elements' near-field receivers found anew (after they are made or split), every shooter's
+  // pairs to be computed again.
+  void findNearField();
   void refine(IterationRecord& record);
   void regather(const std::vector<int>& origin, const std::vector<char>& split,
                 const std::vector<Rgb>& parentRadiosity, const std::vector<Rgb>& parentGain);

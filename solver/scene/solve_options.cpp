@@ -64,6 +64,9 @@ void validateOptions(const SolveOptions& o) {
   if (o.meshTransport && o.subdivide == Subdivide::Adaptive)
     throw OptionError("--subdivide adaptive is not built over processes yet (a split routes elements into PE lists "
                       "that other processes hold): give --subdivide uniform, or leave out --distributed");
+  if (o.elementRows == ElementRows::Share && o.backend == Backend::Mesh)
+    throw OptionError("--element-rows share is the native back end's: the mesh back end z-buffers every element on "
+                      "its PEs, as the paper's machine does; give --element-rows rasterise (or auto), or --backend native");
   if (o.meshTransport && o.backend != Backend::Mesh)
     throw OptionError("--distributed splits the mesh back end's machine over processes: give --backend mesh (or "
                       "--cells auto, which splits the cells)");
@@ -166,6 +169,27 @@ Subdivide parseSubdivide(const std::string& text) {
     if (text == toString(s)) return s;
   throw OptionError("--subdivide '" + text + "' is unknown: give off (patches receive), uniform (patches shoot, "
                     "elements of at most --min-element receive) or adaptive (elements split where the light changes)");
+}
+
+const char* toString(ElementRows rows) {
+  switch (rows) {
+    case ElementRows::Auto: return "auto";
+    case ElementRows::Rasterise: return "rasterise";
+    case ElementRows::Share: return "share";
+  }
+  return "?";
+}
+
+ElementRows parseElementRows(const std::string& text) {
+  for (ElementRows r : {ElementRows::Auto, ElementRows::Rasterise, ElementRows::Share})
+    if (text == toString(r)) return r;
+  throw OptionError("--element-rows '" + text + "' is unknown: give share (patches on the item buffer, each one's "
+                    "form factor shared among its elements), rasterise (every element on the item buffer) or auto");
+}
+
+bool sharesElementRows(const SolveOptions& options) {
+  return options.subdivide != Subdivide::Off && options.projection != Projection::Analytic &&
+         options.backend == Backend::Native && options.elementRows != ElementRows::Rasterise;
 }
 
 }  // namespace radmesh

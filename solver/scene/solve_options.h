@@ -18,6 +18,10 @@ enum class MappingKind { Hierarchical, CutAndStack, Adaptive };
 enum class EffectsMode { Auto, All };
 // Whether patches are cut into elements that receive (solver/meshing/elements.h).
 enum class Subdivide { Off, Uniform, Adaptive };
+// How a shot's row over elements is made (solver/formfactors/element_shares.h): Rasterise z-buffers
+// every element into the item buffer; Share z-buffers the patches and shares each patch's form factor
+// among its elements (native back end only); Auto: Share on the native back end, Rasterise on the mesh.
+enum class ElementRows { Auto, Rasterise, Share };
 
 // The mesh back end's emulated machine: PE columns x rows, powers of two (the mesh sorts on its
 // torus), and each PE's memory (the paper's MP-1: 64 x 64 PEs of 16 KB).
@@ -60,6 +64,7 @@ struct SolveOptions {
   // no shorter than minElementM along their longest edge.
   Subdivide subdivide = Subdivide::Off;
   double minElementM = 0.0;  // uniform: 0 cuts every patch once along each edge (into four); adaptive: > 0
+  ElementRows elementRows = ElementRows::Auto;  // --element-rows
   // Adaptive: an element splits where its reflected radiosity and a neighbour's differ by more
   // than this fraction of the brightest element's (the gradient criterion), ...
   double splitContrast = 0.1;
@@ -100,5 +105,9 @@ void parsePeGrid(const std::string& text, PeMachine& machine);
 std::string peGridText(const PeMachine& machine);  // "64x64"
 const char* toString(Subdivide subdivide);
 Subdivide parseSubdivide(const std::string& text);    // throws OptionError
+const char* toString(ElementRows rows);
+ElementRows parseElementRows(const std::string& text);  // throws OptionError
+// Whether the back end the options name shares patches' form factors among their elements.
+bool sharesElementRows(const SolveOptions& options);
 
 }  // namespace radmesh

@@ -7,6 +7,7 @@
 
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/formfactors/direction_bins.h"
+#include "solver/formfactors/element_shares.h"
 #include "solver/projection/hemicube.h"
 #include "solver/scene/scene_error.h"
 #include "solver/projection/single_plane.h"
@@ -34,13 +35,20 @@ std::unique_ptr<ProjectionSurface> surfaceFor(const SolveOptions& options) {
 
 NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patches,
                              const SolveOptions& options)
-    : NativeBackend(scene, patches, patches, options) {}
+    : NativeBackend(scene, patches, patches, nullptr, options) {}
+
+NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const Elements& elements,
+                             const SolveOptions& options)
+    : NativeBackend(scene, patches, elements.elements, &elements, options) {}
 
 NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patches,
-                             const std::vector<Patch>& receivers, const SolveOptions& options)
+                             const std::vector<Patch>& receivers, const Elements* elements,
+                             const SolveOptions& options)
     : scene_(scene),
       patches_(patches),
       receivers_(receivers),
+      elements_(elements),
+      shares_(elements && sharesElementRows(options)),
       options_(options),
       nearDepth_(sceneNearDepth(patches)),
       pool_(options.threads) {
@@ -53,11 +61,12 @@ void NativeBackend::takeReceivers() {
   seenFromFront_.assign(receivers_.size(), 0);
   if (!projection_) {
     if (auto surface = surfaceFor(options_))
-      projection_ = std::make_unique<EnvironmentProjection>(receivers_, std::move(*surface), nearDepth_, pool_);
+      projection_ = std::make_unique<EnvironmentProjection>(shares_ ? patches_ : receivers_, std::move(*surface),
+                                                            nearDepth_, pool_);
     return;
   }
   // Split elements: the projections keep their surfaces and pixel tables, and re-read the receivers.
-  projection_->patchesChanged();
+  if (!shares_) projection_->patchesChanged();
   if (singlePlane_) singlePlane_->patchesChanged();
 }
 
@@ -100,7 +109,7 @@ void NativeBackend::computeRows(std::span<const int> shooters, std::vector<FormF
 }
 
 ItemBuffer NativeBackend::singlePlaneItemBuffer(int shooter) {
-  const bool same = options_.projection == Projection::Plane;
+  const bool same = options_.projection == Projection::Plane && !shares_;
   if (!same && !singlePlane_)
     singlePlane_ = std::make_unique<EnvironmentProjection>(
         receivers_, makeSinglePlane(options_.resolution, options_.ratio), nearDepth_, pool_);
@@ -110,6 +119,12 @@ ItemBuffer NativeBackend::singlePlaneItemBuffer(int shooter) {
 }
 
 FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int shooter) {
+  if (shares_) {
+    shareShot(projection, shooter);
+    FormFactorRow row = assembleRow(shooter, projection.surface().capturedFraction, formFactors_, seenFromFront_);
+    if (!directional_.empty() && directional_[shooter]) addPixelBins(projection, row);
+    return row;
+  }
   projection.projectFrom(patches_[shooter], skipOf(shooter));
   formFactors_ = projection.pixelFormFactors();
   seenFromFront_ = projection.seenFromFront();
@@ -123,8 +138,43 @@ FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int
   return row;
 }
 
+// The patches projected, their pixel sums refined below a pixel as patches' rows are, and shared
+// among their elements.
+void NativeBackend::shareShot(EnvironmentProjection& projection, int shooter) {
+  projection.projectFrom(patches_[shooter], shooter);
+  patchFormFactors_ = projection.pixelFormFactors();
+  patchSeenFromFront_ = projection.seenFromFront();
+  const ProjectedShot shot{patches_, patches_[shooter], projection.surface(), projection.itemBuffers(),
+                           projection.depthTieRank(), projection.projectedAreaPixels()};
+  if (options_.subPixelReceivers) refineSubPixelReceivers(shot, pool_, patchFormFactors_);
+  const PatchShot patchShot{patchFormFactors_, patchSeenFromFront_, projection.coveredPixels(),
+                            projection.shownPixels()};
+  shareAmongElements(shot, nearDepth_, patchShot, *elements_, pool_, formFactors_, seenFromFront_);
+}
+
 // Each pixel's delta form factor summed per patch and bin, in pixel order whatever the threads.
+// Sharing rows, each element takes of its patch's bins its share of the patch's form factor.
 void NativeBackend::addPixelBins(const EnvironmentProjection& projection, FormFactorRow& row) const {
+  if (!shares_) return addPatchPixelBins(projection, seenFromFront_, row);
+  FormFactorRow patchRow;
+  addPatchPixelBins(projection, patchSeenFromFront_, patchRow);
+  row.binTotals = std::move(patchRow.binTotals);
+  row.binBackFaces = std::move(patchRow.binBackFaces);
+  for (size_t k = 0; k < patchRow.binShares.size();) {  // a patch's shares are consecutive, by bin
+    const int p = patchRow.binShares[k].patch;
+    size_t end = k;
+    while (end < patchRow.binShares.size() && patchRow.binShares[end].patch == p) ++end;
+    for (int e = elements_->first[p]; e < elements_->first[p + 1]; ++e)
+      if (formFactors_[e] > 0.0)
+        for (size_t b = k; b < end; ++b)
+          row.binShares.push_back({e, patchRow.binShares[b].bin,
+                                   patchRow.binShares[b].formFactor * (formFactors_[e] / patchFormFactors_[p])});
+    k = end;
+  }
+}
+
+void NativeBackend::addPatchPixelBins(const EnvironmentProjection& projection, const std::vector<char>& seenFromFront,
+                                      FormFactorRow& row) const {
   const long long bins = static_cast<long long>(binTotals_.size());
   std::vector<std::pair<long long, double>> hits;  // (patch * bins + bin, delta form factor)
   for (size_t f = 0; f < projection.itemBuffers().size(); ++f) {
@@ -141,7 +191,7 @@ void NativeBackend::addPixelBins(const EnvironmentProjection& projection, FormFa
     double sum = 0.0;
     for (; k < hits.size() && hits[k].first == key; ++k) sum += hits[k].second;
     const int patch = static_cast<int>(key / bins), bin = static_cast<int>(key % bins);
-    if (seenFromFront_[patch])
+    if (seenFromFront[patch])
       row.binShares.push_back({patch, bin, sum});
     else
       row.binBackFaces[bin] += sum;

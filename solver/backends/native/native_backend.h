@@ -12,9 +12,10 @@ namespace radmesh {
 class NativeBackend final : public FormFactorBackend {
  public:
   NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options);
-  // Patches shoot, `receivers` receive (the elements of solver/meshing/elements.h): rows and item
-  // buffers index receivers.
-  NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const std::vector<Patch>& receivers,
+  // Patches shoot, their elements receive (solver/meshing/elements.h): rows and item buffers index
+  // elements.elements. With sharesElementRows(options), the projection holds the patches and rows
+  // share their form factors among the elements (solver/formfactors/element_shares.h).
+  NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const Elements& elements,
                 const SolveOptions& options);
   ~NativeBackend() override;
 
@@ -29,8 +30,12 @@ class NativeBackend final : public FormFactorBackend {
   double nearDepth() const { return nearDepth_; }
 
  private:
-  // The per-receiver buffers, and the projection over receivers_ as they are now (made on the first call).
+  NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const std::vector<Patch>& receivers,
+                const Elements* elements, const SolveOptions& options);
+  // The per-receiver buffers, and the projection over what it z-buffers as it is now (made on the first call).
   void takeReceivers();
+  // The receivers' entries of a shot the projection made over the patches (shares_).
+  void shareShot(EnvironmentProjection& projection, int shooter);
   FormFactorRow projectedRow(EnvironmentProjection& projection, int shooter);
   FormFactorRow analyticRow(int shooter);
   // A directional shooter's split by bin: from the item buffers of its projection, or analytic.
@@ -38,16 +43,23 @@ class NativeBackend final : public FormFactorBackend {
   void addAnalyticBins(int shooter, FormFactorRow& row) const;
   // The receiver a shot from `shooter` skips: itself when patches receive, none when elements do.
   int skipOf(int shooter) const { return &receivers_ == &patches_ ? shooter : -1; }
+  // The direction bins of the pixels where each patch is seen, before shares_ hands them to elements.
+  void addPatchPixelBins(const EnvironmentProjection& projection, const std::vector<char>& seenFromFront,
+                         FormFactorRow& row) const;
 
   const Scene& scene_;
   const std::vector<Patch>& patches_;
   const std::vector<Patch>& receivers_;  // patches_ itself, or their elements
+  const Elements* elements_;             // null when patches receive
+  bool shares_;                          // the projection holds patches_, rows their elements' shares
   SolveOptions options_;
   double nearDepth_;
   ThreadPool pool_;
   std::unique_ptr<EnvironmentProjection> projection_;  // null for --projection analytic
   std::unique_ptr<EnvironmentProjection> singlePlane_;  // made when first asked for
   std::vector<double> formFactors_;                     // per receiver, this shot
+  std::vector<double> patchFormFactors_;                // shares_: per patch, this shot
+  std::vector<char> patchSeenFromFront_;                // shares_: per patch, this shot
   std::vector<char> seenFromFront_;                     // per receiver, this shot
   int binsN_ = 0;                                       // binDirections' n
   std::vector<char> directional_;                       // per patch: its rows split by bin

@@ -59,6 +59,7 @@ TEST(Substructure, LedgerBalancesOnTheMeshBackEnd) {
   // The mesh agrees with the native back end's single plane (the same item buffers; form factors
   // summed in another order).
   o.backend = Backend::Native;
+  o.elementRows = ElementRows::Rasterise;
   ProgressiveSolver native(t.scene, t.patches, o);
   solveChecked(native);
   for (size_t k = 0; k < solver.elements().size(); ++k)

@@ -374,7 +374,7 @@ TEST(MeshBackend, ASplitRoutesEachMovedElementToItsNewPe) {
   EXPECT_EQ(origin.size(), m.patches.size() + 3 * static_cast<std::size_t>(std::count(split.begin(), split.end(), 1)));
   EXPECT_EQ(cost.router.messages, moved);
   EXPECT_EQ(cost.router.ops, *std::max_element(made.begin(), made.end()));
-  NativeBackend native(m.scene, m.patches, elements.elements, o);
+  NativeBackend native(m.scene, m.patches, elements, o);
   const std::vector<int> shooters = someShooters(m, 3);
   std::vector<FormFactorRow> meshRows, nativeRows;
   mesh.computeRows(shooters, meshRows);
