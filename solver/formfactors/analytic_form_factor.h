@@ -14,7 +14,7 @@ double pointToPolygonFormFactor(std::span<const Vec3> vertices);
 
 // The same for a small polygon far away: where every corner is in front (z > 0) and the polygon's
 // diameter is at most kSmallPolygonRatio of its centroid's distance, the differential form
-// cos(at the origin) cos(at the polygon) area / (pi r^2) that the exact one tends to (within 0.1 %
+// cos(at the origin) cos(at the polygon) area / (pi r^2) that the exact one tends to (within 0.3 %
 // there, tests/solver/formfactors); else pointToPolygonFormFactor. An atan2 per edge is most of what
 // sharing a patch's form factor among its elements costs otherwise.
 inline constexpr double kSmallPolygonRatio = 0.1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/projection/projection.h"
@@ -47,41 +48,43 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
   std::vector<std::vector<int>> near(n);
   std::vector<double> size(n);
   for (int i = 0; i < n; ++i) size[i] = diameter(patches[i]);
-  // Centroids bucketed in cells as wide as the median diameter: a shooter's near receivers lie
-  // within as many cells of its own as its diameter spans (a few large patches then search more
-  // cells, rather than every shooter searching cells as wide as the largest).
-  std::vector<double> sizes = size;
-  std::nth_element(sizes.begin(), sizes.begin() + n / 2, sizes.end());
-  const double cellSize = n > 0 ? sizes[n / 2] : 0.0;
-  if (!(cellSize > 0.0)) return near;
-  auto cellOf = [&](const Vec3& c) {
-    return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
-                std::llround(std::floor(c.z / cellSize))};
-  };
+  // Shooters in groups by diameter, halving from the largest; per group, the receivers' centroids
+  // bucketed in cells as wide as its largest diameter: a shooter's near receivers lie in the 3 x 3
+  // x 3 cells around its own, and no shooter searches cells much wider than itself.
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
   std::vector<std::pair<Cell, int>> sorted(receivers.size());
-  for (size_t j = 0; j < receivers.size(); ++j) sorted[j] = {cellOf(receivers[j].centroid), static_cast<int>(j)};
-  std::sort(sorted.begin(), sorted.end());
-  for (int i = 0; i < n; ++i) {
-    const Patch& shooter = patches[i];
-    auto consider = [&](int j) {
-      if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < size[i])) return;
-      if (partlyInFront(receivers[j], shooter, size[i]) && partlyInFront(shooter, receivers[j], size[i]))
-        near[i].push_back(j);
+  for (size_t group = 0; group < order.size();) {
+    const double cellSize = size[order[group]];
+    if (!(cellSize > 0.0)) break;  // the rest have no extent, so no near receivers
+    size_t end = group;
+    while (end < order.size() && size[order[end]] > 0.5 * cellSize) ++end;
+    auto cellOf = [&](const Vec3& c) {
+      return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
+                  std::llround(std::floor(c.z / cellSize))};
     };
-    const Cell home = cellOf(shooter.centroid);
-    const long long reach = std::llround(std::ceil(size[i] / cellSize));
-    if (static_cast<double>(2 * reach + 1) * (2 * reach + 1) * (2 * reach + 1) > static_cast<double>(sorted.size())) {
-      for (int j = 0; j < static_cast<int>(receivers.size()); ++j) consider(j);  // fewer receivers than cells
-      continue;
-    }
-    for (long long dx = -reach; dx <= reach; ++dx)
-      for (long long dy = -reach; dy <= reach; ++dy)
-        for (long long dz = -reach; dz <= reach; ++dz) {
-          const Cell cell{home[0] + dx, home[1] + dy, home[2] + dz};
-          auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{cell, -1});
-          for (; it != sorted.end() && it->first == cell; ++it) consider(it->second);
+    for (size_t j = 0; j < receivers.size(); ++j) sorted[j] = {cellOf(receivers[j].centroid), static_cast<int>(j)};
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t k = group; k < end; ++k) {
+      const int i = order[k];
+      const Patch& shooter = patches[i];
+      const Cell home = cellOf(shooter.centroid);
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy) {  // the cells along z are consecutive in `sorted`
+          const Cell from{home[0] + dx, home[1] + dy, home[2] - 1};
+          auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{from, -1});
+          for (; it != sorted.end() && it->first[0] == from[0] && it->first[1] == from[1] && it->first[2] <= home[2] + 1;
+               ++it) {
+            const int j = it->second;
+            if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < size[i])) continue;
+            if (partlyInFront(receivers[j], shooter, size[i]) && partlyInFront(shooter, receivers[j], size[i]))
+              near[i].push_back(j);
+          }
         }
-    std::sort(near[i].begin(), near[i].end());
+      std::sort(near[i].begin(), near[i].end());
+    }
+    group = end;
   }
   return near;
 }
@@ -124,11 +127,12 @@ double meanFormFactor(const Patch& shooter, const Patch& receiver, int subdivisi
 
 double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions) {
   // Reciprocity (A_s F_sr = A_r F_rs): a receiver smaller than the shooter (an element) is sampled
-  // instead, at sub-triangles no larger, so far fewer points. Exact where each lies wholly in front
-  // of the other, so that neither clips the other.
+  // instead, at sub-triangles no larger, so far fewer points. Where the receiver lies wholly in
+  // front of the shooter, every point of it sees the shooter's front, and the closed form from it
+  // clips away the part of the shooter behind the receiver's plane, which sends it nothing.
   const double shooterSize = diameter(shooter), receiverSize = diameter(receiver);
-  if (receiverSize < shooterSize && whollyInFront(receiver, shooter, shooterSize) &&
-      whollyInFront(shooter, receiver, shooterSize) && receiver.areaM2 > 0.0 && shooter.areaM2 > 0.0) {
+  if (receiverSize < shooterSize && whollyInFront(receiver, shooter, shooterSize) && receiver.areaM2 > 0.0 &&
+      shooter.areaM2 > 0.0) {
     const int m = std::max(2, static_cast<int>(std::ceil(subdivisions * receiverSize / shooterSize)));
     return meanFormFactor(receiver, shooter, m) * (receiver.areaM2 / shooter.areaM2);
   }

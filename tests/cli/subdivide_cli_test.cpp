@@ -104,6 +104,12 @@ TEST(CliSubdivide, ImpossibleOptionsAreRefusedNamingTheFlag) {
   run = radmesh("solve cornell --subdivide uniform --min-element -1");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--min-element -1"), std::string::npos) << run.output;
+  run = radmesh("solve cornell --subdivide uniform --backend mesh --element-rows share");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--element-rows share is the native back end's"), std::string::npos) << run.output;
+  run = radmesh("solve cornell --subdivide uniform --element-rows pixels");
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("--element-rows 'pixels' is unknown"), std::string::npos) << run.output;
 }
 
 // The subdivide axis of `bench accuracy`: off on every cell, uniform and adaptive on the coarsest,

@@ -275,9 +275,11 @@ TEST(MeshAdaptive, SplitsAsTheNativeBackEndDoesOnAnyThreadCount) {
 TEST(Adaptive, ReceiversSplitComputesTheRowsOfANewBackend) {
   const ShadowScene s;
   for (Projection projection : {Projection::Plane, Projection::Hemicube, Projection::Analytic})
-    for (int threads : {1, 3}) {
-      SCOPED_TRACE(std::string(toString(projection)) + ", threads " + std::to_string(threads));
-      const SolveOptions o = optionsFor(projection, 128, threads);
+    for (int threads : {1, 3})
+      for (ElementRows rows : {ElementRows::Rasterise, ElementRows::Share}) {
+      SCOPED_TRACE(std::string(toString(projection)) + ", threads " + std::to_string(threads) + ", " + toString(rows));
+      SolveOptions o = subdivided(optionsFor(projection, 128, threads), Subdivide::Adaptive, 0.01);
+      o.elementRows = rows;
       Elements elements = patchesAsElements(s.t.patches);
       NativeBackend updated(s.t.scene, s.t.patches, elements, o);
       std::vector<FormFactorRow> before;

@@ -133,11 +133,19 @@ TEST(Substructure, ElementsFollowTheGradientUnderASmallLight) {
   for (Projection projection : {Projection::Hemicube, Projection::Analytic}) {
     SCOPED_TRACE(toString(projection));
     const SolveOptions o = fixedIterations(optionsFor(projection, 256), 1);
-    ProgressiveSolver elements(f.t.scene, f.t.patches, subdivided(o, Subdivide::Uniform, 0.125));
+    SolveOptions rasterised = subdivided(o, Subdivide::Uniform, 0.125);
+    rasterised.elementRows = ElementRows::Rasterise;
+    ProgressiveSolver elements(f.t.scene, f.t.patches, subdivided(o, Subdivide::Uniform, 0.125)),
+        pixels(f.t.scene, f.t.patches, rasterised);
     elements.step();
+    pixels.step();
     ASSERT_EQ(elements.elements().size(), 256u + 1u);  // 16 x 16 on the floor, the light whole
     const double elementError = f.worstError(elements.elements(), [&](size_t k) { return elements.elementRadiosity()[k].r; });
-    EXPECT_LT(elementError, 0.003);  // measured 0.0018 (hemicube 256) and 0.0018 (analytic)
+    const double pixelError = f.worstError(pixels.elements(), [&](size_t k) { return pixels.elementRadiosity()[k].r; });
+    // Measured 0.0018 (analytic, and the hemicube's pixels); the hemicube's floor shared by closed
+    // forms, 0.0018 too: what is left is a constant B over each element against its centroid's.
+    EXPECT_LT(elementError, 0.003);
+    EXPECT_LE(elementError, pixelError + 1e-4);
     ProgressiveSolver patches(f.t.scene, f.t.patches, o);
     patches.step();
     const double patchError = f.worstError(elements.elements(), [&](size_t) { return patches.radiosity()[0].r; });
