@@ -1,8 +1,9 @@
 #pragma once
 // The pieces the operations share when the machine is split over processes (transport.h): values
-// combined over ranks, an error every rank agrees on, per-PE lists moved across block edges, router
-// messages delivered to the blocks that hold their destinations, and records gathered in global
-// PE order. Everything moved must be trivially copyable (it travels as bytes).
+// combined over ranks (all of them, or in order along a rank row or column), an error every rank
+// agrees on, per-PE lists moved across block edges, router messages delivered to the blocks that
+// hold their destinations, and records gathered in global PE order. Everything moved must be
+// trivially copyable (it travels as bytes).
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -28,19 +29,41 @@ std::vector<T> fromBytes(std::span<const std::byte> bytes) {
   return out;
 }
 
+// combine(in, inout) of values of T as the transport's, on the bytes of `count` values, value by value.
+template <class T, class Combine>
+Transport::Combiner combinerOf(Combine combine, std::size_t count = 1) {
+  static_assert(std::is_trivially_copyable_v<T>, "distributed data travel as bytes");
+  return [combine, count](const std::byte* in, std::byte* inout) {
+    for (std::size_t k = 0; k < count; ++k) {
+      T a, b;
+      std::memcpy(&a, in + k * sizeof(T), sizeof(T));
+      std::memcpy(&b, inout + k * sizeof(T), sizeof(T));
+      combine(a, b);
+      std::memcpy(inout + k * sizeof(T), &b, sizeof(T));
+    }
+  };
+}
+
 // value combined over every rank; combine(in, inout) must be commutative and associative.
 template <class T, class Combine>
 T allReduce(MeshMachine& machine, Channel channel, T value, Combine combine) {
-  static_assert(std::is_trivially_copyable_v<T>, "distributed data travel as bytes");
-  machine.transport().allReduce(channel, std::as_writable_bytes(std::span(&value, 1)),
-                                [&](const std::byte* in, std::byte* inout) {
-                                  T a, b;
-                                  std::memcpy(&a, in, sizeof(T));
-                                  std::memcpy(&b, inout, sizeof(T));
-                                  combine(a, b);
-                                  std::memcpy(inout, &b, sizeof(T));
-                                });
+  machine.transport().allReduce(channel, std::as_writable_bytes(std::span(&value, 1)), combinerOf<T>(combine));
   return value;
+}
+// Along a line of the rank grid (`axis` as Transport's), value by value, with combine(earlier,
+// later) associative: each of `values` becomes the combination of the line's in order.
+template <class T, class Combine>
+void allReduceAlong(MeshMachine& machine, Channel channel, int axis, std::span<T> values, Combine combine) {
+  machine.transport().allReduceAlong(channel, axis, std::as_writable_bytes(values),
+                                     combinerOf<T>(combine, values.size()));
+}
+// ... or of the ranks' before this one, `identity` on the line's first rank.
+template <class T, class Combine>
+void exclusiveScanAlong(MeshMachine& machine, Channel channel, int axis, std::span<T> values, Combine combine,
+                        const T& identity) {
+  if (!machine.transport().exclusiveScanAlong(channel, axis, std::as_writable_bytes(values),
+                                              combinerOf<T>(combine, values.size())))
+    std::fill(values.begin(), values.end(), identity);
 }
 template <class T>
 T allSum(MeshMachine& machine, Channel channel, T value) {

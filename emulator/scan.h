@@ -4,9 +4,9 @@
 // at every element whose start flag is set, and at the first active element. Inclusive: each
 // element gets the sum of its segment up to and including itself; exclusive: up to but not
 // including (T{} at a segment's start). Inactive PEs neither contribute nor receive.
-// Distributed (transport.h): a 2-D block is not contiguous in row-major order, and a floating-point
-// sum in another order has other bits, so every rank gathers the active elements and runs the scan
-// in order, keeping its block's results (detail::scanAcross).
+// Distributed (transport.h): scan_across.h, by an ordered gather of the elements for floating
+// point (bitwise the one-process sums), by exclusive scans of per-row summaries along the rank
+// grid for integers (MPI_Exscan over MPI).
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -14,51 +14,13 @@
 #include "emulator/distributed.h"
 #include "emulator/pe_array.h"
 #include "emulator/plural.h"
+#include "emulator/scan_across.h"
+#include "emulator/segmented_sum.h"
 #include "emulator/tree_cost.h"
 
 namespace radmesh::emu {
 
-enum class ScanKind { Inclusive, Exclusive };
-
 namespace detail {
-template <class T>
-class SegmentedSum {
- public:
-  explicit SegmentedSum(ScanKind kind) : kind_(kind) {}
-  T next(const T& value, bool segmentStart) {
-    if (segmentStart || !started_) running_ = T{};
-    started_ = true;
-    const T before = running_;
-    running_ = running_ + value;
-    return kind_ == ScanKind::Inclusive ? running_ : before;
-  }
-
- private:
-  ScanKind kind_;
-  bool started_ = false;
-  T running_{};
-};
-
-template <class T>
-struct ScanElement {
-  int pe = 0;
-  T value{};
-  bool start = false;
-};
-// The scan of every rank's elements (each block's in its order) in row-major order; returns the
-// results of this block's elements, in its order.
-template <class T>
-std::vector<T> scanAcross(MeshMachine& machine, const std::vector<ScanElement<T>>& mine, ScanKind kind) {
-  SegmentedSum<T> sum(kind);
-  std::vector<T> results;
-  results.reserve(mine.size());
-  for (const ScanElement<T>& e : gatherByPe(machine, Channel::Scan, mine)) {
-    const T result = sum.next(e.value, e.start);
-    if (machine.holds(e.pe)) results.push_back(result);
-  }
-  return results;
-}
-
 // A scan of `perPe` elements per PE: a local pass, the tree's two sweeps, a local fix-up.
 template <class T>
 void chargeScan(MeshMachine& machine, std::int64_t perPe) {

@@ -36,8 +36,9 @@ struct Traffic {
 
 class Transport {
  public:
-  // Combines `in` into `inout` (both one value of the reduced type); must be commutative and
-  // associative, as the values arrive in any order.
+  // Combines `in` into `inout` (both one value of the reduced type). For allReduce it must be
+  // commutative and associative, as the values arrive in any order; along a line of ranks only
+  // associative, `in` being the part of the earlier ranks.
   using Combiner = std::function<void(const std::byte* in, std::byte* inout)>;
 
   virtual ~Transport() = default;
@@ -58,6 +59,12 @@ class Transport {
   virtual std::vector<Bytes> allGather(Channel channel, std::span<const std::byte> data) = 0;
   // Replaces value by the combination of every rank's value.
   virtual void allReduce(Channel channel, std::span<std::byte> value, const Combiner& combine) = 0;
+  // Along a line of the rank grid (`axis` 0: the ranks of this rank's column, in rank-row order;
+  // 1: those of its row, in rank-column order), combining in that order: value becomes the
+  // combination of the line's values (allReduceAlong), or of the values of the ranks before this
+  // one (exclusiveScanAlong, which returns false, value unspecified, on the line's first rank).
+  virtual void allReduceAlong(Channel channel, int axis, std::span<std::byte> value, const Combiner& combine) = 0;
+  virtual bool exclusiveScanAlong(Channel channel, int axis, std::span<std::byte> value, const Combiner& combine) = 0;
 
   const Traffic& traffic(Channel channel) const { return traffic_[static_cast<int>(channel)]; }
   void resetTraffic() { traffic_ = {}; }

@@ -29,6 +29,24 @@ int size(std::size_t bytes) {
                             " bytes exceeds one MPI message; use more ranks");
   return static_cast<int>(bytes);
 }
+
+// Runs collective(type, op) on one value of `bytes` with `combine` as the operation (MPI keeps
+// rank order for a non-commutative one); returns the collective's code.
+template <class Collective>
+int withCombiner(std::size_t bytes, const Transport::Combiner& combine, bool commutative, Collective collective) {
+  MPI_Datatype type;
+  check(MPI_Type_contiguous(size(bytes), MPI_BYTE, &type), "MPI_Type_contiguous");
+  check(MPI_Type_commit(&type), "MPI_Type_commit");
+  MPI_Op op;
+  check(MPI_Op_create(&combineValues, commutative ? 1 : 0, &op), "MPI_Op_create");
+  currentCombiner = &combine;
+  currentSize = bytes;
+  const int code = collective(type, op);
+  currentCombiner = nullptr;
+  MPI_Op_free(&op);
+  MPI_Type_free(&type);
+  return code;
+}
 }  // namespace
 
 MpiTransport::MpiTransport(MPI_Comm comm) {
@@ -39,12 +57,20 @@ MpiTransport::MpiTransport(MPI_Comm comm) {
   MPI_Comm_set_errhandler(cart_, MPI_ERRORS_RETURN);
   check(MPI_Comm_rank(cart_, &rank_), "MPI_Comm_rank");
   check(MPI_Cart_coords(cart_, rank_, 2, coords_), "MPI_Cart_coords");
+  // A line's ranks keyed by their coordinate along it, so that its order is the rank grid's.
+  for (int axis : {0, 1}) {
+    check(MPI_Comm_split(cart_, coords_[1 - axis], coords_[axis], &lines_[axis]), "MPI_Comm_split");
+    MPI_Comm_set_errhandler(lines_[axis], MPI_ERRORS_RETURN);
+  }
 }
 
 MpiTransport::~MpiTransport() {
   int finalized = 0;
   MPI_Finalized(&finalized);
-  if (!finalized && cart_ != MPI_COMM_NULL) MPI_Comm_free(&cart_);
+  if (finalized) return;
+  for (MPI_Comm& line : lines_)
+    if (line != MPI_COMM_NULL) MPI_Comm_free(&line);
+  if (cart_ != MPI_COMM_NULL) MPI_Comm_free(&cart_);
 }
 
 int MpiTransport::rankAt(int rankRow, int rankCol) const {
@@ -118,19 +144,35 @@ std::vector<Bytes> MpiTransport::allGather(Channel channel, std::span<const std:
 
 void MpiTransport::allReduce(Channel channel, std::span<std::byte> value, const Combiner& combine) {
   if (ranks_ == 1) return;
-  MPI_Datatype type;
-  check(MPI_Type_contiguous(size(value.size()), MPI_BYTE, &type), "MPI_Type_contiguous");
-  check(MPI_Type_commit(&type), "MPI_Type_commit");
-  MPI_Op op;
-  check(MPI_Op_create(&combineValues, 1, &op), "MPI_Op_create");
-  currentCombiner = &combine;
-  currentSize = value.size();
-  const int code = MPI_Allreduce(MPI_IN_PLACE, value.data(), 1, type, op, cart_);
-  currentCombiner = nullptr;
-  MPI_Op_free(&op);
-  MPI_Type_free(&type);
-  check(code, "MPI_Allreduce");
+  check(withCombiner(value.size(), combine, true,
+                     [&](MPI_Datatype type, MPI_Op op) {
+                       return MPI_Allreduce(MPI_IN_PLACE, value.data(), 1, type, op, cart_);
+                     }),
+        "MPI_Allreduce");
   count(channel, ranks_ - 1, static_cast<std::int64_t>(ranks_ - 1) * value.size());
+}
+
+void MpiTransport::allReduceAlong(Channel channel, int axis, std::span<std::byte> value, const Combiner& combine) {
+  const int peers = dims_[axis] - 1;
+  if (peers == 0) return;
+  check(withCombiner(value.size(), combine, false,
+                     [&](MPI_Datatype type, MPI_Op op) {
+                       return MPI_Allreduce(MPI_IN_PLACE, value.data(), 1, type, op, lines_[axis]);
+                     }),
+        "MPI_Allreduce");
+  count(channel, peers, static_cast<std::int64_t>(peers) * value.size());
+}
+
+bool MpiTransport::exclusiveScanAlong(Channel channel, int axis, std::span<std::byte> value, const Combiner& combine) {
+  if (dims_[axis] == 1) return false;
+  check(withCombiner(value.size(), combine, false,
+                     [&](MPI_Datatype type, MPI_Op op) {
+                       return MPI_Exscan(MPI_IN_PLACE, value.data(), 1, type, op, lines_[axis]);
+                     }),
+        "MPI_Exscan");
+  const int later = dims_[axis] - 1 - coords_[axis];  // the ranks this one's value goes into
+  count(channel, later, static_cast<std::int64_t>(later) * value.size());
+  return coords_[axis] > 0;
 }
 
 }  // namespace radmesh::emu

@@ -2,8 +2,10 @@
 // The mesh machine's processes over MPI: the ranks of a communicator form a periodic Cartesian
 // grid (MPI_Dims_create, MPI_Cart_create with periods 1, 1), one block of the PE torus each.
 // Block edges move with MPI_Cart_shift and MPI_Sendrecv, router messages with MPI_Alltoallv,
-// reductions with MPI_Allreduce, gathers with MPI_Allgatherv. Every failed call throws
-// radmesh::mpi::MpiError naming the rank and the call.
+// reductions with MPI_Allreduce, gathers with MPI_Allgatherv; combinations along a rank row or
+// column (an integer scan's summaries) with MPI_Allreduce and MPI_Exscan of a non-commutative
+// operation on a communicator per line. Every failed call throws radmesh::mpi::MpiError naming
+// the rank and the call.
 #include <mpi.h>
 
 #include "emulator/transport.h"
@@ -29,11 +31,14 @@ class MpiTransport final : public Transport {
   std::vector<Bytes> allToAll(Channel channel, const std::vector<Bytes>& toRank) override;
   std::vector<Bytes> allGather(Channel channel, std::span<const std::byte> data) override;
   void allReduce(Channel channel, std::span<std::byte> value, const Combiner& combine) override;
+  void allReduceAlong(Channel channel, int axis, std::span<std::byte> value, const Combiner& combine) override;
+  bool exclusiveScanAlong(Channel channel, int axis, std::span<std::byte> value, const Combiner& combine) override;
 
  private:
   Bytes sendReceive(Channel channel, int to, int from, std::span<const std::byte> data);
 
   MPI_Comm cart_ = MPI_COMM_NULL;
+  MPI_Comm lines_[2] = {MPI_COMM_NULL, MPI_COMM_NULL};  // this rank's column and row, as `axis`
   int rank_ = 0;
   int ranks_ = 1;
   int dims_[2] = {0, 0};

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -259,6 +261,87 @@ TEST(DistributedMesh, ReductionsAndScansAreBitwiseTheOneProcessResults) {
   expectSameCounts(t);
 }
 
+TEST(DistributedMesh, IntegerScansAreTheOneProcessResults) {
+  Twin t(16, 16);
+  const int n = 256;
+  const auto ints = randomInts(n, -1000, 1000, 21);
+  const auto wide = randomInts(n, 0, 1 << 20, 22);  // shifted by 20 bits: sums beyond an int
+  const auto lengths = randomInts(n, 0, 3, 23);
+  const auto active = randomInts(n, 0, 2, 24);
+  const auto random = randomInts(n * 3, 0, 4, 25);
+  // Where segments start (PE, slot): nowhere (one segment over every rank), at random, at the
+  // first PE of every row, at every 8th column (where each block's piece of a row starts on 2 x 2
+  // ranks), and at one PE inside a block only, its segment running through the later blocks.
+  const std::vector<std::function<bool(int, int)>> patterns = {
+      [](int, int) { return false; }, [&](int pe, int k) { return random[pe * 3 + k] == 0; },
+      [](int pe, int k) { return pe % 16 == 0 && k == 0; }, [](int pe, int) { return pe % 8 == 0; },
+      [](int pe, int) { return pe == 99; }};
+  struct Results {
+    std::vector<std::vector<int>> ints;
+    std::vector<std::vector<std::int64_t>> wide;
+    std::vector<std::vector<std::vector<int>>> lists;
+    bool operator==(const Results&) const = default;
+  };
+  auto run = [&](MeshMachine& m) {
+    Plural<bool> condition(m), everyone(m, true);
+    load(condition, active);
+    Results r;
+    for (const auto& startsAt : patterns) {
+      Plural<int> x(m);
+      Plural<std::int64_t> w(m);
+      Plural<bool> start(m);
+      PeArray<int> values(m, "values");
+      PeArray<bool> flags(m, "flags");
+      load(x, ints);
+      for (int i = 0; i < m.blockSize(); ++i) {
+        const int pe = m.globalPe(i);
+        w[pe] = std::int64_t{wide[pe]} << 20, start[pe] = startsAt(pe, 0);
+        for (int k = 0; k < lengths[pe]; ++k) values.push(pe, ints[(pe * 3 + k) % n]), flags.push(pe, startsAt(pe, k));
+      }
+      for (const Plural<bool>* takesPart : {&everyone, &condition})
+        for (ScanKind kind : {ScanKind::Inclusive, ScanKind::Exclusive}) {
+          ActiveScope scope(m, *takesPart);
+          Plural<int> y(m, -7);
+          Plural<std::int64_t> z(m, -7);
+          PeArray<int> sums(m, "sums");
+          segmentedScan(m, y, x, start, kind);
+          segmentedScan(m, z, w, start, kind);
+          segmentedScan(m, sums, values, flags, kind);
+          r.ints.push_back(whole(y)), r.wide.push_back(whole(z)), r.lists.push_back(whole(sums));
+        }
+    }
+    return r;
+  };
+  const Results split = run(t.split), one = run(t.one);
+  EXPECT_TRUE(split == one);
+  // No starts, every PE taking part, inclusive: the last PE holds the sum of all.
+  EXPECT_EQ(one.ints[0].back(), std::accumulate(ints.begin(), ints.end(), 0));
+  EXPECT_GT(one.wide[0].back(), std::int64_t{1} << 32);
+  expectSameCounts(t);
+}
+
+// An integer scan sends a summary per PE row of the block (an int sum and a flag) along the rank
+// row twice (the exclusive scan to the later ranks, the rows' totals to all) and the block's total
+// down the rank column to the later ranks: no element crosses, so the bytes do not grow with the
+// PEs of other blocks.
+TEST(DistributedMesh, AnIntegerScanSendsRowSummariesNotElements) {
+  Twin t(64, 64);
+  MeshMachine& m = t.split;
+  Plural<int> x(m, 1), y(m);
+  Plural<bool> start(m, false);
+  Transport& transport = m.transport();
+  transport.resetTraffic();
+  segmentedScan(m, y, x, start, ScanKind::Inclusive);
+  const RankGrid ranks = transport.rankGrid();
+  const std::int64_t rows = 64 / ranks.rows, summary = sizeof(detail::RunSummary<int>);
+  const int laterInRow = ranks.cols - 1 - transport.rankCol(), laterInColumn = ranks.rows - 1 - transport.rankRow();
+  const Traffic sent = transport.traffic(Channel::Scan);
+  EXPECT_EQ(summary, 8);
+  EXPECT_EQ(sent.messages, laterInRow + (ranks.cols - 1) + laterInColumn);
+  EXPECT_EQ(sent.bytes, (laterInRow + ranks.cols - 1) * rows * summary + laterInColumn * summary);
+  m.forEachPe([&](int pe) { EXPECT_EQ(y[pe], pe + 1); });
+}
+
 TEST(DistributedMesh, SortIsTheOneProcessSortTiesIncluded) {
   Twin t(16, 16);
   const auto keys = randomInts(256 * 4, 0, 30, 14);  // many equal keys: the tie order shows
@@ -344,6 +427,7 @@ TEST(MeshTraffic, PerRankMessagesAndBytesOn64x64) {
   measure("reduceMax (int)", Channel::Reduce, [&] { reduceMax(m, k); });
   measure("reduceAdd (int)", Channel::Reduce, [&] { reduceAdd(m, k); });
   measure("reduceAdd (double)", Channel::Reduce, [&] { reduceAdd(m, x); });
+  measure("segmentedScan (int)", Channel::Scan, [&] { segmentedScan(m, out, v, start, ScanKind::Inclusive); });
   measure("segmentedScan (double)", Channel::Scan, [&] { segmentedScan(m, y, x, start, ScanKind::Inclusive); });
   measure("sortPairs (int, int)", Channel::Sort, [&] { sortPairs(m, k, v); });
   // An integer reduction is one MPI_Allreduce of the block's result to every peer.
