@@ -61,6 +61,7 @@ struct AccuracyArgs {
   std::vector<double> minElements{0.0};
   std::vector<double> adaptiveMinElements;
   std::vector<double> subdivideCells;
+  std::vector<std::string> elementRows{"auto"};  // uniform and adaptive run once per value (--element-rows)
   double splitContrast = 0.1;
   double untilUnshot = 0.0;  // > 0: every point also solved on to this unshot fraction, and measured there
 };

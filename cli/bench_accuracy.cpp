@@ -39,10 +39,13 @@ std::string traceLabel(const std::string& setting, int n, double cellM) {
 struct Subdivision {
   Subdivide subdivide = Subdivide::Off;
   double minElementM = 0.0;
+  ElementRows rows = ElementRows::Auto;
 };
 
 std::string label(const Subdivision& s) {
-  return s.subdivide == Subdivide::Off ? "off" : fmt::format("{} {}", toString(s.subdivide), s.minElementM);
+  if (s.subdivide == Subdivide::Off) return "off";
+  return s.rows == ElementRows::Auto ? fmt::format("{} {}", toString(s.subdivide), s.minElementM)
+                                     : fmt::format("{} {} {}", toString(s.subdivide), s.minElementM, toString(s.rows));
 }
 
 struct Point {
@@ -155,6 +158,7 @@ SolveOptions measuredOptions(const Setting& setting, int n, const Subdivision& s
   o.maxIterations = args.maxIterations;
   o.subdivide = subdivision.subdivide;
   o.minElementM = subdivision.minElementM;
+  o.elementRows = subdivision.rows;
   o.splitContrast = args.splitContrast;
   return o;
 }
@@ -223,7 +227,8 @@ std::vector<std::pair<double, double>> paretoFront(std::vector<std::pair<double,
 CsvTable pointsTable(const std::vector<Point>& points) {
   CsvTable t{.columns = {"projection", "ratio", "resolution", "cell_m", "patches", "ms_per_iteration", "seconds_to_95",
               "seconds_to_99", "error_at_95", "error_at_99", "image_rmse_at_95", "image_rmse_at_99", "memory_mib",
-              "subdivide", "min_element", "elements", "seconds_to_unshot", "error_at_unshot", "image_rmse_at_unshot"}};
+              "subdivide", "min_element", "elements", "seconds_to_unshot", "error_at_unshot", "image_rmse_at_unshot",
+              "element_rows"}};
   for (const Point& p : points)
     t.rows.push_back({toString(p.setting.projection), fmt::format("{}", p.setting.ratio), std::to_string(p.resolution),
                       fmt::format("{}", p.cellM), std::to_string(p.patches), fmt::format("{:.6g}", p.msPerIteration),
@@ -233,7 +238,7 @@ CsvTable pointsTable(const std::vector<Point>& points) {
                       fmt::format("{:.4g}", p.memoryMiB), toString(p.subdivision.subdivide),
                       fmt::format("{}", p.subdivision.minElementM), std::to_string(p.elements),
                       fmt::format("{:.6g}", p.secondsToUnshot), fmt::format("{:.6g}", p.errorAtUnshot),
-                      fmt::format("{:.4g}", p.imageErrorAtUnshot)});
+                      fmt::format("{:.4g}", p.imageErrorAtUnshot), toString(p.subdivision.rows)});
   return t;
 }
 
@@ -282,6 +287,13 @@ Plot errorVersusTime(const std::string& title, const std::string& errorLabel, co
 
 // The subdivide axis: picture error against time, a series per subdivide mode, each point labelled
 // with its cell and element size, the Pareto front in black. At --until-unshot when it was measured.
+// A point's --element-rows when it was not the default (older CSVs have no such column).
+std::string rowsNote(const CsvTable& points, size_t row) {
+  if (std::ranges::find(points.columns, "element_rows") == points.columns.end()) return "";
+  const std::string rows = points.text(row, "element_rows");
+  return rows == "auto" ? "" : " " + rows;
+}
+
 Plot subdivisionPlot(const std::string& sceneName, const CsvTable& points) {
   bool atUnshot = false;
   for (size_t row = 0; row < points.rows.size(); ++row) atUnshot |= points.number(row, "seconds_to_unshot") > 0;
@@ -301,10 +313,11 @@ Plot subdivisionPlot(const std::string& sceneName, const CsvTable& points) {
       if (seconds <= 0 || error < 0 || points.text(row, "subdivide") != modes[m].first) continue;
       series.points.emplace_back(seconds, std::max(error, 1e-9));
       all.push_back(series.points.back());
+      const std::string setting = fmt::format("{} {}", rowSetting(points, row), points.text(row, "resolution"));
       const std::string what = modes[m].first == "off"
-                                   ? fmt::format("{} cell {}", rowSetting(points, row), points.text(row, "cell_m"))
-                                   : fmt::format("{} cell {} el {}", rowSetting(points, row), points.text(row, "cell_m"),
-                                                 points.text(row, "min_element"));
+                                   ? fmt::format("{} cell {}", setting, points.text(row, "cell_m"))
+                                   : fmt::format("{} cell {} el {}{}", setting, points.text(row, "cell_m"),
+                                                 points.text(row, "min_element"), rowsNote(points, row));
       plot.settings.push_back(fmt::format("set label \"{}\" at {},{} offset 1,0.5 font ',8'", what, seconds,
                                           std::max(error, 1e-9)));
     }
@@ -395,7 +408,9 @@ std::vector<Subdivision> subdivisionsOf(double cell, const std::vector<double>& 
     if (mode == Subdivide::Off) out.push_back({mode, 0.0});
     if (mode == Subdivide::Off || !subdivided) continue;
     const bool ownList = mode == Subdivide::Adaptive && !args.adaptiveMinElements.empty();
-    for (double m : ownList ? args.adaptiveMinElements : args.minElements) out.push_back({mode, m});
+    for (const std::string& rows : args.elementRows)
+      for (double m : ownList ? args.adaptiveMinElements : args.minElements)
+        out.push_back({mode, m, parseElementRows(rows)});
   }
   return out;
 }
@@ -488,7 +503,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                     {"memory_mib", p.memoryMiB}, {"subdivide", toString(p.subdivision.subdivide)},
                     {"min_element", p.subdivision.minElementM}, {"elements", p.elements},
                     {"seconds_to_unshot", p.secondsToUnshot}, {"error_at_unshot", p.errorAtUnshot},
-                    {"image_rmse_at_unshot", p.imageErrorAtUnshot}});
+                    {"image_rmse_at_unshot", p.imageErrorAtUnshot}, {"element_rows", toString(p.subdivision.rows)}});
   nlohmann::json tracesJson = nlohmann::json::array();
   for (const Trace& trace : traces) {
     nlohmann::json points = nlohmann::json::array();

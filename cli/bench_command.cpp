@@ -94,6 +94,10 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--adaptive-min-element", args->adaptiveMinElements,
                   "Element sizes, metres, for adaptive instead of --min-element")->delimiter(',');
   cmd->add_option("--split-contrast", args->splitContrast, "With adaptive: the split threshold")->capture_default_str();
+  cmd->add_option("--element-rows", args->elementRows,
+                  "Element rows for uniform and adaptive, each measured: auto, share, rasterise (the solve's --element-rows)")
+      ->delimiter(',')
+      ->capture_default_str();
   cmd->add_option("--subdivide-cells", args->subdivideCells,
                   "The cells (of --cells) uniform and adaptive run on (default: the coarsest)")->delimiter(',');
   cmd->add_option("--until-unshot", args->untilUnshot,

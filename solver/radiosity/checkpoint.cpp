@@ -57,7 +57,10 @@ OptionList answerOptions(const SolveOptions& o) {
     list.push_back({"--cache-mb", fmt::format("{}", o.formFactorCacheBytes / 1048576.0)});
   }
   list.push_back({"--subdivide", toString(o.subdivide)});
-  if (o.subdivide != Subdivide::Off) list.push_back({"--min-element", fmt::format("{}", o.minElementM)});
+  if (o.subdivide != Subdivide::Off) {
+    list.push_back({"--min-element", fmt::format("{}", o.minElementM)});
+    list.push_back({"--element-rows", sharesElementRows(o) ? "share" : "rasterise"});
+  }
   if (o.subdivide == Subdivide::Adaptive) {
     list.push_back({"--split-contrast", fmt::format("{}", o.splitContrast)});
     list.push_back({"--split-shadows", o.splitShadows ? "on" : "off"});

@@ -134,6 +134,7 @@ TEST(CliSubdivide, BenchAccuracyMeasuresEachSubdivisionOnItsCells) {
     EXPECT_EQ(points[i]["min_element"].get<double>(), minElements[i]) << i;
     EXPECT_EQ(points[i]["patches"].get<int>(), patches[i]) << i;
     EXPECT_EQ(points[i]["projection"], "hemicube") << i;
+    EXPECT_EQ(points[i]["element_rows"], "auto") << i;
     // Every point reached both stops (-1: not reached).
     EXPECT_GT(points[i]["seconds_to_99"].get<double>(), 0.0) << i;
     EXPECT_GT(points[i]["seconds_to_unshot"].get<double>(), 0.0) << i;
@@ -154,10 +155,28 @@ TEST(CliSubdivide, BenchAccuracyMeasuresEachSubdivisionOnItsCells) {
   std::string header, line;
   std::getline(csv, header);
   EXPECT_EQ(header.substr(header.find("memory_mib")),
-            "memory_mib,subdivide,min_element,elements,seconds_to_unshot,error_at_unshot,image_rmse_at_unshot");
+            "memory_mib,subdivide,min_element,elements,seconds_to_unshot,error_at_unshot,image_rmse_at_unshot,"
+            "element_rows");
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 5);
+}
+
+// --element-rows: uniform and adaptive once per value, each named in the JSON.
+TEST(CliSubdivide, BenchAccuracyMeasuresEachElementRows) {
+  const std::string json = tempPath("furnace-rows.json");
+  const CommandRun run = radmesh(
+      "bench accuracy furnace --cells 1 --resolutions 16 --projections hemicube --reference-resolution 32 "
+      "--subdivide off,uniform --min-element 0.5 --element-rows rasterise,share --threads 1 --json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(json);
+  const auto points = nlohmann::json::parse(in)["points"];
+  ASSERT_EQ(points.size(), 3u);
+  EXPECT_EQ(points[0]["subdivide"], "off");
+  EXPECT_EQ(points[1]["element_rows"], "rasterise");
+  EXPECT_EQ(points[2]["element_rows"], "share");
+  EXPECT_EQ(points[2]["elements"].get<int>(), 24);
+  EXPECT_NE(run.output.find("uniform 0.5 share"), std::string::npos) << run.output;
 }
 
 TEST(CliSubdivide, BenchAccuracyRefusesASubdivisionItCannotRun) {
