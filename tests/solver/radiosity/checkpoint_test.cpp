@@ -277,8 +277,9 @@ std::unique_ptr<CellSolver> expectCellsResumeBitwise(const Scene& scene, const s
   EXPECT_TRUE(bitwiseEqual(resumed.radiosity(), straight->radiosity()));
   EXPECT_TRUE(bitwiseEqual(resumed.displayElementRadiosity(), straight->displayElementRadiosity()));
   EXPECT_EQ(resumed.elements().elements.size(), straight->elements().elements.size());
-  if (o.subdivide == Subdivide::Adaptive)
+  if (o.subdivide == Subdivide::Adaptive) {
     EXPECT_GT(straight->elements().elements.size(), elementsAtTheStop) << "no split after the stop";
+  }
   return straight;
 }
 
