@@ -13,7 +13,7 @@
 namespace radmesh {
 namespace {
 
-constexpr const char* kCells = "solve two-rooms --cells auto --cell 0.75 --resolution 32 --until-unshot 0.05 --quiet";
+constexpr const char* kCellsSolve = "solve two-rooms --cells auto --cell 0.75 --resolution 32 --until-unshot 0.05 --quiet";
 constexpr const char* kBench = "bench solve two-rooms --cells auto --cell 0.75 --projections hemicube --resolutions 32 "
                                "--until 1 --until-unshot 0.05 --threads 1";
 
@@ -62,9 +62,9 @@ std::string fileBytes(const std::string& path) {
 TEST(DistributedCli, TwoRanksWriteTheOneProcessStatsAndBake) {
   const std::string alone = tempPath("alone.json"), split = tempPath("split.json");
   const std::string aloneBake = tempPath("alone.glb"), splitBake = tempPath("split.glb");
-  const CommandRun one = radmesh(std::string(kCells) + " --stats " + alone + " --out " + aloneBake);
+  const CommandRun one = radmesh(std::string(kCellsSolve) + " --stats " + alone + " --out " + aloneBake);
   ASSERT_EQ(one.exitCode, 0) << one.output;
-  const CommandRun two = radmeshOnRanks(2, std::string(kCells) + " --distributed --stats " + split + " --out " + splitBake);
+  const CommandRun two = radmeshOnRanks(2, std::string(kCellsSolve) + " --distributed --stats " + split + " --out " + splitBake);
   ASSERT_EQ(two.exitCode, 0) << two.output;
   size_t summaries = 0;
   for (size_t at = two.output.find("solved: "); at != std::string::npos; at = two.output.find("solved: ", at + 1)) ++summaries;
@@ -199,7 +199,7 @@ TEST(DistributedCli, AnErrorOnOneRankEndsTheRunNamingTheRank) {
   const std::string folder = tempPath("stats.json");
   std::filesystem::create_directories(folder);
   const CommandRun run =
-      radmeshOnRanks(2, std::string(kCells) + " --distributed --stats " + folder + " --out " + tempPath("out.glb"));
+      radmeshOnRanks(2, std::string(kCellsSolve) + " --distributed --stats " + folder + " --out " + tempPath("out.glb"));
   EXPECT_NE(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("radmesh: rank 0: error: " + folder + ": cannot open for writing"), std::string::npos)
       << run.output;
@@ -218,7 +218,7 @@ struct Straight {
 };
 Straight straightRun() {
   const std::string stats = tempPath("straight.json"), bake = tempPath("straight.glb");
-  const CommandRun run = radmesh(std::string(kCells) + " --stats " + stats + " --out " + bake);
+  const CommandRun run = radmesh(std::string(kCellsSolve) + " --stats " + stats + " --out " + bake);
   EXPECT_EQ(run.exitCode, 0) << run.output;
   return {withoutTimeAndTraffic(nlohmann::json::parse(fileBytes(stats))), fileBytes(bake)};
 }
@@ -236,14 +236,14 @@ void expectTheStraightRun(const CommandRun& run, const Straight& straight, const
 TEST(DistributedCli, ACheckpointOfTwoRanksResumesOnTwoOrOne) {
   const Straight straight = straightRun();
   const std::string checkpoint = tempPath("two.ckpt"), stats = tempPath("resumed.json"), bake = tempPath("resumed.glb");
-  CommandRun run = radmeshOnRanks(2, std::string(kCells) + " --distributed --max-iterations 60 --checkpoint " + checkpoint);
+  CommandRun run = radmeshOnRanks(2, std::string(kCellsSolve) + " --distributed --max-iterations 60 --checkpoint " + checkpoint);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("wrote checkpoint " + checkpoint), std::string::npos) << run.output;
-  run = radmeshOnRanks(2, std::string(kCells) + " --distributed --resume " + checkpoint + " --stats " + stats +
+  run = radmeshOnRanks(2, std::string(kCellsSolve) + " --distributed --resume " + checkpoint + " --stats " + stats +
                               " --out " + bake);
   EXPECT_NE(run.output.find("resumed from " + checkpoint + " after round "), std::string::npos) << run.output;
   expectTheStraightRun(run, straight, stats, bake);
-  run = radmesh(std::string(kCells) + " --resume " + checkpoint + " --stats " + stats + " --out " + bake);
+  run = radmesh(std::string(kCellsSolve) + " --resume " + checkpoint + " --stats " + stats + " --out " + bake);
   expectTheStraightRun(run, straight, stats, bake);
 }
 
@@ -254,14 +254,14 @@ TEST(DistributedCli, ARankThatDiesOrAFailedMessageStopsTheRunAndItResumes) {
   for (const std::string how : {"kill", "fail"}) {
     const std::string checkpoint = tempPath(how + ".ckpt"), stats = tempPath(how + ".json");
     const std::string bake = tempPath(how + ".glb");
-    CommandRun run = radmeshOnRanks(2, std::string(kCells) + " --distributed --checkpoint " + checkpoint +
+    CommandRun run = radmeshOnRanks(2, std::string(kCellsSolve) + " --distributed --checkpoint " + checkpoint +
                                            " --checkpoint-every 0.000001 --out " + bake,
                                     "RADMESH_TEST_FAULT=1:3:" + how);
     EXPECT_NE(run.exitCode, 0) << run.output;
     const std::string names = how == "kill" ? "process rank 1" : "radmesh: rank 1: error: rank 1: MPI_Isend failed";
     EXPECT_NE(run.output.find(names), std::string::npos) << run.output;
     EXPECT_FALSE(std::filesystem::exists(bake));
-    run = radmeshOnRanks(2, std::string(kCells) + " --distributed --resume " + checkpoint + " --stats " + stats +
+    run = radmeshOnRanks(2, std::string(kCellsSolve) + " --distributed --resume " + checkpoint + " --stats " + stats +
                                 " --out " + bake);
     EXPECT_NE(run.output.find("after round 2 "), std::string::npos) << run.output;
     expectTheStraightRun(run, straight, stats, bake);
@@ -269,7 +269,7 @@ TEST(DistributedCli, ARankThatDiesOrAFailedMessageStopsTheRunAndItResumes) {
 }
 #else
 TEST(DistributedCli, RefusedWithoutMpi) {
-  for (const char* command : {kCells, kBench}) {
+  for (const char* command : {kCellsSolve, kBench}) {
     const CommandRun run = radmesh(std::string(command) + " --distributed");
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_NE(run.output.find("built without MPI"), std::string::npos) << run.output;

@@ -10,7 +10,7 @@
 namespace radmesh {
 namespace {
 
-Scene sceneOf(std::vector<std::vector<Vec3>> polygons, std::vector<int> materials = {}) {
+Scene greyRedScene(std::vector<std::vector<Vec3>> polygons, std::vector<int> materials = {}) {
   Scene s;
   s.source = "test";
   s.materials.push_back({"grey", Rgb(0.5), Rgb(1.0)});
@@ -31,7 +31,7 @@ std::vector<double> valuesAt(const DisplayMesh& mesh, const std::vector<Rgb>& b,
 
 // Two equal floor patches with B = 1 and B = 3: the shared edge's vertices show 2.
 TEST(DisplayRadiosity, SharedEdgeAveragesEqualPatches) {
-  const auto patches = meshScene(sceneOf({{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}}), 1.0);
+  const auto patches = meshScene(greyRedScene({{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}}), 1.0);
   ASSERT_EQ(patches.size(), 2u);
   const DisplayMesh mesh = buildDisplayMesh(patches);
   EXPECT_EQ(mesh.positions.size(), 6u);
@@ -49,7 +49,7 @@ TEST(DisplayRadiosity, SharedEdgeAveragesEqualPatches) {
 
 // Unequal areas: the larger patch speaks for more of the vertex.
 TEST(DisplayRadiosity, AveragesByArea) {
-  const auto patches = meshScene(sceneOf({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+  const auto patches = meshScene(greyRedScene({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
                                           {{1, 0, 0}, {1.25, 0, 0}, {1.25, 1, 0}, {1, 1, 0}}}),
                                  1.0);
   ASSERT_EQ(patches.size(), 2u);
@@ -61,7 +61,7 @@ TEST(DisplayRadiosity, AveragesByArea) {
 
 // A floor meeting a wall, and two coplanar materials: corners there stay apart.
 TEST(DisplayRadiosity, CreasesAndMaterialBoundariesAreNotAveraged) {
-  const Scene crease = sceneOf({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},    // floor, +z
+  const Scene crease = greyRedScene({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},    // floor, +z
                                 {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}});  // wall, +y
   const auto patches = meshScene(crease, 1.0);
   ASSERT_EQ(patches.size(), 2u);
@@ -72,7 +72,7 @@ TEST(DisplayRadiosity, CreasesAndMaterialBoundariesAreNotAveraged) {
   EXPECT_EQ(valuesAt(mesh, b, {0, 0, 0}), (std::vector<double>{1.0, 3.0}));
   EXPECT_EQ(valuesAt(mesh, b, {1, 0, 0}), (std::vector<double>{1.0, 3.0}));
 
-  const Scene twoMaterials = sceneOf(
+  const Scene twoMaterials = greyRedScene(
       {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}}}, {0, 1});
   EXPECT_EQ(buildDisplayMesh(meshScene(twoMaterials, 1.0)).positions.size(), 8u);
 }
@@ -80,7 +80,7 @@ TEST(DisplayRadiosity, CreasesAndMaterialBoundariesAreNotAveraged) {
 // A 4 x 4 grid of patches: 25 shared vertices, 32 triangles, counter-clockwise around the normal;
 // the centre vertex averages the four patches around it.
 TEST(DisplayRadiosity, GridWeldsIntoSharedVertices) {
-  const auto patches = meshScene(sceneOf({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}}), 0.25);
+  const auto patches = meshScene(greyRedScene({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}}), 0.25);
   const DisplayMesh mesh = buildDisplayMesh(patches);
   EXPECT_EQ(mesh.positions.size(), 25u);
   EXPECT_EQ(mesh.indices.size(), 32u * 3);
@@ -100,7 +100,7 @@ TEST(DisplayRadiosity, GridWeldsIntoSharedVertices) {
 TEST(DisplayRadiosity, WeldsFarFromTheOrigin) {
   const double x = 1e5 + 0.3, y = -1e5 + 0.7;
   const auto patches =
-      meshScene(sceneOf({{{x, y, 5}, {x + 0.2, y, 5}, {x + 0.2, y + 0.2, 5}, {x, y + 0.2, 5}},
+      meshScene(greyRedScene({{{x, y, 5}, {x + 0.2, y, 5}, {x + 0.2, y + 0.2, 5}, {x, y + 0.2, 5}},
                          {{x + 0.2, y, 5}, {x + 0.3, y, 5}, {x + 0.3, y + 0.2, 5}, {x + 0.2, y + 0.2, 5}}}),
                 1.0);
   ASSERT_EQ(patches.size(), 2u);
@@ -108,7 +108,7 @@ TEST(DisplayRadiosity, WeldsFarFromTheOrigin) {
 }
 
 TEST(DisplayRadiosity, RefusesRadiosityForTooFewPatches) {
-  const auto patches = meshScene(sceneOf({{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}}), 1.0);
+  const auto patches = meshScene(greyRedScene({{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}}), 1.0);
   EXPECT_THROW(vertexRadiosity(buildDisplayMesh(patches), {Rgb(1.0)}), std::invalid_argument);
 }
 

@@ -26,7 +26,7 @@ int emitterCount(const Scene& s) {
   return n;
 }
 
-double totalArea(const Scene& s) {
+double polygonAreaSum(const Scene& s) {
   double a = 0.0;
   for (const Polygon& p : s.polygons) a += polygonArea(p.vertices);
   return a;
@@ -58,7 +58,7 @@ TEST(BuiltinScenes, OfficeIsCloseToThePapersOffice) {
   EXPECT_EQ(meshScene(s).size(), 3956u);
   EXPECT_EQ(emitterCount(s), 6);
   EXPECT_NEAR(emittedPowerW(s), 6 * 1.2 * 0.6 * (10.0 + 9.6 + 8.8), 1e-9);
-  EXPECT_NEAR(totalArea(s), 247.85990895, 1e-6);
+  EXPECT_NEAR(polygonAreaSum(s), 247.85990895, 1e-6);
 }
 
 TEST(BuiltinScenes, OfficeShellIsClosedAndFacesIn) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "solver/geometry/openings.h"
 #include "solver/io/mgf_color.h"
@@ -16,7 +17,6 @@
 namespace radmesh {
 namespace {
 
-const double kPi = std::acos(-1.0);
 const std::string kRoom = test::dataPath("daylight/room_one_window.mgf").string();
 const std::string kClosedRoom = test::dataPath("daylight/room_closed.mgf").string();
 constexpr double kWindowM2 = 1.2 * 1.2;
@@ -25,18 +25,18 @@ constexpr double kWindowM2 = 1.2 * 1.2;
 // angle and azimuth midpoints, L(theta) sin(theta) cos(incidence).
 double quadratureLux(SkyModel model, double horizontalLux, const Vec3& n) {
   const int rows = 400, columns = 800;
-  const double lz = model == SkyModel::Uniform ? horizontalLux / kPi : 9.0 * horizontalLux / (7.0 * kPi);
+  const double lz = model == SkyModel::Uniform ? horizontalLux / std::numbers::pi : 9.0 * horizontalLux / (7.0 * std::numbers::pi);
   double sum = 0.0;
   for (int i = 0; i < rows; ++i) {
-    const double theta = (i + 0.5) * (kPi / 2) / rows;
+    const double theta = (i + 0.5) * (std::numbers::pi / 2) / rows;
     const double luminance = model == SkyModel::Uniform ? lz : lz * (1.0 + 2.0 * std::cos(theta)) / 3.0;
     for (int j = 0; j < columns; ++j) {
-      const double phi = (j + 0.5) * 2.0 * kPi / columns;
+      const double phi = (j + 0.5) * 2.0 * std::numbers::pi / columns;
       const Vec3 w(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
       sum += luminance * std::max(0.0, glm::dot(w, n)) * std::sin(theta);
     }
   }
-  return sum * (kPi / 2 / rows) * (2.0 * kPi / columns);
+  return sum * (std::numbers::pi / 2 / rows) * (2.0 * std::numbers::pi / columns);
 }
 
 TEST(Daylight, SkyClosedFormsMatchQuadratureAtEveryTilt) {
@@ -44,7 +44,7 @@ TEST(Daylight, SkyClosedFormsMatchQuadratureAtEveryTilt) {
     EXPECT_NEAR(skyIlluminanceLux(model, 10000.0, 1.0), 10000.0, 1e-9) << toString(model);
     EXPECT_EQ(skyIlluminanceLux(model, 10000.0, -1.0), 0.0) << toString(model);
     for (double degrees : {0.0, 30.0, 60.0, 90.0, 120.0, 150.0}) {
-      const double tilt = degrees * kPi / 180.0;
+      const double tilt = degrees * std::numbers::pi / 180.0;
       const Vec3 n(std::sin(tilt), 0.0, std::cos(tilt));
       // The midpoint rule's error on this grid is below 1e-5 of the horizontal illuminance.
       EXPECT_NEAR(skyIlluminanceLux(model, 10000.0, std::cos(tilt)), quadratureLux(model, 10000.0, n), 0.1)
@@ -53,7 +53,7 @@ TEST(Daylight, SkyClosedFormsMatchQuadratureAtEveryTilt) {
   }
   // A vertical window: half of a uniform sky; 0.396 of an overcast one (the zenith is brighter).
   EXPECT_NEAR(skyIlluminanceLux(SkyModel::Uniform, 1.0, 0.0), 0.5, 1e-15);
-  EXPECT_NEAR(skyIlluminanceLux(SkyModel::CieOvercast, 1.0, 0.0), 9.0 / (7.0 * kPi) * (kPi / 6.0 + 4.0 / 9.0), 1e-15);
+  EXPECT_NEAR(skyIlluminanceLux(SkyModel::CieOvercast, 1.0, 0.0), 9.0 / (7.0 * std::numbers::pi) * (std::numbers::pi / 6.0 + 4.0 / 9.0), 1e-15);
   EXPECT_NEAR(skyIlluminanceLux(SkyModel::CieOvercast, 1.0, 0.0), 0.3962, 1e-4);
 }
 
@@ -76,7 +76,7 @@ TEST(Daylight, TheWindowEmitsWhatTheSkyGivesAVerticalWindow) {
   for (SkyModel model : {SkyModel::Uniform, SkyModel::CieOvercast}) {
     std::vector<std::string> notes;
     const Scene room = loadScene(kRoom, nullptr, Daylight{10000.0, model}, &notes);
-    const double lux = model == SkyModel::Uniform ? 5000.0 : 10000.0 * 9.0 / (7.0 * kPi) * (kPi / 6.0 + 4.0 / 9.0);
+    const double lux = model == SkyModel::Uniform ? 5000.0 : 10000.0 * 9.0 / (7.0 * std::numbers::pi) * (std::numbers::pi / 6.0 + 4.0 / 9.0);
     // Summed over R, G, B, at MGF's white 179 lm/W.
     const double expectedW = 3.0 * kWindowM2 * lux / kWhiteEfficacyLmPerW;
     EXPECT_NEAR(emittedPowerW(room), expectedW, 1e-12 * expectedW) << toString(model);

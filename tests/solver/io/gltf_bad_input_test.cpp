@@ -9,12 +9,12 @@
 namespace radmesh {
 namespace {
 
-struct Refusal {
+struct GltfRefusal {
   std::string element;
   std::string what;  // the message includes this
 };
 
-Refusal refusal(const std::string& name) {
+GltfRefusal gltfRefusal(const std::string& name) {
   const std::string path = test::dataPath("bad/" + name).string();
   try {
     importGltf(path);
@@ -29,45 +29,45 @@ Refusal refusal(const std::string& name) {
 }
 
 TEST(GltfBadInput, TruncatedJsonNamesTheJsonAndKeepsTinygltfsMessage) {
-  const Refusal r = refusal("gltf_truncated.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_truncated.gltf");
   EXPECT_EQ(r.element, "JSON");
   EXPECT_NE(r.what.find("tinygltf: "), std::string::npos) << r.what;
   EXPECT_NE(r.what.find("parse error"), std::string::npos) << r.what;  // the JSON parser's words
 }
 
 TEST(GltfBadInput, TruncatedGlbNamesTheContainer) {
-  const Refusal r = refusal("gltf_truncated.glb");
+  const GltfRefusal r = gltfRefusal("gltf_truncated.glb");
   EXPECT_EQ(r.element, "GLB container");
   EXPECT_NE(r.what.find("492 bytes, its header declares 512"), std::string::npos) << r.what;
 }
 
 TEST(GltfBadInput, MissingExternalBufferNamesTheBuffer) {
-  const Refusal r = refusal("gltf_missing_buffer.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_missing_buffer.gltf");
   EXPECT_EQ(r.element, "buffer 0");
   EXPECT_NE(r.what.find("gltf_missing_buffer.bin' does not exist"), std::string::npos) << r.what;
 }
 
 TEST(GltfBadInput, IndexOutOfRangeNamesTheMeshPrimitive) {
-  const Refusal r = refusal("gltf_bad_index.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_bad_index.gltf");
   EXPECT_EQ(r.element, "mesh 'bad' primitive 0");
   EXPECT_NE(r.what.find("index 2 is 7, out of range for its 3 positions"), std::string::npos) << r.what;
 }
 
 TEST(GltfBadInput, NaNPositionNamesTheAccessorAndItsUser) {
-  const Refusal r = refusal("gltf_nan.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_nan.gltf");
   EXPECT_EQ(r.element, "accessor 0 (POSITION of mesh 'nan' primitive 0)");
   EXPECT_NE(r.what.find("element 1 has a NaN"), std::string::npos) << r.what;
 }
 
 TEST(GltfBadInput, AccessorReadingPastItsBufferViewNamesTheAccessor) {
-  const Refusal r = refusal("gltf_accessor_range.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_accessor_range.gltf");
   EXPECT_EQ(r.element, "accessor 0 (POSITION of mesh 'short' primitive 0)");
   EXPECT_NE(r.what.find("reads 10 elements from byte 0 of bufferView 0, which holds only 36 bytes"), std::string::npos)
       << r.what;
 }
 
 TEST(GltfBadInput, NegativeEmissionNamesTheMaterial) {
-  const Refusal r = refusal("gltf_negative_emission.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_negative_emission.gltf");
   EXPECT_EQ(r.element, "material 0 'lamp'");
   EXPECT_NE(r.what.find("negative"), std::string::npos) << r.what;
 }
@@ -75,19 +75,19 @@ TEST(GltfBadInput, NegativeEmissionNamesTheMaterial) {
 // glTF's default white (1, 1, 1) is lowered to the largest reflectance with a warning; a factor
 // outside [0, 1] breaks the format itself.
 TEST(GltfBadInput, BaseColorAboveOneNamesTheMaterial) {
-  const Refusal r = refusal("gltf_rho_above_one.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_rho_above_one.gltf");
   EXPECT_EQ(r.element, "material 0 'too_bright'");
   EXPECT_NE(r.what.find("baseColorFactor 1.500000 is outside [0, 1]"), std::string::npos) << r.what;
 }
 
 TEST(GltfBadInput, NodeCycleNamesTheNode) {
-  const Refusal r = refusal("gltf_node_cycle.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_node_cycle.gltf");
   EXPECT_EQ(r.element, "node 0 'a'");
   EXPECT_NE(r.what.find("cycle"), std::string::npos) << r.what;
 }
 
 TEST(GltfBadInput, MissingFileIsAClearError) {
-  const Refusal r = refusal("gltf_no_such_file.gltf");
+  const GltfRefusal r = gltfRefusal("gltf_no_such_file.gltf");
   EXPECT_NE(r.what.find("does not exist"), std::string::npos) << r.what;
 }
 

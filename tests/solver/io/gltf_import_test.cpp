@@ -20,7 +20,7 @@ namespace {
 using test::GltfBuilder;
 using test::TempDir;
 
-const std::vector<Vec3> kQuad = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+const std::vector<Vec3> kQuadVertices = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
 
 bool mentions(const std::vector<std::string>& warnings, const std::string& text) {
   return std::any_of(warnings.begin(), warnings.end(),
@@ -94,13 +94,13 @@ TEST(GltfImport, IndexedU8U16U32AndNonIndexedTrianglesGiveTheSameQuad) {
     GltfBuilder b;
     const int lamp = b.add("materials", {{"name", "lamp"}, {"emissiveFactor", {1, 1, 1}}});
     if (type == 0) {
-      b.addTriangles("quad", b.addPositions({kQuad[0], kQuad[1], kQuad[2], kQuad[0], kQuad[2], kQuad[3]}), -1, lamp);
+      b.addTriangles("quad", b.addPositions({kQuadVertices[0], kQuadVertices[1], kQuadVertices[2], kQuadVertices[0], kQuadVertices[2], kQuadVertices[3]}), -1, lamp);
     } else {
-      b.addTriangles("quad", b.addPositions(kQuad), b.addIndices({0, 1, 2, 0, 2, 3}, type), lamp);
+      b.addTriangles("quad", b.addPositions(kQuadVertices), b.addIndices({0, 1, 2, 0, 2, 3}, type), lamp);
     }
     const Scene s = importGltf(b.write(dir / ("quad" + std::to_string(type) + ".gltf")).string());
     ASSERT_EQ(s.polygons.size(), 1u) << "component type " << type;
-    EXPECT_EQ(s.polygons[0].vertices, kQuad) << "component type " << type;
+    EXPECT_EQ(s.polygons[0].vertices, kQuadVertices) << "component type " << type;
     EXPECT_EQ(s.polygons[0].origin, "mesh 'quad' primitive 0");
   }
 }
@@ -275,16 +275,16 @@ TEST(GltfImport, ExternalBinBufferBesideTheFile) {
   TempDir dir;
   GltfBuilder b;
   const int lamp = b.add("materials", {{"emissiveFactor", {1, 1, 1}}});
-  b.addTriangles("quad", b.addPositions(kQuad), b.addIndices({0, 1, 2, 0, 2, 3}), lamp);
+  b.addTriangles("quad", b.addPositions(kQuadVertices), b.addIndices({0, 1, 2, 0, 2, 3}), lamp);
   const Scene s = importGltf(b.write(dir / "external.gltf", "external.bin").string());
   ASSERT_EQ(s.polygons.size(), 1u);
-  EXPECT_EQ(s.polygons[0].vertices, kQuad);
+  EXPECT_EQ(s.polygons[0].vertices, kQuadVertices);
 }
 
 TEST(GltfImport, GlbWrittenByTheBakeExportReadsBack) {
   TempDir dir;
   DisplayMesh mesh;
-  mesh.positions = kQuad;
+  mesh.positions = kQuadVertices;
   mesh.normals.assign(4, Vec3(0, 0, 1));
   mesh.indices = {0, 1, 2, 0, 2, 3};
   const std::string path = (dir / "bake.glb").string();
@@ -292,7 +292,7 @@ TEST(GltfImport, GlbWrittenByTheBakeExportReadsBack) {
   std::vector<std::string> warnings;
   const Scene s = importGltf(path, &warnings);
   ASSERT_EQ(s.polygons.size(), 1u);
-  EXPECT_EQ(s.polygons[0].vertices, kQuad);
+  EXPECT_EQ(s.polygons[0].vertices, kQuadVertices);
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ TEST(GltfLights, ReadsEveryTypeThroughItsNodesWorldTransformAndWarnsOfRange) {
   EXPECT_NE(warnings[0].find("1 KHR_lights_punctual light(s) with a range"), std::string::npos) << warnings[0];
 }
 
-std::string refusal(const std::string& name) {
+std::string lightRefusal(const std::string& name) {
   const std::string path = test::dataPath("bad/" + name).string();
   try {
     loadScene(path);
@@ -61,17 +61,17 @@ std::string refusal(const std::string& name) {
 }
 
 TEST(GltfLights, BrokenLightsAreRefusedNamingTheLight) {
-  const std::string noType = refusal("gltf_light_no_type.gltf");
+  const std::string noType = lightRefusal("gltf_light_no_type.gltf");
   EXPECT_NE(noType.find("KHR_lights_punctual light 0 'bulb' |"), std::string::npos) << noType;
   EXPECT_NE(noType.find("no type"), std::string::npos) << noType;
-  const std::string unknown = refusal("gltf_light_unknown_type.gltf");
+  const std::string unknown = lightRefusal("gltf_light_unknown_type.gltf");
   EXPECT_NE(unknown.find("light 0 'panel' (node 1 'bulb node')"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("type 'area'"), std::string::npos) << unknown;
-  const std::string negative = refusal("gltf_light_negative_intensity.gltf");
+  const std::string negative = lightRefusal("gltf_light_negative_intensity.gltf");
   EXPECT_NE(negative.find("light 0 'bulb'"), std::string::npos) << negative;
   EXPECT_NE(negative.find("intensity -5"), std::string::npos) << negative;
   // JSON has no NaN or infinity: 1e999 is refused by the JSON reader.
-  EXPECT_NE(refusal("gltf_light_infinite_intensity.gltf").find("1e999"), std::string::npos);
+  EXPECT_NE(lightRefusal("gltf_light_infinite_intensity.gltf").find("1e999"), std::string::npos);
 }
 
 TEST(GltfLights, ValidationNamesALightWithNaNIntensityOrImpossibleCone) {

@@ -11,13 +11,13 @@
 namespace radmesh {
 namespace {
 
-struct Refusal {
+struct MgfRefusal {
   std::string file;
   std::string element;
   std::string what;
 };
 
-Refusal refusal(const std::string& name) {
+MgfRefusal mgfRefusal(const std::string& name) {
   const std::string path = test::dataPath("bad/" + name).string();
   try {
     importMgf(path);
@@ -33,7 +33,7 @@ Refusal refusal(const std::string& name) {
 
 // The error is in `name` itself, at `element`, and says `problem`.
 void expectRefused(const std::string& name, const std::string& element, const std::string& problem) {
-  const Refusal r = refusal(name);
+  const MgfRefusal r = mgfRefusal(name);
   EXPECT_EQ(r.file, test::dataPath("bad/" + name).string());
   EXPECT_EQ(r.element, element);
   EXPECT_NE(r.what.find(problem), std::string::npos) << r.what;
@@ -68,7 +68,7 @@ TEST(MgfBadInput, UndefinedMaterialNamesTheLine) {
 }
 
 TEST(MgfBadInput, WrongArgumentCountShowsTheRightForm) {
-  const Refusal r = refusal("mgf_wrong_arguments.mgf");
+  const MgfRefusal r = mgfRefusal("mgf_wrong_arguments.mgf");
   EXPECT_EQ(r.element, "line 6: cyl");
   EXPECT_NE(r.what.find("wrong number of arguments (2)"), std::string::npos) << r.what;
   EXPECT_NE(r.what.find("cyl v1 radius v2"), std::string::npos) << r.what;
@@ -76,7 +76,7 @@ TEST(MgfBadInput, WrongArgumentCountShowsTheRightForm) {
 
 TEST(MgfBadInput, IncludeCycleIsRefusedWithoutHanging) {
   // The cycle closes in the second file, at its include of the first.
-  const Refusal r = refusal("mgf_include_cycle.mgf");
+  const MgfRefusal r = mgfRefusal("mgf_include_cycle.mgf");
   EXPECT_EQ(r.file, test::dataPath("bad/mgf_include_cycle_b.mgf").string());
   EXPECT_EQ(r.element, "line 4: i");
   EXPECT_NE(r.what.find("include cycle: mgf_include_cycle.mgf -> mgf_include_cycle_b.mgf -> "

@@ -17,6 +17,7 @@ namespace {
 // two-rooms at the 0.75 m grid (374 patches): room A lit, room B lit only through the door.
 constexpr double kCellM = 0.75;
 using test::reflectedInRoom;
+using test::TwoRooms;
 using test::twoRoomsPartition;
 
 SolveOptions elementOptions(Subdivide how, double untilUnshot, int threads = 1) {
@@ -29,16 +30,16 @@ SolveOptions elementOptions(Subdivide how, double untilUnshot, int threads = 1) 
   return test::subdivided(o, how, how == Subdivide::Adaptive ? 0.2 : 0.0);
 }
 
-struct TwoRooms {
+TwoRooms twoRoomsAtTheCell() {
   Scene scene = builtinScene("two-rooms");
-  std::vector<Patch> patches = meshScene(scene, kCellM);
-};
+  return {scene, meshScene(scene, kCellM)};
+}
 
 // Each cell's ledger and the building's balance every round, with uniform and adaptive elements;
 // the building's elements tile its patches (each polygon's elements adding up to its patches' area),
 // and the cells' element counts add up to them.
 TEST(CellElements, LedgerBalancesAndElementsTileThePatches) {
-  const TwoRooms t;
+  const TwoRooms t = twoRoomsAtTheCell();
   for (Subdivide how : {Subdivide::Uniform, Subdivide::Adaptive}) {
     CellSolver solver(t.scene, t.patches, twoRoomsPartition(t.patches), elementOptions(how, 0.05), {kCellM, 16, 4});
     int rounds = 0;
@@ -68,7 +69,7 @@ TEST(CellElements, LedgerBalancesAndElementsTileThePatches) {
 // With uniform elements the cells solve makes the elements the whole solve does, in the building's
 // order, and a light without a patch lands on them bitwise as the whole solve's first iteration.
 TEST(CellElements, UniformElementsAndTheLightsShotAreTheWholeSolves) {
-  TwoRooms t;
+  TwoRooms t = twoRoomsAtTheCell();
   for (Material& m : t.scene.materials) m.emittance = Rgb(0.0);
   t.scene.lights.push_back({"lamp", LightType::Point, {2.0, 2.0, 2.2}, {0, 0, -1}, Rgb(2.0)});
   const SolveOptions o = elementOptions(Subdivide::Uniform, 0.05);
@@ -91,7 +92,7 @@ TEST(CellElements, UniformElementsAndTheLightsShotAreTheWholeSolves) {
 // the same elements, 4 x 4 portal bins. Measured: room A 0.37 %, room B 5.1 % off (the patches'
 // solve: B +5.8 % at this grid, docs/cells.md); the tolerances leave a margin.
 TEST(CellElements, UniformLightPerRoomNearTheWholeBuildingUniformSolve) {
-  const TwoRooms t;
+  const TwoRooms t = twoRoomsAtTheCell();
   SolveOptions o = elementOptions(Subdivide::Uniform, 0.01);
   o.effects = EffectsMode::All;
   CellSolver cells(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kCellM, 16, 4});
@@ -109,7 +110,7 @@ TEST(CellElements, UniformLightPerRoomNearTheWholeBuildingUniformSolve) {
 // Splits in a cell touch its elements alone: in the first round only room A shoots, and its
 // elements split while B's stay its patches; B's split once light through the door reaches them.
 TEST(CellElements, AdaptiveSplitsOnlyTheShootingCellsElements) {
-  const TwoRooms t;
+  const TwoRooms t = twoRoomsAtTheCell();
   CellSolver solver(t.scene, t.patches, twoRoomsPartition(t.patches), elementOptions(Subdivide::Adaptive, 0.05),
                     {kCellM, 16, 4});
   solver.round();
@@ -124,7 +125,7 @@ TEST(CellElements, AdaptiveSplitsOnlyTheShootingCellsElements) {
 
 // Bitwise the same on one thread and two, with uniform and adaptive elements.
 TEST(CellElements, SameForOneAndTwoThreads) {
-  const TwoRooms t;
+  const TwoRooms t = twoRoomsAtTheCell();
   for (Subdivide how : {Subdivide::Uniform, Subdivide::Adaptive}) {
     auto solve = [&](int threads) {
       CellSolver solver(t.scene, t.patches, twoRoomsPartition(t.patches), elementOptions(how, 0.05, threads),

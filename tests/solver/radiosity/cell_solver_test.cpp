@@ -9,25 +9,14 @@
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
+#include "tests/solver/radiosity/two_rooms_cells.h"
 
 namespace radmesh {
 namespace {
 
-// two-rooms (solver/io/builtin_scenes.cpp): room A is x 0..4, the dividing wall x 4..4.2, room B
-// x 4.2..8.2. A hand-built partition: the door passage belongs to B, the portal is the door in
-// A's wall face, x = 4.
-constexpr double kWallFaceX = 4.0;
-
-bool inRoomA(const Patch& p) { return p.centroid.x <= kWallFaceX + 1e-9; }
-
-CellPartition twoRoomsPartition(const std::vector<Patch>& patches, bool withDoor = true) {
-  CellPartition partition;
-  partition.cells = {{"A", {0, 0, 0}, {4, 4, 2.7}}, {"B", {4, 0, 0}, {8.2, 4, 2.7}}};
-  if (withDoor)
-    partition.portals = {{{{4, 1.55, 0}, {4, 2.45, 0}, {4, 2.45, 2.1}, {4, 1.55, 2.1}}, 0, 1, 0.9 * 2.1}};
-  for (const Patch& p : patches) partition.cellOfPatch.push_back(inRoomA(p) ? 0 : 1);
-  return partition;
-}
+using test::inRoomA;
+using test::TwoRooms;
+using test::twoRoomsPartition;
 
 SolveOptions testOptions(int threads = 1) {
   SolveOptions o;
@@ -38,11 +27,6 @@ SolveOptions testOptions(int threads = 1) {
   o.threads = threads;
   return o;
 }
-
-struct TwoRooms {
-  Scene scene = builtinScene("two-rooms");
-  std::vector<Patch> patches = meshScene(scene);
-};
 
 // Area-weighted mean of the reflected radiosity (B - E, summed over RGB) of one room's patches.
 double reflected(const TwoRooms& t, const std::vector<Rgb>& b, bool roomA) {

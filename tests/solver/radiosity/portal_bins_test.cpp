@@ -15,6 +15,7 @@ namespace radmesh {
 namespace {
 
 using test::reflectedInRoom;
+using test::TwoRooms;
 using test::twoRoomsPartition;
 
 // A beam: everything black but room B's floor (rho 0.5), lit by a panel high on A's far wall
@@ -94,11 +95,6 @@ TEST(PortalBins, TheBeamGoesOnThroughTheDoor) {
   EXPECT_LT(strip(diffuse) / strip(whole.radiosity()), 0.4);
   EXPECT_GT(dark(diffuse) / strip(diffuse), 0.2);
 }
-
-struct TwoRooms {
-  Scene scene = builtinScene("two-rooms");
-  std::vector<Patch> patches = meshScene(scene);
-};
 
 SolveOptions twoRoomsOptions(double untilUnshot, int threads = 1) {
   SolveOptions o = hemicube(threads);

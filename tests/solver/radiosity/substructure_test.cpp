@@ -20,7 +20,7 @@ namespace {
 TestScene litBox() { return closedBox(Vec3(1.0), 2, {grey(0.6), grey(0.3, 10.0)}, {0, 1, 0, 0, 0, 0}); }
 
 // A patch's B against the area mean of its elements'.
-void expectPatchesAreAreaMeans(const ProgressiveSolver& solver) {
+void expectPatchesAreUniformElementMeans(const ProgressiveSolver& solver) {
   const Elements e = subdivideUniform(solver.patches(), solver.options().minElementM);
   ASSERT_EQ(e.elements.size(), solver.elements().size());
   for (size_t p = 0; p < solver.patches().size(); ++p)
@@ -43,7 +43,7 @@ TEST(Substructure, LedgerBalancesAndPatchesAreAreaMeansOnEveryProjection) {
     solveChecked(solver);
     EXPECT_LE(solver.ledger().imbalance(), 1e-12);
     EXPECT_GT(solver.ledger().absorbed, 0.5 * solver.ledger().emitted);
-    expectPatchesAreAreaMeans(solver);
+    expectPatchesAreUniformElementMeans(solver);
   }
 }
 
@@ -55,7 +55,7 @@ TEST(Substructure, LedgerBalancesOnTheMeshBackEnd) {
   EXPECT_EQ(solver.elements().size(), 24u * 4u);
   solveChecked(solver);
   EXPECT_LE(solver.ledger().imbalance(), 1e-12);
-  expectPatchesAreAreaMeans(solver);
+  expectPatchesAreUniformElementMeans(solver);
   // The mesh agrees with the native back end's single plane (the same item buffers; form factors
   // summed in another order).
   o.backend = Backend::Native;

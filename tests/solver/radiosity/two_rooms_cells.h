@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "solver/cells/cell_partition.h"
+#include "solver/io/builtin_scenes.h"
+#include "solver/meshing/meshing.h"
 #include "solver/meshing/patch.h"
 
 namespace radmesh::test {
@@ -13,13 +15,21 @@ constexpr double kWallFaceX = 4.0;
 
 inline bool inRoomA(const Patch& p) { return p.centroid.x <= kWallFaceX + 1e-9; }
 
-inline CellPartition twoRoomsPartition(const std::vector<Patch>& patches) {
+// Without the door, two cells that see nothing of each other.
+inline CellPartition twoRoomsPartition(const std::vector<Patch>& patches, bool withDoor = true) {
   CellPartition partition;
   partition.cells = {{"A", {0, 0, 0}, {4, 4, 2.7}}, {"B", {4, 0, 0}, {8.2, 4, 2.7}}};
-  partition.portals = {{{{4, 1.55, 0}, {4, 2.45, 0}, {4, 2.45, 2.1}, {4, 1.55, 2.1}}, 0, 1, 0.9 * 2.1}};
+  if (withDoor)
+    partition.portals = {{{{4, 1.55, 0}, {4, 2.45, 0}, {4, 2.45, 2.1}, {4, 1.55, 2.1}}, 0, 1, 0.9 * 2.1}};
   for (const Patch& p : patches) partition.cellOfPatch.push_back(inRoomA(p) ? 0 : 1);
   return partition;
 }
+
+// The scene and its patches at the paper's cell size.
+struct TwoRooms {
+  Scene scene = builtinScene("two-rooms");
+  std::vector<Patch> patches = meshScene(scene);
+};
 
 // Area-weighted mean reflected radiosity (B - E, summed over RGB) of one room's receivers
 // (patches or elements, `b` theirs).
