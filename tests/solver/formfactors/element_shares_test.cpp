@@ -12,6 +12,9 @@
 #include "solver/backends/native/native_backend.h"
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/formfactors/near_field.h"
+#include "solver/projection/environment_projection.h"
+#include "solver/projection/hemicube.h"
+#include "solver/projection/scan_conversion.h"
 #include "tests/solver/closed_forms.h"
 #include "tests/solver/solver_test_helpers.h"
 
@@ -116,6 +119,38 @@ TEST(ElementShares, EachPatchsElementsReceiveExactlyThePatchsFormFactor) {
       EXPECT_EQ(elementRows[s].capturedFraction, patchRows[s].capturedFraction);
     }
   }
+}
+
+// What sharing tells a whole patch from a partly hidden one by: per patch, the pixel centres its
+// projection covers (covers(), pixel by pixel) and those of them that show it.
+TEST(ElementShares, TheProjectionCountsThePixelsEachPatchCoversAndShows) {
+  TestScene t;
+  addGrid(t.patches, Vec3(-0.1, -0.1, 0), Vec3(0.2, 0, 0), Vec3(0, 0.2, 0), 1, 1);    // the shooter, facing up
+  addGrid(t.patches, Vec3(-1, -1, 1), Vec3(0, 2, 0), Vec3(2, 0, 0), 1, 1);           // a ceiling, facing down
+  addGrid(t.patches, Vec3(0.1, 0.1, 0.5), Vec3(0, 0.4, 0), Vec3(0.4, 0, 0), 1, 1);  // under part of it
+  ThreadPool pool(1);
+  EnvironmentProjection projection(t.patches, makeHemicube(64), sceneNearDepth(t.patches), pool);
+  projection.project(0);
+  for (int p : {1, 2}) {
+    long long covered = 0, shown = 0;
+    const LocalPolygon local = toShooterFrame(t.patches[0], t.patches[p]);
+    for (size_t f = 0; f < projection.surface().faces.size(); ++f) {
+      const ProjectionFace& face = projection.surface().faces[f];
+      PolygonSetup setup;
+      if (!setUpProjection(local, face, sceneNearDepth(t.patches), p, 0, setup)) continue;
+      for (int row = 0; row < face.height; ++row)
+        for (int column = 0; column < face.width; ++column)
+          if (covers(setup, column, row)) {
+            ++covered;
+            shown += projection.itemBuffers()[f].item(column, row) == p;
+          }
+    }
+    EXPECT_EQ(projection.coveredPixels()[p], covered) << "patch " << p;
+    EXPECT_EQ(projection.shownPixels()[p], shown) << "patch " << p;
+  }
+  EXPECT_LT(projection.shownPixels()[1], projection.coveredPixels()[1]);   // the ceiling, partly hidden
+  EXPECT_EQ(projection.shownPixels()[2], projection.coveredPixels()[2]);   // the occluder, whole
+  EXPECT_GT(projection.shownPixels()[2], 100);
 }
 
 }  // namespace
