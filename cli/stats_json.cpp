@@ -38,7 +38,7 @@ nlohmann::json optionsJson(const SolveOptions& o) {
           {"resolution", o.resolution},     {"ratio", o.ratio},                       {"shooters", o.shooters},
           {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot},
           {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM},
-          {"element_rows", sharesElementRows(o) ? "share" : "rasterise"},
+          {"element_rows", toString(resolvedElementRows(o))},
           {"split_contrast", o.splitContrast}, {"split_shadows", o.splitShadows},
           {"split_regather", o.splitRegatherAll ? "all" : "last"}};
   if (o.backend == Backend::Mesh) j.update({{"pe_grid", peGridText(o.machine)}, {"pe_memory_kb", o.machine.memoryKb}});

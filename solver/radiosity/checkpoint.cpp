@@ -59,7 +59,7 @@ OptionList answerOptions(const SolveOptions& o) {
   list.push_back({"--subdivide", toString(o.subdivide)});
   if (o.subdivide != Subdivide::Off) {
     list.push_back({"--min-element", fmt::format("{}", o.minElementM)});
-    list.push_back({"--element-rows", sharesElementRows(o) ? "share" : "rasterise"});
+    list.push_back({"--element-rows", toString(resolvedElementRows(o))});
   }
   if (o.subdivide == Subdivide::Adaptive) {
     list.push_back({"--split-contrast", fmt::format("{}", o.splitContrast)});

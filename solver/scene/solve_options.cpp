@@ -187,9 +187,10 @@ ElementRows parseElementRows(const std::string& text) {
                     "form factor shared among its elements), rasterise (every element on the item buffer) or auto");
 }
 
-bool sharesElementRows(const SolveOptions& options) {
-  return options.subdivide != Subdivide::Off && options.projection != Projection::Analytic &&
-         options.backend == Backend::Native && options.elementRows != ElementRows::Rasterise;
+ElementRows resolvedElementRows(const SolveOptions& options) {
+  const bool shares = options.subdivide != Subdivide::Off && options.projection != Projection::Analytic &&
+                      options.backend == Backend::Native && options.elementRows != ElementRows::Rasterise;
+  return shares ? ElementRows::Share : ElementRows::Rasterise;
 }
 
 }  // namespace radmesh

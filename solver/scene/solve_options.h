@@ -107,7 +107,8 @@ const char* toString(Subdivide subdivide);
 Subdivide parseSubdivide(const std::string& text);    // throws OptionError
 const char* toString(ElementRows rows);
 ElementRows parseElementRows(const std::string& text);  // throws OptionError
-// Whether the back end the options name shares patches' form factors among their elements.
-bool sharesElementRows(const SolveOptions& options);
+// What --element-rows comes to for these options: Share where the back end shares patches' form
+// factors among their elements, else Rasterise (never Auto). Checkpoints and --stats record it.
+ElementRows resolvedElementRows(const SolveOptions& options);
 
 }  // namespace radmesh

@@ -48,7 +48,7 @@ NativeBackend::NativeBackend(const Scene& scene, const std::vector<Patch>& patch
       patches_(patches),
       receivers_(receivers),
       elements_(elements),
-      shares_(elements && sharesElementRows(options)),
+      shares_(elements && resolvedElementRows(options) == ElementRows::Share),
       options_(options),
       nearDepth_(sceneNearDepth(patches)),
       pool_(options.threads) {

@@ -13,7 +13,7 @@ class NativeBackend final : public FormFactorBackend {
  public:
   NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const SolveOptions& options);
   // Patches shoot, their elements receive (solver/meshing/elements.h): rows and item buffers index
-  // elements.elements. With sharesElementRows(options), the projection holds the patches and rows
+  // elements.elements. With resolvedElementRows(options) Share, the projection holds the patches and rows
   // share their form factors among the elements (solver/formfactors/element_shares.h).
   NativeBackend(const Scene& scene, const std::vector<Patch>& patches, const Elements& elements,
                 const SolveOptions& options);
