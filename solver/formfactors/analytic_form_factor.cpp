@@ -53,6 +53,11 @@ double smallPolygonFormFactor(std::span<const Vec3> vertices, Vec3 centroid, Vec
   }
   if (!inFront || !(diameter2 <= kSmallPolygonRatio * kSmallPolygonRatio * r2))
     return pointToPolygonFormFactor(vertices);
+  return differentialFormFactor(centroid, normal, areaM2);
+}
+
+double differentialFormFactor(Vec3 centroid, Vec3 normal, double areaM2) {
+  const double r2 = glm::dot(centroid, centroid);
   const double cosHere = centroid.z, cosThere = std::abs(glm::dot(normal, centroid));  // each times r
   return cosHere * cosThere * areaM2 / (std::numbers::pi * r2 * r2);
 }

@@ -1,6 +1,7 @@
 #include "solver/formfactors/element_shares.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "solver/formfactors/analytic_form_factor.h"
@@ -20,11 +21,12 @@ struct Cover {
   bool onSurface = false;
 };
 
-Cover coverOf(const ProjectedShot& shot, const LocalPolygon& local, double nearDepth, int item) {
+// Only the faces its patch reaches (`faces`, a bit each) can hold it.
+Cover coverOf(const ProjectedShot& shot, const LocalPolygon& local, double nearDepth, int item, unsigned faces) {
   Cover c;
   PolygonSetup setup;
   for (size_t f = 0; f < shot.surface.faces.size(); ++f) {
-    if (!setUpProjection(local, shot.surface.faces[f], nearDepth, item, 0, setup)) continue;
+    if (!(faces >> f & 1u) || !setUpProjection(local, shot.surface.faces[f], nearDepth, item, 0, setup)) continue;
     c.onSurface = true;
     const ItemBuffer& buffer = shot.itemBuffers[f];
     for (int row = setup.rowBegin; row < setup.rowEnd; ++row) {
@@ -50,6 +52,22 @@ bool cutByWindow(const ProjectedShot& shot, double nearDepth, int p) {
   return false;
 }
 
+// Whether every element of a patch (in the shooter's frame) passes smallPolygonFormFactor's test
+// because the patch does with room to spare: an element lies inside its patch, so it is in front
+// where the patch is, no wider, and no nearer than the patch's centroid less the patch's diameter.
+bool elementsSmallAndFar(const LocalPolygon& patch) {
+  double diameter2 = 0.0;
+  for (int k = 0; k < patch.vertexCount; ++k) {
+    if (!(patch.vertices[k].z > 0.0)) return false;
+    for (int m = k + 1; m < patch.vertexCount; ++m) {
+      const Vec3 d = patch.vertices[k] - patch.vertices[m];
+      diameter2 = std::max(diameter2, glm::dot(d, d));
+    }
+  }
+  const double diameter = std::sqrt(diameter2);
+  return diameter <= kSmallPolygonRatio * (glm::length(patch.centroid) - diameter);
+}
+
 // Patch p's form factor f shared among its elements: by their closed forms where the item buffer
 // shows the patch whole, each times the fraction of its pixels that show the patch where not.
 void sharePatch(const ProjectedShot& shot, double nearDepth, const PatchShot& patches, int p,
@@ -60,12 +78,22 @@ void sharePatch(const ProjectedShot& shot, double nearDepth, const PatchShot& pa
   const double patchShown = covered > 0 ? static_cast<double>(shown) / static_cast<double>(covered) : 1.0;
   weight.assign(static_cast<size_t>(end - begin), 0.0);
   double sum = 0.0;
-  for (int e = begin; e < end; ++e) {
+  // Then each element's closed form is the differential one, from its centroid and normal alone.
+  const bool smallAndFar = !partly && elementsSmallAndFar(toShooterFrame(shot.shooter, shot.patches[p]));
+  if (smallAndFar) {
+    for (int e = begin; e < end; ++e) {
+      const Patch& element = elements.elements[e];
+      weight[e - begin] = differentialFormFactor(toShooterFrame(shot.shooter, element.centroid),
+                                                 directionInShooterFrame(shot.shooter, element.normal), element.areaM2);
+      sum += weight[e - begin];
+    }
+  }
+  for (int e = begin; e < end && !smallAndFar; ++e) {
     const std::optional<LocalPolygon> local = inSurfaceView(shot.surface, shot.shooter, elements.elements[e]);
     if (!local) continue;
     double w = smallPolygonFormFactor(local->corners(), local->centroid, local->normal, elements.elements[e].areaM2);
     if (partly && w > 0.0) {
-      const Cover c = coverOf(shot, *local, nearDepth, p);
+      const Cover c = coverOf(shot, *local, nearDepth, p, patches.facesReached[p]);
       // An element between pixel centres takes its patch's shown fraction.
       w *= !c.onSurface ? 0.0 : c.covered > 0 ? static_cast<double>(c.showing) / static_cast<double>(c.covered)
                                               : patchShown;

@@ -24,6 +24,7 @@ struct PatchShot {
   std::span<const char> seenFromFront;
   std::span<const long long> coveredPixels;  // pixel centres its projection covers
   std::span<const long long> shownPixels;    // those showing it
+  std::span<const unsigned> facesReached;    // bit f: its projection reaches face f
 };
 
 // Fills, per element, its form factor and whether the shooter sees its front (its patch's side).

@@ -49,17 +49,18 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
   std::vector<double> size(n);
   for (int i = 0; i < n; ++i) size[i] = diameter(patches[i]);
   // Shooters in groups by diameter, halving from the largest; per group, the receivers' centroids
-  // bucketed in cells as wide as its largest diameter: a shooter's near receivers lie in the 3 x 3
-  // x 3 cells around its own, and no shooter searches cells much wider than itself.
+  // bucketed in cells half as wide as its largest diameter: a shooter searches only the cells its
+  // reach (its diameter) overlaps, at most 5 x 5 x 5 of them, never cells much wider than itself.
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
   std::vector<std::pair<Cell, int>> sorted(receivers.size());
   for (size_t group = 0; group < order.size();) {
-    const double cellSize = size[order[group]];
-    if (!(cellSize > 0.0)) break;  // the rest have no extent, so no near receivers
+    const double groupSize = size[order[group]];
+    if (!(groupSize > 0.0)) break;  // the rest have no extent, so no near receivers
+    const double cellSize = 0.5 * groupSize;
     size_t end = group;
-    while (end < order.size() && size[order[end]] > 0.5 * cellSize) ++end;
+    while (end < order.size() && size[order[end]] > 0.5 * groupSize) ++end;
     auto cellOf = [&](const Vec3& c) {
       return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
                   std::llround(std::floor(c.z / cellSize))};
@@ -69,16 +70,15 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
     for (size_t k = group; k < end; ++k) {
       const int i = order[k];
       const Patch& shooter = patches[i];
-      const Cell home = cellOf(shooter.centroid);
-      for (long long dx = -1; dx <= 1; ++dx)
-        for (long long dy = -1; dy <= 1; ++dy) {  // the cells along z are consecutive in `sorted`
-          const Cell from{home[0] + dx, home[1] + dy, home[2] - 1};
-          auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{from, -1});
-          for (; it != sorted.end() && it->first[0] == from[0] && it->first[1] == from[1] && it->first[2] <= home[2] + 1;
-               ++it) {
+      const double reach = size[i];
+      const Cell low = cellOf(shooter.centroid - Vec3(reach)), high = cellOf(shooter.centroid + Vec3(reach));
+      for (long long x = low[0]; x <= high[0]; ++x)
+        for (long long y = low[1]; y <= high[1]; ++y) {  // the cells along z are consecutive in `sorted`
+          auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{Cell{x, y, low[2]}, -1});
+          for (; it != sorted.end() && it->first[0] == x && it->first[1] == y && it->first[2] <= high[2]; ++it) {
             const int j = it->second;
-            if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < size[i])) continue;
-            if (partlyInFront(receivers[j], shooter, size[i]) && partlyInFront(shooter, receivers[j], size[i]))
+            if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < reach)) continue;
+            if (partlyInFront(receivers[j], shooter, reach) && partlyInFront(shooter, receivers[j], reach))
               near[i].push_back(j);
           }
         }

@@ -39,6 +39,7 @@ void EnvironmentProjection::patchesChanged() {
   coveredPixels_.assign(n, 0);
   shownPixels_.assign(n, 0);
   seenFromFront_.assign(n, 0);
+  facesReached_.assign(n, 0);
   for (Band& band : bands_) band.setups.clear();  // they point into chunkSetups_
   chunkSetups_.assign((n + kChunkPatches - 1) / kChunkPatches,
                       std::vector<std::vector<PolygonSetup>>(surface_.faces.size()));
@@ -54,6 +55,7 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
     for (int j = chunk * kChunkPatches; j < end; ++j) {
       projectedArea_[j] = 0.0;
       seenFromFront_[j] = 0;
+      facesReached_[j] = 0;
       if (j == skip) continue;
       const std::optional<LocalPolygon> local = inSurfaceView(surface_, from, patches_[j]);
       if (!local) continue;
@@ -61,9 +63,10 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
       seenFromFront_[j] = parallel ? local->normal.z < 0.0 : local->seenFromFront();
       for (size_t f = 0; f < out.size(); ++f) {
         PolygonSetup& setup = out[f].emplace_back();  // set up in place: it is a few hundred bytes
-        if (setUpProjection(*local, surface_.faces[f], nearDepth_, j, rank_[j], setup))
+        if (setUpProjection(*local, surface_.faces[f], nearDepth_, j, rank_[j], setup)) {
           projectedArea_[j] += setup.areaPixels;
-        else
+          facesReached_[j] |= 1u << f;
+        } else
           out[f].pop_back();
       }
     }

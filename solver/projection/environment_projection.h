@@ -41,6 +41,9 @@ class EnvironmentProjection {
   // many of them show it (fewer: something hides part of it, or a coplanar neighbour won a tie).
   const std::vector<long long>& coveredPixels() const { return coveredPixels_; }
   const std::vector<long long>& shownPixels() const { return shownPixels_; }
+  // After project(), per patch: bit f set when its projection reaches face f (a patch's part, an
+  // element, reaches no other face).
+  const std::vector<unsigned>& facesReached() const { return facesReached_; }
 
  private:
   struct Band {  // rows [rowBegin, rowEnd) of one face
@@ -75,6 +78,7 @@ class EnvironmentProjection {
   std::vector<long long> coveredPixels_;
   std::vector<long long> shownPixels_;
   std::vector<char> seenFromFront_;
+  std::vector<unsigned> facesReached_;
 };
 
 }  // namespace radmesh

@@ -24,12 +24,16 @@ Vec3 toShooterFrame(const Patch& shooter, const Vec3& point) {
   return {glm::dot(d, shooter.frame.u), glm::dot(d, shooter.frame.v), glm::dot(d, shooter.frame.n)};
 }
 
+Vec3 directionInShooterFrame(const Patch& shooter, const Vec3& direction) {
+  const Frame& f = shooter.frame;
+  return {glm::dot(direction, f.u), glm::dot(direction, f.v), glm::dot(direction, f.n)};
+}
+
 LocalPolygon toShooterFrame(const Patch& shooter, const Patch& patch) {
   LocalPolygon local;
   local.vertexCount = patch.vertexCount;
   for (int k = 0; k < patch.vertexCount; ++k) local.vertices[k] = toShooterFrame(shooter, patch.vertices[k]);
-  const Frame& f = shooter.frame;
-  local.normal = {glm::dot(patch.normal, f.u), glm::dot(patch.normal, f.v), glm::dot(patch.normal, f.n)};
+  local.normal = directionInShooterFrame(shooter, patch.normal);
   local.centroid = toShooterFrame(shooter, patch.centroid);
   local.planeOffset = glm::dot(local.normal, local.centroid);
   return local;

@@ -49,6 +49,7 @@ struct LocalPolygon {
 
 LocalPolygon toShooterFrame(const Patch& shooter, const Patch& patch);
 Vec3 toShooterFrame(const Patch& shooter, const Vec3& point);
+Vec3 directionInShooterFrame(const Patch& shooter, const Vec3& direction);
 // The patch in the shooter's frame, or nothing when it lies wholly behind the shooter, where no
 // projection face sees it: the first step of the projection phase in both back ends.
 std::optional<LocalPolygon> inShooterView(const Patch& shooter, const Patch& patch);

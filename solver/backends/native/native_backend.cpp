@@ -148,7 +148,7 @@ void NativeBackend::shareShot(EnvironmentProjection& projection, int shooter) {
                            projection.depthTieRank(), projection.projectedAreaPixels()};
   if (options_.subPixelReceivers) refineSubPixelReceivers(shot, pool_, patchFormFactors_);
   const PatchShot patchShot{patchFormFactors_, patchSeenFromFront_, projection.coveredPixels(),
-                            projection.shownPixels()};
+                            projection.shownPixels(), projection.facesReached()};
   shareAmongElements(shot, nearDepth_, patchShot, *elements_, pool_, formFactors_, seenFromFront_);
 }
 

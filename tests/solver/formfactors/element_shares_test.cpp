@@ -133,11 +133,13 @@ TEST(ElementShares, TheProjectionCountsThePixelsEachPatchCoversAndShows) {
   projection.project(0);
   for (int p : {1, 2}) {
     long long covered = 0, shown = 0;
+    unsigned faces = 0;
     const LocalPolygon local = toShooterFrame(t.patches[0], t.patches[p]);
     for (size_t f = 0; f < projection.surface().faces.size(); ++f) {
       const ProjectionFace& face = projection.surface().faces[f];
       PolygonSetup setup;
       if (!setUpProjection(local, face, sceneNearDepth(t.patches), p, 0, setup)) continue;
+      faces |= 1u << f;
       for (int row = 0; row < face.height; ++row)
         for (int column = 0; column < face.width; ++column)
           if (covers(setup, column, row)) {
@@ -147,10 +149,54 @@ TEST(ElementShares, TheProjectionCountsThePixelsEachPatchCoversAndShows) {
     }
     EXPECT_EQ(projection.coveredPixels()[p], covered) << "patch " << p;
     EXPECT_EQ(projection.shownPixels()[p], shown) << "patch " << p;
+    EXPECT_EQ(projection.facesReached()[p], faces) << "patch " << p;
   }
+  EXPECT_EQ(projection.facesReached()[1], 0b11111u);  // the ceiling reaches past every side face's edge
   EXPECT_LT(projection.shownPixels()[1], projection.coveredPixels()[1]);   // the ceiling, partly hidden
   EXPECT_EQ(projection.shownPixels()[2], projection.coveredPixels()[2]);   // the occluder, whole
   EXPECT_GT(projection.shownPixels()[2], 100);
+}
+
+// A patch the item buffer shows whole shares by its elements' closed forms (smallPolygonFormFactor
+// from the shooter's centroid), whether near (each element the exact closed form) or far and small
+// against its distance (each the differential form, found without its corners).
+TEST(ElementShares, AWholePatchSharesInProportionToItsElementsClosedForms) {
+  TestScene t;
+  addGrid(t.patches, Vec3(-0.1, -0.1, 0), Vec3(0.2, 0, 0), Vec3(0, 0.2, 0), 1, 1);      // the shooter, facing up
+  addGrid(t.patches, Vec3(-1, -1, 1), Vec3(0, 2, 0), Vec3(2, 0, 0), 1, 1);             // a ceiling, facing down
+  addGrid(t.patches, Vec3(0.3, 0.2, 0.9), Vec3(0, 0.05, 0), Vec3(0.05, 0, 0), 1, 1);   // a far, small tile
+  addGrid(t.patches, Vec3(-0.6, -0.1, 0.4), Vec3(0, 0.2, 0), Vec3(0.2, 0, 0), 1, 1);   // a near one
+  const Elements elements = subdivideUniform(t.patches, 0.025);
+  ThreadPool pool(1);
+  const double nearDepth = sceneNearDepth(t.patches);
+  EnvironmentProjection projection(t.patches, makeHemicube(64), nearDepth, pool);
+  projection.project(0);
+  const ProjectedShot shot{t.patches, t.patches[0], projection.surface(), projection.itemBuffers(),
+                           projection.depthTieRank(), projection.projectedAreaPixels()};
+  const PatchShot patchShot{projection.pixelFormFactors(), projection.seenFromFront(), projection.coveredPixels(),
+                            projection.shownPixels(), projection.facesReached()};
+  std::vector<double> formFactors;
+  std::vector<char> front;
+  shareAmongElements(shot, nearDepth, patchShot, elements, pool, formFactors, front);
+  const double tileDiameter = 0.05 * std::sqrt(2.0);
+  ASSERT_LT(tileDiameter, kSmallPolygonRatio * (glm::length(t.patches[2].centroid) - tileDiameter));  // far
+  for (int p : {2, 3}) {
+    SCOPED_TRACE(p);
+    ASSERT_EQ(projection.shownPixels()[p], projection.coveredPixels()[p]);  // whole
+    const int begin = elements.first[p], end = elements.first[p + 1];
+    ASSERT_GE(end - begin, 4);
+    std::vector<double> closed;
+    double sum = 0.0;
+    for (int e = begin; e < end; ++e) {
+      const LocalPolygon local = toShooterFrame(t.patches[0], elements.elements[e]);
+      closed.push_back(smallPolygonFormFactor(local.corners(), local.centroid, local.normal, elements.elements[e].areaM2));
+      sum += closed.back();
+    }
+    for (int e = begin; e < end; ++e) {
+      EXPECT_DOUBLE_EQ(formFactors[e], projection.pixelFormFactors()[p] * closed[e - begin] / sum);
+      EXPECT_EQ(front[e], 1);
+    }
+  }
 }
 
 }  // namespace
