@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/projection/projection.h"
@@ -33,7 +32,6 @@ bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
   return false;
 }
 
-using Cell = std::array<long long, 3>;
 
 }  // namespace
 
@@ -43,49 +41,63 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
 
 std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches,
                                                      const std::vector<Patch>& receivers) {
-  const int n = static_cast<int>(patches.size());
-  const bool selfReceives = &patches == &receivers;
-  std::vector<std::vector<int>> near(n);
-  std::vector<double> size(n);
-  for (int i = 0; i < n; ++i) size[i] = diameter(patches[i]);
-  // Shooters in groups by diameter, halving from the largest; per group, the receivers' centroids
-  // bucketed in cells half as wide as its largest diameter: a shooter searches only the cells its
-  // reach (its diameter) overlaps, at most 5 x 5 x 5 of them, never cells much wider than itself.
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
-  std::vector<std::pair<Cell, int>> sorted(receivers.size());
-  for (size_t group = 0; group < order.size();) {
-    const double groupSize = size[order[group]];
-    if (!(groupSize > 0.0)) break;  // the rest have no extent, so no near receivers
-    const double cellSize = 0.5 * groupSize;
-    size_t end = group;
-    while (end < order.size() && size[order[end]] > 0.5 * groupSize) ++end;
-    auto cellOf = [&](const Vec3& c) {
-      return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
-                  std::llround(std::floor(c.z / cellSize))};
-    };
-    for (size_t j = 0; j < receivers.size(); ++j) sorted[j] = {cellOf(receivers[j].centroid), static_cast<int>(j)};
-    std::sort(sorted.begin(), sorted.end());
-    for (size_t k = group; k < end; ++k) {
-      const int i = order[k];
-      const Patch& shooter = patches[i];
-      const double reach = size[i];
-      const Cell low = cellOf(shooter.centroid - Vec3(reach)), high = cellOf(shooter.centroid + Vec3(reach));
-      for (long long x = low[0]; x <= high[0]; ++x)
-        for (long long y = low[1]; y <= high[1]; ++y) {  // the cells along z are consecutive in `sorted`
-          auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair<Cell, int>{Cell{x, y, low[2]}, -1});
-          for (; it != sorted.end() && it->first[0] == x && it->first[1] == y && it->first[2] <= high[2]; ++it) {
-            const int j = it->second;
-            if ((selfReceives && j == i) || !(glm::length(receivers[j].centroid - shooter.centroid) < reach)) continue;
-            if (partlyInFront(receivers[j], shooter, reach) && partlyInFront(shooter, receivers[j], reach))
-              near[i].push_back(j);
-          }
-        }
-      std::sort(near[i].begin(), near[i].end());
-    }
-    group = end;
+  NearFieldFinder finder(patches, receivers);
+  std::vector<std::vector<int>> near(patches.size());
+  for (size_t i = 0; i < patches.size(); ++i) near[i] = finder.receiversNear(static_cast<int>(i));
+  return near;
+}
+
+NearFieldFinder::NearFieldFinder(const std::vector<Patch>& shooters, const std::vector<Patch>& receivers)
+    : shooters_(shooters), receivers_(receivers), near_(shooters.size()), found_(shooters.size(), 0) {
+  for (const Patch& p : shooters) size_.push_back(diameter(p));
+  for (double s : size_) largest_ = std::max(largest_, s);
+}
+
+NearFieldFinder::Cell NearFieldFinder::Grid::cellOf(const Vec3& c) const {
+  return Cell{std::llround(std::floor(c.x / cellSize)), std::llround(std::floor(c.y / cellSize)),
+              std::llround(std::floor(c.z / cellSize))};
+}
+
+// Shooters in classes by diameter, halving from the largest; a class's grid has cells half as wide
+// as its largest diameter, so a shooter searches only the cells its reach (its diameter) overlaps,
+// at most 5 x 5 x 5 of them, and never cells much wider than itself.
+const NearFieldFinder::Grid& NearFieldFinder::gridFor(double size) {
+  size_t k = 0;
+  double top = largest_;
+  while (size <= 0.5 * top) top *= 0.5, ++k;
+  if (grids_.size() <= k) grids_.resize(k + 1);
+  Grid& grid = grids_[k];
+  if (grid.cellSize == 0.0) {
+    grid.cellSize = 0.5 * top;
+    grid.sorted.resize(receivers_.size());
+    for (size_t j = 0; j < receivers_.size(); ++j) grid.sorted[j] = {grid.cellOf(receivers_[j].centroid), static_cast<int>(j)};
+    std::sort(grid.sorted.begin(), grid.sorted.end());
+    for (const auto& [cell, j] : grid.sorted) grid.centroids.push_back(receivers_[j].centroid);
   }
+  return grid;
+}
+
+const std::vector<int>& NearFieldFinder::receiversNear(int i) {
+  std::vector<int>& near = near_[i];
+  const double reach = size_[i];
+  if (found_[i] || !(reach > 0.0)) return near;  // a shooter of no extent has no near receivers
+  found_[i] = 1;
+  const bool selfReceives = &shooters_ == &receivers_;
+  const Patch& shooter = shooters_[i];
+  const Grid& grid = gridFor(reach);
+  const Cell low = grid.cellOf(shooter.centroid - Vec3(reach)), high = grid.cellOf(shooter.centroid + Vec3(reach));
+  for (long long x = low[0]; x <= high[0]; ++x)
+    for (long long y = low[1]; y <= high[1]; ++y) {
+      auto it = std::lower_bound(grid.sorted.begin(), grid.sorted.end(), std::pair<Cell, int>{Cell{x, y, low[2]}, -1});
+      for (; it != grid.sorted.end() && it->first[0] == x && it->first[1] == y && it->first[2] <= high[2]; ++it) {
+        const int j = it->second;
+        const Vec3& centroid = grid.centroids[it - grid.sorted.begin()];
+        if ((selfReceives && j == i) || !(glm::length(centroid - shooter.centroid) < reach)) continue;
+        if (partlyInFront(receivers_[j], shooter, reach) && partlyInFront(shooter, receivers_[j], reach))
+          near.push_back(j);
+      }
+    }
+  std::sort(near.begin(), near.end());
   return near;
 }
 

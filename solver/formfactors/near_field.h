@@ -5,6 +5,7 @@
 // perpendicular ones sharing an edge: 0.2000 against 0.1901). For those pairs only, the form factor becomes an area-to-area estimate: the analytic
 // point-to-polygon form factor averaged over sub-points of the shooter, times the visibility the
 // projection measured.
+#include <array>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,36 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
 // receiving: per shooter patch, the receivers in its near field.
 std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches,
                                                      const std::vector<Patch>& receivers);
+
+// The same, one shooter at a time, each found when first asked and kept: a solve stopped early
+// asks for the few patches that shot (office3 at 10 % unshot: 311 of 13382). Holds both lists by
+// reference.
+class NearFieldFinder {
+ public:
+  NearFieldFinder(const std::vector<Patch>& shooters, const std::vector<Patch>& receivers);
+  const std::vector<int>& receiversNear(int shooter);
+
+ private:
+  using Cell = std::array<long long, 3>;
+  // The receivers' centroids in cells of one size, sorted by cell; a cell's run along z is
+  // consecutive, and the centroids are copied in the same order so the distance tests walk
+  // memory in sequence.
+  struct Grid {
+    double cellSize = 0.0;
+    std::vector<std::pair<Cell, int>> sorted;
+    std::vector<Vec3> centroids;
+    Cell cellOf(const Vec3& point) const;
+  };
+  const Grid& gridFor(double size);
+
+  const std::vector<Patch>& shooters_;
+  const std::vector<Patch>& receivers_;
+  std::vector<double> size_;  // per shooter, its diameter
+  double largest_ = 0.0;
+  std::vector<Grid> grids_;   // by size class: shooters no larger than largest_ / 2^k and more than half that
+  std::vector<std::vector<int>> near_;
+  std::vector<char> found_;
+};
 
 // The mean over the shooter's area of the point-to-polygon form factor to the receiver, without
 // occlusion: the shooter's triangles cut into subdivisions^2 triangles each, one point at the

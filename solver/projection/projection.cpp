@@ -97,13 +97,27 @@ bool projectOntoFace(const LocalPolygon& patch, const ProjectionFace& face, doub
   if (face.parallel) return projectParallel(patch, face, out);
   if (std::abs(patch.planeOffset) <= nearDepth) return false;  // edge-on: a line, no area
 
+  const double scaleA = face.width / (face.a1 - face.a0);
+  const double scaleB = face.height / (face.b1 - face.b0);
+  // The window widened by two pixels: a polygon wholly beyond one of its edges (every vertex past
+  // a plane through the eye, so the whole convex polygon is) would set up no pixel row or column
+  // (setupPolygon widens its range by one), so it is refused before any division. Most patches in
+  // view miss most of a hemicube's five faces.
+  const double a0 = face.a0 - 2.0 / scaleA, a1 = face.a1 + 2.0 / scaleA;
+  const double b0 = face.b0 - 2.0 / scaleB, b1 = face.b1 + 2.0 / scaleB;
   std::array<Vec3, 4> faceVertices;
   bool anyInFront = false;
+  int pastA0 = 0, pastA1 = 0, pastB0 = 0, pastB1 = 0;
   for (int k = 0; k < patch.vertexCount; ++k) {
-    faceVertices[k] = toFace(face, patch.vertices[k]);
-    anyInFront = anyInFront || faceVertices[k].z > nearDepth;
+    const Vec3 f = faceVertices[k] = toFace(face, patch.vertices[k]);
+    anyInFront = anyInFront || f.z > nearDepth;
+    pastA0 += f.x < a0 * f.z;
+    pastA1 += f.x > a1 * f.z;
+    pastB0 += f.y < b0 * f.z;
+    pastB1 += f.y > b1 * f.z;
   }
-  if (!anyInFront) return false;
+  const int n = patch.vertexCount;
+  if (!anyInFront || pastA0 == n || pastA1 == n || pastB0 == n || pastB1 == n) return false;
 
   // Sutherland-Hodgman against the near plane: a convex polygon stays convex, gains at most one vertex.
   std::array<Vec3, ScreenPolygon::kMaxVertices> clipped;
@@ -117,8 +131,6 @@ bool projectOntoFace(const LocalPolygon& patch, const ProjectionFace& face, doub
     if (pIn != qIn) clipped[count++] = nearCrossing(p, q, nearDepth);
   }
 
-  const double scaleA = face.width / (face.a1 - face.a0);
-  const double scaleB = face.height / (face.b1 - face.b0);
   out.vertexCount = count;
   for (int k = 0; k < count; ++k)
     out.vertices[k] = {(clipped[k].x / clipped[k].z - face.a0) * scaleA,

@@ -66,7 +66,8 @@ struct ScreenPolygon {
   bool parallel = false;  // a light's parallel beam (its depth ties: scan_conversion.h)
 };
 
-// Clips against depth > nearDepth and projects. False when nothing is left in front.
+// Clips against depth > nearDepth and projects. False when nothing is left in front, or nothing
+// within two pixels of the face's window.
 // nearDepth is a length relative to the scene's scale; a patch edge-on to the shooter
 // (|planeOffset| <= nearDepth) projects to a line and is refused too.
 bool projectOntoFace(const LocalPolygon& patch, const ProjectionFace& face, double nearDepth,

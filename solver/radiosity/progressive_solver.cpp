@@ -152,7 +152,7 @@ void ProgressiveSolver::State::computeFreshRows(const std::vector<int>& shooters
   if (plan.nearField)
     for (FormFactorRow& row : computed) {
       const std::vector<int>& near =
-          subdivided() ? elementNearReceivers[row.shooter] : plan.nearReceivers[row.shooter];
+          subdivided() ? elementNear->receiversNear(row.shooter) : plan.nearReceivers[row.shooter];
       std::vector<NearFieldPair>& pairs = nearPairs[row.shooter];
       if (pairs.size() != near.size()) pairs = nearFieldPairs(patches[row.shooter], receivers(), near);
       correctNearField(row, near, pairs);
@@ -160,7 +160,7 @@ void ProgressiveSolver::State::computeFreshRows(const std::vector<int>& shooters
 }
 
 void ProgressiveSolver::State::findNearField() {
-  if (plan.nearField && subdivided()) elementNearReceivers = findNearFieldReceivers(patches, elements.elements);
+  if (plan.nearField && subdivided()) elementNear.emplace(patches, elements.elements);
   nearPairs.assign(patches.size(), {});
 }
 

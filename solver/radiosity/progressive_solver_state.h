@@ -2,6 +2,7 @@
 // The state of a ProgressiveSolver, shared by the files that implement it (progressive_solver.cpp,
 // portal_power.cpp); private to solver/radiosity, not an interface.
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -51,7 +52,7 @@ struct ProgressiveSolver::State {
   // Patches shoot, elements receive (options.subdivide; solver/meshing/elements.h): empty when off.
   Elements elements;
   std::vector<Rgb> elementRadiosity;
-  std::vector<std::vector<int>> elementNearReceivers;  // per shooter patch, its near elements
+  std::optional<NearFieldFinder> elementNear;         // per shooter patch, its near elements
   std::vector<std::vector<NearFieldPair>> nearPairs;   // per shooter patch, once it has shot
   // Adaptive subdivision (adaptive_refinement.cpp): this iteration's shots, what each element
   // received from them (reflected, W/m^2 per channel), and each element's neighbours.
@@ -81,8 +82,8 @@ struct ProgressiveSolver::State {
   void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins);
   void updateUnshot();
   void computeFreshRows(const std::vector<int>& shooters, std::vector<FormFactorRow>& computed);
-  // The elements' near-field receivers found anew (after they are made or split), every shooter's
-  // pairs to be computed again.
+  // The elements' near-field receivers to be found anew, as shooters ask (after elements are made
+  // or split), and every shooter's pairs computed again.
   void findNearField();
   void refine(IterationRecord& record);
   void regather(const std::vector<int>& origin, const std::vector<char>& split,

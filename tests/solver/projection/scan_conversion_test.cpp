@@ -1,5 +1,7 @@
 #include "solver/projection/scan_conversion.h"
 
+#include "solver/projection/single_plane.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -186,6 +188,32 @@ TEST(ScanConversion, PolygonsOutsideTheFaceOrWithoutAreaAreRefused) {
   EXPECT_FALSE(setupPolygon(screen({{40, 40}, {50, 40}, {45, 50}}), kSize, kSize, 0, 0, setup));
   EXPECT_FALSE(setupPolygon(screen({{1, 1}, {5, 5}, {9, 9}}), kSize, kSize, 0, 0, setup));
   EXPECT_FALSE(setupPolygon(screen({{-9, -9}, {-1, -9}, {-5, -1}}), kSize, kSize, 0, 0, setup));
+}
+
+// projectOntoFace refuses, before projecting, a polygon wholly more than two pixels beyond an edge
+// of the face's window (setupPolygon could set up no pixel of it), even one reaching behind the
+// eye; one that crosses the window, or lies within a pixel of it, is projected as before.
+TEST(ProjectOntoFace, APolygonWhollyBeyondTheWindowIsRefusedBeforeProjection) {
+  const ProjectionSurface plane = makeSinglePlane(16, 2.0);  // a, b in [-2, 2] at depth 1: 0.25 a pixel
+  const ProjectionFace& face = plane.faces[0];
+  auto square = [](double x0, double x1, double z0, double z1) {
+    LocalPolygon p;
+    p.vertexCount = 4;
+    p.vertices = {Vec3(x0, -0.5, z0), Vec3(x1, -0.5, z1), Vec3(x1, 0.5, z1), Vec3(x0, 0.5, z0)};
+    p.normal = glm::normalize(glm::cross(p.vertices[1] - p.vertices[0], p.vertices[2] - p.vertices[1]));
+    p.centroid = 0.25 * (p.vertices[0] + p.vertices[1] + p.vertices[2] + p.vertices[3]);
+    p.planeOffset = glm::dot(p.normal, p.centroid);
+    return p;
+  };
+  ScreenPolygon out;
+  PolygonSetup setup;
+  EXPECT_FALSE(projectOntoFace(square(2.6, 3.0, 1.0, 1.0), face, 1e-9, out));     // 2.4 pixels past a = 2
+  EXPECT_FALSE(projectOntoFace(square(-3.0, -2.6, 1.0, 1.0), face, 1e-9, out));   // and past a = -2
+  EXPECT_FALSE(projectOntoFace(square(0.5, 3.0, -1.0, 1.0), face, 1e-9, out));    // from behind the eye
+  EXPECT_TRUE(projectOntoFace(square(1.5, 3.0, 1.0, 1.0), face, 1e-9, out));      // across the edge
+  EXPECT_TRUE(setupPolygon(out, face.width, face.height, 0, 0, setup));
+  EXPECT_TRUE(covers(setup, 15, 8));
+  EXPECT_TRUE(projectOntoFace(square(2.1, 3.0, 1.0, 1.0), face, 1e-9, out));      // 0.4 pixels past it
 }
 
 }  // namespace
