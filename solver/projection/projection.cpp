@@ -5,6 +5,8 @@
 #include <limits>
 #include <tuple>
 
+#include <glm/gtc/type_ptr.hpp>
+
 namespace radmesh {
 
 glm::dvec2 ProjectionFace::pixelCentre(int column, int row) const {
@@ -48,8 +50,9 @@ std::optional<LocalPolygon> inShooterView(const Patch& shooter, const Patch& pat
 }
 
 Vec3 toFace(const ProjectionFace& face, const Vec3& local) {
-  return {face.sign[0] * local[face.axis[0]], face.sign[1] * local[face.axis[1]],
-          face.sign[2] * local[face.axis[2]]};
+  // Indexed loads: glm's operator[] is a switch, a branch per coordinate in the projection's inner loop.
+  const double* xyz = glm::value_ptr(local);
+  return {face.sign[0] * xyz[face.axis[0]], face.sign[1] * xyz[face.axis[1]], face.sign[2] * xyz[face.axis[2]]};
 }
 
 double inverseDepthAlong(const LocalPolygon& patch, const ProjectionFace& face, glm::dvec2 faceAB) {
@@ -97,24 +100,25 @@ bool projectOntoFace(const LocalPolygon& patch, const ProjectionFace& face, doub
   if (face.parallel) return projectParallel(patch, face, out);
   if (std::abs(patch.planeOffset) <= nearDepth) return false;  // edge-on: a line, no area
 
-  const double scaleA = face.width / (face.a1 - face.a0);
-  const double scaleB = face.height / (face.b1 - face.b0);
   // The window widened by two pixels: a polygon wholly beyond one of its edges (every vertex past
   // a plane through the eye, so the whole convex polygon is) would set up no pixel row or column
   // (setupPolygon widens its range by one), so it is refused before any division. Most patches in
-  // view miss most of a hemicube's five faces.
-  const double a0 = face.a0 - 2.0 / scaleA, a1 = face.a1 + 2.0 / scaleA;
-  const double b0 = face.b0 - 2.0 / scaleB, b1 = face.b1 + 2.0 / scaleB;
+  // view miss most of a hemicube's five faces. The planes are scaled by the pixel counts, which
+  // leaves no division here either.
+  const double columns = face.width, rows = face.height;
+  const double marginA = 2.0 * (face.a1 - face.a0), marginB = 2.0 * (face.b1 - face.b0);
+  const double a0 = face.a0 * columns - marginA, a1 = face.a1 * columns + marginA;
+  const double b0 = face.b0 * rows - marginB, b1 = face.b1 * rows + marginB;
   std::array<Vec3, 4> faceVertices;
   bool anyInFront = false;
   int pastA0 = 0, pastA1 = 0, pastB0 = 0, pastB1 = 0;
   for (int k = 0; k < patch.vertexCount; ++k) {
     const Vec3 f = faceVertices[k] = toFace(face, patch.vertices[k]);
     anyInFront = anyInFront || f.z > nearDepth;
-    pastA0 += f.x < a0 * f.z;
-    pastA1 += f.x > a1 * f.z;
-    pastB0 += f.y < b0 * f.z;
-    pastB1 += f.y > b1 * f.z;
+    pastA0 += f.x * columns < a0 * f.z;
+    pastA1 += f.x * columns > a1 * f.z;
+    pastB0 += f.y * rows < b0 * f.z;
+    pastB1 += f.y * rows > b1 * f.z;
   }
   const int n = patch.vertexCount;
   if (!anyInFront || pastA0 == n || pastA1 == n || pastB0 == n || pastB1 == n) return false;
@@ -131,6 +135,8 @@ bool projectOntoFace(const LocalPolygon& patch, const ProjectionFace& face, doub
     if (pIn != qIn) clipped[count++] = nearCrossing(p, q, nearDepth);
   }
 
+  const double scaleA = face.width / (face.a1 - face.a0);
+  const double scaleB = face.height / (face.b1 - face.b0);
   out.vertexCount = count;
   for (int k = 0; k < count; ++k)
     out.vertices[k] = {(clipped[k].x / clipped[k].z - face.a0) * scaleA,
