@@ -51,6 +51,7 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
   pool_.parallelFor(static_cast<int>(chunkSetups_.size()), [&](int chunk, int) {
     auto& out = chunkSetups_[chunk];
     for (auto& faceSetups : out) faceSetups.clear();
+    ScreenPolygon screen;
     const int end = std::min(n, (chunk + 1) * kChunkPatches);
     for (int j = chunk * kChunkPatches; j < end; ++j) {
       projectedArea_[j] = 0.0;
@@ -62,8 +63,12 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
       // A parallel beam meets a front that faces against it, wherever the patch lies.
       seenFromFront_[j] = parallel ? local->normal.z < 0.0 : local->seenFromFront();
       for (size_t f = 0; f < out.size(); ++f) {
-        PolygonSetup& setup = out[f].emplace_back();  // set up in place: it is a few hundred bytes
-        if (setUpProjection(*local, surface_.faces[f], nearDepth_, j, rank_[j], setup)) {
+        // setUpProjection's two steps apart: most faces refuse the patch in the first, and a set-up
+        // (a few hundred bytes, cleared when made, so made in place) is made only for the rest.
+        const ProjectionFace& face = surface_.faces[f];
+        if (!projectOntoFace(*local, face, nearDepth_, screen)) continue;
+        PolygonSetup& setup = out[f].emplace_back();
+        if (setupPolygon(screen, face.width, face.height, j, rank_[j], setup)) {
           projectedArea_[j] += setup.areaPixels;
           facesReached_[j] |= 1u << f;
         } else
