@@ -34,7 +34,8 @@ Vec3 directionInShooterFrame(const Patch& shooter, const Vec3& direction) {
 LocalPolygon toShooterFrame(const Patch& shooter, const Patch& patch) {
   LocalPolygon local;
   local.vertexCount = patch.vertexCount;
-  for (int k = 0; k < patch.vertexCount; ++k) local.vertices[k] = toShooterFrame(shooter, patch.vertices[k]);
+  for (int k = 0; k < 4; ++k)
+    local.vertices[k] = k < patch.vertexCount ? toShooterFrame(shooter, patch.vertices[k]) : Vec3(0.0);
   local.normal = directionInShooterFrame(shooter, patch.normal);
   local.centroid = toShooterFrame(shooter, patch.centroid);
   local.planeOffset = glm::dot(local.normal, local.centroid);

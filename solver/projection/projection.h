@@ -37,7 +37,7 @@ struct ProjectionFace {
 
 // A patch in a shooter's frame: origin at the shooter's centroid, axes (u, v, n).
 struct LocalPolygon {
-  std::array<Vec3, 4> vertices{};
+  std::array<Vec3, 4> vertices;  // set by whoever makes one, all four (not cleared first: a hot path)
   int vertexCount = 0;
   Vec3 normal{0.0};          // the patch's unit normal in the shooter's frame
   double planeOffset = 0.0;  // normal . x for every point x of the patch; < 0: the shooter sees its front
