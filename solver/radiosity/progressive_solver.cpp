@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -27,32 +26,6 @@ namespace radmesh {
 
 using solver_state::channelSum;
 using solver_state::channels;
-
-namespace {
-
-// Whether a progress has n patches and `elements` elements (0: patches receive) and names no
-// others (a row's shooter and receivers, a record's shooters).
-bool fitsPatches(const SolverProgress& p, size_t n, size_t elements) {
-  auto patchIndex = [n](int j) { return j >= 0 && static_cast<size_t>(j) < n; };
-  const size_t receivers = elements > 0 ? elements : n;
-  auto receiverIndex = [receivers](int j) { return j >= 0 && static_cast<size_t>(j) < receivers; };
-  auto rowFits = [&](const FormFactorRow& row) {
-    auto shareFits = [&](const FormFactorRow::BinShare& b) {
-      return receiverIndex(b.patch) && b.bin >= 0 && static_cast<size_t>(b.bin) < row.binTotals.size();
-    };
-    return patchIndex(row.shooter) && row.receivers.size() == row.formFactors.size() &&
-           std::all_of(row.receivers.begin(), row.receivers.end(), receiverIndex) &&
-           row.binBackFaces.size() == row.binTotals.size() &&
-           std::all_of(row.binShares.begin(), row.binShares.end(), shareFits);
-  };
-  auto recordFits = [&](const IterationRecord& r) { return std::all_of(r.shooters.begin(), r.shooters.end(), patchIndex); };
-  return p.radiosity.size() == n && p.unshotRadiosity.size() == n && p.unshotPowerW.size() == n &&
-         p.elementRadiosity.size() == elements &&
-         p.timesShot.size() == n && std::all_of(p.cachedRows.begin(), p.cachedRows.end(), rowFits) &&
-         std::all_of(p.history.begin(), p.history.end(), recordFits);
-}
-
-}  // namespace
 
 ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patches,
                                      const SolveOptions& options)
@@ -324,59 +297,6 @@ const Ledger& ProgressiveSolver::ledger() const { return state_->ledger; }
 const std::vector<IterationRecord>& ProgressiveSolver::history() const { return state_->history; }
 const SolveOptions& ProgressiveSolver::options() const { return state_->options; }
 const EffectsPlan& ProgressiveSolver::effectsPlan() const { return state_->plan; }
-SolverProgress ProgressiveSolver::progress() const {
-  const State& s = *state_;
-  return {s.radiosity, s.unshotRadiosity, s.unshotPowerW, s.timesShot, s.ledger, s.history,
-          s.firstShotPowerW, s.convergence, s.exhausted, s.backend->machineState(), s.cache.contents(),
-          s.elementRadiosity, s.adaptive() ? s.elements.level : std::vector<int>(), s.shotTotal,
-          s.portalPower, s.portalUnshot};
-}
-
-void ProgressiveSolver::restoreProgress(SolverProgress p) {
-  State& s = *state_;
-  const size_t n = s.patches.size();
-  // Adaptive: the elements split so far, from their levels (their geometry follows from them).
-  std::optional<Elements> split;
-  if (s.adaptive()) split = splitToLevels(s.patches, p.elementLevels);  // throws std::invalid_argument
-  else if (!p.elementLevels.empty()) throw std::invalid_argument("element levels of an adaptive solve");
-  auto binsFit = [&](const std::vector<std::vector<Rgb>>& saved, const std::vector<std::vector<Rgb>>& now) {
-    return saved.size() == now.size() && std::equal(saved.begin(), saved.end(), now.begin(), [](const auto& a, const auto& b) {
-             return a.size() == b.size();
-           });
-  };
-  const size_t elements = split ? split->elements.size() : s.elementRadiosity.size();
-  if (!fitsPatches(p, n, elements) || p.machineState.empty() != s.backend->machineState().empty() ||
-      p.shotTotal.size() != s.shotTotal.size() || !binsFit(p.portalPower, s.portalPower) ||
-      !binsFit(p.portalUnshot, s.portalUnshot))
-    throw std::invalid_argument(fmt::format(
-        "solver progress of another solve: not {} patches, shooters of other patches, other portal patches, or "
-        "another back end", n));
-  if (split) {  // as refine() leaves them after a split
-    s.backend.reset();
-    s.elements = std::move(*split);
-    s.backend = s.makeBackend();  // with the portal patches' direction bins
-    s.findNearField();
-    s.neighbours = elementNeighbours(s.elements);
-  }
-  s.backend->restoreMachineState(p.machineState);  // throws, changing nothing, for another machine's
-  s.radiosity = std::move(p.radiosity);
-  s.unshotRadiosity = std::move(p.unshotRadiosity);
-  s.unshotPowerW = std::move(p.unshotPowerW);
-  s.timesShot = std::move(p.timesShot);
-  s.ledger = p.ledger;
-  s.history = std::move(p.history);
-  s.firstShotPowerW = p.firstShotPowerW;
-  s.convergence = p.convergence;
-  s.exhausted = p.exhausted;
-  s.elementRadiosity = std::move(p.elementRadiosity);
-  s.shotTotal = std::move(p.shotTotal);
-  s.portalPower = std::move(p.portalPower);
-  s.portalUnshot = std::move(p.portalUnshot);
-  s.lightsShot = !s.history.empty() && !s.scene.lights.empty();  // iteration 1 shot them
-  s.cache = FormFactorCache(s.options.formFactorCacheBytes);
-  for (auto row = p.cachedRows.rbegin(); row != p.cachedRows.rend(); ++row) s.cache.insert(*row);
-}
-
 ProjectionSummary ProgressiveSolver::projectionSummary() const { return state_->backend->projectionSummary(); }
 FormFactorBackend& ProgressiveSolver::backend() { return *state_->backend; }
 
