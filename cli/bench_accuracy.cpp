@@ -424,12 +424,6 @@ std::vector<double> checkedSubdividedCells(const AccuracyArgs& args, const std::
     throw OptionError("bench accuracy --until-unshot must be a fraction in [0, 1), e.g. 0.01 (0: C = 0.99 only)");
   std::vector<double> subdivided = args.subdivideCells;
   if (subdivided.empty()) subdivided.push_back(*std::ranges::max_element(args.cells));
-  const double finest = *std::ranges::min_element(args.cells);
-  if (!(args.referenceCellM == 0.0 || (args.referenceCellM > 0.0 && args.referenceCellM < finest)))
-    throw OptionError(fmt::format(
-        "bench accuracy --reference-cell {}: give a cell finer than the finest of --cells ({} m), e.g. {}, or 0 "
-        "for the finest of --cells itself",
-        args.referenceCellM, finest, finest / 2));
   for (double cell : subdivided)
     if (std::ranges::find(args.cells, cell) == args.cells.end())
       throw OptionError(fmt::format("bench accuracy --subdivide-cells {}: not one of --cells; give cells from that list",
@@ -447,6 +441,12 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
     throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
+  const double finest = *std::ranges::min_element(args.cells);
+  if (!(args.referenceCellM == 0.0 || (args.referenceCellM > 0.0 && args.referenceCellM < finest)))
+    throw OptionError(fmt::format(
+        "bench accuracy --reference-cell {}: give a cell finer than the finest of --cells ({} m), e.g. {}, or 0 "
+        "for the finest of --cells itself",
+        args.referenceCellM, finest, finest / 2));
   const std::vector<Setting> settings = chosenSettings(args);
   const std::vector<double> subdividedCells = checkedSubdividedCells(args, settings);
   std::vector<double> cells = args.cells;
