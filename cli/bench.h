@@ -49,6 +49,10 @@ struct AccuracyArgs {
   std::vector<double> cells{0.5, 0.381, 0.25};
   std::vector<int> resolutions{32, 64, 128, 256, 512, 1024};
   int referenceResolution = 1024;
+  // > 0: the pictures' reference is a patch mesh at this cell, finer than any of `cells` and not
+  // swept, so that the finest swept mesh is scored too; 0: the finest of `cells` (each swept mesh
+  // keeps its own reference for the same-mesh error either way).
+  double referenceCellM = 0.0;
   double referenceUntil = 0.999;
   double referenceUnshot = 0.001;  // and at most this fraction of the emitted power unshot
   int maxIterations = 20000;

@@ -58,7 +58,7 @@ struct Point {
   double msPerIteration = 0.0;
   double secondsTo95 = -1.0, secondsTo99 = -1.0;  // -1: not reached within the cap
   double error95 = -1.0, error99 = -1.0;
-  double imageError95 = -1.0, imageError99 = -1.0;  // 8-bit RMSE against the finest mesh's pictures
+  double imageError95 = -1.0, imageError99 = -1.0;  // 8-bit RMSE against the reference pictures
   double memoryMiB = 0.0;
   double secondsToUnshot = -1.0, errorAtUnshot = -1.0, imageErrorAtUnshot = -1.0;  // --until-unshot
 };
@@ -224,11 +224,12 @@ std::vector<std::pair<double, double>> paretoFront(std::vector<std::pair<double,
   return front;
 }
 
-CsvTable pointsTable(const std::vector<Point>& points) {
+// Every row names the cell of the pictures it was scored against (--reference-cell).
+CsvTable pointsTable(const std::vector<Point>& points, double pictureReferenceCellM) {
   CsvTable t{.columns = {"projection", "ratio", "resolution", "cell_m", "patches", "ms_per_iteration", "seconds_to_95",
               "seconds_to_99", "error_at_95", "error_at_99", "image_rmse_at_95", "image_rmse_at_99", "memory_mib",
               "subdivide", "min_element", "elements", "seconds_to_unshot", "error_at_unshot", "image_rmse_at_unshot",
-              "element_rows"}};
+              "element_rows", "reference_cell_m"}};
   for (const Point& p : points)
     t.rows.push_back({toString(p.setting.projection), fmt::format("{}", p.setting.ratio), std::to_string(p.resolution),
                       fmt::format("{}", p.cellM), std::to_string(p.patches), fmt::format("{:.6g}", p.msPerIteration),
@@ -238,7 +239,8 @@ CsvTable pointsTable(const std::vector<Point>& points) {
                       fmt::format("{:.4g}", p.memoryMiB), toString(p.subdivision.subdivide),
                       fmt::format("{}", p.subdivision.minElementM), std::to_string(p.elements),
                       fmt::format("{:.6g}", p.secondsToUnshot), fmt::format("{:.6g}", p.errorAtUnshot),
-                      fmt::format("{:.4g}", p.imageErrorAtUnshot), toString(p.subdivision.rows)});
+                      fmt::format("{:.4g}", p.imageErrorAtUnshot), toString(p.subdivision.rows),
+                      fmt::format("{}", pictureReferenceCellM)});
   return t;
 }
 
@@ -439,29 +441,47 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
     throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
+  const double finest = *std::ranges::min_element(args.cells);
+  if (!(args.referenceCellM == 0.0 || (args.referenceCellM > 0.0 && args.referenceCellM < finest)))
+    throw OptionError(fmt::format(
+        "bench accuracy --reference-cell {}: give a cell finer than the finest of --cells ({} m), e.g. {}, or 0 "
+        "for the finest of --cells itself",
+        args.referenceCellM, finest, finest / 2));
   const std::vector<Setting> settings = chosenSettings(args);
   const std::vector<double> subdividedCells = checkedSubdividedCells(args, settings);
-  // The finest mesh's reference is solved first: its pictures are the reference across meshes.
   std::vector<double> cells = args.cells;
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   std::map<double, std::vector<Patch>> meshes;
   std::map<double, Reference> refs;
+  // The pictures' reference is solved first: a patch mesh, whatever the sweep's receivers, so that
+  // it is the same for every method. Without --reference-cell it is the finest swept mesh's own.
   ImageErrorProbe pictures(scene);
+  const double pictureCell = args.referenceCellM > 0.0 ? args.referenceCellM : cells.front();
+  nlohmann::json pictureReference;
+  if (args.referenceCellM > 0.0) {
+    const std::vector<Patch> patches = meshScene(scene, pictureCell);
+    const Reference ref = solveReference(scene, patches, args);
+    pictures.setReference(patches, ref.displayRadiosity);
+    fmt::print("cell {} m, {} patches, not swept: the pictures' reference {} in {:.2f} s\n", pictureCell,
+               patches.size(), ref.how, ref.seconds);
+    pictureReference = {{"cell", pictureCell}, {"patches", patches.size()}, {"how", ref.how}, {"seconds", ref.seconds}};
+  }
   nlohmann::json references = nlohmann::json::array();
   for (double cell : cells) {
     const std::vector<Patch>& patches = meshes[cell] = meshScene(scene, cell);
     const Reference& ref = refs[cell] = solveReference(scene, patches, args);
-    if (cell == cells.front()) pictures.setReference(patches, ref.displayRadiosity);
+    if (cell == pictureCell) pictures.setReference(patches, ref.displayRadiosity);
     const double imageError = pictures.error(patches, ref.displayRadiosity);
-    fmt::print("cell {} m, {} patches: reference {} in {:.2f} s; its pictures differ from the finest mesh's by "
-               "{:.2f} levels RMS\n",
-               cell, patches.size(), ref.how, ref.seconds, imageError);
+    fmt::print("cell {} m, {} patches: reference {} in {:.2f} s; its pictures differ from the reference pictures "
+               "(cell {} m) by {:.2f} levels RMS\n",
+               cell, patches.size(), ref.how, ref.seconds, pictureCell, imageError);
     references.push_back({{"cell", cell},
                           {"patches", patches.size()},
                           {"how", ref.how},
                           {"seconds", ref.seconds},
                           {"image_rmse", imageError}});
+    if (cell == pictureCell) pictureReference = references.back();
   }
   std::vector<Point> points;
   std::vector<Trace> traces;
@@ -515,13 +535,14 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
                         {"unshot_fraction", t.unshotFraction}});
     tracesJson.push_back({{"label", traceLabel(label(trace.setting), trace.resolution, trace.cellM)}, {"points", points}});
   }
-  nlohmann::json result = {{"scene", scene.source}, {"references", references}, {"points", rows},
+  nlohmann::json result = {{"scene", scene.source}, {"references", references},
+                           {"picture_reference", pictureReference}, {"points", rows},
                            {"traces", tracesJson},
                            {"image_cameras", pictures.cameraCount()}, {"until_unshot", args.untilUnshot},
                            {"split_contrast", args.splitContrast}};
   if (!args.outDir.empty()) {
     const std::string stem = (std::filesystem::path(args.outDir) / args.name).string();
-    writeCsv(stem + ".csv", pointsTable(points));
+    writeCsv(stem + ".csv", pointsTable(points, pictureCell));
     writeCsv(stem + "-traces.csv", tracesTable(traces));
     drawAccuracyFigures(stem, args.name);
     fmt::print("wrote {0}.csv, {0}-traces.csv and the plots {0}-*.png\n", stem);

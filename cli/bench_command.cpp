@@ -78,6 +78,10 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--cells", args->cells, "Cell sizes, metres")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
   cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();
+  cmd->add_option("--reference-cell", args->referenceCellM,
+                  "Cell, metres, of the pictures' reference: a patch mesh finer than any of --cells, solved but not "
+                  "swept (0: the finest of --cells)")
+      ->capture_default_str();
   cmd->add_option("--reference-until", args->referenceUntil, "Convergence C of the reference")->capture_default_str();
   cmd->add_option("--reference-unshot", args->referenceUnshot,
                   "And the most unshot power the reference may leave, as a fraction of the emitted")

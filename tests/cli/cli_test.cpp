@@ -327,6 +327,63 @@ TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
   EXPECT_GT(worstPicture["plane3.000000"], 3.0);
 }
 
+// --reference-cell: the pictures' reference is a finer patch mesh, solved but not swept, so the
+// finest swept mesh is scored too; each swept mesh keeps its own reference for the same-mesh error.
+TEST(Cli, BenchAccuracyScoresTheFinestSweptMeshAgainstAFinerReferenceCell) {
+  const std::string sweep =
+      "bench accuracy cornell --cells 0.2,0.1 --resolutions 32 --projections hemicube --reference-resolution 64 "
+      "--threads 1";
+  const std::string own = tempPath("cornell-own.json"), finer = tempPath("cornell-finer.json");
+  const std::string dir = tempPath("accuracy-reference-cell");
+  std::filesystem::remove_all(dir);
+  CommandRun run = radmesh(sweep + " --json " + own);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  run = radmesh(sweep + " --reference-cell 0.05 --out-dir " + dir + " --json " + finer);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("cell 0.05 m, 993 patches, not swept: the pictures' reference hemicube 64x64"),
+            std::string::npos)
+      << run.output;
+  std::ifstream ownIn(own), finerIn(finer);
+  const auto a = nlohmann::json::parse(ownIn), b = nlohmann::json::parse(finerIn);
+  // Without it the finest swept mesh is its own pictures' reference and scores nothing.
+  EXPECT_EQ(a["picture_reference"]["cell"].get<double>(), 0.1);
+  EXPECT_EQ(a["references"][0]["image_rmse"].get<double>(), 0.0);
+  EXPECT_EQ(b["picture_reference"]["cell"].get<double>(), 0.05);
+  EXPECT_EQ(b["picture_reference"]["patches"].get<int>(), 993);
+  ASSERT_EQ(b["references"].size(), 2u);  // the swept meshes only
+  EXPECT_EQ(b["references"][0]["cell"].get<double>(), 0.1);
+  // The 0.1 m mesh's converged pictures are 5.4 levels from the 0.05 m mesh's, the 0.2 m mesh's 12.7.
+  EXPECT_GT(b["references"][0]["image_rmse"].get<double>(), 2.0);
+  EXPECT_GT(b["references"][1]["image_rmse"].get<double>(), b["references"][0]["image_rmse"].get<double>());
+  ASSERT_EQ(b["points"].size(), 2u);
+  const auto& finest = b["points"][1];
+  ASSERT_EQ(finest["cell"].get<double>(), 0.1);
+  EXPECT_GT(finest["image_rmse_at_99"].get<double>(), 2.0);
+  EXPECT_NE(finest["image_rmse_at_99"].get<double>(), a["points"][1]["image_rmse_at_99"].get<double>());
+  // The same-mesh error is the same: its reference is still each swept mesh's own.
+  for (size_t i = 0; i < 2; ++i)
+    EXPECT_EQ(b["points"][i]["error_at_99"].get<double>(), a["points"][i]["error_at_99"].get<double>()) << i;
+  // The CSV names the cell every row was scored against.
+  const auto rows = readCsv(dir + "/cornell.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].back(), "reference_cell_m");
+  EXPECT_EQ(rows[1].back(), "0.05");
+  EXPECT_EQ(rows[2].back(), "0.05");
+}
+
+TEST(Cli, BenchAccuracyRefusesAReferenceCellNoFinerThanTheSweep) {
+  for (const std::string value : {"1", "0.5", "-0.1", "nan"}) {
+    const CommandRun run = radmesh("bench accuracy furnace --cells 1,0.5 --reference-cell=" + value);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("--reference-cell " + value +
+                              ": give a cell finer than the finest of --cells (0.5 m), e.g. 0.25, or 0 for the "
+                              "finest of --cells itself"),
+              std::string::npos)
+        << run.output;
+    EXPECT_EQ(run.output.find("reference analytic"), std::string::npos) << "refused before any solve";
+  }
+}
+
 }  // namespace
 }  // namespace radmesh
 

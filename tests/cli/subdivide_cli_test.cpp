@@ -156,7 +156,7 @@ TEST(CliSubdivide, BenchAccuracyMeasuresEachSubdivisionOnItsCells) {
   std::getline(csv, header);
   EXPECT_EQ(header.substr(header.find("memory_mib")),
             "memory_mib,subdivide,min_element,elements,seconds_to_unshot,error_at_unshot,image_rmse_at_unshot,"
-            "element_rows");
+            "element_rows,reference_cell_m");
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 5);
