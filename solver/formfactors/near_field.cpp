@@ -151,14 +151,26 @@ double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int sub
   return meanFormFactor(shooter, receiver, subdivisions);
 }
 
-std::vector<NearFieldPair> nearFieldPairs(const Patch& shooter, const std::vector<Patch>& receivers,
-                                          const std::vector<int>& nearReceivers) {
-  std::vector<NearFieldPair> pairs;
-  pairs.reserve(nearReceivers.size());
-  for (int j : nearReceivers)
-    pairs.push_back({pointToPolygonFormFactor(toShooterFrame(shooter, receivers[j]).corners()),
-                     areaToAreaFormFactor(shooter, receivers[j])});
-  return pairs;
+// Calls visit(r, k) for each row entry r whose receiver is near receiver k (both lists ascending).
+template <typename Visit>
+void forNearEntries(const FormFactorRow& row, const std::vector<int>& nearReceivers, Visit visit) {
+  auto next = nearReceivers.begin();
+  for (size_t r = 0; r < row.receivers.size() && next != nearReceivers.end(); ++r) {
+    next = std::lower_bound(next, nearReceivers.end(), row.receivers[r]);
+    if (next != nearReceivers.end() && *next == row.receivers[r]) visit(r, static_cast<size_t>(next - nearReceivers.begin()));
+  }
+}
+
+void completeNearFieldPairs(const Patch& shooter, const std::vector<Patch>& receivers,
+                            const std::vector<int>& nearReceivers, const FormFactorRow& row,
+                            std::vector<NearFieldPair>& pairs) {
+  pairs.resize(nearReceivers.size());
+  forNearEntries(row, nearReceivers, [&](size_t, size_t k) {
+    if (pairs[k].computed) return;
+    const Patch& receiver = receivers[nearReceivers[k]];
+    pairs[k] = {pointToPolygonFormFactor(toShooterFrame(shooter, receiver).corners()),
+                areaToAreaFormFactor(shooter, receiver), true};
+  });
 }
 
 void correctNearField(FormFactorRow& row, const std::vector<int>& nearReceivers, std::span<const NearFieldPair> pairs) {
@@ -166,16 +178,12 @@ void correctNearField(FormFactorRow& row, const std::vector<int>& nearReceivers,
   const double before = row.hitFraction();
   const bool enclosed = row.escapedFraction() == 0.0;
   bool changed = false;
-  auto next = nearReceivers.begin();
-  for (size_t r = 0; r < row.receivers.size() && next != nearReceivers.end(); ++r) {
-    const int j = row.receivers[r];
-    next = std::lower_bound(next, nearReceivers.end(), j);
-    if (next == nearReceivers.end() || *next != j) continue;
-    const auto [point, area] = pairs[static_cast<size_t>(next - nearReceivers.begin())];
-    if (!(point > 0.0) || !(area > 0.0)) continue;  // edge-on to the centroid: nothing to scale
-    row.formFactors[r] = std::min(1.0, row.formFactors[r] / point) * area;
+  forNearEntries(row, nearReceivers, [&](size_t r, size_t k) {
+    const NearFieldPair& pair = pairs[k];
+    if (!(pair.point > 0.0) || !(pair.area > 0.0)) return;  // edge-on to the centroid: nothing to scale
+    row.formFactors[r] = std::min(1.0, row.formFactors[r] / pair.point) * pair.area;
     changed = true;
-  }
+  });
   if (!changed) return;
   const double after = row.hitFraction();
   const double target = enclosed ? before : std::min(after, row.capturedFraction);

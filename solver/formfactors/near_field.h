@@ -61,21 +61,26 @@ class NearFieldFinder {
 double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions = kNearFieldSubdivisions);
 
 // A near pair's unoccluded form factors: from the shooter's centroid (pointToPolygonFormFactor) and
-// area to area. Geometry alone, so a solve computes them once per shooter, when it first shoots: a
-// patch shoots about three times, and the area-to-area estimate is 128 closed forms.
+// area to area. Geometry alone, so a solve computes them once per shooter and receiver, when the
+// shooter first reaches the receiver: a patch shoots about three times, and the area-to-area
+// estimate is 128 closed forms.
 struct NearFieldPair {
   double point = 0.0;
   double area = 0.0;
+  bool computed = false;
 };
-// Per receiver in nearReceivers (one shooter's, from findNearFieldReceivers), its pair.
-std::vector<NearFieldPair> nearFieldPairs(const Patch& shooter, const std::vector<Patch>& receivers,
-                                          const std::vector<int>& nearReceivers);
+// Per receiver in nearReceivers (one shooter's, from findNearFieldReceivers), its pair: `pairs`
+// made that long, and the pairs computed of the near receivers the row reaches that had none.
+// Those the shooter never reaches (hidden, or behind it) cost nothing: on office3, most of them.
+void completeNearFieldPairs(const Patch& shooter, const std::vector<Patch>& receivers,
+                            const std::vector<int>& nearReceivers, const FormFactorRow& row,
+                            std::vector<NearFieldPair>& pairs);
 
 // Replaces row entries of the near receivers by area-to-area estimates scaled by the visible
 // fraction the projection measured (row entry over the unoccluded centroid form factor, at most
 // 1). No power is created: the row then sums to at most what the projection surface caught and,
 // for an enclosed shooter (whatever it sent out landed on a patch), to what it summed before, so
-// that the correction moves light between receivers but never lets it escape. pairs: nearFieldPairs'.
+// that the correction moves light between receivers but never lets it escape. pairs: completeNearFieldPairs' for this row.
 void correctNearField(FormFactorRow& row, const std::vector<int>& nearReceivers, std::span<const NearFieldPair> pairs);
 
 }  // namespace radmesh

@@ -127,7 +127,7 @@ void ProgressiveSolver::State::computeFreshRows(const std::vector<int>& shooters
       const std::vector<int>& near =
           subdivided() ? elementNear->receiversNear(row.shooter) : plan.nearReceivers[row.shooter];
       std::vector<NearFieldPair>& pairs = nearPairs[row.shooter];
-      if (pairs.size() != near.size()) pairs = nearFieldPairs(patches[row.shooter], receivers(), near);
+      completeNearFieldPairs(patches[row.shooter], receivers(), near, row, pairs);
       correctNearField(row, near, pairs);
     }
 }

@@ -53,7 +53,7 @@ struct ProgressiveSolver::State {
   Elements elements;
   std::vector<Rgb> elementRadiosity;
   std::optional<NearFieldFinder> elementNear;         // per shooter patch, its near elements
-  std::vector<std::vector<NearFieldPair>> nearPairs;   // per shooter patch, once it has shot
+  std::vector<std::vector<NearFieldPair>> nearPairs;   // per shooter patch, as its rows reach them
   // Adaptive subdivision (adaptive_refinement.cpp): this iteration's shots, what each element
   // received from them (reflected, W/m^2 per channel), and each element's neighbours.
   struct Shot {

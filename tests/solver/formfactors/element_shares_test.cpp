@@ -96,6 +96,33 @@ TEST(NearField, ReceiversFoundInGroupsBySizeAreThoseOfTheDefinition) {
   EXPECT_GT(pairs, 100u);  // the test sees pairs, and the large patches' among them
 }
 
+// A shooter's near pairs are computed for the near receivers its rows reach, each once: a receiver
+// the row does not list (hidden, or unseen) costs nothing until a row reaches it.
+TEST(NearField, PairsAreComputedForTheNearReceiversARowReachesOnce) {
+  const Patch floor = makePatch({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)});
+  const std::vector<Patch> receivers = {
+      makePatch({Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 0.2), Vec3(0, 0, 0.2)}),    // a wall strip, x = 0
+      makePatch({Vec3(1, 1, 0), Vec3(1, 0, 0), Vec3(1, 0, 0.2), Vec3(1, 1, 0.2)})};   // another, x = 1
+  const std::vector<int> near = {0, 1};
+  FormFactorRow row;
+  row.receivers = {1};
+  row.formFactors = {0.1};
+  std::vector<NearFieldPair> pairs;
+  completeNearFieldPairs(floor, receivers, near, row, pairs);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_FALSE(pairs[0].computed);
+  ASSERT_TRUE(pairs[1].computed);
+  EXPECT_EQ(pairs[1].area, areaToAreaFormFactor(floor, receivers[1]));
+  EXPECT_EQ(pairs[1].point, pointToPolygonFormFactor(toShooterFrame(floor, receivers[1]).corners()));
+  pairs[1].area = -1.0;  // a marker: a pair computed already is kept, not computed again
+  row.receivers = {0, 1};
+  row.formFactors = {0.1, 0.1};
+  completeNearFieldPairs(floor, receivers, near, row, pairs);
+  EXPECT_TRUE(pairs[0].computed);
+  EXPECT_EQ(pairs[0].area, areaToAreaFormFactor(floor, receivers[0]));
+  EXPECT_EQ(pairs[1].area, -1.0);
+}
+
 // The rows over elements: each patch's elements together receive exactly what the patch does in a
 // projection of the patches (so shots, ledger and patches' answer are the patch projection's),
 // and closer to the closed forms than the rasterised elements.
