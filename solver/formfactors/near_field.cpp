@@ -32,7 +32,6 @@ bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
   return false;
 }
 
-
 }  // namespace
 
 std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches) {
@@ -151,6 +150,8 @@ double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int sub
   return meanFormFactor(shooter, receiver, subdivisions);
 }
 
+namespace {
+
 // Calls visit(r, k) for each row entry r whose receiver is near receiver k (both lists ascending).
 template <typename Visit>
 void forNearEntries(const FormFactorRow& row, const std::vector<int>& nearReceivers, Visit visit) {
@@ -160,6 +161,8 @@ void forNearEntries(const FormFactorRow& row, const std::vector<int>& nearReceiv
     if (next != nearReceivers.end() && *next == row.receivers[r]) visit(r, static_cast<size_t>(next - nearReceivers.begin()));
   }
 }
+
+}  // namespace
 
 void completeNearFieldPairs(const Patch& shooter, const std::vector<Patch>& receivers,
                             const std::vector<int>& nearReceivers, const FormFactorRow& row,
