@@ -42,18 +42,20 @@ double pointToPolygonFormFactor(std::span<const Vec3> vertices) {
 
 double smallPolygonFormFactor(std::span<const Vec3> vertices, Vec3 centroid, Vec3 normal, double areaM2) {
   const double r2 = glm::dot(centroid, centroid);
+  const bool inFront = std::all_of(vertices.begin(), vertices.end(), [](const Vec3& v) { return v.z > 0.0; });
+  if (!inFront || !(squaredDiameter(vertices) <= kSmallPolygonRatio * kSmallPolygonRatio * r2))
+    return pointToPolygonFormFactor(vertices);
+  return differentialFormFactor(centroid, normal, areaM2);
+}
+
+double squaredDiameter(std::span<const Vec3> vertices) {
   double diameter2 = 0.0;
-  bool inFront = true;
-  for (size_t k = 0; k < vertices.size(); ++k) {
-    inFront = inFront && vertices[k].z > 0.0;
+  for (size_t k = 0; k < vertices.size(); ++k)
     for (size_t m = k + 1; m < vertices.size(); ++m) {
       const Vec3 d = vertices[k] - vertices[m];
       diameter2 = std::max(diameter2, glm::dot(d, d));
     }
-  }
-  if (!inFront || !(diameter2 <= kSmallPolygonRatio * kSmallPolygonRatio * r2))
-    return pointToPolygonFormFactor(vertices);
-  return differentialFormFactor(centroid, normal, areaM2);
+  return diameter2;
 }
 
 double differentialFormFactor(Vec3 centroid, Vec3 normal, double areaM2) {

@@ -19,6 +19,8 @@ double pointToPolygonFormFactor(std::span<const Vec3> vertices);
 // sharing a patch's form factor among its elements costs otherwise.
 inline constexpr double kSmallPolygonRatio = 0.1;
 double smallPolygonFormFactor(std::span<const Vec3> vertices, Vec3 centroid, Vec3 normal, double areaM2);
+// The largest squared distance between two of the vertices.
+double squaredDiameter(std::span<const Vec3> vertices);
 // That differential form alone, for a polygon known to pass smallPolygonFormFactor's test.
 double differentialFormFactor(Vec3 centroid, Vec3 normal, double areaM2);
 

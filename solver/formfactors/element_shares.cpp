@@ -56,15 +56,9 @@ bool cutByWindow(const ProjectedShot& shot, double nearDepth, int p) {
 // because the patch does with room to spare: an element lies inside its patch, so it is in front
 // where the patch is, no wider, and no nearer than the patch's centroid less the patch's diameter.
 bool elementsSmallAndFar(const LocalPolygon& patch) {
-  double diameter2 = 0.0;
-  for (int k = 0; k < patch.vertexCount; ++k) {
-    if (!(patch.vertices[k].z > 0.0)) return false;
-    for (int m = k + 1; m < patch.vertexCount; ++m) {
-      const Vec3 d = patch.vertices[k] - patch.vertices[m];
-      diameter2 = std::max(diameter2, glm::dot(d, d));
-    }
-  }
-  const double diameter = std::sqrt(diameter2);
+  const std::span<const Vec3> corners = patch.corners();
+  if (!std::all_of(corners.begin(), corners.end(), [](const Vec3& v) { return v.z > 0.0; })) return false;
+  const double diameter = std::sqrt(squaredDiameter(corners));
   return diameter <= kSmallPolygonRatio * (glm::length(patch.centroid) - diameter);
 }
 
@@ -78,28 +72,29 @@ void sharePatch(const ProjectedShot& shot, double nearDepth, const PatchShot& pa
   const double patchShown = covered > 0 ? static_cast<double>(shown) / static_cast<double>(covered) : 1.0;
   weight.assign(static_cast<size_t>(end - begin), 0.0);
   double sum = 0.0;
-  // Then each element's closed form is the differential one, from its centroid and normal alone.
-  const bool smallAndFar = !partly && elementsSmallAndFar(toShooterFrame(shot.shooter, shot.patches[p]));
-  if (smallAndFar) {
+  // A small far patch (elementsSmallAndFar): each element's closed form is the differential one,
+  // from its centroid and normal alone.
+  if (!partly && elementsSmallAndFar(toShooterFrame(shot.shooter, shot.patches[p]))) {
     for (int e = begin; e < end; ++e) {
       const Patch& element = elements.elements[e];
       weight[e - begin] = differentialFormFactor(toShooterFrame(shot.shooter, element.centroid),
                                                  directionInShooterFrame(shot.shooter, element.normal), element.areaM2);
       sum += weight[e - begin];
     }
-  }
-  for (int e = begin; e < end && !smallAndFar; ++e) {
-    const std::optional<LocalPolygon> local = inSurfaceView(shot.surface, shot.shooter, elements.elements[e]);
-    if (!local) continue;
-    double w = smallPolygonFormFactor(local->corners(), local->centroid, local->normal, elements.elements[e].areaM2);
-    if (partly && w > 0.0) {
-      const Cover c = coverOf(shot, *local, nearDepth, p, patches.facesReached[p]);
-      // An element between pixel centres takes its patch's shown fraction.
-      w *= !c.onSurface ? 0.0 : c.covered > 0 ? static_cast<double>(c.showing) / static_cast<double>(c.covered)
-                                              : patchShown;
+  } else {
+    for (int e = begin; e < end; ++e) {
+      const std::optional<LocalPolygon> local = inSurfaceView(shot.surface, shot.shooter, elements.elements[e]);
+      if (!local) continue;
+      double w = smallPolygonFormFactor(local->corners(), local->centroid, local->normal, elements.elements[e].areaM2);
+      if (partly && w > 0.0) {
+        const Cover c = coverOf(shot, *local, nearDepth, p, patches.facesReached[p]);
+        // An element between pixel centres takes its patch's shown fraction.
+        w *= !c.onSurface ? 0.0 : c.covered > 0 ? static_cast<double>(c.showing) / static_cast<double>(c.covered)
+                                                : patchShown;
+      }
+      weight[e - begin] = w;
+      sum += w;
     }
-    weight[e - begin] = w;
-    sum += w;
   }
   const double f = patches.formFactors[p];
   for (int e = begin; e < end; ++e)
