@@ -12,10 +12,7 @@ namespace radmesh {
 namespace {
 
 double diameter(const Patch& p) {
-  double d = 0.0;
-  for (int a = 0; a < p.vertexCount; ++a)
-    for (int b = a + 1; b < p.vertexCount; ++b) d = std::max(d, glm::length(p.vertices[a] - p.vertices[b]));
-  return d;
+  return std::sqrt(squaredDiameter({p.vertices.data(), static_cast<size_t>(p.vertexCount)}));
 }
 
 // Every vertex of `patch` on or in front of the plane of `of` (to rounding at size `scale`).
