@@ -61,9 +61,6 @@ void validateOptions(const SolveOptions& o) {
   if (o.subdivide == Subdivide::Adaptive && !(o.minElementM > 0.0))
     throw OptionError("--subdivide adaptive splits elements down to --min-element, so it needs one above 0: give "
                       "e.g. --min-element 0.05 (metres)");
-  if (o.meshTransport && o.subdivide == Subdivide::Adaptive)
-    throw OptionError("--subdivide adaptive is not built over processes yet (a split routes elements into PE lists "
-                      "that other processes hold): give --subdivide uniform, or leave out --distributed");
   if (o.elementRows == ElementRows::Share && o.backend == Backend::Mesh)
     throw OptionError("--element-rows share is the native back end's: the mesh back end z-buffers every element on "
                       "its PEs, as the paper's machine does; give --element-rows rasterise (or auto), or --backend native");

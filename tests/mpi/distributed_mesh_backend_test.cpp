@@ -135,19 +135,30 @@ TEST(DistributedMeshSolve, ABlockOfPartClustersIsRefused) {
   }
 }
 
-// Adaptive elements move between PEs at a split, into lists of other processes: refused, naming
-// the fix, on any number of processes (with a transport, even of one).
-TEST(DistributedMeshSolve, AdaptiveElementsAreRefused) {
-  SolveOptions o = split(smallMachine(MappingKind::Hierarchical));
+// Adaptive elements move between PEs at a split, into lists other processes hold (the router
+// carries them across): the same splits, elements and light as one process, bit for bit.
+TEST(DistributedMeshSolve, AdaptiveSplitsEqualOneProcess) {
+  const test::MeshedScene& m = cornell();
+  SolveOptions o = smallMachine(MappingKind::Hierarchical);
   o.subdivide = Subdivide::Adaptive;
   o.minElementM = 0.05;
-  try {
-    validateOptions(o);
-    FAIL() << "adaptive elements over processes";
-  } catch (const OptionError& e) {
-    EXPECT_NE(std::string(e.what()).find("--subdivide adaptive is not built over processes"), std::string::npos)
-        << e.what();
-  }
+  o.maxIterations = 6;
+  ProgressiveSolver alone(m.scene, m.patches, o);
+  ProgressiveSolver spread(m.scene, m.patches, split(o));
+  while (!alone.done()) alone.step();
+  while (!spread.done()) spread.step();
+  ASSERT_GT(alone.elements().size(), m.patches.size());  // it split
+  ASSERT_EQ(spread.elements().size(), alone.elements().size());
+  for (size_t e = 0; e < alone.elements().size(); ++e)
+    EXPECT_EQ(spread.elements()[e].vertices, alone.elements()[e].vertices) << "element " << e;
+  EXPECT_EQ(spread.elementRadiosity(), alone.elementRadiosity());
+  EXPECT_EQ(spread.radiosity(), alone.radiosity());
+  EXPECT_EQ(spread.ledger().absorbed, alone.ledger().absorbed);
+  EXPECT_EQ(spread.ledger().unshot, alone.ledger().unshot);
+  const auto counts = [](ProgressiveSolver& solver) {
+    return dynamic_cast<MeshBackend&>(solver.backend()).machine().costs().summary();
+  };
+  EXPECT_EQ(counts(spread), counts(alone));
 }
 
 }  // namespace

@@ -330,6 +330,10 @@ void MeshBackend::testReceivers(const FormFactorRow& row, double flopsPerTest, d
       for (const PatchRecord& p : patchesOnPe_.list(pe))
         if (receiverOf[p.patch] >= 0) rays[pe] += test(receiverOf[p.patch]);
     });
+    // As in updateReceivers: every front end marks the other processes' receivers too, so that
+    // every process splits the same elements.
+    for (int j = 0; j < layout_.patches; ++j)
+      if (!machine_.holds(layout_.peOf(j)) && receiverOf[j] >= 0) test(receiverOf[j]);
     const double most = emu::reduceMax(machine_, rays).value;
     machine_.chargeAlu({flopsPerTest * slots + flopsPerRay * most, 2.0 * slots});
     return most;
