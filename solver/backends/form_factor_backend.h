@@ -70,6 +70,16 @@ class FormFactorBackend {
   // flopsPerRay each (SIMD: every PE steps through the most rays any PE casts).
   virtual void testReceivers(const FormFactorRow& row, double flopsPerTest, double flopsPerRay,
                              const std::function<int(std::size_t)>& test);
+  // The gradient criterion (solver/radiosity/adaptive_split.h, markContrast) where the receivers
+  // are held: marks split[e] = 1 for every receiver e with a neighbour whose reflected light differs
+  // from its own by more than contrast times the brightest receiver's, where canSplit(e), and
+  // returns true. Here false: the host holds the receivers and marks them itself. The mesh back end
+  // marks them on its PEs (phase "gradient test").
+  virtual bool markContrast(const std::vector<std::vector<int>>& /*neighbours*/,
+                            const std::vector<double>& /*reflected*/, double /*contrast*/,
+                            const std::function<bool(int)>& /*canSplit*/, std::vector<char>& /*split*/) {
+    return false;
+  }
   // The receivers (held by reference) were split in place: receiver e now is, or descends from,
   // old receiver origin[e]. The back end takes the new set (the mesh back end moves the element
   // records to their new PEs); rows from now on index the new receivers, as a back end made anew

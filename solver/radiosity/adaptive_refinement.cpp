@@ -38,7 +38,9 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
     std::vector<double> reflected(n);
     for (size_t e = 0; e < n; ++e)
       reflected[e] = channelSum(elementRadiosity[e] - scene.materials[elements.elements[e].material].emittance);
-    markContrast(elements, neighbours, reflected, options.splitContrast, options.minElementM, split);
+    if (!backend->markContrast(neighbours, reflected, options.splitContrast,
+                               [&](int e) { return splittable(elements.elements[e], options.minElementM); }, split))
+      markContrast(elements, neighbours, reflected, options.splitContrast, options.minElementM, split);
     if (options.splitShadows) {
       size_t r = 0;  // rows holds the patch shots' rows, in order
       for (const Shot& shot : shots) {

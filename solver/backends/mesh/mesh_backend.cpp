@@ -14,6 +14,7 @@
 #include "emulator/reduce.h"
 #include "emulator/router.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
+#include "solver/backends/mesh/mesh_contrast.h"
 #include "solver/scene/scene_error.h"
 #include "solver/projection/single_plane.h"
 #include "solver/formfactors/sub_pixel_receivers.h"
@@ -338,6 +339,18 @@ void MeshBackend::testReceivers(const FormFactorRow& row, double flopsPerTest, d
     machine_.chargeAlu({flopsPerTest * slots + flopsPerRay * most, 2.0 * slots});
     return most;
   });
+}
+
+bool MeshBackend::markContrast(const std::vector<std::vector<int>>& neighbours, const std::vector<double>& reflected,
+                               double contrast, const std::function<bool(int)>& canSplit,
+                               std::vector<char>& split) try {
+  inPhase("gradient test", [&] {
+    markContrastOnMesh(machine_, patchesOnPe_, layout_, neighbours, reflected, contrast, canSplit, split);
+    return true;
+  });
+  return true;
+} catch (const emu::MemoryBudgetError& e) {
+  refuseMachine(e);
 }
 
 void MeshBackend::receiversSplit(std::span<const int> origin) try {

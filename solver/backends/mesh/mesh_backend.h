@@ -63,6 +63,9 @@ class MeshBackend final : public FormFactorBackend {
   // rays any PE casts, and the machine steps that many (phase "shadow test").
   void testReceivers(const FormFactorRow& row, double flopsPerTest, double flopsPerRay,
                      const std::function<int(std::size_t)>& test) override;
+  // Each PE marks its elements (mesh_contrast.h), and the front end reads the marks.
+  bool markContrast(const std::vector<std::vector<int>>& neighbours, const std::vector<double>& reflected,
+                    double contrast, const std::function<bool(int)>& canSplit, std::vector<char>& split) override;
   // The elements lie on the PEs cyclically again, in the new order: each parent's PE makes its
   // children (an unsplit element is its own), and every one whose PE changes is routed to its
   // new PE and slot, as many router sends as the busiest PE makes elements (phase "element

@@ -270,6 +270,42 @@ TEST(MeshAdaptive, SplitsAsTheNativeBackEndDoesOnAnyThreadCount) {
   EXPECT_EQ(counts(three), counts(one));
 }
 
+// The gradient criterion on the mesh: each PE marks its elements from its neighbours' light, sent
+// by the router, exactly as the host's markContrast does; one message per (element, neighbour)
+// pair and one reduceMax (the brightest), charged to the phase "gradient test".
+TEST(MeshAdaptive, TheGradientTestMarksOnThePesWhatTheHostMarks) {
+  const ShadowScene s;
+  const Elements elements = subdivideUniform(s.t.patches, 0.125);  // the floor 16 x 16
+  const std::vector<std::vector<int>> neighbours = elementNeighbours(elements);
+  std::vector<double> reflected(elements.elements.size());
+  for (size_t e = 0; e < reflected.size(); ++e) {  // a step across x = 0.3, a gentle slope elsewhere
+    const Vec3& c = elements.elements[e].centroid;
+    reflected[e] = (c.x > 0.3 ? 10.0 : 2.0) + 0.01 * c.y;
+  }
+  constexpr double kContrast = 0.1, kMinElement = 0.05;  // 0.125 m elements can split, the light's 0.05 m not
+  std::vector<char> host(reflected.size(), 0), onPes(reflected.size(), 0);
+  markContrast(elements, neighbours, reflected, kContrast, kMinElement, host);
+  for (int threads : {1, 3}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    SolveOptions o = optionsFor(Projection::Plane, 32, threads);
+    o.backend = Backend::Mesh;
+    o.machine = {16, 16, 16};
+    MeshBackend mesh(s.t.scene, s.t.patches, elements.elements, o);
+    std::fill(onPes.begin(), onPes.end(), 0);
+    EXPECT_TRUE(mesh.markContrast(neighbours, reflected, kContrast,
+                                  [&](int e) { return splittable(elements.elements[e], kMinElement); }, onPes));
+    EXPECT_EQ(onPes, host);
+    const MeshPhaseCost& phase = mesh.lastShot().phases.back();
+    ASSERT_EQ(phase.name, "gradient test");
+    std::int64_t pairs = 0;
+    for (const std::vector<int>& n : neighbours) pairs += static_cast<std::int64_t>(n.size());
+    EXPECT_EQ(phase.counts.router.messages, pairs);
+    EXPECT_EQ(phase.counts.reduce.ops, 1);
+  }
+  const auto marked = std::count(host.begin(), host.end(), 1);
+  EXPECT_EQ(marked, 2 * 16 + 2 * 4);  // each side of the step: 16 of the floor's elements, 4 of the occluder's
+}
+
 // A split round updates the back end's receivers in place (receiversSplit) instead of making a
 // new back end: its rows must be bitwise those of a back end made anew for the split elements.
 TEST(Adaptive, ReceiversSplitComputesTheRowsOfANewBackend) {
