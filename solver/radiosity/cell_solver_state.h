@@ -1,6 +1,7 @@
 #pragma once
 // The state of a CellSolver, shared by the files that implement it (cell_solver_setup.cpp: the
-// cells, portals and lights made once; cell_solver.cpp: the rounds); private to solver/radiosity.
+// cells, portals and lights made once; cell_solver.cpp: the rounds; cell_solver_gather.cpp: the
+// building's radiosity and elements); private to solver/radiosity.
 #include <memory>
 #include <string>
 #include <vector>
