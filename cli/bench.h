@@ -89,6 +89,8 @@ struct BenchCellsArgs {
   int maxIterations = 1'000'000;
   bool skipWhole = false;      // no whole-building solve (and so no error per room)
   bool focusOnly = false;      // the focus run alone: no whole-building solve, no solve to untilUnshot
+  std::string subdivide = "off";  // both solves' elements (docs/accuracy.md): off, uniform or adaptive
+  double minElementM = 0.0;
 };
 
 // The cells solve beside the whole building's (docs/cells.md): time, iterations, the error of the

@@ -36,6 +36,7 @@ struct CellsRun {
   double wallSeconds = 0.0;
   int iterations = 0;
   int rounds = 0;
+  std::size_t elements = 0;
   double unshotFraction = 0.0;
   std::vector<Rgb> radiosity;
 };
@@ -47,7 +48,8 @@ CellsRun runCells(const Scene& scene, const std::vector<Patch>& patches, const C
   const double start = benchSeconds(o.threads), wallStart = wallSeconds();
   CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots, args.portalBins});
   while (!solver.done()) solver.round();
-  return {benchSeconds(o.threads) - start, wallSeconds() - wallStart, solver.iterations(), solver.rounds(),
+  const double seconds = benchSeconds(o.threads) - start, wall = wallSeconds() - wallStart;
+  return {seconds, wall, solver.iterations(), solver.rounds(), solver.elements().elements.size(),
           solver.ledger().unshotFraction(), solver.radiosity()};
 }
 
@@ -143,11 +145,16 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
   o.maxIterations = args.maxIterations;
   o.effects = EffectsMode::All;  // the same projection in every cell as in the whole building
   o.threads = 1;
+  o.subdivide = parseSubdivide(args.subdivide);
+  o.minElementM = args.minElementM;
   validateOptions(o);
   fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, {} shots a cell a round on average, "
-             "portal bins {}\n",
+             "portal bins {}{}\n",
              scene.source, patches.size(), partition.cells.size(), partition.portals.size(), args.projection,
-             args.resolution, 100.0 * args.untilUnshot, args.exchangeShots, args.portalBins);
+             args.resolution, 100.0 * args.untilUnshot, args.exchangeShots, args.portalBins,
+             o.subdivide == Subdivide::Off ? ""
+                                           : fmt::format("; {} elements, --min-element {:g}", args.subdivide,
+                                                         args.minElementM));
 
   nlohmann::json result = {{"scene", scene.source},
                             {"patches", patches.size()},
@@ -187,6 +194,7 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
                  {"cells_wall_seconds", one.wallSeconds},
                  {"cells_iterations", one.iterations},
                  {"cells_rounds", one.rounds},
+                 {"cells_elements", one.elements},
                  {"cells_two_threads_seconds", parallel.seconds},
                  {"two_threads_speedup", one.wallSeconds / parallel.wallSeconds},
                  {"two_threads_identical", identical}});
@@ -208,6 +216,7 @@ nlohmann::json benchCells(const BenchCellsArgs& args) {
   nlohmann::json scenes = nlohmann::json::array();
   for (const std::string& name : args.scenes) scenes.push_back(benchScene(name, args));
   return {{"projection", args.projection}, {"resolution", args.resolution}, {"until_unshot", args.untilUnshot},
+          {"subdivide", args.subdivide}, {"min_element", args.minElementM},
           {"exchange_shots", args.exchangeShots}, {"portal_bins", args.portalBins}, {"scenes", scenes}};
 }
 

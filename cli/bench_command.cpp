@@ -131,6 +131,10 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_option("--focus-cell", args->focusCell, "The camera's cell, solved first")->capture_default_str();
   cmd->add_option("--focus-unshot", args->focusUnshot, "The focus cell's unshot fraction to time to")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per solve")->capture_default_str();
+  cmd->add_option("--subdivide", args->subdivide, "Both solves' receivers: off (patches), uniform or adaptive elements")
+      ->capture_default_str();
+  cmd->add_option("--min-element", args->minElementM, "With --subdivide: the longest element edge, metres")
+      ->capture_default_str();
   cmd->add_flag("--skip-whole", args->skipWhole, "No whole-building solve (for buildings where it takes too long)");
   cmd->add_flag("--focus-only", args->focusOnly, "Only the focus cell's time to --focus-unshot (no solve to --until-unshot)");
   cmd->add_option("--json", *json, "Also write the figures as JSON");

@@ -146,6 +146,27 @@ TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
   EXPECT_EQ(only["focus_arrived_w"], scene["focus_arrived_w"]);
 }
 
+// --subdivide and --min-element reach both solves: the cells cut their patches into the elements
+// `radmesh info` counts for the building; an unknown mode is refused naming the fix.
+TEST(Cli, BenchCellsSolvesWithElementsWhenAsked) {
+  const std::string json = tempPath("cells.json");
+  const CommandRun run = radmesh("bench cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --skip-whole "
+                                 "--subdivide uniform --min-element 0.375 --json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto j = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(j["subdivide"], "uniform");
+  EXPECT_EQ(j["min_element"], 0.375);
+  const CommandRun info = radmesh("info two-rooms --cell 0.75 --min-element 0.375");
+  ASSERT_EQ(info.exitCode, 0) << info.output;
+  EXPECT_NE(info.output.find("elements        1460 with --subdivide uniform"), std::string::npos) << info.output;
+  EXPECT_EQ(j["scenes"][0]["cells_elements"], 1460);
+  EXPECT_NE(run.output.find("uniform elements, --min-element 0.375"), std::string::npos) << run.output;
+
+  const CommandRun bad = radmesh("bench cells two-rooms --cell 0.75 --subdivide sometimes");
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_NE(bad.output.find("--subdivide"), std::string::npos) << bad.output;
+}
+
 // bench solve --cells auto times the cells solve to the unshot fraction: reached, the same
 // iterations as `solve --cells auto` with the same settings.
 TEST(Cli, BenchSolveTimesTheCellsSolve) {
