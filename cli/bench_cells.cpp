@@ -133,10 +133,8 @@ RoomErrors roomErrors(const Scene& scene, const std::vector<Patch>& patches, con
   return r;
 }
 
-nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
-  const Scene scene = loadScene(name);
-  const std::vector<Patch> patches = meshScene(scene, args.cellM);
-  const CellPartition partition = findCells(scene, patches);
+// Both solves' options, checked before anything is printed.
+SolveOptions solveOptions(const BenchCellsArgs& args) {
   SolveOptions o;
   o.projection = parseProjection(args.projection);
   o.resolution = args.resolution;
@@ -148,6 +146,13 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
   o.subdivide = parseSubdivide(args.subdivide);
   o.minElementM = args.minElementM;
   validateOptions(o);
+  return o;
+}
+
+nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const BenchCellsArgs& args) {
+  const Scene scene = loadScene(name);
+  const std::vector<Patch> patches = meshScene(scene, args.cellM);
+  const CellPartition partition = findCells(scene, patches);
   fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, {} shots a cell a round on average, "
              "portal bins {}{}\n",
              scene.source, patches.size(), partition.cells.size(), partition.portals.size(), args.projection,
@@ -211,10 +216,11 @@ nlohmann::json benchScene(const std::string& name, const BenchCellsArgs& args) {
 }  // namespace
 
 nlohmann::json benchCells(const BenchCellsArgs& args) {
+  const SolveOptions o = solveOptions(args);
   fmt::print("seconds: one thread, the solving thread's CPU time; two threads, wall time; the speed-up on two "
              "threads is wall time against wall time\n");
   nlohmann::json scenes = nlohmann::json::array();
-  for (const std::string& name : args.scenes) scenes.push_back(benchScene(name, args));
+  for (const std::string& name : args.scenes) scenes.push_back(benchScene(name, o, args));
   return {{"projection", args.projection}, {"resolution", args.resolution}, {"until_unshot", args.untilUnshot},
           {"subdivide", args.subdivide}, {"min_element", args.minElementM},
           {"exchange_shots", args.exchangeShots}, {"portal_bins", args.portalBins}, {"scenes", scenes}};
