@@ -62,6 +62,11 @@ void printSummary(const ProgressiveSolver& solver, double seconds) {
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
              "  (imbalance {:.1e})\n",
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
+  if (solver.options().formFactorCacheBytes == 0) return;
+  size_t shots = 0, hits = 0;
+  for (const IterationRecord& r : solver.history()) shots += r.shooters.size(), hits += static_cast<size_t>(r.cacheHits);
+  fmt::print("form-factor cache: {} of {} shots served without projecting (up to {:.0f} MiB; --cache-mb 0: none)\n", hits,
+             shots, solver.options().formFactorCacheBytes / 1048576.0);
 }
 
 void writeBake(const std::string& path, const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity,

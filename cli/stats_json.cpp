@@ -40,7 +40,8 @@ nlohmann::json optionsJson(const SolveOptions& o) {
           {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM},
           {"element_rows", toString(resolvedElementRows(o))},
           {"split_contrast", o.splitContrast}, {"split_shadows", o.splitShadows},
-          {"split_regather", o.splitRegatherAll ? "all" : "last"}};
+          {"split_regather", o.splitRegatherAll ? "all" : "last"},
+          {"cache_mb", o.formFactorCacheBytes / 1048576.0}};
   if (o.backend == Backend::Mesh) j.update({{"pe_grid", peGridText(o.machine)}, {"pe_memory_kb", o.machine.memoryKb}});
   return j;
 }

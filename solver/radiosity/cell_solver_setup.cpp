@@ -2,6 +2,7 @@
 // assigned to processes, and the lights' one shot over the whole building handed to the cells.
 #include <algorithm>
 #include <array>
+#include <numeric>
 #include <fmt/format.h>
 
 #include "solver/formfactors/light_rows.h"
@@ -133,6 +134,8 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
   std::vector<std::array<int, 2>> portalFirstPatch(partition.portals.size(), {-1, -1});  // per side: A, B
   SolveOptions cellOptions = options;
   cellOptions.threads = 1;  // the cells run in parallel, each on one thread
+  // The form-factor cache's budget is the whole solve's: each cell takes its share by patches.
+  const double allPatches = std::accumulate(patchCount.begin(), patchCount.end(), 0.0);
   for (int c = 0; c < cellCount; ++c) {
     CellState& cell = s.cells[c];
     cell.name = c < partitionCells ? partition.cells[c].name : "outside";
@@ -169,6 +172,8 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
     }
     cell.portalPatches = static_cast<int>(portalPatches.size());
     if (!s.owns(c)) continue;
+    cellOptions.formFactorCacheBytes =
+        static_cast<std::size_t>(static_cast<double>(options.formFactorCacheBytes) * patchCount[c] / allPatches);
     cell.solver = std::make_unique<ProgressiveSolver>(sub, std::move(local), cellOptions);
     cell.solver->setPortalPatches(portalPatches, settings.portalBins);
   }

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>  // sysconf: the machine's memory
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -133,6 +136,13 @@ void applyPreset(Preset preset, SolveOptions& o) {
   o.shooters = 1;
   o.until = bake ? 1.0 : 0.95;  // the bake stops on the unshot power alone
   o.untilUnshot = bake ? 0.01 : 0.0;
+}
+
+std::size_t defaultFormFactorCacheBytes() {
+  constexpr std::size_t kBudget = std::size_t{1} << 30;
+  const long pages = sysconf(_SC_PHYS_PAGES), pageBytes = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || pageBytes <= 0) return kBudget;  // unknown: the machine is taken to have 4 GiB
+  return std::min(kBudget, static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageBytes) / 4);
 }
 
 const char* toString(Preset preset) { return preset == Preset::Bake ? "bake" : "paper"; }

@@ -48,7 +48,9 @@ struct SolveOptions {
   double untilUnshot = 0.0;
   int maxIterations = 1'000'000;
   int threads = 0;         // 0: every core
-  std::size_t formFactorCacheBytes = 0;  // 0: no form-factor row cache
+  // 0: no form-factor row cache. The CLI gives the native back end defaultFormFactorCacheBytes():
+  // there a cached row is bitwise the row projected again, so the cache costs memory, not accuracy.
+  std::size_t formFactorCacheBytes = 0;
   bool ambient = true;     // display-only ambient term (Cohen et al. 1988)
   // Patches projecting to less than a pixel get analytic form factors with item-buffer
   // visibility (solver/formfactors/sub_pixel_receivers.h); false: pixel centres only, as in the paper.
@@ -83,6 +85,9 @@ struct SolveOptions {
 // A preset sets the projection, resolution, ratio, shooters and stopping rule, nothing else.
 enum class Preset { Bake, Paper };
 void applyPreset(Preset preset, SolveOptions& options);
+// The form-factor cache a solve on the host gets unless told: 1 GiB, or a quarter of this
+// machine's memory where that is less (docs/accuracy.md, Defaults).
+std::size_t defaultFormFactorCacheBytes();
 const char* toString(Preset preset);
 Preset parsePreset(const std::string& text);  // throws OptionError
 

@@ -13,11 +13,6 @@
 namespace radmesh {
 namespace {
 
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // The paper's cell, 47 patches: the default cell, chosen from the box's size, makes ~1700.
 const std::string kOptions = "--quiet --resolution 64 --shooters 2 --until 1 --until-unshot 0 ";
 const std::string kSolve = "solve cornell --cell 0.381 " + kOptions;

@@ -11,11 +11,6 @@
 namespace radmesh {
 namespace {
 
-nlohmann::json readJson(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
 int sum(const nlohmann::json& histogram) {
   const std::vector<int> counts = histogram.get<std::vector<int>>();
   return std::accumulate(counts.begin(), counts.end(), 0);

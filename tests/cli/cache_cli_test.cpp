@@ -1,0 +1,56 @@
+// The form-factor cache as `radmesh solve` sets it unless told: on the native back end every
+// patch that shoots again is served from the cache, and the answer is bitwise the uncached one.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/cli/cli_run.h"
+
+namespace radmesh {
+namespace {
+
+TEST(CliCache, TheHostCachesEveryRowShotAgainByDefaultAndTheAnswerIsTheUncachedOne) {
+  const std::string solve = "solve cornell --cell 0.2 --resolution 64 --threads 1 ";
+  const std::string cachedStats = tempPath("cached.json"), cachedBake = tempPath("cached.glb");
+  const CommandRun cached = radmesh(solve + "--stats " + cachedStats + " --out " + cachedBake);
+  ASSERT_EQ(cached.exitCode, 0) << cached.output;
+  const std::string plainStats = tempPath("plain.json"), plainBake = tempPath("plain.glb");
+  const CommandRun plain = radmesh(solve + "--cache-mb 0 --stats " + plainStats + " --out " + plainBake);
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
+
+  const nlohmann::json c = readJson(cachedStats), p = readJson(plainStats);
+  EXPECT_GT(c["cache_mb"].get<double>(), 0.0);
+  EXPECT_LE(c["cache_mb"].get<double>(), 1024.0);
+  EXPECT_EQ(p["cache_mb"].get<double>(), 0.0);
+  ASSERT_EQ(c["iterations"], p["iterations"]);
+  int hits = 0, reused = 0;
+  for (size_t i = 0; i < c["per_iteration"].size(); ++i) {
+    const nlohmann::json& r = c["per_iteration"][i];
+    EXPECT_EQ(r["cache_hits"], r["reused_rows"]) << "iteration " << i + 1;  // the budget holds every row
+    EXPECT_EQ(p["per_iteration"][i]["cache_hits"], 0);
+    hits += r["cache_hits"].get<int>();
+    reused += r["reused_rows"].get<int>();
+  }
+  EXPECT_EQ(hits, reused);
+  EXPECT_EQ(hits, 149);  // of 236 shots: 93 patches, most shooting more than once
+  EXPECT_NE(cached.output.find("form-factor cache: 149 of 236 shots served without projecting"), std::string::npos)
+      << cached.output;
+  EXPECT_EQ(c["ledger"], p["ledger"]);
+  EXPECT_EQ(readBytes(cachedBake), readBytes(plainBake));  // bitwise the same bake
+}
+
+// The mesh back end's rows are its PEs' to hold, and there a row computed beside other shooters
+// differs in its last bits: it caches only when told.
+TEST(CliCache, TheMeshBackEndCachesOnlyWhenTold) {
+  const std::string stats = tempPath("mesh.json");
+  const std::string solve = "solve cornell --backend mesh --pe-grid 16x16 --cell 0.2 --resolution 64 --max-iterations 3 --stats " + stats;
+  const CommandRun run = radmesh(solve);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(readJson(stats)["cache_mb"].get<double>(), 0.0);
+  const CommandRun told = radmesh(solve + " --cache-mb 64");
+  ASSERT_EQ(told.exitCode, 0) << told.output;
+  EXPECT_EQ(readJson(stats)["cache_mb"].get<double>(), 64.0);
+}
+
+}  // namespace
+}  // namespace radmesh
