@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <numeric>
 
 #include "solver/geometry/point_grid.h"
 #include "solver/formfactors/analytic_form_factor.h"
+#include "solver/meshing/gradient_criterion.h"
 #include "solver/projection/projection.h"
 
 namespace radmesh {
@@ -141,10 +141,10 @@ void markContrast(const Elements& elements, const std::vector<std::vector<int>>&
                   const std::vector<double>& reflected, double contrast, double minElementM,
                   std::vector<char>& split) {
   const double brightest = reflected.empty() ? 0.0 : *std::max_element(reflected.begin(), reflected.end());
-  const double step = contrast * brightest;
+  const double step = contrastStep(contrast, brightest);
   for (size_t e = 0; e < reflected.size(); ++e)
     for (int n : neighbours[e])
-      if (std::abs(reflected[e] - reflected[n]) > step && splittable(elements.elements[e], minElementM)) split[e] = 1;
+      if (stepTooLarge(reflected[e], reflected[n], step) && splittable(elements.elements[e], minElementM)) split[e] = 1;
 }
 
 bool segmentBlocked(const Vec3& a, const Vec3& b, const std::vector<Patch>& patches, int skipA, int skipB) {

@@ -27,8 +27,8 @@ bool splittable(const Patch& element, double minElementM);
 
 // The gradient criterion: marks (split[e] = 1) both elements of every neighbouring pair whose
 // reflected radiosities (W/m^2 summed over RGB) differ by more than `contrast` times the brightest
-// element's: a step the eye would see in a picture exposed for the brightest, where a relative
-// step would also split the dim corners, whose errors no picture shows. Marks only splittable elements.
+// element's (contrastStep and stepTooLarge, solver/meshing/gradient_criterion.h). Marks only
+// splittable elements.
 void markContrast(const Elements& elements, const std::vector<std::vector<int>>& neighbours,
                   const std::vector<double>& reflected, double contrast, double minElementM,
                   std::vector<char>& split);

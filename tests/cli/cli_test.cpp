@@ -106,12 +106,24 @@ TEST(Cli, SolveCellsWithPortalBinsBalancesAndSaysSo) {
   EXPECT_GT(j["per_cell"][1]["ledger"]["portal_in"].get<double>(), 0.0);
 }
 
+// What `radmesh bench` printed and the JSON it wrote.
+struct BenchRun {
+  std::string output;
+  nlohmann::json json;
+};
+
+// Runs `radmesh bench <arguments> --json <file>`, which must succeed. A run that fails without
+// writing its JSON ends the test: the file is removed first, so parse throws.
+BenchRun runBench(const std::string& arguments) {
+  const std::string json = tempPath("bench.json");
+  std::filesystem::remove(json);
+  const CommandRun run = radmesh("bench " + arguments + " --json " + json);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  return {run.output, nlohmann::json::parse(std::ifstream(json))};
+}
+
 TEST(Cli, BenchCellsComparesTheCellsSolveWithTheWholeBuilding) {
-  const std::string json = tempPath("cells.json");
-  const CommandRun run = radmesh("bench cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --json " + json);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  std::ifstream in(json);
-  const auto j = nlohmann::json::parse(in);
+  const auto j = runBench("cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1").json;
   ASSERT_EQ(j["scenes"].size(), 1u);
   const auto& scene = j["scenes"][0];
   EXPECT_EQ(scene["cells"], 2);
@@ -124,11 +136,9 @@ TEST(Cli, BenchCellsComparesTheCellsSolveWithTheWholeBuilding) {
 
 // --skip-whole: no whole-building solve, so no error per room; the cells solve and the focus still timed.
 TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
-  const std::string json = tempPath("cells.json");
-  const CommandRun run = radmesh("bench cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --skip-whole "
-                                 "--focus-cell 1 --json " + json);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  const auto scene = nlohmann::json::parse(std::ifstream(json))["scenes"][0];
+  const BenchRun run =
+      runBench("cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --skip-whole --focus-cell 1");
+  const auto scene = run.json["scenes"][0];
   for (const char* key : {"whole_seconds", "whole_iterations", "rooms", "largest_room_error"})
     EXPECT_FALSE(scene.contains(key)) << key;
   EXPECT_TRUE(scene["two_threads_identical"].get<bool>());
@@ -138,9 +148,9 @@ TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
   EXPECT_EQ(run.output.find("whole building, 1 thread"), std::string::npos) << run.output;
 
   // --focus-only: the focus run alone, the same as in the full bench.
-  const std::string focus = tempPath("focus.json");
-  ASSERT_EQ(radmesh("bench cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --focus-only --focus-cell 1 --json " + focus).exitCode, 0);
-  const auto only = nlohmann::json::parse(std::ifstream(focus))["scenes"][0];
+  const BenchRun focus =
+      runBench("cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --focus-only --focus-cell 1");
+  const auto& only = focus.json["scenes"][0];
   EXPECT_FALSE(only.contains("cells_seconds"));
   EXPECT_EQ(only["focus_iterations"], scene["focus_iterations"]);
   EXPECT_EQ(only["focus_arrived_w"], scene["focus_arrived_w"]);
@@ -149,11 +159,9 @@ TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
 // --subdivide and --min-element reach both solves: the cells cut their patches into the elements
 // `radmesh info` counts for the building; an unknown mode is refused naming the fix.
 TEST(Cli, BenchCellsSolvesWithElementsWhenAsked) {
-  const std::string json = tempPath("cells.json");
-  const CommandRun run = radmesh("bench cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --skip-whole "
-                                 "--subdivide uniform --min-element 0.375 --json " + json);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  const auto j = nlohmann::json::parse(std::ifstream(json));
+  const BenchRun run = runBench("cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --skip-whole "
+                                "--subdivide uniform --min-element 0.375");
+  const auto& j = run.json;
   EXPECT_EQ(j["subdivide"], "uniform");
   EXPECT_EQ(j["min_element"], 0.375);
   const CommandRun info = radmesh("info two-rooms --cell 0.75 --min-element 0.375");
@@ -170,11 +178,8 @@ TEST(Cli, BenchCellsSolvesWithElementsWhenAsked) {
 // bench solve --cells auto times the cells solve to the unshot fraction: reached, the same
 // iterations as `solve --cells auto` with the same settings.
 TEST(Cli, BenchSolveTimesTheCellsSolve) {
-  const std::string json = tempPath("bench.json");
-  const CommandRun run = radmesh("bench solve two-rooms --cells auto --exchange-shots 8 --until 1 "
-                                 "--until-unshot 0.1 --projections hemicube --resolutions 16 --threads 1 --json " + json);
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  const auto j = nlohmann::json::parse(std::ifstream(json));
+  const auto j = runBench("solve two-rooms --cells auto --exchange-shots 8 --until 1 --until-unshot 0.1 "
+                          "--projections hemicube --resolutions 16 --threads 1").json;
   EXPECT_EQ(j["cells"], "auto");
   ASSERT_EQ(j["rows"].size(), 1u);
   const auto& row = j["rows"][0];
@@ -596,12 +601,8 @@ namespace {
 // k shooters per iteration: half the iterations for k = 2, and the emulated MP-1 time only on the mesh.
 TEST(Cli, BenchSolveTimesEveryShooterCountOnEitherBackEnd) {
   for (const std::string backend : {"native", "mesh"}) {
-    const std::string json = tempPath("bench-" + backend + ".json");
-    const CommandRun run = radmesh("bench solve cornell --cell 0.1 --backend " + backend +
-                                   " --projections plane --resolutions 64 --shooters 1,2 --until 0.9 --json " + json);
-    ASSERT_EQ(run.exitCode, 0) << run.output;
-    std::ifstream in(json);
-    const auto j = nlohmann::json::parse(in);
+    const auto j = runBench("solve cornell --cell 0.1 --backend " + backend +
+                            " --projections plane --resolutions 64 --shooters 1,2 --until 0.9").json;
     ASSERT_EQ(j["rows"].size(), 2u) << j.dump();
     EXPECT_EQ(j["rows"][0]["shooters"], 1);
     EXPECT_EQ(j["rows"][1]["shooters"], 2);

@@ -166,13 +166,19 @@ void MeshBackend::totalIteration() {
 
 template <class Work>
 auto MeshBackend::inPhase(const char* name, Work&& work) {
-  decltype(work()) result;
-  {
+  // The phase's clock stops before the iteration is totalled.
+  auto timed = [&] {
     PhaseClock clock(machine_, lastShot_, name);
-    result = work();
+    return work();
+  };
+  if constexpr (std::is_void_v<decltype(work())>) {
+    timed();
+    totalIteration();
+  } else {
+    auto result = timed();
+    totalIteration();
+    return result;
   }
-  totalIteration();
-  return result;
 }
 
 MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
@@ -337,7 +343,6 @@ void MeshBackend::testReceivers(const FormFactorRow& row, double flopsPerTest, d
       if (!machine_.holds(layout_.peOf(j)) && receiverOf[j] >= 0) test(receiverOf[j]);
     const double most = emu::reduceMax(machine_, rays).value;
     machine_.chargeAlu({flopsPerTest * slots + flopsPerRay * most, 2.0 * slots});
-    return most;
   });
 }
 
@@ -346,7 +351,6 @@ bool MeshBackend::markContrast(const std::vector<std::vector<int>>& neighbours, 
                                std::vector<char>& split) try {
   inPhase("gradient test", [&] {
     markContrastOnMesh(machine_, patchesOnPe_, layout_, neighbours, reflected, contrast, canSplit, split);
-    return true;
   });
   return true;
 } catch (const emu::MemoryBudgetError& e) {
@@ -388,7 +392,6 @@ void MeshBackend::receiversSplit(std::span<const int> origin) try {
     lay(patchesOnPe_, layout_, [&](int e) { return arrived.at(layout_.peOf(e), layout_.slotOf(e)).record; });
     machine_.chargeAlu({0.0, 2.0 * layout_.slotsPerPe()});
     makeScanConversion();
-    return rounds;
   });
   shotPending_ = true;
 } catch (const emu::MemoryBudgetError& e) {

@@ -85,7 +85,8 @@ class MeshBackend final : public FormFactorBackend {
   // lastShot_ as a new iteration's record from now; totalIteration() brings its totals up to now.
   void beginIteration();
   void totalIteration();
-  // Runs work() as the iteration's phase `name` (its cost added to lastShot_) and totals.
+  // Runs work() as the iteration's phase `name` (its cost added to lastShot_) and totals;
+  // returns what work() returns, if anything.
   template <class Work> auto inPhase(const char* name, Work&& work);
   FormFactorRow assembleRow(const MeshShot& shot, int plane, std::vector<double> formFactors);
   // Per receiver, its index in the row (-1 when not in it): where a PE finds its receiver's entry.

@@ -1,13 +1,13 @@
 #include "solver/backends/mesh/mesh_contrast.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "emulator/active_mask.h"
 #include "emulator/front_end.h"
 #include "emulator/reduce.h"
 #include "emulator/router.h"
+#include "solver/meshing/gradient_criterion.h"
 
 namespace radmesh {
 
@@ -35,7 +35,7 @@ void markContrastOnMesh(emu::MeshMachine& m, const emu::PeArray<PatchRecord>& el
   m.compute({kReflectedFlops * slots, slots}, [&](int pe) {
     for (const PatchRecord& e : elementsOnPe.list(pe)) brightestOnPe[pe] = std::max(brightestOnPe[pe], reflected[e.patch]);
   });
-  const double step = contrast * emu::reduceMax(m, brightestOnPe).value;
+  const double step = contrastStep(contrast, emu::reduceMax(m, brightestOnPe).value);
 
   // Round r: each PE sends the light of its r-th (element, neighbour) pair to the neighbour's PE.
   std::vector<std::vector<NeighbourLight>> pairs(m.size());
@@ -68,7 +68,7 @@ void markContrastOnMesh(emu::MeshMachine& m, const emu::PeArray<PatchRecord>& el
   std::vector<std::vector<Mark>> markedOn(m.size());
   m.compute({kContrastCompareFlops * most, kContrastFindIntOps * most}, [&](int pe) {
     for (const NeighbourLight& a : arrived.list(pe))
-      if (std::abs(reflected[a.element] - a.light) > step && canSplit(a.element)) markedOn[pe].push_back({pe, a.element});
+      if (stepTooLarge(reflected[a.element], a.light, step) && canSplit(a.element)) markedOn[pe].push_back({pe, a.element});
   });
   std::vector<Mark> marked;
   m.forEachPe([&](int pe) { marked.insert(marked.end(), markedOn[pe].begin(), markedOn[pe].end()); });
