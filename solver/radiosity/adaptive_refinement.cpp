@@ -81,8 +81,9 @@ void ProgressiveSolver::State::regather(const std::vector<int>& origin, const st
     sources.clear();
     for (size_t p = 0; p < patches.size(); ++p)
       if (channelSum(shotTotal[p]) > 0.0) sources.push_back({static_cast<int>(p), -1, shotTotal[p]});
-    for (size_t k = 0; lightsShot && k < scene.lights.size(); ++k)
-      if (channelSum(lightPower[k]) > 0.0) sources.push_back({-1, static_cast<int>(k), lightPower[k]});
+    const std::vector<Rgb>& lights = regatheredLightPower();
+    for (size_t k = 0; lightsShot && k < lights.size(); ++k)
+      if (channelSum(lights[k]) > 0.0) sources.push_back({-1, static_cast<int>(k), lights[k]});
   }
   std::vector<int> shooters;
   for (const Shot& shot : sources)
@@ -104,9 +105,7 @@ void ProgressiveSolver::State::regather(const std::vector<int>& origin, const st
       if (shot.patch >= 0)
         add(fresh[r++], shot.power);
       else
-        add(lightRow(scene, scene.lights[shot.light], elements.elements, options.resolution, sceneNearDepth(patches),
-                     pool),
-            shot.power);
+        add(lightRowOnElements(shot.light, pool), shot.power);
     }
   }
   elementRadiosity.resize(n);
@@ -148,6 +147,28 @@ void ProgressiveSolver::State::regather(const std::vector<int>& origin, const st
       cache.erase(row.shooter);
       cache.insert(row);
     }
+}
+
+FormFactorRow ProgressiveSolver::State::lightRowOnElements(int light, ThreadPool& pool) const {
+  if (buildingLightRow) return buildingLightRow(light, elements.elements);
+  return lightRow(scene, scene.lights[light], elements.elements, options.resolution, sceneNearDepth(patches), pool);
+}
+
+// A cells solve's lights arrived before the first step (receiveLight): as the whole solve's first
+// iteration, split where they changed the light and regather them onto the children.
+void ProgressiveSolver::splitAfterLights(std::vector<Rgb> powers, LightRowOver again) {
+  State& s = *state_;
+  if (!s.adaptive() || !s.history.empty()) return;
+  s.buildingLightPower = std::move(powers);
+  s.buildingLightRow = std::move(again);
+  s.lightsShot = true;
+  s.shots.clear();
+  for (size_t k = 0; k < s.buildingLightPower.size(); ++k)
+    if (channelSum(s.buildingLightPower[k]) > 0.0) s.shots.push_back({-1, static_cast<int>(k), s.buildingLightPower[k]});
+  s.rows.clear();  // the shadow criterion reads patch shots' rows: lights have none
+  IterationRecord lights;
+  s.refine(lights);
+  s.lightSplits = lights.elementsSplit;
 }
 
 }  // namespace radmesh

@@ -77,7 +77,7 @@ void checkPortalBins(int portalBins) {
 
 CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const CellPartition& partition,
                        const SolveOptions& options, const CellSolveSettings& settings, CellRanks* ranks)
-    : state_(std::make_unique<State>(std::move(patches), options, settings, ranks)) {
+    : state_(std::make_unique<State>(scene, std::move(patches), options, settings, ranks)) {
   validateOptions(options);
   if (options.until < 1.0)
     throw OptionError("--cells auto stops on the unshot power of the whole building alone: give --until 1 with "
@@ -262,5 +262,38 @@ void CellSolver::State::receiveLights(const std::vector<LightShot>& shots) {
     lights.absorbedByBackFaces += powerW * shot.row.backFaces;
     lights.lightOutside += powerW * (shot.row.escapedFraction() + shot.row.backFaces);
   }
+  if (options.subdivide != Subdivide::Adaptive || shots.empty()) return;
+  std::vector<Rgb> powers;
+  for (const LightShot& shot : shots) powers.push_back(shot.power);
+  pool.parallelFor(static_cast<int>(cells.size()), [&](int c, int) {
+    if (owns(c))
+      cells[c].solver->splitAfterLights(powers, [this, c](int k, const std::vector<Patch>& receivers) {
+        return lightRowOverCell(c, k, receivers);
+      });
+  });
+}
+
+// Light k's row over receivers of cell c (its solve's elements), shot over the building: the other
+// cells' patches stand in their places and occlude, and the cell's portal elements, openings in the
+// building, are left out (as in the lights' first shot, they get nothing). On the cell's thread.
+FormFactorRow CellSolver::State::lightRowOverCell(int c, int k, const std::vector<Patch>& receivers) {
+  const int portalMaterial = static_cast<int>(building.materials.size());  // the cell scene's last
+  std::vector<Patch> shotOver;
+  for (size_t j = 0; j < patches.size(); ++j)
+    if (cellOf[j] != c) shotOver.push_back(patches[j]);
+  const size_t others = shotOver.size();
+  std::vector<int> receiverOf;
+  for (size_t e = 0; e < receivers.size(); ++e)
+    if (receivers[e].material != portalMaterial) shotOver.push_back(receivers[e]), receiverOf.push_back(static_cast<int>(e));
+  ThreadPool one(1);
+  const FormFactorRow over =
+      lightRow(building, building.lights[k], shotOver, options.resolution, sceneNearDepth(patches), one);
+  FormFactorRow row;
+  for (size_t r = 0; r < over.receivers.size(); ++r)
+    if (static_cast<size_t>(over.receivers[r]) >= others) {
+      row.receivers.push_back(receiverOf[over.receivers[r] - others]);
+      row.formFactors.push_back(over.formFactors[r]);
+    }
+  return row;
 }
 }  // namespace radmesh

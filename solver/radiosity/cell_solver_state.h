@@ -60,6 +60,7 @@ inline std::vector<double> packFigures(const ProgressiveSolver& solver, int ownP
 }  // namespace cell_state
 
 struct CellSolver::State {
+  Scene building;  // what the lights shoot over (lightRowOverCell)
   std::vector<Patch> patches;
   SolveOptions options;
   CellSolveSettings settings;
@@ -88,8 +89,8 @@ struct CellSolver::State {
   std::vector<int> cellElements;
   std::vector<double> waitingW;  // per link: what waits on its portal patch, W
 
-  State(std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s, CellRanks* r)
-      : patches(std::move(p)), options(o), settings(s), pool(o.threads), ranks(r) {}
+  State(const Scene& b, std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s, CellRanks* r)
+      : building(b), patches(std::move(p)), options(o), settings(s), pool(o.threads), ranks(r) {}
 
   bool owns(int cell) const { return owner[cell] == (ranks ? ranks->rank() : 0); }
 
@@ -99,6 +100,7 @@ struct CellSolver::State {
   void exchange();
   std::vector<cell_state::LightShot> shootLights(const Scene& scene);
   void receiveLights(const std::vector<cell_state::LightShot>& shots);
+  FormFactorRow lightRowOverCell(int cell, int light, const std::vector<Patch>& receivers);
   void refresh();
   template <typename PerCell>
   std::vector<Rgb> gatherPatches(PerCell perCell) const;

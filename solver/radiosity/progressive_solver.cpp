@@ -47,6 +47,8 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
     for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
     if (s.adaptive()) s.neighbours = elementNeighbours(s.elements);
     if (s.adaptive()) s.shotTotal.assign(s.patches.size(), Rgb(0.0));
+    // A cells solve's lights arrive before the first step (receiveLight): their gain counts too.
+    if (s.adaptive()) s.iterationGain.assign(s.elements.elements.size(), Rgb(0.0));
   }
   s.findNearField();
   s.rho.resize(n);
@@ -225,6 +227,7 @@ const IterationRecord& ProgressiveSolver::step() {
   record.iteration = static_cast<int>(s.history.size()) + 1;
   s.shots.clear();
   if (s.adaptive()) s.iterationGain.assign(s.elements.elements.size(), Rgb(0.0));
+  if (s.history.empty()) record.elementsSplit = s.lightSplits;
   if (s.history.empty() && !s.scene.lights.empty()) {
     // The lights shoot first, once: C is measured against the strongest of them and the emitters.
     s.firstShotPowerW = *std::max_element(s.unshotPowerW.begin(), s.unshotPowerW.end());

@@ -2,6 +2,7 @@
 // Progressive refinement by shooting (the paper's sections 1.2 and 1.5): step() shoots the k
 // patches with the most unshot power. The CLI loops step(); the viewer interleaves it with frames.
 // It plans the effects the scene calls for (options.effects) and skips the rest, exactly.
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -103,6 +104,14 @@ class ProgressiveSolver {
   // ascending). It arrives as emitted power (ledger emitted), absorbed and reflected as in the
   // whole solve's first iteration. Returns the watts booked. Call before the first step.
   double receiveLight(FormFactorRow row, const Rgb& power);
+  // A light's row over receivers of this solve (their indices), shot over the scene that holds
+  // them and more: a cells solve's building, whose other rooms occlude too.
+  using LightRowOver = std::function<FormFactorRow(int light, const std::vector<Patch>& receivers)>;
+  // After every light's receiveLight, with --subdivide adaptive: the elements split where the
+  // lights' direct light (powers[k] for light k) changes, and the children take it anew from
+  // `again`, as the whole solve's first iteration splits and regathers; with --split-regather all,
+  // every later split takes it anew too. Call before the first step.
+  void splitAfterLights(std::vector<Rgb> powers, LightRowOver again);
   // Changes options().until and untilUnshot of the solve under way (throws OptionError).
   void setStoppingRule(double until, double untilUnshot);
   double convergence() const;

@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "parallel/thread_pool.h"
 #include "solver/formfactors/form_factor_cache.h"
 #include "solver/formfactors/near_field.h"
 #include "solver/meshing/elements.h"
@@ -37,6 +38,11 @@ struct ProgressiveSolver::State {
   std::vector<int> timesShot;
   std::vector<int> tieRank;            // shooters of equal power go in geometric order
   std::vector<Rgb> lightPower;         // per scene light, W per channel: all shot in iteration 1
+  // Lights a cells solve shot over its building (splitAfterLights): their power, and their rows
+  // over this solve's elements when they split. Empty: the lights are the scene's.
+  std::vector<Rgb> buildingLightPower;
+  ProgressiveSolver::LightRowOver buildingLightRow;
+  int lightSplits = 0;  // elements splitAfterLights split: the first iteration's record counts them
   std::vector<char> isPortal;          // per patch (setPortalPatches); its elements are portal receivers
   int portalBinsN = 0;                 // setPortalPatches' n: directionBinCount(n) bins per portal patch
   // Per portal patch, per bin of its direction of travel (in the frame of its back, facing the
@@ -86,6 +92,9 @@ struct ProgressiveSolver::State {
   // or split), and every shooter's pairs computed again.
   void findNearField();
   void refine(IterationRecord& record);
+  // The lights regather takes anew: the scene's, or a cells solve's building's.
+  const std::vector<Rgb>& regatheredLightPower() const { return buildingLightRow ? buildingLightPower : lightPower; }
+  FormFactorRow lightRowOnElements(int light, ThreadPool& pool) const;
   void regather(const std::vector<int>& origin, const std::vector<char>& split,
                 const std::vector<Rgb>& parentRadiosity, const std::vector<Rgb>& parentGain);
   template <typename Value, typename Incident> void receive(const FormFactorRow& row, Incident incidentOf);

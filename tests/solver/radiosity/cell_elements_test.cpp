@@ -88,6 +88,42 @@ TEST(CellElements, UniformElementsAndTheLightsShotAreTheWholeSolves) {
   for (; !cells.done(); cells.round()) EXPECT_LE(cells.ledger().imbalance(), 1e-9);
 }
 
+// With adaptive elements a light without a patch splits the elements where its direct light
+// changes before the first round, and the children take that light anew, shot over the building,
+// as the whole solve's first iteration splits and regathers (before, the cell wrote past the end
+// of its gains and crashed). The building as one cell: bitwise the whole solve's elements and
+// light. As two rooms: room B's elements split where light through the door falls, and every
+// round balances.
+TEST(CellElements, AdaptiveElementsSplitWhereALightChangesAsInTheWholeSolvesFirstIteration) {
+  TwoRooms t = twoRoomsAtTheCell();
+  for (Material& m : t.scene.materials) m.emittance = Rgb(0.0);
+  t.scene.lights.push_back({"lamp", LightType::Point, {2.0, 2.0, 2.2}, {0, 0, -1}, Rgb(2.0)});
+  const SolveOptions o = elementOptions(Subdivide::Adaptive, 0.05);
+  CellPartition one;
+  one.cells.push_back({"building", Vec3(-100.0), Vec3(100.0)});
+  one.cellOfPatch.assign(t.patches.size(), 0);
+  CellSolver cells(t.scene, t.patches, one, o, {kCellM, 16, 4});
+  ProgressiveSolver whole(t.scene, t.patches, o);
+  const int split = whole.step().elementsSplit;  // the light's shot, then its splits
+  ASSERT_GT(split, 0);
+  const std::vector<Patch> elements = cells.elements().elements;
+  ASSERT_EQ(elements.size(), whole.elements().size());
+  for (size_t e = 0; e < elements.size(); ++e) ASSERT_EQ(elements[e].vertices, whole.elements()[e].vertices) << "element " << e;
+  EXPECT_EQ(cells.elementRadiosity(), whole.elementRadiosity());
+  cells.round();
+  EXPECT_GE(cells.cellSolver(0).history().front().elementsSplit, split);  // the cell's first iteration counts them
+
+  CellSolver rooms(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kCellM, 16, 4});
+  const std::vector<CellFigures> before = rooms.cellFigures();
+  EXPECT_GT(before[0].elements, before[0].patches);
+  EXPECT_GT(before[1].elements, before[1].patches);
+  for (int round = 0; !rooms.done() && round < 500; ++round) {
+    rooms.round();
+    EXPECT_LE(rooms.ledger().imbalance(), 1e-9) << "round " << round;
+  }
+  EXPECT_TRUE(rooms.done());
+}
+
 // Each room's reflected light against the whole building's uniform solve, both to 1 % unshot on
 // the same elements, 4 x 4 portal bins. Measured: room A 0.37 %, room B 5.1 % off (the patches'
 // solve: B +5.8 % at this grid, docs/cells.md); the tolerances leave a margin.
