@@ -68,10 +68,7 @@ SolveOptions SolveFlags::resolved() const {
     o.projection = Projection::Plane;
   o.mapping = parseMapping(mapping);
   o.subdivide = parseSubdivide(subdivide);
-  // The mesh back end's rows live on its PEs' 16 KB, and a row it computes beside other shooters
-  // differs in its last bits from one computed alone: it caches only when told.
-  if (o.backend == Backend::Native && std::find(flags.begin(), flags.end(), "--cache-mb") == flags.end())
-    o.formFactorCacheBytes = defaultFormFactorCacheBytes();
+  o.formFactorCacheBytes = formFactorCacheBytes(o.backend, cacheMb);
   validateOptions(o);
   return o;
 }
@@ -118,11 +115,10 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option_function<double>(
          "--cache-mb",
          [&f](double mb) {
-           if (!(mb >= 0.0 && mb < 1e6)) throw OptionError("--cache-mb must be a size in MiB from 0 to 1e6");
-           f.options.formFactorCacheBytes = static_cast<std::size_t>(mb * 1024 * 1024);
+           f.cacheMb = mb;
+           formFactorCacheBytes(Backend::Native, mb);  // refused here, before anything runs
          },
-         "Form-factor row cache budget in MiB (0: none; default: 1024, or a quarter of the memory where that is less, "
-         "on the native back end, none on the mesh back end)");
+         kCacheMbHelp);
   cmd->add_option("--subdivide", f.subdivide,
                   "off (patches shoot and receive), uniform (patches shoot, their elements receive) or adaptive "
                   "(elements split where the light changes): docs/accuracy.md")

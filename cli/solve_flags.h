@@ -1,6 +1,7 @@
 #pragma once
 // The solve options every solving subcommand shares (solve, render), spelled once.
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@ struct SolveFlags {
   int portalBins = 4;         // --portal-bins: direction bins of light crossing a portal (0, 1: diffuse)
   Daylight daylight;          // --sky, --sky-model, --sun
   UpChoice up = UpChoice::Format;  // --up
+  std::optional<double> cacheMb;   // --cache-mb; unset: the back end's default (formFactorCacheBytes)
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
@@ -42,6 +44,10 @@ struct SolveFlags {
 inline constexpr const char* kPortalBinsHelp =
     "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
     "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
+
+inline constexpr const char* kCacheMbHelp =
+    "Form-factor row cache budget in MiB (0: none; default: 1024, or a quarter of the memory where that is less, on "
+    "the native back end; none on the mesh back end)";
 
 // --cell's value when the user gave it, else chooseCell(scene); `why` says which.
 CellChoice commandCell(const Scene& scene, double cellM, bool given);

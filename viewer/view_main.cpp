@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <thread>
 
 #include "cli/solve_flags.h"
@@ -68,6 +69,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
   app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")->capture_default_str();
+  std::optional<double> cacheMb;
+  app.add_option("--cache-mb", cacheMb, radmesh::cli::kCacheMbHelp);
   app.add_option("--resume", args.resume, "Go on from a checkpoint of the same scene and options (radmesh solve "
                  "--checkpoint, or the panel's Save checkpoint)");
   app.add_option("--checkpoint", args.checkpoint, "Where the panel's Save checkpoint (F5) writes")
@@ -108,6 +111,7 @@ int main(int argc, char** argv) {
     o.mapping = radmesh::parseMapping(mapping);
     o.effects = radmesh::parseEffects(effects);
     o.subdivide = radmesh::parseSubdivide(subdivide);
+    o.formFactorCacheBytes = radmesh::formFactorCacheBytes(o.backend, cacheMb);
     // Drawing needs a core too (llvmpipe renders on the CPU).
     if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     radmesh::validateOptions(o);

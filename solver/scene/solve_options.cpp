@@ -145,6 +145,12 @@ std::size_t defaultFormFactorCacheBytes() {
   return std::min(kBudget, static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageBytes) / 4);
 }
 
+std::size_t formFactorCacheBytes(Backend backend, std::optional<double> givenMb) {
+  if (!givenMb) return backend == Backend::Native ? defaultFormFactorCacheBytes() : 0;
+  if (!(*givenMb >= 0.0 && *givenMb < 1e6)) throw OptionError("--cache-mb must be a size in MiB from 0 to 1e6");
+  return static_cast<std::size_t>(*givenMb * 1024 * 1024);
+}
+
 const char* toString(Preset preset) { return preset == Preset::Bake ? "bake" : "paper"; }
 
 Preset parsePreset(const std::string& text) {

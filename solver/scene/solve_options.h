@@ -2,6 +2,7 @@
 // What a user chooses for a solve; shared by the CLI, the viewer and the benchmarks.
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace radmesh::emu {
@@ -88,6 +89,10 @@ void applyPreset(Preset preset, SolveOptions& options);
 // The form-factor cache a solve on the host gets unless told: 1 GiB, or a quarter of this
 // machine's memory where that is less (docs/accuracy.md, Defaults).
 std::size_t defaultFormFactorCacheBytes();
+// --cache-mb as given (MiB; throws OptionError out of [0, 1e6)), or when not given the back end's
+// default: defaultFormFactorCacheBytes() on the host; none on the mesh, whose rows would live on
+// 16 KB PEs and where a row computed beside other shooters differs in its last bits.
+std::size_t formFactorCacheBytes(Backend backend, std::optional<double> givenMb);
 const char* toString(Preset preset);
 Preset parsePreset(const std::string& text);  // throws OptionError
 
