@@ -136,6 +136,35 @@ TEST(CellSolver, SameForOneAndTwoThreads) {
   for (size_t j = 0; j < one.size(); ++j) ASSERT_EQ(one[j], two[j]) << "patch " << j;
 }
 
+// The form-factor cache's budget is the whole solve's: each cell takes its share by its patches
+// (portal patches too), and the cells' caches together stay within it; the answer is the
+// uncached one, bit for bit.
+TEST(CellSolver, CellsShareTheCacheBudgetByPatchesAndTheAnswerIsTheUncachedOne) {
+  const TwoRooms t;
+  SolveOptions o = testOptions();
+  o.formFactorCacheBytes = 64u << 20;
+  CellSolver cached(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 7});
+  std::size_t patches = 0, budgets = 0;
+  for (size_t c = 0; c < cached.cellFigures().size(); ++c) patches += cached.cellSolver(static_cast<int>(c)).patches().size();
+  for (size_t c = 0; c < cached.cellFigures().size(); ++c) {
+    const ProgressiveSolver& cell = cached.cellSolver(static_cast<int>(c));
+    const auto share = static_cast<std::size_t>(static_cast<double>(o.formFactorCacheBytes) * cell.patches().size() / patches);
+    EXPECT_EQ(cell.options().formFactorCacheBytes, share) << "cell " << c;
+    budgets += cell.options().formFactorCacheBytes;
+  }
+  EXPECT_LE(budgets, o.formFactorCacheBytes);
+  EXPECT_GT(budgets, o.formFactorCacheBytes - cached.cellFigures().size());  // only rounding lost
+  o.formFactorCacheBytes = 0;
+  CellSolver plain(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 7});
+  while (!cached.done()) cached.round();
+  while (!plain.done()) plain.round();
+  int hits = 0;
+  for (size_t c = 0; c < cached.cellFigures().size(); ++c)
+    for (const IterationRecord& r : cached.cellSolver(static_cast<int>(c)).history()) hits += r.cacheHits;
+  EXPECT_GT(hits, 0);
+  EXPECT_EQ(cached.radiosity(), plain.radiosity());
+}
+
 // Room A as a cell without portals is room A solved alone: the polygons of its patches, meshed
 // on the same grid, the door an opening the light escapes through.
 TEST(CellSolver, CellWithoutPortalsIsTheOrdinarySolveOfItsRoom) {
