@@ -85,7 +85,8 @@ void ProgressiveSolver::restoreProgress(SolverProgress p) {
   s.shotTotal = std::move(p.shotTotal);
   s.portalPower = std::move(p.portalPower);
   s.portalUnshot = std::move(p.portalUnshot);
-  s.lightsShot = !s.history.empty() && !s.scene.lights.empty();  // iteration 1 shot them
+  // Iteration 1 shot the scene's lights; a cells solve's came before it (splitAfterLights).
+  s.lightsShot = s.buildingLightRow || (!s.history.empty() && !s.scene.lights.empty());
   s.cache = FormFactorCache(s.options.formFactorCacheBytes);
   for (auto row = p.cachedRows.rbegin(); row != p.cachedRows.rend(); ++row) s.cache.insert(*row);
 }
