@@ -195,5 +195,21 @@ TEST(CliSubdivide, BenchAccuracyRefusesASubdivisionItCannotRun) {
   EXPECT_NE(run.output.find("--projections 'analytic'"), std::string::npos) << run.output;
 }
 
+// A cells solve with adaptive elements and a point light (it crashed before 2026-12-02): the
+// light's direct light splits the elements before the first round, as the whole solve's first
+// iteration does, and the element counts come out the same.
+TEST(CliSubdivide, AdaptiveCellsSolveWithAPointLightSplitsAsTheWholeSolve) {
+  const std::string box = test::dataPath("lights/point_box.gltf").string();
+  const std::string options = " --subdivide adaptive --min-element 0.1 --resolution 64 --threads 1 --quiet --stats ";
+  const std::string cellsStats = tempPath("cells.json"), wholeStats = tempPath("whole.json");
+  const CommandRun cells = radmesh("solve " + box + " --cells auto" + options + cellsStats);
+  ASSERT_EQ(cells.exitCode, 0) << cells.output;
+  const CommandRun whole = radmesh("solve " + box + options + wholeStats);
+  ASSERT_EQ(whole.exitCode, 0) << whole.output;
+  const nlohmann::json c = readJson(cellsStats), w = readJson(wholeStats);
+  EXPECT_GT(w["elements"].get<int>(), w["patches"].get<int>());
+  EXPECT_EQ(c["elements"], w["elements"]);
+}
+
 }  // namespace
 }  // namespace radmesh
