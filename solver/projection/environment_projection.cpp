@@ -99,17 +99,24 @@ void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
   band.sums.clear();
   const size_t begin = static_cast<size_t>(band.rowBegin) * buffer.width;
   const size_t end = static_cast<size_t>(band.rowEnd) * buffer.width;
-  for (size_t q = begin; q < end; ++q) {
+  // A patch covers runs of pixels: each run is summed in registers, in pixel order as before (the
+  // same bits), and looked up once.
+  for (size_t q = begin; q < end;) {
     const int id = buffer.items[q];
-    if (id == ItemBuffer::kNone) continue;
+    if (id == ItemBuffer::kNone) {
+      ++q;
+      continue;
+    }
     if (slot[id] < 0) {
       slot[id] = static_cast<int>(band.sums.size());
-      band.sums.push_back({id, df[q], 1});
-    } else {
-      Band::Seen& seen = band.sums[slot[id]];
-      seen.formFactor += df[q];
-      ++seen.pixels;
+      band.sums.push_back({id, df[q++], 1});
     }
+    Band::Seen& seen = band.sums[slot[id]];
+    double formFactor = seen.formFactor;
+    const size_t first = q;
+    for (; q < end && buffer.items[q] == id; ++q) formFactor += df[q];
+    seen.formFactor = formFactor;
+    seen.pixels += static_cast<long long>(q - first);
   }
   for (const Band::Seen& seen : band.sums) slot[seen.patch] = -1;
 }
