@@ -166,19 +166,13 @@ void MeshBackend::totalIteration() {
 
 template <class Work>
 auto MeshBackend::inPhase(const char* name, Work&& work) {
-  // The phase's clock stops before the iteration is totalled.
-  auto timed = [&] {
-    PhaseClock clock(machine_, lastShot_, name);
-    return work();
-  };
-  if constexpr (std::is_void_v<decltype(work())>) {
-    timed();
-    totalIteration();
-  } else {
-    auto result = timed();
-    totalIteration();
-    return result;
-  }
+  // Destroyed in reverse order: the phase's clock stops, then the iteration is totalled.
+  struct Total {
+    MeshBackend& backend;
+    ~Total() { backend.totalIteration(); }
+  } total{*this};
+  PhaseClock clock(machine_, lastShot_, name);
+  return work();
 }
 
 MeshShot MeshBackend::runShot(std::span<const int> shooters, bool formFactors,
