@@ -209,6 +209,7 @@ void Panel::drawScene(const SolverSnapshot& snapshot) {
     row("area m^2", "%.2f", s.totalAreaM2);
     row("emitted W", "%.4g", s.emittedPowerW);
     row("grid cell m", "%.3f", s.cellM);
+    row("form-factor cache MiB", "%.0f", snapshot.setup.options.formFactorCacheBytes / 1048576.0);
     ImGui::EndTable();
   }
   const Vec3 size = s.boundsMax - s.boundsMin;

@@ -99,6 +99,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
   try {
     auto run = std::make_unique<Run>();
     run->setup = setup;
+    run->setup.options.formFactorCacheBytes = formFactorCacheBytes(setup.options.backend, setup.cacheMb);
     run->generation = generation;
     std::vector<Patch> patches = meshScene(scene_, setup.cellM);
     run->summary = summarizeScene(scene_, patches, setup.cellM);
@@ -106,11 +107,11 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
       if (setup.options.backend != Backend::Native)
         throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
       run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
-      run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, setup.options,
+      run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, run->setup.options,
                                                 CellSolveSettings{setup.cellM, setup.exchangeShots, setup.portalBins});
       run->focusOn(eye, scene_.upAxis);
     } else {
-      run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), setup.options);
+      run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), run->setup.options);
     }
     if (!resumePath.empty() && run->solver) {
       resumeFromCheckpoint(resumePath, *run->solver);

@@ -3,6 +3,7 @@
 // iteration. The UI keeps a shared_ptr to the newest one; nothing in it changes after publication.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ namespace radmesh {
 struct SolveSetup {
   SolveOptions options;
   double cellM = 0.381;  // the paper's 15-inch grid (solver/meshing/meshing.h)
+  // --cache-mb as given; unset: the back end's default. Each start sizes options'
+  // formFactorCacheBytes from it for the back end it runs on, so a switch in the panel gets its own.
+  std::optional<double> cacheMb;
   // --cells auto: the rooms solved cell by cell (CellSolver, docs/cells.md), the camera's first;
   // a step is then a round of every cell's shots and a portal exchange.
   bool cells = false;

@@ -120,6 +120,28 @@ TEST(SolverThread, MeshBackEndSnapshotsCarryEmulatedSecondsAndDepths) {
   EXPECT_EQ(s->itemBuffer->items.size(), size_t(setup.options.resolution) * setup.options.resolution);
 }
 
+// The cache budget follows the back end each start runs on: switching the panel from the mesh
+// (no cache unless asked) to the host gets the host's default, and a given --cache-mb holds on both.
+TEST(SolverThread, EachStartSizesTheFormFactorCacheForItsBackEnd) {
+  SolveSetup setup = cornellSetup();
+  setup.options.backend = Backend::Mesh;
+  SolverThread thread(loadScene("cornell"), setup, false);
+  const Snapshot onMesh = waitFor(thread, [](const SolverSnapshot& s) { return s.mesh != nullptr; });
+  EXPECT_EQ(onMesh->setup.options.formFactorCacheBytes, 0u);
+
+  setup.options.backend = Backend::Native;
+  thread.restart(setup);
+  const Snapshot onHost = waitFor(thread, [&](const SolverSnapshot& s) { return s.generation > onMesh->generation && s.mesh; });
+  EXPECT_EQ(onHost->setup.options.formFactorCacheBytes, defaultFormFactorCacheBytes());
+  EXPECT_GT(onHost->setup.options.formFactorCacheBytes, 0u);
+
+  setup.cacheMb = 4.0;
+  setup.options.backend = Backend::Mesh;
+  thread.restart(setup);
+  const Snapshot given = waitFor(thread, [&](const SolverSnapshot& s) { return s.generation > onHost->generation && s.mesh; });
+  EXPECT_EQ(given->setup.options.formFactorCacheBytes, 4u << 20);
+}
+
 TEST(SolverThread, ItemBufferComesOnlyWhenAskedForEvenWhilePaused) {
   SolverThread thread(loadScene("cornell"), cornellSetup(), false);
   thread.step(2);
