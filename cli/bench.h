@@ -1,5 +1,6 @@
 #pragma once
 // The measurements behind docs/performance.md and docs/accuracy.md.
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct BenchSolveArgs {
   int scalingIterations = 20;
   bool distributed = false;  // --distributed: the cells solve over the mpirun's processes
   std::string csvStem;       // with it: STEM-ranks.csv (a row per process) and STEM-model.csv
+  double cacheMb = 0.0;      // --cache-mb: the timed solves' form-factor cache (kBenchCacheMbHelp)
 };
 
 // With `ranks`, this process's part of a distributed run (rank 0 alone prints and writes): each
@@ -68,6 +70,7 @@ struct AccuracyArgs {
   std::vector<std::string> elementRows{"auto"};  // uniform and adaptive run once per value (--element-rows)
   double splitContrast = 0.1;
   double untilUnshot = 0.0;  // > 0: every point also solved on to this unshot fraction, and measured there
+  double cacheMb = 0.0;      // --cache-mb: the swept solves' form-factor cache (the references always have one)
 };
 
 // --quick: the CI-sized sweep (well under a minute), same code and outputs.
@@ -91,11 +94,21 @@ struct BenchCellsArgs {
   bool focusOnly = false;      // the focus run alone: no whole-building solve, no solve to untilUnshot
   std::string subdivide = "off";  // both solves' elements (docs/accuracy.md): off, uniform or adaptive
   double minElementM = 0.0;
+  double cacheMb = 0.0;  // --cache-mb: both solves' form-factor cache
 };
 
 // The cells solve beside the whole building's (docs/cells.md): time, iterations, the error of the
 // reflected light per room; on one thread and on two; and the focus cell's time to focusUnshot.
 nlohmann::json benchCells(const BenchCellsArgs& args);
+
+// --cache-mb of the benches: none by default, so that a setting's time is its own shots.
+inline constexpr const char* kBenchCacheMbHelp =
+    "Form-factor row cache of every timed solve, MiB (0: none, the default, so that a setting's time is its own "
+    "shots; give radmesh solve's budget, e.g. 1024, to time what it runs)";
+// What the benches print of it.
+inline std::string benchCacheText(double mb) {
+  return mb > 0.0 ? fmt::format("a {:g} MiB form-factor cache", mb) : "no form-factor cache (--cache-mb)";
+}
 
 // "plane r3", "plane r5", "hemicube": a setting as the tables and plots name it.
 std::string settingLabel(const std::string& projection, double ratio);

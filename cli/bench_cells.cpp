@@ -145,6 +145,7 @@ SolveOptions solveOptions(const BenchCellsArgs& args) {
   o.threads = 1;
   o.subdivide = parseSubdivide(args.subdivide);
   o.minElementM = args.minElementM;
+  o.formFactorCacheBytes = formFactorCacheBytes(o.backend, args.cacheMb);
   validateOptions(o);
   return o;
 }
@@ -154,9 +155,9 @@ nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const 
   const std::vector<Patch> patches = meshScene(scene, args.cellM);
   const CellPartition partition = findCells(scene, patches);
   fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, {} shots a cell a round on average, "
-             "portal bins {}{}\n",
+             "portal bins {}, {}{}\n",
              scene.source, patches.size(), partition.cells.size(), partition.portals.size(), args.projection,
-             args.resolution, 100.0 * args.untilUnshot, args.exchangeShots, args.portalBins,
+             args.resolution, 100.0 * args.untilUnshot, args.exchangeShots, args.portalBins, benchCacheText(args.cacheMb),
              o.subdivide == Subdivide::Off ? ""
                                            : fmt::format("; {} elements, --min-element {:g}", args.subdivide,
                                                          args.minElementM));
@@ -222,7 +223,7 @@ nlohmann::json benchCells(const BenchCellsArgs& args) {
   nlohmann::json scenes = nlohmann::json::array();
   for (const std::string& name : args.scenes) scenes.push_back(benchScene(name, o, args));
   return {{"projection", args.projection}, {"resolution", args.resolution}, {"until_unshot", args.untilUnshot},
-          {"subdivide", args.subdivide}, {"min_element", args.minElementM},
+          {"subdivide", args.subdivide}, {"min_element", args.minElementM}, {"cache_mb", args.cacheMb},
           {"exchange_shots", args.exchangeShots}, {"portal_bins", args.portalBins}, {"scenes", scenes}};
 }
 

@@ -21,6 +21,16 @@ void writeJsonIfAsked(const std::string& path, const nlohmann::json& result) {
   if (!path.empty()) writeJson(path, result), fmt::print("wrote {}\n", path);
 }
 
+void addCacheOption(CLI::App* cmd, double& mb) {
+  cmd->add_option_function<double>(
+      "--cache-mb",
+      [&mb](double given) {
+        formFactorCacheBytes(Backend::Native, given);  // refused here, before anything runs
+        mb = given;
+      },
+      kBenchCacheMbHelp);
+}
+
 void addBenchSolve(CLI::App* bench) {
   auto args = std::make_shared<BenchSolveArgs>();
   auto json = std::make_shared<std::string>();
@@ -44,6 +54,7 @@ void addBenchSolve(CLI::App* bench) {
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();
+  addCacheOption(cmd, args->cacheMb);
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
@@ -107,6 +118,7 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--until-unshot", args->untilUnshot,
                   "Also solve each point on to this unshot fraction and measure it there (0: C = 0.99 only)")
       ->capture_default_str();
+  addCacheOption(cmd, args->cacheMb);
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, json, cmd] {
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
@@ -135,6 +147,7 @@ void addBenchCells(CLI::App* bench) {
       ->capture_default_str();
   cmd->add_option("--min-element", args->minElementM, "With --subdivide: the longest element edge, metres")
       ->capture_default_str();
+  addCacheOption(cmd, args->cacheMb);
   cmd->add_flag("--skip-whole", args->skipWhole, "No whole-building solve (for buildings where it takes too long)");
   cmd->add_flag("--focus-only", args->focusOnly, "Only the focus cell's time to --focus-unshot (no solve to --until-unshot)");
   cmd->add_option("--json", *json, "Also write the figures as JSON");

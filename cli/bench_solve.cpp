@@ -35,6 +35,7 @@ struct Timing {
   double unshotFraction = 0.0;            // left at the end
   double emulatedSecondsPerIteration = 0.0;  // mesh back end: mean emulated MP-1 time
   double absorbedW = 0.0;
+  int cacheHits = 0;  // rows the form-factor cache served (whole solves)
   int rounds = 0;                       // cells solve
   std::vector<RankFigures> ranks = {};  // a distributed run's processes
   RunShape shape = {};
@@ -52,13 +53,14 @@ Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOpt
   ProgressiveSolver solver(scene, patches, options);
   std::vector<double> perIteration;
   double emulated = 0.0;
+  Timing t;
   while (!solver.done()) {
     const double before = benchSeconds(options.threads);
     const IterationRecord& r = solver.step();
     perIteration.push_back(benchSeconds(options.threads) - before);
     if (r.shotStats) emulated += r.shotStats->machineSeconds;
+    t.cacheHits += r.cacheHits;
   }
-  Timing t;
   t.unshotFraction = solver.ledger().unshotFraction();
   t.absorbedW = solver.ledger().absorbed;
   t.emulatedSecondsPerIteration = perIteration.empty() ? 0.0 : emulated / double(perIteration.size());
@@ -130,10 +132,10 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   const CellPartition partition = cells ? findCells(scene, patches) : CellPartition{};
   nlohmann::json rows = nlohmann::json::array();
   CsvTable ranksCsv = ranksCsvTable(), modelCsv = modelCsvTable();
-  fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}; times are {}\n", scene.source, patches.size(),
+  fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}, {}; times are {}\n", scene.source, patches.size(),
              args.threads, args.until,
              args.untilUnshot > 0.0 ? fmt::format(" or {:g}% unshot", 100.0 * args.untilUnshot) : "",
-             args.threads == 1 ? "the solving thread's CPU time" : "wall time");
+             benchCacheText(args.cacheMb), args.threads == 1 ? "the solving thread's CPU time" : "wall time");
   if (cells)
     fmt::print("cells solve: {} cells, {} portals, {} shots a cell a round on average; ms/iteration: a round's time "
                "over its iterations, the median over the rounds\n",
@@ -156,6 +158,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
         o.until = args.until;
         o.untilUnshot = args.untilUnshot;
         o.threads = args.threads;
+        o.formFactorCacheBytes = formFactorCacheBytes(backend, args.cacheMb);
         validateOptions(o);
         if (cells) requireCellsOptions(o);
         const Timing t = cells ? timeCells(scene, patches, partition, o, args.maxIterations,
@@ -176,6 +179,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
                         {"emulated_seconds_per_iteration", t.emulatedSecondsPerIteration},
                         {"absorbed_w", t.absorbedW}});
         if (cells) rows.back()["rounds"] = t.rounds;
+        if (!cells) rows.back()["cache_hits"] = t.cacheHits;
         if (ranks)
           rows.back()["distributed"] = reportRanks(t.ranks, t.shape, {projection, std::to_string(n), std::to_string(k)},
                                                    ranksCsv, modelCsv);
@@ -203,7 +207,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   nlohmann::json result = {{"scene", scene.source}, {"patches", patches.size()}, {"backend", args.backend},
                             {"threads", args.threads}, {"cells", args.cellsMode}, {"until_unshot", args.untilUnshot},
                             {"clock", args.threads == 1 ? "thread cpu" : "wall"}, {"until", args.until},
-                            {"rows", rows}, {"scaling", scaling}};
+                            {"cache_mb", args.cacheMb}, {"rows", rows}, {"scaling", scaling}};
   if (ranks) result["ranks"] = ranks->size();
   if (!args.csvStem.empty() && ranks->rank() == 0) {
     writeCsv(args.csvStem + "-ranks.csv", ranksCsv);

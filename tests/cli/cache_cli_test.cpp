@@ -52,5 +52,31 @@ TEST(CliCache, TheMeshBackEndCachesOnlyWhenTold) {
   EXPECT_EQ(readJson(stats)["cache_mb"].get<double>(), 64.0);
 }
 
+// The benches time uncached solves, so that a setting's time is its own shots, unless told; told,
+// they time what `radmesh solve` runs, with the same answer.
+TEST(CliCache, TheBenchesCacheOnlyWhenTold) {
+  const std::string bench = "solve cornell --cell 0.2 --projections hemicube --resolutions 64 --until 1 "
+                            "--until-unshot 0.01 --threads 1";
+  const BenchRun plain = runBench(bench);
+  const BenchRun cached = runBench(bench + " --cache-mb 64");
+  EXPECT_EQ(plain.json["cache_mb"].get<double>(), 0.0);
+  EXPECT_EQ(cached.json["cache_mb"].get<double>(), 64.0);
+  EXPECT_NE(plain.output.find("no form-factor cache (--cache-mb)"), std::string::npos) << plain.output;
+  EXPECT_NE(cached.output.find("a 64 MiB form-factor cache"), std::string::npos) << cached.output;
+  const nlohmann::json& p = plain.json["rows"][0];
+  const nlohmann::json& c = cached.json["rows"][0];
+  EXPECT_EQ(p["cache_hits"], 0);
+  EXPECT_EQ(c["cache_hits"], 149);  // as `radmesh solve` of the same mesh counts
+  EXPECT_EQ(c["iterations_to_until"], p["iterations_to_until"]);
+  EXPECT_EQ(c["absorbed_w"], p["absorbed_w"]);  // bitwise
+
+  const BenchRun cells = runBench("cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --skip-whole "
+                                  "--cache-mb 8");
+  EXPECT_EQ(cells.json["cache_mb"].get<double>(), 8.0);
+  const CommandRun refused = radmesh("bench accuracy cornell --quick --cache-mb -1");
+  EXPECT_NE(refused.exitCode, 0);
+  EXPECT_NE(refused.output.find("--cache-mb must be a size in MiB"), std::string::npos) << refused.output;
+}
+
 }  // namespace
 }  // namespace radmesh

@@ -60,6 +60,22 @@ inline nlohmann::json readJson(const std::string& path) {
   return nlohmann::json::parse(in);
 }
 
+// What `radmesh bench` printed and the JSON it wrote.
+struct BenchRun {
+  std::string output;
+  nlohmann::json json;
+};
+
+// Runs `radmesh bench <arguments> --json <file>`, which must succeed. A run that fails without
+// writing its JSON ends the test: the file is removed first, so parse throws.
+inline BenchRun runBench(const std::string& arguments) {
+  const std::string json = tempPath("bench.json");
+  std::filesystem::remove(json);
+  const CommandRun run = radmesh("bench " + arguments + " --json " + json);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  return {run.output, nlohmann::json::parse(std::ifstream(json))};
+}
+
 // Width and height from a PNG's IHDR chunk (big-endian, bytes 16..23).
 inline std::pair<int, int> pngSize(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -106,22 +106,6 @@ TEST(Cli, SolveCellsWithPortalBinsBalancesAndSaysSo) {
   EXPECT_GT(j["per_cell"][1]["ledger"]["portal_in"].get<double>(), 0.0);
 }
 
-// What `radmesh bench` printed and the JSON it wrote.
-struct BenchRun {
-  std::string output;
-  nlohmann::json json;
-};
-
-// Runs `radmesh bench <arguments> --json <file>`, which must succeed. A run that fails without
-// writing its JSON ends the test: the file is removed first, so parse throws.
-BenchRun runBench(const std::string& arguments) {
-  const std::string json = tempPath("bench.json");
-  std::filesystem::remove(json);
-  const CommandRun run = radmesh("bench " + arguments + " --json " + json);
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  return {run.output, nlohmann::json::parse(std::ifstream(json))};
-}
-
 TEST(Cli, BenchCellsComparesTheCellsSolveWithTheWholeBuilding) {
   const auto j = runBench("cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1").json;
   ASSERT_EQ(j["scenes"].size(), 1u);
