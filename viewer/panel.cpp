@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/scene/scene_error.h"
@@ -89,6 +90,28 @@ void Panel::begin() {
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - kWidthPx, viewport->WorkPos.y));
   ImGui::SetNextWindowSize(ImVec2(kWidthPx, viewport->WorkSize.y));
   ImGui::Begin("radmesh", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  drawOpen();
+}
+
+void Panel::drawOpen() {
+  const bool entered = ImGui::Button("Open");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  const bool typed = ImGui::InputTextWithHint("##open", "scene or bake file (or drop one on the window)",
+                                              openPath_.data(), openPath_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+  if ((entered || typed) && openPath_[0] != '\0') openRequest_ = std::string(openPath_.data());
+  if (openMessage_.empty()) return;
+  if (openFailed_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+  ImGui::TextWrapped("%s", openMessage_.c_str());
+  if (openFailed_) ImGui::PopStyleColor();
+}
+
+std::optional<std::string> Panel::takeOpenRequest() { return std::exchange(openRequest_, std::nullopt); }
+
+void Panel::setOpenMessage(const std::string& path, const std::string& message, bool failed) {
+  std::strncpy(openPath_.data(), path.c_str(), openPath_.size() - 1);
+  openMessage_ = message;
+  openFailed_ = failed;
 }
 
 void Panel::drawBake(const std::string& description, WalkCamera& camera, ViewSettings& view) {

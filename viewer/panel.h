@@ -5,6 +5,7 @@
 // its latest snapshot.
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "viewer/camera.h"
@@ -39,9 +40,14 @@ class Panel {
   void saveCheckpoint(SolverThread& solver) const { solver.saveCheckpoint(checkpointPath_.data()); }
   // A bake's panel: what it is, and the view settings; no solver controls (it is solved already).
   void drawBake(const std::string& description, WalkCamera& camera, ViewSettings& view);
+  // The Open field atop either panel: the path the user asked to open, once.
+  std::optional<std::string> takeOpenRequest();
+  // Shown under the Open field: what the last open did (failed: in red, and the scene stays).
+  void setOpenMessage(const std::string& path, const std::string& message, bool failed);
 
  private:
-  void begin();  // the panel's window, docked at the right
+  void begin();  // the panel's window, docked at the right, with the Open field on top
+  void drawOpen();
   void drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver);
   void drawProgress(const SolverSnapshot& snapshot);
   void drawMachineCost(const SolverSnapshot& snapshot);
@@ -58,6 +64,10 @@ class Panel {
   std::string parameterError_;
   int stepCount_ = 10;
   std::array<char, 1024> checkpointPath_{};
+  std::array<char, 1024> openPath_{};
+  std::optional<std::string> openRequest_;
+  std::string openMessage_;
+  bool openFailed_ = false;
   bool itemBufferWanted_ = false;
   GlTexture itemBufferTexture_;
   std::shared_ptr<const ItemBuffer> uploadedItemBuffer_;

@@ -1,6 +1,7 @@
 #include "viewer/viewer_app.h"
 
 #include <GLFW/glfw3.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "solver/bake/bake_reader.h"
@@ -21,6 +23,7 @@
 #include "viewer/panel.h"
 #include "viewer/renderer.h"
 #include "viewer/solver_thread.h"
+#include "viewer/viewed_file.h"
 #include "viewer/walk_input.h"
 #include "viewer/window_context.h"
 
@@ -225,37 +228,50 @@ SolveSetup viewerSetup() {
   return setup;
 }
 
-int runViewer(const ViewerArgs& args) {
-  // A bake is walked as it is; its geometry, as a scene's, gives the frame.
-  std::optional<Bake> bake = readBake(args.scene);
-  std::vector<std::string> warnings, notes;
-  std::string upChosen;
-  Scene scene = bake ? bakeScene(*bake, args.scene)
-                     : loadScene(args.scene, &warnings, args.daylight, &notes, args.up, &upChosen);
-  for (const std::string& warning : warnings) std::fprintf(stderr, "radmesh-view: warning: %s\n", warning.c_str());
-  for (const std::string& note : notes) std::printf("radmesh-view: %s\n", note.c_str());
-  if (bake) upChosen = applyUpChoice(scene, args.up);
-  if (!upChosen.empty()) std::fprintf(stderr, "radmesh-view: %s\n", upChosen.c_str());
-  if (bake) bake->upAxis = scene.upAxis;
-  SolveSetup setup = args.setup;
-  if (!bake && !args.cellGiven) {
-    const CellChoice cell = chooseCell(scene);
-    setup.cellM = cell.cellM;
-    std::printf("radmesh-view: %s\n", cell.why.c_str());
-  }
-  const std::string title = "radmesh-view: " + scene.source;
-  WalkCamera camera(sceneFrame(scene));
+namespace {
 
-  WindowContext window(title, args.windowSize);
-  ImGuiLayer imgui(window.window());
-  Renderer renderer;
-  const bool smokeTest = args.steps > 0;
+void printMessages(const ViewedFile& file) {
+  for (const std::string& warning : file.warnings) std::fprintf(stderr, "radmesh-view: warning: %s\n", warning.c_str());
+  for (const std::string& note : file.notes) std::printf("radmesh-view: %s\n", note.c_str());
+}
+
+// One file in the window: what it shows, the walk through it, its panel and the renderer of its
+// mesh (GL objects: made with the window's context current). Opening another file makes them anew.
+struct Viewing {
+  Viewing(ViewedFile file, const ViewerArgs& args)
+      : camera(sceneFrame(file.scene)), panel(file.setup, args.firstTab, args.checkpoint) {
+    if (file.bake)
+      shown = std::make_unique<ShownBake>(file.path, std::move(*file.bake));
+    else
+      shown = std::make_unique<ShownSolve>(std::move(file.scene), file.setup, args);
+  }
+  WalkCamera camera;
   std::unique_ptr<Shown> shown;
-  if (bake)
-    shown = std::make_unique<ShownBake>(args.scene, std::move(*bake));
-  else
-    shown = std::make_unique<ShownSolve>(std::move(scene), setup, args);
-  Panel panel(setup, args.firstTab, args.checkpoint);
+  Panel panel;
+  Renderer renderer;
+};
+
+// A file dropped on the window, kept until the frame loop takes it.
+void keepDroppedPath(GLFWwindow* window, int count, const char** paths) {
+  if (count > 0) *static_cast<std::optional<std::string>*>(glfwGetWindowUserPointer(window)) = paths[count - 1];
+}
+
+}  // namespace
+
+int runViewer(const ViewerArgs& args) {
+  ViewedFile file = readViewedFile(args.scene, args);
+  printMessages(file);
+  WindowContext window("radmesh-view: " + file.scene.source, args.windowSize);
+  ImGuiLayer imgui(window.window());
+  std::optional<std::string> dropped;
+  glfwSetWindowUserPointer(window.window(), &dropped);
+  glfwSetDropCallback(window.window(), keepDroppedPath);
+  const bool smokeTest = args.steps > 0;
+  auto viewing = std::make_unique<Viewing>(std::move(file), args);
+  // Files opened later start from scratch and run until told: the launch's checkpoint and smoke test were its own.
+  ViewerArgs later = args;
+  later.resume.clear();
+  later.steps = 0;
   ViewSettings view;
   WalkInputReader input;
 
@@ -268,39 +284,60 @@ int runViewer(const ViewerArgs& args) {
   bool saveKeyWasDown = false;  // F5 saves once per press
   double feedSeconds = 0.0;     // the last frame's, for the report
   long framesWithMesh = 0;
+  // Another file in the window: read before anything is let go, so a file that cannot be read
+  // leaves the scene as it was, with the reason in the panel.
+  auto open = [&](const std::string& path) {
+    try {
+      ViewedFile opened = readViewedFile(path, later);
+      printMessages(opened);
+      glfwSetWindowTitle(window.window(), ("radmesh-view: " + opened.scene.source).c_str());
+      const std::string message = fmt::format("opened {}{}", opened.scene.source,
+                                              opened.warnings.empty() ? "" : fmt::format(" ({} warnings: see the terminal)", opened.warnings.size()));
+      viewing.reset();  // its solver thread stops before the next one starts
+      viewing = std::make_unique<Viewing>(std::move(opened), later);
+      viewing->panel.setOpenMessage(path, message, false);
+      view.autoExposure = true;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "radmesh-view: could not open %s: %s\n", path.c_str(), e.what());
+      viewing->panel.setOpenMessage(path, std::string("could not open: ") + e.what(), true);
+    }
+  };
   while (!window.shouldClose()) {
     glfwPollEvents();
     if (glfwGetKey(window.window(), GLFW_KEY_ESCAPE) == GLFW_PRESS && !imgui.wantsKeyboard()) window.requestClose();
     const bool saveKeyDown = glfwGetKey(window.window(), GLFW_KEY_F5) == GLFW_PRESS;
-    if (saveKeyDown && !saveKeyWasDown && !imgui.wantsKeyboard()) shown->saveCheckpoint(panel);
+    if (saveKeyDown && !saveKeyWasDown && !imgui.wantsKeyboard()) viewing->shown->saveCheckpoint(viewing->panel);
     saveKeyWasDown = saveKeyDown;
     const auto now = Clock::now();
     const double dt = std::chrono::duration<double>(now - lastFrame).count();
     lastFrame = now;
     // dt is the previous frame's time; it counts where that frame's snapshot stood.
-    if (frames > 0) stats.add(dt, shown->solving());
+    if (frames > 0) stats.add(dt, viewing->shown->solving());
     // The report starts a frame after the mesh's: taking in a new mesh is not drawing.
     if (args.frames > 0 && framesWithMesh >= 2) report.add(dt, feedSeconds);
 
+    // Before the feed: a new file's Shown has had no snapshot until it is fed once.
+    if (std::optional<std::string> path = dropped ? std::exchange(dropped, std::nullopt) : viewing->panel.takeOpenRequest())
+      open(*path);
     const auto feedStart = Clock::now();
-    shown->feed(renderer, view, camera);
+    viewing->shown->feed(viewing->renderer, view, viewing->camera);
     feedSeconds = std::chrono::duration<double>(Clock::now() - feedStart).count();
-    if (shown->meshShown()) ++framesWithMesh;
-    camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
+    if (viewing->shown->meshShown()) ++framesWithMesh;
+    viewing->camera.update(input.read(window.window(), !imgui.wantsKeyboard(), !imgui.wantsMouse()), dt);
     const glm::ivec2 size = window.framebufferSize();
     const glm::ivec2 sceneSize{std::max(1, size.x - int(Panel::kWidthPx)), size.y};
-    shown->cull(renderer, camera.view(), double(sceneSize.x) / double(sceneSize.y), view);
-    renderer.draw(camera.view(), sceneSize, Shading{std::exp2(view.exposureStops), view.highlightShooters});
+    viewing->shown->cull(viewing->renderer, viewing->camera.view(), double(sceneSize.x) / double(sceneSize.y), view);
+    viewing->renderer.draw(viewing->camera.view(), sceneSize, Shading{std::exp2(view.exposureStops), view.highlightShooters});
     imgui.beginFrame();
-    shown->drawPanel(panel, camera, view);
+    viewing->shown->drawPanel(viewing->panel, viewing->camera, view);
     imgui.endFrame();
     ++frames;
 
     // The panel lays itself out over a couple of frames: wait for them before the screenshot.
-    const bool smokeTestDone = smokeTest && shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames;
+    const bool smokeTestDone = smokeTest && viewing->shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames;
     if (smokeTestDone || (args.frames > 0 && report.frames() >= args.frames)) {
-      if (!shown->failure().empty()) {
-        std::fprintf(stderr, "radmesh-view: %s\n", shown->failure().c_str());
+      if (!viewing->shown->failure().empty()) {
+        std::fprintf(stderr, "radmesh-view: %s\n", viewing->shown->failure().c_str());
         exitCode = 1;
       } else if (!args.screenshot.empty()) {
         writePng(captureFramebuffer(size), args.screenshot);
@@ -311,7 +348,7 @@ int runViewer(const ViewerArgs& args) {
     window.swapBuffers();
   }
 
-  stats.print(window.framebufferSize(), shown->state());
+  stats.print(window.framebufferSize(), viewing->shown->state());
   report.print();
   return exitCode;
 }

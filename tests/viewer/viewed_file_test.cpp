@@ -1,0 +1,65 @@
+// What radmesh-view reads of a file, at launch and when the panel's Open field or a drop names
+// another: scenes with their cell chosen, bakes as they are, and files that cannot be read refused
+// by name (the window then keeps the scene it shows).
+#include "viewer/viewed_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "solver/meshing/meshing.h"
+#include "solver/scene/scene_error.h"
+#include "tests/test_paths.h"
+
+namespace radmesh {
+namespace {
+
+bool hasNote(const ViewedFile& file, const std::string& text) {
+  return std::find(file.notes.begin(), file.notes.end(), text) != file.notes.end();
+}
+
+TEST(ViewedFile, AScenesCellIsChosenFromItsSizeUnlessGiven) {
+  ViewerArgs args;
+  const ViewedFile chosen = readViewedFile("cornell", args);
+  EXPECT_FALSE(chosen.bake);
+  const CellChoice cell = chooseCell(chosen.scene);
+  EXPECT_EQ(chosen.setup.cellM, cell.cellM);
+  EXPECT_TRUE(hasNote(chosen, cell.why));
+  EXPECT_EQ(chosen.setup.options.backend, args.setup.options.backend);  // the rest is the launch's
+
+  args.cellGiven = true;
+  args.setup.cellM = 0.2;
+  const ViewedFile given = readViewedFile("cornell", args);
+  EXPECT_EQ(given.setup.cellM, 0.2);
+  EXPECT_FALSE(hasNote(given, cell.why));
+}
+
+TEST(ViewedFile, ABakeIsWalkedAsItIsWithItsGeometryForTheFrame) {
+  const std::string path = test::dataPath("other_tool_bake.gltf").string();
+  const ViewedFile file = readViewedFile(path, ViewerArgs{});
+  ASSERT_TRUE(file.bake);
+  EXPECT_FALSE(file.bake->fromRadmesh);
+  EXPECT_FALSE(file.scene.polygons.empty());
+  EXPECT_EQ(file.bake->upAxis, file.scene.upAxis);
+  EXPECT_EQ(file.path, path);
+}
+
+TEST(ViewedFile, WhatTheReaderRepairsIsCountedAsWarnings) {
+  const ViewedFile file = readViewedFile(test::dataPath("repaired/mgf_unknown_entity.mgf").string(), ViewerArgs{});
+  EXPECT_FALSE(file.warnings.empty());
+}
+
+TEST(ViewedFile, AFileThatCannotBeReadIsRefusedByName) {
+  for (const std::string name : {"bad/gltf_truncated.gltf", "bad/mgf_nan.mgf", "no_such_file.gltf"}) {
+    const std::string path = test::dataPath(name).string();
+    try {
+      readViewedFile(path, ViewerArgs{});
+      ADD_FAILURE() << name << " was read";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(name.substr(name.find('/') + 1)), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace radmesh

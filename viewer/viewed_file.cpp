@@ -1,0 +1,30 @@
+#include "viewer/viewed_file.h"
+
+#include "solver/io/scene_loader.h"
+#include "solver/meshing/meshing.h"
+
+namespace radmesh {
+
+ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args) {
+  ViewedFile file;
+  file.path = path;
+  file.setup = args.setup;
+  file.bake = readBake(path);
+  std::string upChosen;
+  if (file.bake) {
+    file.scene = bakeScene(*file.bake, path);
+    upChosen = applyUpChoice(file.scene, args.up);
+    file.bake->upAxis = file.scene.upAxis;
+  } else {
+    file.scene = loadScene(path, &file.warnings, args.daylight, &file.notes, args.up, &upChosen);
+  }
+  if (!upChosen.empty()) file.notes.push_back(upChosen);
+  if (!file.bake && !args.cellGiven) {
+    const CellChoice cell = chooseCell(file.scene);
+    file.setup.cellM = cell.cellM;
+    file.notes.push_back(cell.why);
+  }
+  return file;
+}
+
+}  // namespace radmesh
