@@ -59,18 +59,44 @@ void MeshScanConversion::project(MeshShot& shot) {
   const AluCost cost{kProjectFlopsPerPatch * planes * patchesOnPe_.maxCount(), 0.0};
   machine_.compute(cost, [&](int pe) {
     for (int slot = 0; slot < patchesOnPe_.count(pe); ++slot)
-      for (int q = 0; q < planes; ++q) {
-        const int j = patchesOnPe_.at(pe, slot).patch;
-        const int shooter = shot.shooters[q];
-        if (j == shooter && &shooters_ == &patches_) continue;
-        // The projection stage's own functions, as the native back end calls them.
-        const std::optional<LocalPolygon> local = inShooterView(shooters_[shooter], patches_[j]);
-        if (!local) continue;
-        PatchProjection& p = shot.projection(pe, slot, q);
-        p.seenFromFront = local->seenFromFront();
-        p.projected = setUpProjection(*local, face_, nearDepth_, j, rank_[j], p.setup);
-      }
+      for (int q = 0; q < planes; ++q) projectOne(shot, patchesOnPe_.at(pe, slot).patch, q, shot.projection(pe, slot, q));
   });
+  listSetups(shot);
+}
+
+void MeshScanConversion::projectOne(const MeshShot& shot, int j, int q, PatchProjection& p) const {
+  const int shooter = shot.shooters[q];
+  if (j == shooter && &shooters_ == &patches_) return;
+  // The projection stage's own functions, as the native back end calls them.
+  const std::optional<LocalPolygon> local = inShooterView(shooters_[shooter], patches_[j]);
+  if (!local) return;
+  p.seenFromFront = local->seenFromFront();
+  p.projected = setUpProjection(*local, face_, nearDepth_, j, rank_[j], p.setup);
+}
+
+void MeshScanConversion::listSetups(MeshShot& shot) const {
+  const std::size_t planes = shot.shooters.size();
+  shot.patches = patches_.size();
+  shot.setups.assign(planes * shot.patches, nullptr);
+  std::vector<char> here(shot.patches, 0);
+  machine_.forEachPe([&](int pe) {
+    for (int slot = 0; slot < patchesOnPe_.count(pe); ++slot) {
+      const int j = patchesOnPe_.at(pe, slot).patch;
+      here[j] = 1;
+      for (std::size_t q = 0; q < planes; ++q)
+        if (const PatchProjection& p = shot.projection(pe, slot, static_cast<int>(q)); p.projected)
+          shot.setups[q * shot.patches + j] = &p.setup;
+    }
+  });
+  shot.elsewhere.clear();
+  if (!machine_.distributed()) return;
+  shot.elsewhere.resize(planes * shot.patches);
+  for (std::size_t j = 0; j < shot.patches; ++j)
+    for (std::size_t q = 0; q < planes && !here[j]; ++q) {
+      PatchProjection& p = shot.elsewhere[q * shot.patches + j];
+      projectOne(shot, static_cast<int>(j), static_cast<int>(q), p);
+      if (p.projected) shot.setups[q * shot.patches + j] = &p.setup;
+    }
 }
 
 ScanDepths MeshScanConversion::scanConvert(const MeshShot& shot, MeshShotStats& stats) {
@@ -123,7 +149,7 @@ void MeshScanConversion::routeToUpperLeft(const MeshShot& shot, int pass, int pa
         if (!p.projected || patchesOnPe_.at(pe, slot).patch % passes != pass) return;
         const PolygonSetup& s = p.setup;
         sends[pe] = true;
-        message[pe] = {s, q, shot.mapping.rows.stepsToCover(s.rowBegin, s.rowEnd)};
+        message[pe] = {s.id, q, shot.mapping.rows.stepsToCover(s.rowBegin, s.rowEnd)};
         destination[pe] = grid.index(shot.mapping.rows.peOf(s.rowBegin),
                                      shot.mapping.columns.peOf(s.columnBegin));
       });
@@ -178,7 +204,7 @@ void MeshScanConversion::resetItemBuffers(const MeshShot& shot) {
 }
 
 int MeshScanConversion::zBuffer(const MeshShot& shot, int pe, const Description& d) {
-  const PolygonSetup& s = d.setup;
+  const PolygonSetup& s = shot.setupOf(d);
   const int base = d.plane * pixelsPerPlane();
   const auto rows = shot.mapping.rows.pixelsOf(machine_.grid().row(pe));
   const auto columns = shot.mapping.columns.pixelsOf(machine_.grid().col(pe));
@@ -225,7 +251,8 @@ void MeshScanConversion::zBufferStep(const MeshShot& shot, bool first) {
   machine_.forEachActive(kPixelTestFlops * most, [&](int pe) {
     if (first) {
       pixelTests_[pe] = zBufferAndKeep(shot, pe, [&](const Description& d) {
-        return shot.mapping.columns.stepsToCover(d.setup.columnBegin, d.setup.columnEnd);
+        const PolygonSetup& s = shot.setupOf(d);
+        return shot.mapping.columns.stepsToCover(s.columnBegin, s.columnEnd);
       });
     } else {
       pixelTests_[pe] = zBufferAndKeep(shot, pe, [](const Description& d) { return d.stepsLeft - 1; });

@@ -36,14 +36,16 @@ struct PatchProjection {
   bool seenFromFront = false;
 };
 
-// A projected patch's description in flight: the PolygonSetup its projecting PE made travels
-// with it, so a PE z-buffers from the description it holds and its own memory alone.
+// A projected patch's description in flight. On the MP-1 the set-up travels with it (WireSize
+// below charges those bytes); the host moves only its name and reads the set-up its projecting PE
+// made (MeshShot::setupOf), which is the same set-up bit for bit at a thirtieth of the copying.
 struct Description {
-  PolygonSetup setup;
+  int patch = -1;
   int plane = 0;  // which of the shot's planes it lies on
   int stepsLeft = 0;
 };
 static_assert(std::is_trivially_copyable_v<Description>, "descriptions travel between processes as bytes");
+static_assert(sizeof(Description) == 3 * sizeof(int), "the host moves a name; the set-up stays where it was made");
 
 // One item-buffer pixel on a PE.
 struct ZEntry {
@@ -64,8 +66,8 @@ struct WireSize<PatchRecord> {
 // The set-up as the MP-1 would send it: up to 5 projected vertices (a quad clipped once) as float
 // pairs, the 1/depth plane (3 floats), the patch id and depth-tie rank, a 4 x 16-bit bounding box
 // (coordinates below 2048 leave 5 bits each spare, which carry the plane), a 16-bit step count.
-// The host carries the whole PolygonSetup (doubles, edges set up) so that the pixels stay the
-// native back end's bit for bit.
+// The host z-buffers with the whole PolygonSetup (doubles, edges set up) so that the pixels stay
+// the native back end's bit for bit.
 template <>
 struct WireSize<Description> {
   static constexpr std::int64_t bytes = 5 * 8 + 12 + 4 + 4 + 8 + 2;
@@ -88,6 +90,16 @@ struct MeshShot {
   // reading PE memory back).
   std::vector<PatchProjection> projections;
   std::vector<int> firstSlot;  // [pe]
+  // What a description names: the set-up of each projected (plane, patch), at [plane * patches +
+  // patch]; null where not projected. It points into projections, and distributed, for the other
+  // processes' patches, into elsewhere: set up again here by the same functions (host work the
+  // machine does not do, so not charged).
+  std::vector<const PolygonSetup*> setups;
+  std::vector<PatchProjection> elsewhere;
+  std::size_t patches = 0;
+  const PolygonSetup& setupOf(const Description& d) const {
+    return *setups[static_cast<std::size_t>(d.plane) * patches + static_cast<std::size_t>(d.patch)];
+  }
 
   PatchProjection& projection(int pe, int slot, int plane) { return projections[index(pe, slot, plane)]; }
   const PatchProjection& projection(int pe, int slot, int plane) const { return projections[index(pe, slot, plane)]; }
@@ -111,7 +123,7 @@ class MeshScanConversion {
                      const std::vector<Patch>& patches, const emu::PeArray<PatchRecord>& patchesOnPe,
                      const ProjectionFace& face, double nearDepth);
 
-  // Projection phase: fills shot.projections (shot.shooters set by the caller).
+  // Projection phase: fills shot.projections and shot.setups (shot.shooters set by the caller).
   void project(MeshShot& shot);
 
   // Stage (a), stage (b) and the rightward spread with z-buffering into the per-PE item buffers.
@@ -132,6 +144,9 @@ class MeshScanConversion {
   int columnsPerPe() const { return columnsPerPe_; }
 
  private:
+  // Patch j's projection onto plane q of the shot (unprojected: seen edge-on, behind, the shooter itself).
+  void projectOne(const MeshShot& shot, int j, int q, PatchProjection& p) const;
+  void listSetups(MeshShot& shot) const;
   void resetItemBuffers(const MeshShot& shot);
   // Distributed, each process counted its own PEs' depths: the front end reads every PE's.
   void gatherDepths(ScanDepths& depths) const;
