@@ -298,6 +298,7 @@ int runViewer(const ViewerArgs& args) {
       viewing->panel.setOpenMessage(path, message, false);
       view.autoExposure = true;
     } catch (const std::exception& e) {
+      if (!viewing) throw;  // the file was read, but the window could not be set up for it
       std::fprintf(stderr, "radmesh-view: could not open %s: %s\n", path.c_str(), e.what());
       viewing->panel.setOpenMessage(path, std::string("could not open: ") + e.what(), true);
     }
