@@ -97,7 +97,7 @@ void Panel::drawOpen() {
   const bool entered = ImGui::Button("Open");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-FLT_MIN);
-  const bool typed = ImGui::InputTextWithHint("##open", "scene or bake file (or drop one on the window)",
+  const bool typed = ImGui::InputTextWithHint("##open", "a scene (name or file) or a bake; or drop a file here",
                                               openPath_.data(), openPath_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
   if ((entered || typed) && openPath_[0] != '\0') openRequest_ = std::string(openPath_.data());
   if (openMessage_.empty()) return;
