@@ -97,6 +97,13 @@ struct MeshShot {
   std::vector<const PolygonSetup*> setups;
   std::vector<PatchProjection> elsewhere;
   std::size_t patches = 0;
+
+  // setups points into the shot's own vectors: a move keeps them, a copy would not.
+  MeshShot() = default;
+  MeshShot(MeshShot&&) = default;
+  MeshShot& operator=(MeshShot&&) = default;
+  MeshShot(const MeshShot&) = delete;
+  MeshShot& operator=(const MeshShot&) = delete;
   const PolygonSetup& setupOf(const Description& d) const {
     return *setups[static_cast<std::size_t>(d.plane) * patches + static_cast<std::size_t>(d.patch)];
   }
