@@ -24,10 +24,7 @@ void writeJsonIfAsked(const std::string& path, const nlohmann::json& result) {
 void addCacheOption(CLI::App* cmd, double& mb) {
   cmd->add_option_function<double>(
       "--cache-mb",
-      [&mb](double given) {
-        formFactorCacheBytes(Backend::Native, given);  // refused here, before anything runs
-        mb = given;
-      },
+      [&mb](double given) { mb = checkedCacheMb(given); },
       kBenchCacheMbHelp);
 }
 

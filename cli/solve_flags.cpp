@@ -114,10 +114,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--threads", f.options.threads, "Host threads; 0 uses every core")->capture_default_str();
   cmd->add_option_function<double>(
          "--cache-mb",
-         [&f](double mb) {
-           f.cacheMb = mb;
-           formFactorCacheBytes(Backend::Native, mb);  // refused here, before anything runs
-         },
+         [&f](double mb) { f.cacheMb = checkedCacheMb(mb); },
          kCacheMbHelp);
   cmd->add_option("--subdivide", f.subdivide,
                   "off (patches shoot and receive), uniform (patches shoot, their elements receive) or adaptive "

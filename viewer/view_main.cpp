@@ -111,8 +111,8 @@ int main(int argc, char** argv) {
     o.mapping = radmesh::parseMapping(mapping);
     o.effects = radmesh::parseEffects(effects);
     o.subdivide = radmesh::parseSubdivide(subdivide);
-    o.formFactorCacheBytes = radmesh::formFactorCacheBytes(o.backend, cacheMb);  // refuses a bad size here
-    args.setup.cacheMb = cacheMb;
+    // Each start sizes the cache for the back end it runs on (viewer/solver_run.cpp).
+    if (cacheMb) args.setup.cacheMb = radmesh::checkedCacheMb(*cacheMb);
     // Drawing needs a core too (llvmpipe renders on the CPU).
     if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     radmesh::validateOptions(o);

@@ -147,8 +147,12 @@ std::size_t defaultFormFactorCacheBytes() {
 
 std::size_t formFactorCacheBytes(Backend backend, std::optional<double> givenMb) {
   if (!givenMb) return backend == Backend::Native ? defaultFormFactorCacheBytes() : 0;
-  if (!(*givenMb >= 0.0 && *givenMb < 1e6)) throw OptionError("--cache-mb must be a size in MiB from 0 to 1e6");
-  return static_cast<std::size_t>(*givenMb * 1024 * 1024);
+  return static_cast<std::size_t>(checkedCacheMb(*givenMb) * 1024 * 1024);
+}
+
+double checkedCacheMb(double givenMb) {
+  if (!(givenMb >= 0.0 && givenMb < 1e6)) throw OptionError("--cache-mb must be a size in MiB from 0 to 1e6");
+  return givenMb;
 }
 
 const char* toString(Preset preset) { return preset == Preset::Bake ? "bake" : "paper"; }

@@ -93,6 +93,9 @@ std::size_t defaultFormFactorCacheBytes();
 // default: defaultFormFactorCacheBytes() on the host; none on the mesh, whose rows would live on
 // 16 KB PEs and where a row computed beside other shooters differs in its last bits.
 std::size_t formFactorCacheBytes(Backend backend, std::optional<double> givenMb);
+// A --cache-mb as given, refused (OptionError) where formFactorCacheBytes would refuse it: for
+// option parsers, so that a bad size stops a command before anything runs.
+double checkedCacheMb(double givenMb);
 const char* toString(Preset preset);
 Preset parsePreset(const std::string& text);  // throws OptionError
 
