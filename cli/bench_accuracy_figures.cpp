@@ -94,6 +94,16 @@ std::vector<std::pair<double, double>> paretoFront(std::vector<std::pair<double,
   return front;
 }
 
+// The front in black after the series, when there is anything to draw: a plot with no point (a
+// sweep of elements alone has no patch rows for the same-mesh plot) is not drawn at all.
+void addParetoFront(Plot& plot, const std::vector<std::pair<double, double>>& all) {
+  if (!all.empty()) plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
+}
+
+void drawUnlessEmpty(const Plot& plot, const std::string& path) {
+  if (!plot.series.empty()) drawPlot(plot, path);
+}
+
 std::string rowSetting(const CsvTable& t, size_t row) { return settingLabel(t.text(row, "projection"), t.number(row, "ratio")); }
 
 // Tables written before the subdivide axis have patches only.
@@ -115,7 +125,7 @@ Plot errorVersusTime(const std::string& title, const std::string& errorLabel, co
     it->points.emplace_back(seconds, std::max(error, 1e-9));
     all.push_back(it->points.back());
   }
-  plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
+  addParetoFront(plot, all);
   return plot;
 }
 
@@ -157,7 +167,7 @@ Plot subdivisionPlot(const std::string& sceneName, const CsvTable& points) {
     }
     if (!series.points.empty()) plot.series.push_back(series);
   }
-  plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
+  addParetoFront(plot, all);
   return plot;
 }
 
@@ -169,12 +179,13 @@ std::string settingLabel(const std::string& projection, double ratio) {
 
 void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) {
   const CsvTable points = readCsv(stem + ".csv"), traces = readCsv(stem + "-traces.csv");
-  drawPlot(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName, "relative RMS error of B - E",
-                           points, "error_at_99"),
-           stem + "-error-vs-time.png");
-  const Plot pictures = errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
-                                        "RMSE of the pictures, 8-bit levels", points, "image_rmse_at_99");
-  if (pictures.series.size() > 1) drawPlot(pictures, stem + "-image-error-vs-time.png");  // not without the viewer
+  drawUnlessEmpty(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName,
+                                  "relative RMS error of B - E", points, "error_at_99"),
+                  stem + "-error-vs-time.png");
+  // Not without the viewer, which the pictures need.
+  drawUnlessEmpty(errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
+                                  "RMSE of the pictures, 8-bit levels", points, "image_rmse_at_99"),
+                  stem + "-image-error-vs-time.png");
   // Each setting's true error and unshot power; 1 - C of the first, which is what C promises.
   Plot conv{.title = "What convergence C says against the true error: " + sceneName, .xLabel = "iteration",
             .yLabel = "fraction", .logY = true};
@@ -196,11 +207,8 @@ void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) 
       remaining.points.emplace_back(iteration, std::max(1.0 - traces.number(row, "convergence"), 1e-9));
   }
   if (!remaining.points.empty()) conv.series.push_back(remaining);
-  if (!conv.series.empty()) drawPlot(conv, stem + "-error-vs-convergence.png");  // traces follow off rows only
-  if (hasSubdivide(points)) {
-    const Plot subdivision = subdivisionPlot(sceneName, points);
-    if (subdivision.series.size() > 1) drawPlot(subdivision, stem + "-subdivide.png");  // not without the viewer
-  }
+  drawUnlessEmpty(conv, stem + "-error-vs-convergence.png");  // traces follow off rows only
+  if (hasSubdivide(points)) drawUnlessEmpty(subdivisionPlot(sceneName, points), stem + "-subdivide.png");
 }
 
 }  // namespace radmesh::cli

@@ -2,6 +2,7 @@
 // agree on, and the combinations refused.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -177,6 +178,20 @@ TEST(CliSubdivide, BenchAccuracyMeasuresEachElementRows) {
   EXPECT_EQ(points[2]["element_rows"], "share");
   EXPECT_EQ(points[2]["elements"].get<int>(), 24);
   EXPECT_NE(run.output.find("uniform 0.5 share"), std::string::npos) << run.output;
+}
+
+// A sweep of elements alone has no patch row for the same-mesh plots: they are left out, and the
+// subdivide plot is drawn (before 2026-12-03 gnuplot was handed an empty plot and the bench failed).
+TEST(CliSubdivide, BenchAccuracyOfElementsAloneDrawsTheSubdividePlot) {
+  const std::string dir = tempPath("accuracy-elements");
+  const CommandRun run = radmesh(
+      "bench accuracy furnace --cells 1 --resolutions 16 --projections hemicube --reference-resolution 32 "
+      "--subdivide uniform --threads 1 --out-dir " + dir);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/furnace.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/furnace-subdivide.png")) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/furnace-error-vs-time.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/furnace-error-vs-convergence.png"));
 }
 
 TEST(CliSubdivide, BenchAccuracyRefusesASubdivisionItCannotRun) {
