@@ -94,7 +94,8 @@ double countElements(const std::vector<Patch>& patches, double minElementM) {
   return count;
 }
 
-Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements) {
+void checkElementCount(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements,
+                       const std::string& what) {
   if (!std::isfinite(minElementM) || !(minElementM >= 0.0))
     throw OptionError(fmt::format("--min-element must be a finite length in metres, at least 0 (0: every patch cut "
                                   "into four), got {}; use e.g. --min-element 0.1", minElementM));
@@ -104,9 +105,14 @@ Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM,
         ? fmt::format("use a larger --min-element (about {:.3g} m or more)",
                       minElementM * std::sqrt(count / static_cast<double>(maxElements)) * 1.1)
         : "give a larger --cell or --subdivide off";
-    throw OptionError(fmt::format("--min-element {} m would cut the {} patches into {:.3g} elements, more than the "
-                                  "limit of {}; {}", minElementM, patches.size(), count, maxElements, fix));
+    throw OptionError(fmt::format("--min-element {} m {} the {} patches into {:.3g} elements, more than the "
+                                  "limit of {}; {}", minElementM, what, patches.size(), count, maxElements, fix));
   }
+}
+
+Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements) {
+  checkElementCount(patches, minElementM, maxElements, "would cut");
+  const double count = countElements(patches, minElementM);
   Elements out;
   out.elements.reserve(static_cast<std::size_t>(count));
   out.first.reserve(patches.size() + 1);

@@ -4,6 +4,7 @@
 // its elements'. Elements are Patches themselves (geometry, normal, frame, material and polygon of
 // their patch), so that every projection and back end takes them as receivers unchanged.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "solver/meshing/patch.h"
@@ -34,13 +35,23 @@ int elementCuts(const Patch& patch, double minElementM);
 // How many elements subdivideUniform makes: the sum of the patches' elementCuts squared.
 double countElements(const std::vector<Patch>& patches, double minElementM);
 
+// The most elements a solve may make: --subdivide uniform's count, and adaptive subdivision's when
+// every element split down to --min-element.
+inline constexpr std::size_t kMaxElements = 20'000'000;
+
+// Throws OptionError for a minElementM that is not finite and at least 0, or for which
+// countElements exceeds maxElements; `what` says what the elements come from in the message ("would
+// cut", "could let adaptive subdivision split").
+void checkElementCount(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements,
+                       const std::string& what);
+
 // Every patch cut n ways per edge (n = elementCuts): a convex quad into the n x n grid of its
 // bilinear parameterisation (straight lines joining points evenly spaced on opposite edges), a
 // triangle into n^2 triangles (n = 2: the four-way split). Elements keep their patch's
 // orientation and are listed patch by patch. Throws OptionError for a minElementM that is not
 // finite and at least 0, or that would make more than maxElements elements.
 Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM,
-                          std::size_t maxElements = 20'000'000);
+                          std::size_t maxElements = kMaxElements);
 
 // Every patch its own single element, level 0: where adaptive subdivision starts.
 Elements patchesAsElements(const std::vector<Patch>& patches);

@@ -42,6 +42,7 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
                                [&](int e) { return splittable(elements.elements[e], options.minElementM); }, split))
       markContrast(elements, neighbours, reflected, options.splitContrast, options.minElementM, split);
     if (options.splitShadows) {
+      if (!occluders) occluders.emplace(patches);
       size_t r = 0;  // rows holds the patch shots' rows, in order
       for (const Shot& shot : shots) {
         if (shot.patch < 0) continue;
@@ -49,7 +50,7 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
         if (channelSum(shot.power) >= kShadowShotFraction * firstShotPowerW)
           backend->testReceivers(row, kShadowTestFlops, kRayPatchFlops * static_cast<double>(patches.size()),
                                  [&](size_t k) {
-                                   return markShadowEdge(row, k, patches[shot.patch], elements, patches,
+                                   return markShadowEdge(row, k, patches[shot.patch], elements, *occluders,
                                                          options.minElementM, split);
                                  });
       }

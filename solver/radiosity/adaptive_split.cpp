@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <numeric>
 
 #include "solver/geometry/point_grid.h"
@@ -18,9 +19,7 @@ constexpr double kPartlyHidden = 0.95;  // a row entry below this share of the u
 // corner does not graze the patches meeting it there.
 constexpr double kInset = 1e-3;
 
-struct Box {
-  Vec3 lo{0.0}, hi{0.0};
-};
+using Box = Occluders::Box;
 
 Box boxOf(const Patch& p, double margin) {
   Box b{p.vertices[0], p.vertices[0]};
@@ -44,17 +43,6 @@ std::vector<Vec3> samplePoints(const Patch& p) {
   for (int k = 0; k < p.vertexCount; ++k) points.push_back(p.vertices[k] + kInset * (p.centroid - p.vertices[k]));
   points.push_back(p.centroid);
   return points;
-}
-
-bool crosses(const Vec3& a, const Vec3& b, const Patch& p) {
-  const double da = glm::dot(p.normal, a - p.vertices[0]), db = glm::dot(p.normal, b - p.vertices[0]);
-  if (!((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0))) return false;
-  const Vec3 x = a + (da / (da - db)) * (b - a);
-  for (int k = 0; k < p.vertexCount; ++k) {
-    const Vec3& v = p.vertices[k];
-    if (glm::dot(glm::cross(p.vertices[(k + 1) % p.vertexCount] - v, x - v), p.normal) < 0.0) return false;
-  }
-  return true;
 }
 
 // Whether an edge of `a` and an edge of `b` lie on one line and overlap over more than `slack`.
@@ -82,23 +70,35 @@ bool facing(const Patch& a, const Patch& b, double slack) {
 }
 
 // Pairs of elements of different polygons sharing part of an edge (and facing), added to
-// `neighbours`: found through a grid of element centroids, each looked up within its box grown by
-// half the largest element's extent.
+// `neighbours`: each element is listed in every bucket of a grid its box meets, so two whose boxes
+// touch share a bucket, and an element looks only in the buckets of its own box. The buckets are
+// the median element's size (the largest element's would put much of a room in each lookup), but
+// no smaller than an eighth of the largest's (which would then be listed in thousands of them).
 void addCrossPolygonNeighbours(const std::vector<Patch>& es, const std::vector<Box>& boxes,
                                std::vector<std::vector<int>>& neighbours) {
-  double extent = 0.0;
-  for (const Box& b : boxes) extent = std::max(extent, glm::length(b.hi - b.lo));
-  if (!(extent > 0.0)) return;
-  PointGrid grid(extent);
-  for (size_t e = 0; e < es.size(); ++e) grid.insert(es[e].centroid, static_cast<int>(e));
+  std::vector<double> sizes;
+  for (const Box& b : boxes) sizes.push_back(glm::length(b.hi - b.lo));
+  if (sizes.empty()) return;
+  std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+  const double bucket = std::max(sizes[sizes.size() / 2], *std::max_element(sizes.begin(), sizes.end()) / 8.0);
+  if (!(bucket > 0.0)) return;
+  PointGrid grid(bucket);
+  for (size_t e = 0; e < es.size(); ++e) {
+    const Vec3 lo = glm::floor(boxes[e].lo / bucket), hi = glm::floor(boxes[e].hi / bucket);
+    for (double x = lo.x; x <= hi.x; ++x)
+      for (double y = lo.y; y <= hi.y; ++y)
+        for (double z = lo.z; z <= hi.z; ++z) grid.insert(bucket * Vec3(x + 0.5, y + 0.5, z + 0.5), static_cast<int>(e));
+  }
+  std::vector<int> lastSeenBy(es.size(), -1);  // an element meets `a` in several buckets: one test
   for (size_t a = 0; a < es.size(); ++a) {
     const double slack = 1e-6 * longestEdge(es[a]);
-    grid.anyInBox(boxes[a].lo - Vec3(0.5 * extent), boxes[a].hi + Vec3(0.5 * extent), [&](int b) {
-      if (b > static_cast<int>(a) && es[b].polygon != es[a].polygon && overlap(boxes[a], boxes[b]) &&
-          facing(es[a], es[b], slack) && shareEdge(es[a], es[b], slack)) {
+    grid.anyInBox(boxes[a].lo, boxes[a].hi, [&](int b) {
+      if (b > static_cast<int>(a) && lastSeenBy[b] != static_cast<int>(a) && es[b].polygon != es[a].polygon &&
+          overlap(boxes[a], boxes[b]) && facing(es[a], es[b], slack) && shareEdge(es[a], es[b], slack)) {
         neighbours[a].push_back(b);
         neighbours[b].push_back(static_cast<int>(a));
       }
+      lastSeenBy[b] = static_cast<int>(a);
       return false;
     });
   }
@@ -106,23 +106,48 @@ void addCrossPolygonNeighbours(const std::vector<Patch>& es, const std::vector<B
 
 }  // namespace
 
+bool segmentCrosses(const Vec3& a, const Vec3& b, const Patch& p) {
+  const double da = glm::dot(p.normal, a - p.vertices[0]), db = glm::dot(p.normal, b - p.vertices[0]);
+  if (!((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0))) return false;
+  const Vec3 x = a + (da / (da - db)) * (b - a);
+  for (int k = 0; k < p.vertexCount; ++k) {
+    const Vec3& v = p.vertices[k];
+    if (glm::dot(glm::cross(p.vertices[(k + 1) % p.vertexCount] - v, x - v), p.normal) < 0.0) return false;
+  }
+  return true;
+}
+
 std::vector<std::vector<int>> elementNeighbours(const Elements& elements) {
   const std::vector<Patch>& es = elements.elements;
   std::vector<Box> boxes;
   for (const Patch& e : es) boxes.push_back(boxOf(e, 1e-6 * longestEdge(e)));
-  // By polygon, then by the low x of the box: a sweep finds the touching pairs.
+  // By polygon, then by the low end of the box along the axis its polygon's elements spread most
+  // (along x, a wall in a y-z plane would pair every element with every other): a sweep finds the
+  // touching pairs.
+  std::map<int, Box> spread;
+  for (size_t e = 0; e < es.size(); ++e) {
+    const auto [at, fresh] = spread.try_emplace(es[e].polygon, boxes[e]);
+    at->second.lo = glm::min(at->second.lo, boxes[e].lo);
+    at->second.hi = glm::max(at->second.hi, boxes[e].hi);
+  }
+  std::vector<int> axis(es.size());
+  for (size_t e = 0; e < es.size(); ++e) {
+    const Vec3 extent = spread.at(es[e].polygon).hi - spread.at(es[e].polygon).lo;
+    axis[e] = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+  }
   std::vector<int> order(es.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
     if (es[a].polygon != es[b].polygon) return es[a].polygon < es[b].polygon;
-    return boxes[a].lo.x != boxes[b].lo.x ? boxes[a].lo.x < boxes[b].lo.x : a < b;
+    const double la = boxes[a].lo[axis[a]], lb = boxes[b].lo[axis[b]];
+    return la != lb ? la < lb : a < b;
   });
   std::vector<std::vector<int>> neighbours(es.size());
   for (size_t i = 0; i < order.size(); ++i) {
     const int a = order[i];
     for (size_t j = i + 1; j < order.size(); ++j) {
       const int b = order[j];
-      if (es[b].polygon != es[a].polygon || boxes[b].lo.x > boxes[a].hi.x) break;
+      if (es[b].polygon != es[a].polygon || boxes[b].lo[axis[b]] > boxes[a].hi[axis[a]]) break;
       if (!overlap(boxes[a], boxes[b])) continue;
       neighbours[a].push_back(b);
       neighbours[b].push_back(a);
@@ -142,22 +167,94 @@ void markContrast(const Elements& elements, const std::vector<std::vector<int>>&
                   std::vector<char>& split) {
   const double brightest = reflected.empty() ? 0.0 : *std::max_element(reflected.begin(), reflected.end());
   const double step = contrastStep(contrast, brightest);
+  // The step first: most elements have none, and splittable costs four square roots.
   for (size_t e = 0; e < reflected.size(); ++e)
-    for (int n : neighbours[e])
-      if (stepTooLarge(reflected[e], reflected[n], step) && splittable(elements.elements[e], minElementM)) split[e] = 1;
+    if (std::ranges::any_of(neighbours[e], [&](int n) { return stepTooLarge(reflected[e], reflected[n], step); }) &&
+        splittable(elements.elements[e], minElementM))
+      split[e] = 1;
 }
 
-bool segmentBlocked(const Vec3& a, const Vec3& b, const std::vector<Patch>& patches, int skipA, int skipB) {
+namespace {
+
+constexpr int kLeafPatches = 4;
+
+// Whether the segment a + t (b - a), t in [0, 1], meets the box grown by `margin` (slabs).
+bool segmentMeets(const Vec3& a, const Vec3& b, const Box& box, double margin) {
+  double enter = 0.0, leave = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    const double lo = box.lo[k] - margin, hi = box.hi[k] + margin, d = b[k] - a[k];
+    if (d == 0.0) {
+      if (a[k] < lo || a[k] > hi) return false;
+      continue;
+    }
+    const double t0 = (lo - a[k]) / d, t1 = (hi - a[k]) / d;
+    enter = std::max(enter, std::min(t0, t1));
+    leave = std::min(leave, std::max(t0, t1));
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Occluders::Occluders(const std::vector<Patch>& patches) : patches_(&patches), order_(patches.size()) {
+  for (const Patch& p : patches) boxes_.push_back(boxOf(p, 0.0));
+  std::iota(order_.begin(), order_.end(), 0);
+  if (!patches.empty()) build(0, static_cast<int>(patches.size()));
+}
+
+// Median split along the box centres' widest axis, depth first: a node's left child follows it.
+int Occluders::build(int first, int count) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.push_back({boxes_[order_[first]], first, count, -1});
+  Box box = boxes_[order_[first]];
+  for (int i = first; i < first + count; ++i) {
+    box.lo = glm::min(box.lo, boxes_[order_[i]].lo);
+    box.hi = glm::max(box.hi, boxes_[order_[i]].hi);
+  }
+  nodes_[index].box = box;
+  if (count <= kLeafPatches) return index;
+  const Vec3 extent = box.hi - box.lo;
+  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+  const auto centre = [&](int p) { return boxes_[p].lo[axis] + boxes_[p].hi[axis]; };
+  const int half = count / 2;
+  std::nth_element(order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
+                   [&](int p, int q) { return centre(p) < centre(q); });
+  build(first, half);
+  const int right = build(first + half, count - half);
+  nodes_[index].count = 0;
+  nodes_[index].right = right;
+  return index;
+}
+
+bool Occluders::segmentBlocked(const Vec3& a, const Vec3& b, int skipA, int skipB) const {
+  if (nodes_.empty()) return false;
   const Box segment{glm::min(a, b), glm::max(a, b)};
-  for (const Patch& p : patches) {
-    if (p.polygon == skipA || p.polygon == skipB) continue;
-    if (overlap(segment, boxOf(p, 0.0)) && crosses(a, b, p)) return true;
+  // Far more than the slab test's rounding, so that no box the segment touches is passed over.
+  const double margin = 1e-9 * (glm::length(segment.hi - segment.lo) + glm::length(nodes_[0].box.hi - nodes_[0].box.lo) +
+                                glm::length(a) + glm::length(b));
+  int stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!overlap(segment, node.box) || !segmentMeets(a, b, node.box, margin)) continue;
+    if (node.right < 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) {
+        const Patch& p = (*patches_)[order_[i]];
+        if (p.polygon == skipA || p.polygon == skipB) continue;
+        if (overlap(segment, boxes_[order_[i]]) && segmentCrosses(a, b, p)) return true;
+      }
+      continue;
+    }
+    stack[top++] = node.right;
+    stack[top++] = static_cast<int>(&node - nodes_.data()) + 1;
   }
   return false;
 }
 
 int markShadowEdge(const FormFactorRow& row, std::size_t r, const Patch& shooter, const Elements& elements,
-                   const std::vector<Patch>& patches, double minElementM, std::vector<char>& split) {
+                   const Occluders& occluders, double minElementM, std::vector<char>& split) {
   const int e = row.receivers[r];
   const Patch& element = elements.elements[e];
   if (split[e] || !splittable(element, minElementM)) return 0;
@@ -168,7 +265,7 @@ int markShadowEdge(const FormFactorRow& row, std::size_t r, const Patch& shooter
   int rays = 0;
   for (const Vec3& light : samplePoints(shooter)) {
     int seen = 0;
-    for (const Vec3& corner : corners) seen += segmentBlocked(corner, light, patches, element.polygon, shooter.polygon) ? 0 : 1;
+    for (const Vec3& corner : corners) seen += occluders.segmentBlocked(corner, light, element.polygon, shooter.polygon) ? 0 : 1;
     rays += static_cast<int>(corners.size());
     if (seen > 0 && seen < static_cast<int>(corners.size())) {
       split[e] = 1;

@@ -33,16 +33,42 @@ void markContrast(const Elements& elements, const std::vector<std::vector<int>>&
                   const std::vector<double>& reflected, double contrast, double minElementM,
                   std::vector<char>& split);
 
-// Whether the segment from a to b passes through a patch other than those of the scene polygons
-// `skipA` and `skipB` (the surfaces it starts and ends on).
-bool segmentBlocked(const Vec3& a, const Vec3& b, const std::vector<Patch>& patches, int skipA, int skipB);
+// Whether the segment from a to b crosses the plane of patch p strictly, at a point inside it.
+bool segmentCrosses(const Vec3& a, const Vec3& b, const Patch& p);
+
+// The patches as occluders of the shadow criterion's rays: a bounding volume hierarchy over their
+// boxes, built once per solve, so that a ray tests the few patches near it rather than every one.
+class Occluders {
+ public:
+  explicit Occluders(const std::vector<Patch>& patches);
+  // Whether the segment from a to b passes through a patch other than those of the scene polygons
+  // `skipA` and `skipB` (the surfaces it starts and ends on). The same answer as testing every
+  // patch: a node is passed over only where the segment misses its box by more than rounding.
+  bool segmentBlocked(const Vec3& a, const Vec3& b, int skipA, int skipB) const;
+
+  struct Box {
+    Vec3 lo{0.0}, hi{0.0};
+  };
+
+ private:
+  struct Node {
+    Box box;
+    int first = 0, count = 0;  // a leaf: patches order_[first, first + count)
+    int right = -1;            // an inner node: its children are the next node and `right`
+  };
+  int build(int first, int count);
+  const std::vector<Patch>* patches_;
+  std::vector<Box> boxes_;  // per patch
+  std::vector<int> order_;
+  std::vector<Node> nodes_;
+};
 
 // The shadow criterion for receiver r of a row of `shooter`: when the row shows the element
 // partly hidden (form factor below 95 % of the unoccluded point-to-polygon one), marks it if it
 // is splittable and its corners disagree on seeing a point of the shooter (its corners or its
 // centroid). Touches split[row.receivers[r]] alone; returns the rays it cast (segmentBlocked calls).
 int markShadowEdge(const FormFactorRow& row, std::size_t r, const Patch& shooter, const Elements& elements,
-                   const std::vector<Patch>& patches, double minElementM, std::vector<char>& split);
+                   const Occluders& occluders, double minElementM, std::vector<char>& split);
 
 // Declared MP-1 work of markShadowEdge (docs/emulator-cost-model.md) for the mesh back end: the
 // unoccluded form factor of an element's 4 corners (4 edges at about 40 flops) and the compare;

@@ -43,6 +43,9 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   if (!s.plan.occlusion && s.options.backend == Backend::Native) s.options.projection = Projection::Analytic;
   const size_t n = s.patches.size();
   if (s.subdivided()) {
+    // Adaptive subdivision is refused where splitting everywhere could pass the uniform limit: a
+    // tiny --min-element would otherwise refine shadow edges for hours.
+    if (s.adaptive()) checkElementCount(s.patches, options.minElementM, kMaxElements, "could let adaptive subdivision split");
     s.elements = s.adaptive() ? patchesAsElements(s.patches) : subdivideUniform(s.patches, options.minElementM);
     for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
     if (s.adaptive()) s.neighbours = elementNeighbours(s.elements);

@@ -10,6 +10,7 @@
 #include "solver/formfactors/form_factor_cache.h"
 #include "solver/formfactors/near_field.h"
 #include "solver/meshing/elements.h"
+#include "solver/radiosity/adaptive_split.h"
 #include "solver/radiosity/progressive_solver.h"
 
 namespace radmesh {
@@ -57,6 +58,7 @@ struct ProgressiveSolver::State {
   std::vector<FormFactorRow> rows;
   // Patches shoot, elements receive (options.subdivide; solver/meshing/elements.h): empty when off.
   Elements elements;
+  std::optional<Occluders> occluders;  // the shadow criterion's, built at its first use
   std::vector<Rgb> elementRadiosity;
   std::optional<NearFieldFinder> elementNear;         // per shooter patch, its near elements
   std::vector<std::vector<NearFieldPair>> nearPairs;   // per shooter patch, as its rows reach them

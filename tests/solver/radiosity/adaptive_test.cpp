@@ -12,7 +12,9 @@
 
 #include "solver/backends/mesh/mesh_backend.h"
 #include "solver/formfactors/analytic_form_factor.h"
+#include "solver/io/builtin_scenes.h"
 #include "solver/meshing/elements.h"
+#include "solver/meshing/meshing.h"
 #include "solver/radiosity/adaptive_split.h"
 #include "solver/scene/scene_error.h"
 #include "tests/solver/solver_test_helpers.h"
@@ -405,6 +407,51 @@ TEST(Adaptive, OptionsAreRefusedNamingTheFix) {
   o.minElementM = 0.1;
   o.splitContrast = 0.0;
   EXPECT_THROW(ProgressiveSolver(s.t.scene, s.t.patches, o), OptionError);
+  // Splitting everywhere down to 1e-5 m could make 4.34e10 elements (the floor's and the occluder's
+  // 0.5 m patches 17 x 50000^2, the light's 0.05 m ones 36 x 5000^2): refused up front, where it
+  // refined shadow edges for hours before 2026-12-03.
+  o.splitContrast = 0.1;
+  o.minElementM = 1e-5;
+  try {
+    ProgressiveSolver solver(s.t.scene, s.t.patches, o);
+    ADD_FAILURE() << "--min-element 1e-5 was taken";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("--min-element 1e-05 m could let adaptive subdivision split the 53 patches into 4.34e+10 elements"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("use a larger --min-element"), std::string::npos) << e.what();
+  }
+}
+
+// The shadow criterion's rays see through the hierarchy exactly what they see testing every patch:
+// random rays between points of the office's patches, some blocked, some not, all agreeing.
+TEST(Adaptive, OccludersAnswerAsTestingEveryPatch) {
+  const Scene office = builtinScene("office");
+  const std::vector<Patch> patches = meshScene(office, 0.75);
+  const Occluders occluders(patches);
+  const auto pointOn = [&](const Patch& p, double u, double v) {
+    const Vec3 a = p.vertices[0], b = p.vertices[1], c = p.vertices[p.vertexCount - 1];
+    return u + v <= 1.0 ? a + u * (b - a) + v * (c - a) : p.centroid;
+  };
+  unsigned state = 12345u;
+  const auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / static_cast<double>(1u << 24);
+  };
+  int blocked = 0;
+  const int rays = 4000;
+  for (int i = 0; i < rays; ++i) {
+    const Patch& from = patches[static_cast<size_t>(next() * patches.size()) % patches.size()];
+    const Patch& to = patches[static_cast<size_t>(next() * patches.size()) % patches.size()];
+    const Vec3 a = pointOn(from, 0.5 * next(), 0.5 * next()), b = pointOn(to, 0.5 * next(), 0.5 * next());
+    const bool everyPatch = std::ranges::any_of(patches, [&](const Patch& p) {
+      return p.polygon != from.polygon && p.polygon != to.polygon && segmentCrosses(a, b, p);
+    });
+    ASSERT_EQ(occluders.segmentBlocked(a, b, from.polygon, to.polygon), everyPatch) << "ray " << i;
+    blocked += everyPatch;
+  }
+  EXPECT_GT(blocked, rays / 10);
+  EXPECT_LT(blocked, rays - rays / 10);
 }
 
 }  // namespace
