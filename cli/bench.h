@@ -19,6 +19,7 @@ struct BenchSolveArgs {
   bool cellGiven = false;  // else the cell is chosen from the scene's size
   Daylight daylight;
   std::vector<std::string> projections{"plane", "hemicube"};
+  bool projectionsGiven = false;  // else the mesh back end times the plane alone, as `solve` takes it
   std::vector<int> resolutions{64, 128, 256, 512};
   std::vector<int> shooters{1};    // k per iteration
   std::string backend = "native";

@@ -62,6 +62,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->callback([args, json, cmd] {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");
     args->cellGiven = cmd->count("--cell") > 0;
+    args->projectionsGiven = cmd->count("--projections") > 0;
     if (!args->distributed) return writeJsonIfAsked(*json, benchSolve(*args));
     if (!parseCells(args->cellsMode))
       throw OptionError("bench solve --distributed measures a cells solve over processes: give --cells auto");

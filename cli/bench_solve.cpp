@@ -143,24 +143,34 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   const Backend backend = parseBackend(args.backend);
   if (backend == Backend::Mesh)
     fmt::print("PE grid {}, {} KB a PE\n", peGridText(args.machine), args.machine.memoryKb);
+  const std::vector<std::string> projections =
+      backend == Backend::Mesh && !args.projectionsGiven ? std::vector<std::string>{"plane"} : args.projections;
+  auto optionsOf = [&](const std::string& projection, int n, int k) {
+    SolveOptions o = SolveFlags().options;  // `solve`'s preset and its --effects default
+    o.effects = EffectsMode::Auto;
+    o.backend = backend;
+    o.machine = args.machine;
+    o.projection = parseProjection(projection);
+    o.resolution = n;
+    o.shooters = k;
+    o.until = args.until;
+    o.untilUnshot = args.untilUnshot;
+    o.threads = args.threads;
+    o.formFactorCacheBytes = formFactorCacheBytes(backend, args.cacheMb);
+    validateOptions(o);
+    if (cells) requireCellsOptions(o);
+    return o;
+  };
+  // Every setting is checked before any is timed: a refusal comes first, not after minutes of rows.
+  for (const std::string& projection : projections)
+    for (int n : args.resolutions)
+      for (int k : args.shooters) optionsOf(projection, n, k);
   fmt::print("{:<10} {:>6} {:>4} {:>14} {:>12} {:>12} {:>10} {:>8} {:>12}\n", "projection", "N", "k", "ms/iteration",
              "iterations", "s to C", "it/s", "unshot", "MP-1 s/it");
-  for (const std::string& projection : args.projections) {
+  for (const std::string& projection : projections) {
     for (int n : args.resolutions) {
       for (int k : args.shooters) {
-        SolveOptions o = SolveFlags().options;  // `solve`'s preset and its --effects default
-        o.effects = EffectsMode::Auto;
-        o.backend = backend;
-        o.machine = args.machine;
-        o.projection = parseProjection(projection);
-        o.resolution = n;
-        o.shooters = k;
-        o.until = args.until;
-        o.untilUnshot = args.untilUnshot;
-        o.threads = args.threads;
-        o.formFactorCacheBytes = formFactorCacheBytes(backend, args.cacheMb);
-        validateOptions(o);
-        if (cells) requireCellsOptions(o);
+        const SolveOptions o = optionsOf(projection, n, k);
         const Timing t = cells ? timeCells(scene, patches, partition, o, args.maxIterations,
                                            {cell.cellM, args.exchangeShots, args.portalBins}, ranks)
                                : timeSolve(scene, patches, o, args.maxIterations);

@@ -194,8 +194,14 @@ void addPlotCommand(CLI::App& app) {
   auto stem = std::make_shared<std::string>();
   CLI::App* accuracy =
       plot->add_subcommand("accuracy", "Draw the figures of docs/accuracy.md from STEM.csv and STEM-traces.csv");
-  accuracy->add_option("stem", *stem, "DIR/NAME of `radmesh bench accuracy --out-dir DIR --name NAME`")->required();
-  accuracy->callback([stem] { drawAccuracyFigures(*stem, std::filesystem::path(*stem).filename().string()); });
+  accuracy->add_option("stem", *stem, "DIR/NAME of `radmesh bench accuracy --out-dir DIR --name NAME` (or DIR/NAME.csv)")
+      ->required();
+  accuracy->callback([stem] {
+    // The table's own path is what a user has at hand: its stem is meant.
+    const std::filesystem::path given(*stem);
+    const std::string s = given.extension() == ".csv" ? (given.parent_path() / given.stem()).string() : *stem;
+    drawAccuracyFigures(s, std::filesystem::path(s).filename().string());
+  });
   auto model = std::make_shared<std::string>();
   auto scaling = std::make_shared<std::vector<std::string>>();
   CLI::App* scalingCmd = plot->add_subcommand(

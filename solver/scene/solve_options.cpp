@@ -64,6 +64,9 @@ void validateOptions(const SolveOptions& o) {
   if (o.subdivide == Subdivide::Adaptive && !(o.minElementM > 0.0))
     throw OptionError("--subdivide adaptive splits elements down to --min-element, so it needs one above 0: give "
                       "e.g. --min-element 0.05 (metres)");
+  if (o.backend == Backend::Mesh && o.projection != Projection::Plane)
+    throw OptionError(std::string("--backend mesh runs the paper's single plane; --projection ") +
+                      toString(o.projection) + " is native only: use --projection plane or --backend native");
   if (o.elementRows == ElementRows::Share && o.backend == Backend::Mesh)
     throw OptionError("--element-rows share is the native back end's: the mesh back end z-buffers every element on "
                       "its PEs, as the paper's machine does; give --element-rows rasterise (or auto), or --backend native");

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -49,6 +50,9 @@ inline std::string tempPath(const std::string& name) {
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }
+
+// The plots are drawn by gnuplot where it is installed (scripts/install-deps.sh installs it).
+inline bool gnuplotInstalled() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
 
 inline std::string readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

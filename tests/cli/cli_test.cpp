@@ -270,8 +270,6 @@ std::vector<std::vector<std::string>> readCsv(const std::string& path) {
   return rows;
 }
 
-bool gnuplotInstalled() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
-
 TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
   const std::string dir = tempPath("accuracy");
   const std::string json = tempPath("raw/furnace.json");  // its folder is made

@@ -50,6 +50,21 @@ TEST(PeMachineCli, BenchSolveTakesTheMachine) {
   EXPECT_EQ(readJson(json)["rows"].size(), 1u);
 }
 
+// Without --projections the mesh back end times the plane alone, as `solve` takes it; a hemicube
+// asked of it is refused before any row is timed (before 2026-12-03 the plane's rows ran first).
+TEST(PeMachineCli, BenchSolveOnTheMeshTimesThePlaneAndRefusesTheHemicubeFirst) {
+  const std::string json = tempPath("bench.json");
+  CommandRun run = radmesh("bench solve cornell --backend mesh --resolutions 32,64 --max-iterations 2 --json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const nlohmann::json rows = readJson(json)["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) EXPECT_EQ(row["projection"], "plane");
+  run = radmesh("bench solve cornell --backend mesh --projections plane,hemicube --resolutions 64 --max-iterations 2");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--projection hemicube is native only"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("ms/iteration"), std::string::npos) << run.output;
+}
+
 TEST(PeMachineCli, BadMachinesExit2NamingTheOptionAndTheFix) {
   struct Case {
     std::string arguments, expected;

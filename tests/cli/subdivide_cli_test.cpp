@@ -189,9 +189,14 @@ TEST(CliSubdivide, BenchAccuracyOfElementsAloneDrawsTheSubdividePlot) {
       "--subdivide uniform --threads 1 --out-dir " + dir);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/furnace.csv"));
-  EXPECT_TRUE(std::filesystem::exists(dir + "/furnace-subdivide.png")) << run.output;
+  EXPECT_EQ(std::filesystem::exists(dir + "/furnace-subdivide.png"), gnuplotInstalled()) << run.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/furnace-error-vs-time.png"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/furnace-error-vs-convergence.png"));
+  // `plot accuracy` draws it again from the table, named by its stem or by the CSV itself.
+  std::filesystem::remove(dir + "/furnace-subdivide.png");
+  const CommandRun redrawn = radmesh("plot accuracy " + dir + "/furnace.csv");
+  ASSERT_EQ(redrawn.exitCode, 0) << redrawn.output;
+  EXPECT_EQ(std::filesystem::exists(dir + "/furnace-subdivide.png"), gnuplotInstalled()) << redrawn.output;
 }
 
 TEST(CliSubdivide, BenchAccuracyRefusesASubdivisionItCannotRun) {

@@ -25,9 +25,6 @@ namespace {
 
 const SolveOptions& checked(const SolveOptions& options, const MeshBackendOptions& mesh) {
   validateOptions(options);
-  if (options.projection != Projection::Plane)
-    throw OptionError(std::string("--backend mesh runs the paper's single plane; --projection ") +
-                      toString(options.projection) + " is native only: use --projection plane or --backend native");
   auto powerOfTwo = [](int x) { return x > 0 && (x & (x - 1)) == 0; };
   if (!powerOfTwo(mesh.peRows) || !powerOfTwo(mesh.peCols))
     throw OptionError("a mesh of " + std::to_string(mesh.peRows) + " x " + std::to_string(mesh.peCols) +
