@@ -19,7 +19,8 @@ nlohmann::json iterationJson(const IterationRecord& r) {
           {"captured_fraction", r.capturedFraction},
           {"reused_rows", r.reusedRows},
           {"reused_rows_total", r.reusedRowsTotal},
-          {"cache_hits", r.cacheHits}};
+          {"cache_hits", r.cacheHits},
+          {"elements_split", r.elementsSplit}};
   if (r.shotStats) j.update(r.shotStats->figures);  // the back end's own figures, whichever it is
   return j;
 }

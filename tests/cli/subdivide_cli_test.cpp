@@ -58,6 +58,10 @@ TEST(CliSubdivide, AdaptiveSplitsAndStatsCountTheElements) {
     EXPECT_EQ(j["split_contrast"], 0.4);
     EXPECT_EQ(j["split_shadows"], true);
     EXPECT_GT(j["elements"].get<int>(), j["patches"].get<int>());  // some elements split
+    // Each split turns one element into four: the iterations' counts add up to the elements made.
+    int splits = 0;
+    for (const auto& iteration : j["per_iteration"]) splits += iteration["elements_split"].get<int>();
+    EXPECT_EQ(j["elements"].get<int>(), j["patches"].get<int>() + 3 * splits);
     EXPECT_LE(j["ledger"]["imbalance"].get<double>(), 1e-12);
     EXPECT_NE(run.output.find(std::to_string(j["elements"].get<int>()) + " elements"), std::string::npos) << run.output;
     if (backend != "mesh") continue;
