@@ -175,8 +175,11 @@ bool CellSolver::exhausted() const {
 
 bool CellSolver::done() const {
   const SolveOptions& o = state_->options;
-  return exhausted() || (o.untilUnshot > 0.0 && ledger().unshotFraction() <= o.untilUnshot) ||
-         iterations() >= o.maxIterations;
+  // Less unshot than the ledger vouches for is nothing left: with no unshot stop (--until-unshot
+  // 0), the rounds would otherwise go on shooting rounding until --max-iterations (C, which ends
+  // a whole solve there, is not defined across cells).
+  const double unshot = ledger().unshotFraction();
+  return exhausted() || unshot <= std::max(o.untilUnshot, kLedgerTolerance) || iterations() >= o.maxIterations;
 }
 
 void CellSolver::setUntilUnshot(double untilUnshot) {

@@ -82,7 +82,8 @@ class CellSolver {
   // order. The building's ledger is checked before and after the exchange.
   void round();
   // The building's unshot power (with what waits on portals) at most options.untilUnshot of the
-  // emitted, options.maxIterations shot (checked between rounds), or nothing left anywhere.
+  // emitted, or at most kLedgerTolerance of it, options.maxIterations shot (checked between
+  // rounds), or nothing left anywhere.
   bool done() const;
   bool exhausted() const;
   // A new stopping rule for the solve under way (the viewer's panel): throws OptionError for a

@@ -22,8 +22,7 @@ double Ledger::unshotFraction() const {
 }
 
 void checkLedger(const Ledger& l, int iteration) {
-  constexpr double kTolerance = 1e-9;  // of the emitted power: rounding over millions of updates stays far below
-  if (l.imbalance() <= kTolerance) return;
+  if (l.imbalance() <= kLedgerTolerance) return;
   const std::string portals = l.portalIn > 0.0 || l.portalOut > 0.0
       ? fmt::format(" (a cell: portal in {:.17g} W, portal out {:.17g} W)", l.portalIn, l.portalOut) : "";
   throw SolveError(fmt::format(
@@ -32,7 +31,7 @@ void checkLedger(const Ledger& l, int iteration) {
       "emitted power, above {:.0e}. This is a fault in radmesh or its form-factor back end; the solve stops and "
       "nothing of it is written",
       iteration, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, portals,
-      l.imbalance(), kTolerance));
+      l.imbalance(), kLedgerTolerance));
 }
 
 }  // namespace radmesh

@@ -28,5 +28,8 @@ struct Ledger {
 // Throws SolveError when the ledger does not balance to 1e-9 of its input, naming `iteration` and
 // every term. Every iteration, in every build: numbers that do not balance are never shown or written.
 void checkLedger(const Ledger& ledger, int iteration);
+// What the ledger vouches for, as a fraction of the emitted power: rounding over millions of
+// updates stays far below; checkLedger refuses an imbalance above it.
+inline constexpr double kLedgerTolerance = 1e-9;
 
 }  // namespace radmesh

@@ -70,6 +70,24 @@ TEST(CellSolver, LedgerBalancesPerCellAndInTotalEveryRound) {
   EXPECT_EQ(cells[1].ledger.emitted, 0.0);
 }
 
+// With no unshot stop the rounds end once less is left than the ledger vouches for, not after
+// --max-iterations of shooting rounding (before 2026-12-03, over a million iterations here).
+TEST(CellSolver, WithoutAnUnshotStopItEndsWhenNothingMeasurableIsLeft) {
+  const Scene scene = builtinScene("two-rooms");
+  const std::vector<Patch> patches = meshScene(scene, 1.0);  // coarse: the test is the stop, not the light
+  SolveOptions o = testOptions();
+  o.resolution = 16;
+  o.untilUnshot = 0.0;
+  o.maxIterations = 1'000'000;
+  CellSolver solver(scene, patches, twoRoomsPartition(patches), o, {1.0, 16});
+  int rounds = 0;
+  for (; !solver.done() && rounds < 100'000; ++rounds) solver.round();
+  EXPECT_TRUE(solver.done());
+  EXPECT_LE(solver.ledger().unshotFraction(), kLedgerTolerance);
+  EXPECT_GT(solver.ledger().unshotFraction(), 0.0);  // not exhausted: it stopped on the rule
+  EXPECT_LT(solver.iterations(), 100'000);
+}
+
 TEST(CellSolver, RoomBIsLitOnlyThroughThePortal) {
   const TwoRooms t;
   CellSolver solver(t.scene, t.patches, twoRoomsPartition(t.patches), testOptions(), {kDefaultCellM, 8});
