@@ -35,6 +35,7 @@ std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch
 
 double solveCellsWithProgress(CellSolver& solver, bool quiet, const std::function<void(double seconds)>& afterRound) {
   Progress progress(solver.options());
+  progress.withoutConvergence();
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   IterationRecord record;  // the building's, as Progress reads a solve's

@@ -50,15 +50,15 @@ void Progress::print(const IterationRecord& r, double elapsed) {
   if (mode_ == Mode::Log) {
     std::string stops;
     if (stop_.untilUnshot > 0.0) stops += fmt::format(" (until {:g}%)", 100.0 * stop_.untilUnshot);
-    std::string c = fmt::format("C {:.4f}", r.convergence);
-    if (stop_.until < 1.0) c += fmt::format(" (until {:g})", stop_.until);
-    fmt::print(out_, "unshot {:.2f}%{}  {}  iteration {}  {:.1f} it/s{}\n", unshot, stops, c, r.iteration, rate, left);
+    std::string c = showConvergence_ ? fmt::format("  C {:.4f}", r.convergence) : "";
+    if (showConvergence_ && stop_.until < 1.0) c += fmt::format(" (until {:g})", stop_.until);
+    fmt::print(out_, "unshot {:.2f}%{}{}  iteration {}  {:.1f} it/s{}\n", unshot, stops, c, r.iteration, rate, left);
   } else {
     // Within 80 columns, padded so that a shorter line overwrites the whole of a longer one.
     const int width = 12;
     const int filled = static_cast<int>(width * done);
-    const std::string text =
-        fmt::format("unshot {:.2f}%  C {:.4f}  {} it  {:.0f} it/s{}", unshot, r.convergence, r.iteration, rate, left);
+    const std::string c = showConvergence_ ? fmt::format("  C {:.4f}", r.convergence) : "";
+    const std::string text = fmt::format("unshot {:.2f}%{}  {} it  {:.0f} it/s{}", unshot, c, r.iteration, rate, left);
     fmt::print(out_, "\r[{}{}] {:<64}", std::string(filled, '#'), std::string(width - filled, '.'), text);
   }
   std::fflush(out_);

@@ -21,6 +21,8 @@ class Progress {
   // A solve resumed after `last` (a checkpoint): the rate and the time left count only the
   // iterations and progress made since, as the elapsed time does.
   void resumeFrom(const IterationRecord& last);
+  // A cells solve's lines: no C, which is not defined across cells.
+  void withoutConvergence() { showConvergence_ = false; }
 
  private:
   void print(const IterationRecord& record, double elapsedSeconds);
@@ -33,6 +35,7 @@ class Progress {
   int lastPrintedIteration_ = 0;
   int startIteration_ = 0;
   double startDone_ = 0.0;
+  bool showConvergence_ = true;
 };
 
 // Steps `solver` until done(), with progress on stdout unless `quiet`, calling afterStep (if any)

@@ -55,6 +55,23 @@ TEST(Progress, LogPrintsALineASecondAndTheFinalOne) {
       << text;
 }
 
+// A cells solve has no C: its lines leave it out, in a log and on a terminal.
+TEST(Progress, WithoutConvergenceLeavesCOut) {
+  for (const Progress::Mode mode : {Progress::Mode::Log, Progress::Mode::Terminal}) {
+    const std::string text = printed(mode, [](Progress& progress) {
+      progress.withoutConvergence();
+      IterationRecord r;
+      r.ledger.emitted = 1.0;
+      r.ledger.unshot = 0.5;
+      r.iteration = 10;
+      progress.report(r, 1.0);
+      progress.finish(r, 1.0);
+    });
+    EXPECT_EQ(text.find(" C "), std::string::npos) << text;
+    EXPECT_NE(text.find("unshot 50.00%"), std::string::npos) << text;
+  }
+}
+
 TEST(Progress, TerminalRedrawsOneLineAndEndsIt) {
   const std::string text = progressText(Progress::Mode::Terminal, 10240);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1);
