@@ -193,8 +193,13 @@ std::vector<Subdivision> subdivisionsOf(double cell, const std::vector<double>& 
     if (mode == Subdivide::Off || !subdivided) continue;
     const bool ownList = mode == Subdivide::Adaptive && !args.adaptiveMinElements.empty();
     for (const std::string& rows : args.elementRows)
-      for (double m : ownList ? args.adaptiveMinElements : args.minElements)
-        out.push_back({mode, m, parseElementRows(rows)});
+      for (double m : ownList ? args.adaptiveMinElements : args.minElements) {
+        SolveOptions o;  // adaptive with 0: a quarter of the cell, as solve takes it
+        o.subdivide = mode;
+        o.minElementM = m;
+        defaultMinElement(o, cell);
+        out.push_back({mode, o.minElementM, parseElementRows(rows)});
+      }
   }
   return out;
 }

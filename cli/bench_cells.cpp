@@ -145,6 +145,7 @@ SolveOptions solveOptions(const BenchCellsArgs& args) {
   o.threads = 1;
   o.subdivide = parseSubdivide(args.subdivide);
   o.minElementM = args.minElementM;
+  defaultMinElement(o, args.cellM);
   o.formFactorCacheBytes = formFactorCacheBytes(o.backend, args.cacheMb);
   validateOptions(o);
   return o;

@@ -102,7 +102,7 @@ void addBenchAccuracy(CLI::App* bench) {
                   "Receivers to compare: off (patches), uniform, adaptive (elements; docs/accuracy.md)")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--min-element", args->minElements,
-                  "Element sizes, metres, for uniform (0: four a patch) and adaptive (above 0)")
+                  "Element sizes, metres, for uniform (0: four a patch) and adaptive (0: a quarter of the cell)")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--adaptive-min-element", args->adaptiveMinElements,
                   "Element sizes, metres, for adaptive instead of --min-element")->delimiter(',');

@@ -97,8 +97,7 @@ Solved solveScene(const RenderArgs& args) {
     options.maxIterations = args.iterations;
   }
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up);
-  const CellChoice cell = args.flags.cell(scene);
-  fmt::print("{}\n", cell.why);
+  const CellChoice cell = args.flags.announceCell(scene, options);
   auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
     Solved solved{buildDisplayMesh(patches), {}, sceneFrame(scene)};
     solved.vertexB = vertexRadiosity(solved.mesh, displayRadiosity);

@@ -125,8 +125,7 @@ void run(const SolveArgs& args, Processes* processes) {
     throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",
                      "walk it with radmesh-view, describe it with radmesh info, or draw it with radmesh render");
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up);
-  const CellChoice cell = args.flags.cell(scene);
-  fmt::print("{}\n", cell.why);
+  const CellChoice cell = args.flags.announceCell(scene, options);
   if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, processes ? &processes->ranks : nullptr);
   if (processes) options.meshTransport = processes->meshMachine;
   const bool writes = !processes || processes->ranks.rank() == 0;

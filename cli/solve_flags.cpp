@@ -35,6 +35,14 @@ CellChoice SolveFlags::cell(const Scene& scene) const {
   return commandCell(scene, cellM, std::find(flags.begin(), flags.end(), "--cell") != flags.end());
 }
 
+CellChoice SolveFlags::announceCell(const Scene& scene, SolveOptions& options) const {
+  const CellChoice chosen = cell(scene);
+  fmt::print("{}\n", chosen.why);
+  if (defaultMinElement(options, chosen.cellM))
+    fmt::print("min element {:.4g} m, a quarter of the cell (--min-element sets it)\n", options.minElementM);
+  return chosen;
+}
+
 CellChoice commandCell(const Scene& scene, double cellM, bool given) {
   return given ? CellChoice{cellM, fmt::format("cell {:.4g} m, as --cell gives", cellM)} : chooseCell(scene);
 }
@@ -108,7 +116,8 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--shooters", f.options.shooters, "k patches shot per iteration")->capture_default_str();
   cmd->add_option("--until", f.options.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")->capture_default_str();
   cmd->add_option("--until-unshot", f.options.untilUnshot,
-                  "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: off)")
+                  "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: only below 1e-9 of it, what the "
+                  "energy ledger vouches for)")
       ->capture_default_str();
   cmd->add_option("--max-iterations", f.options.maxIterations, "Stop after this many iterations")->capture_default_str();
   cmd->add_option("--threads", f.options.threads, "Host threads; 0 uses every core")->capture_default_str();
@@ -122,7 +131,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
       ->capture_default_str();
   cmd->add_option("--min-element", f.options.minElementM,
                   "With --subdivide uniform: longest element edge, metres (0: every patch cut into four); with "
-                  "adaptive: no split makes elements shorter than this")
+                  "adaptive: no split makes elements shorter than this (0: a quarter of the cell)")
       ->capture_default_str();
   cmd->add_option_function<std::string>(
          "--element-rows", [&f](const std::string& text) { f.options.elementRows = parseElementRows(text); },

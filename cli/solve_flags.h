@@ -39,6 +39,9 @@ struct SolveFlags {
   std::vector<std::string> given() const;
   // The cell to mesh `scene` with: --cell when given, else the one chosen from the scene's size.
   CellChoice cell(const Scene& scene) const;
+  // cell(scene), printing why, and the default --min-element it implies for `options` (adaptive
+  // subdivision given none: a quarter of the cell).
+  CellChoice announceCell(const Scene& scene, SolveOptions& options) const;
 };
 
 inline constexpr const char* kPortalBinsHelp =

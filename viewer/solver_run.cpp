@@ -100,6 +100,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
     auto run = std::make_unique<Run>();
     run->setup = setup;
     run->setup.options.formFactorCacheBytes = formFactorCacheBytes(setup.options.backend, setup.cacheMb);
+    defaultMinElement(run->setup.options, setup.cellM);
     run->generation = generation;
     std::vector<Patch> patches = meshScene(scene_, setup.cellM);
     run->summary = summarizeScene(scene_, patches, setup.cellM);

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--subdivide", subdivide, "off; uniform: patches shoot, their elements receive and are shown; adaptive: elements split where the light changes (docs/accuracy.md)")
       ->capture_default_str();
-  app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch); with adaptive: the smallest split (above 0)")
+  app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch); with adaptive: the smallest split (0: a quarter of the cell)")
       ->capture_default_str();
   app.add_option_function<std::string>(
       "--pe-grid", [&o](const std::string& text) { radmesh::parsePeGrid(text, o.machine); },

@@ -79,6 +79,7 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
                        const SolveOptions& options, const CellSolveSettings& settings, CellRanks* ranks)
     : state_(std::make_unique<State>(scene, std::move(patches), options, settings, ranks)) {
   validateOptions(options);
+  checkAdaptiveMinElement(options);
   if (options.until < 1.0)
     throw OptionError("--cells auto stops on the unshot power of the whole building alone: give --until 1 with "
                       "--until-unshot (the bake preset does), not a convergence C");

@@ -25,7 +25,7 @@ struct Ledger {
   double unshotFraction() const;
 };
 
-// Throws SolveError when the ledger does not balance to 1e-9 of its input, naming `iteration` and
+// Throws SolveError when the ledger does not balance to kLedgerTolerance of its input, naming `iteration` and
 // every term. Every iteration, in every build: numbers that do not balance are never shown or written.
 void checkLedger(const Ledger& ledger, int iteration);
 // What the ledger vouches for, as a fraction of the emitted power: rounding over millions of

@@ -35,6 +35,7 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
                                      std::unique_ptr<FormFactorBackend> backend)
     : state_(std::make_unique<State>(scene, std::move(patches), options)) {
   validateOptions(options);
+  checkAdaptiveMinElement(options);
   State& s = *state_;
   validateSolverInput(s.scene, s.patches);
   s.plan = planEffects(s.scene, s.patches, options.effects);
@@ -261,7 +262,9 @@ const IterationRecord& ProgressiveSolver::step() {
 
 bool ProgressiveSolver::done() const {
   const State& s = *state_;
-  const bool littleLeft = s.options.untilUnshot > 0.0 && s.ledger.unshotFraction() <= s.options.untilUnshot;
+  // Below kLedgerTolerance the unshot power is rounding the ledger cannot vouch for: shooting it
+  // would only wait for C to round to 1.
+  const bool littleLeft = s.ledger.unshotFraction() <= std::max(s.options.untilUnshot, kLedgerTolerance);
   return s.exhausted || s.convergence >= s.options.until || littleLeft ||
          static_cast<int>(s.history.size()) >= s.options.maxIterations;
 }

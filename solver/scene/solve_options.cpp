@@ -61,9 +61,6 @@ void validateOptions(const SolveOptions& o) {
   if (!(std::isfinite(o.minElementM) && o.minElementM >= 0.0))
     throw OptionError("--min-element " + number(o.minElementM) +
                       " is out of range: give the longest element edge in metres, e.g. 0.1 (0: every patch cut into four)");
-  if (o.subdivide == Subdivide::Adaptive && !(o.minElementM > 0.0))
-    throw OptionError("--subdivide adaptive splits elements down to --min-element, so it needs one above 0: give "
-                      "e.g. --min-element 0.05 (metres)");
   if (o.backend == Backend::Mesh && o.projection != Projection::Plane)
     throw OptionError(std::string("--backend mesh runs the paper's single plane; --projection ") +
                       toString(o.projection) + " is native only: use --projection plane or --backend native");
@@ -76,6 +73,19 @@ void validateOptions(const SolveOptions& o) {
   if (!(std::isfinite(o.splitContrast) && o.splitContrast > 0.0))
     throw OptionError("--split-contrast " + number(o.splitContrast) +
                       " is out of range: give a fraction of the brightest element's radiosity above 0, e.g. 0.1");
+}
+
+void checkAdaptiveMinElement(const SolveOptions& o) {
+  if (o.subdivide == Subdivide::Adaptive && !(o.minElementM > 0.0))
+    throw OptionError("--subdivide adaptive splits elements down to --min-element, so it needs one above 0: give "
+                      "about a quarter of the meshing cell, e.g. --min-element 0.25 for --cell 1 (radmesh solve "
+                      "takes that where none is given)");
+}
+
+bool defaultMinElement(SolveOptions& o, double cellM) {
+  if (o.subdivide != Subdivide::Adaptive || o.minElementM != 0.0) return false;
+  o.minElementM = 0.25 * cellM;
+  return true;
 }
 
 void parsePeGrid(const std::string& text, PeMachine& machine) {

@@ -101,6 +101,13 @@ Preset parsePreset(const std::string& text);  // throws OptionError
 
 // Throws OptionError naming the option and the accepted range.
 void validateOptions(const SolveOptions& options);
+// Throws OptionError for adaptive subdivision without a minElementM above 0. Not in validateOptions:
+// the CLI and the viewer check their flags before the scene is read, and choose the default
+// (defaultMinElement) once its cell is known. The solvers check it.
+void checkAdaptiveMinElement(const SolveOptions& options);
+// Adaptive subdivision given no minElementM splits down to a quarter of the meshing cell:
+// docs/accuracy.md measures finer splits scoring worse on every scene. True when it set it.
+bool defaultMinElement(SolveOptions& options, double cellM);
 
 const char* toString(Projection projection);
 const char* toString(Backend backend);

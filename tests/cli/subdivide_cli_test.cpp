@@ -98,12 +98,27 @@ TEST(CliSubdivide, CellsAutoWithElementsBakesAndCountsThem) {
   EXPECT_GE(nlohmann::json::parse(baked.output)["triangles"].get<int>(), j["elements"].get<int>());
 }
 
+// Without --min-element adaptive subdivision splits down to a quarter of the cell (docs/accuracy.md),
+// in a whole solve and a cells solve alike, and says so.
+TEST(CliSubdivide, AdaptiveWithoutAMinElementTakesAQuarterOfTheCell) {
+  for (const std::string cells : {"off", "auto"}) {
+    const std::string stats = tempPath("adaptive-default-" + cells + ".json");
+    const CommandRun run = radmesh("solve cornell --cell 0.1 --subdivide adaptive --cells " + cells +
+                                   " --resolution 32 --max-iterations 3 --quiet --stats " + stats);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("min element 0.025 m, a quarter of the cell (--min-element sets it)"), std::string::npos)
+        << run.output;
+    const nlohmann::json j = readJson(stats);
+    EXPECT_EQ(j["min_element"], 0.025);
+  }
+  const CommandRun given = radmesh("solve cornell --cell 0.1 --subdivide adaptive --min-element 0.05 --resolution 32 "
+                                   "--max-iterations 3 --quiet");
+  ASSERT_EQ(given.exitCode, 0) << given.output;
+  EXPECT_EQ(given.output.find("min element"), std::string::npos) << given.output;
+}
+
 TEST(CliSubdivide, ImpossibleOptionsAreRefusedNamingTheFlag) {
-  CommandRun run = radmesh("solve cornell --subdivide adaptive");
-  EXPECT_EQ(run.exitCode, 2);
-  EXPECT_NE(run.output.find("--subdivide adaptive splits elements down to --min-element"), std::string::npos)
-      << run.output;
-  run = radmesh("solve cornell --subdivide adaptive --min-element 0.1 --split-shadows maybe");
+  CommandRun run = radmesh("solve cornell --subdivide adaptive --min-element 0.1 --split-shadows maybe");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--split-shadows"), std::string::npos) << run.output;
   run = radmesh("solve cornell --subdivide uniform --min-element -1");
@@ -204,10 +219,9 @@ TEST(CliSubdivide, BenchAccuracyOfElementsAloneDrawsTheSubdividePlot) {
 }
 
 TEST(CliSubdivide, BenchAccuracyRefusesASubdivisionItCannotRun) {
-  CommandRun run = radmesh("bench accuracy furnace --cells 1 --subdivide adaptive --min-element 0");
+  CommandRun run = radmesh("bench accuracy furnace --cells 1 --subdivide adaptive --adaptive-min-element -1");
   EXPECT_EQ(run.exitCode, 2);
-  EXPECT_NE(run.output.find("--subdivide adaptive splits elements down to --min-element"), std::string::npos)
-      << run.output;
+  EXPECT_NE(run.output.find("--min-element -1 is out of range"), std::string::npos) << run.output;
   run = radmesh("bench accuracy furnace --cells 1,0.5 --subdivide uniform --subdivide-cells 0.3");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--subdivide-cells 0.3"), std::string::npos) << run.output;

@@ -147,6 +147,23 @@ TEST(ProgressiveSolver, UntilUnshotStopsOnThePowerLeftToShoot) {
   EXPECT_GT(h.size(), byC.history().size());
 }
 
+// With --until 1 and no unshot stop, C reaches 1 only by rounding: the solve stops instead once
+// what is left is below what the ledger vouches for, at the first iteration that leaves that little.
+TEST(ProgressiveSolver, WithoutAnUnshotStopItEndsWhenNothingMeasurableIsLeft) {
+  const TestScene t = room();
+  SolveOptions o = optionsFor(Projection::Plane, 16);
+  o.until = 1.0;
+  o.untilUnshot = 0.0;
+  ProgressiveSolver solver(t.scene, t.patches, o);
+  ASSERT_TRUE(solveChecked(solver));
+  const auto& h = solver.history();
+  ASSERT_GE(h.size(), 2u);
+  EXPECT_FALSE(solver.exhausted());  // it stopped on the rule, not for want of power
+  EXPECT_LT(h.back().convergence, 1.0);
+  EXPECT_LE(h.back().ledger.unshotFraction(), kLedgerTolerance);
+  EXPECT_GT(h[h.size() - 2].ledger.unshotFraction(), kLedgerTolerance);
+}
+
 bool sameBits(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Rgb)) == 0;
 }
