@@ -198,7 +198,8 @@ std::vector<Subdivision> subdivisionsOf(double cell, const std::vector<double>& 
         o.subdivide = mode;
         o.minElementM = m;
         defaultMinElement(o, cell);
-        out.push_back({mode, o.minElementM, parseElementRows(rows)});
+        const Subdivision s{mode, o.minElementM, parseElementRows(rows)};
+        if (std::ranges::find(out, s) == out.end()) out.push_back(s);  // 0 and a quarter of the cell: one
       }
   }
   return out;

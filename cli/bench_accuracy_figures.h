@@ -19,6 +19,7 @@ struct Subdivision {
   Subdivide subdivide = Subdivide::Off;
   double minElementM = 0.0;
   ElementRows rows = ElementRows::Auto;
+  bool operator==(const Subdivision&) const = default;
 };
 
 struct Point {

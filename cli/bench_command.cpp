@@ -1,8 +1,10 @@
 // `radmesh bench ...`: measured tables (and JSON) of what the solver's choices cost.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "cli/bench.h"
 #include "cli/scene_input.h"
@@ -19,6 +21,15 @@ namespace {
 
 void writeJsonIfAsked(const std::string& path, const nlohmann::json& result) {
   if (!path.empty()) writeJson(path, result), fmt::print("wrote {}\n", path);
+}
+
+// A value listed twice (--resolutions 16,16) would be measured twice, as two rows of one setting.
+template <typename T>
+void dropRepeats(std::vector<T>& list) {
+  std::vector<T> kept;
+  for (const T& value : list)
+    if (std::ranges::find(kept, value) == kept.end()) kept.push_back(value);
+  list = std::move(kept);
 }
 
 void addCacheOption(CLI::App* cmd, double& mb) {
@@ -63,6 +74,7 @@ void addBenchSolve(CLI::App* bench) {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");
     args->cellGiven = cmd->count("--cell") > 0;
     args->projectionsGiven = cmd->count("--projections") > 0;
+    dropRepeats(args->projections), dropRepeats(args->resolutions), dropRepeats(args->shooters), dropRepeats(args->cells);
     if (!args->distributed) return writeJsonIfAsked(*json, benchSolve(*args));
     if (!parseCells(args->cellsMode))
       throw OptionError("bench solve --distributed measures a cells solve over processes: give --cells auto");
@@ -120,6 +132,9 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, json, cmd] {
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
+    dropRepeats(a.cells), dropRepeats(a.resolutions), dropRepeats(a.projections), dropRepeats(a.subdivide);
+    dropRepeats(a.minElements), dropRepeats(a.adaptiveMinElements), dropRepeats(a.subdivideCells);
+    dropRepeats(a.elementRows);
     if (cmd->count("--name") == 0) a.name = std::filesystem::path(a.scene).stem().string();
     writeJsonIfAsked(*json, benchAccuracy(a));
   });

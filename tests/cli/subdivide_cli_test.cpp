@@ -133,12 +133,14 @@ TEST(CliSubdivide, ImpossibleOptionsAreRefusedNamingTheFlag) {
 }
 
 // The subdivide axis of `bench accuracy`: off on every cell, uniform and adaptive on the coarsest,
-// once per element size. The furnace (a 1 m box) meshes to 6 patches at 1 m and 24 at 0.5 m.
+// once per element size. The furnace (a 1 m box) meshes to 6 patches at 1 m and 24 at 0.5 m. A value
+// listed twice is measured once: the 16 and uniform given twice, and adaptive's 0, a quarter of the
+// cell, being its 0.25.
 TEST(CliSubdivide, BenchAccuracyMeasuresEachSubdivisionOnItsCells) {
   const std::string dir = tempPath("accuracy"), json = tempPath("furnace.json");
   const CommandRun run = radmesh(
-      "bench accuracy furnace --cells 1,0.5 --resolutions 16 --projections hemicube --reference-resolution 32 "
-      "--subdivide off,uniform,adaptive --min-element 0,0.5 --adaptive-min-element 0.25 --until-unshot 0.05 "
+      "bench accuracy furnace --cells 1,0.5 --resolutions 16,16 --projections hemicube --reference-resolution 32 "
+      "--subdivide off,uniform,adaptive,uniform --min-element 0,0.5 --adaptive-min-element 0.25,0 --until-unshot 0.05 "
       "--threads 1 --out-dir " + dir + " --json " + json);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   std::ifstream in(json);
