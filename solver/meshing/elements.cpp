@@ -110,6 +110,10 @@ void checkElementCount(const std::vector<Patch>& patches, double minElementM, st
   }
 }
 
+void checkElementBudget(const std::vector<Patch>& patches, bool adaptive, double minElementM) {
+  checkElementCount(patches, minElementM, kMaxElements, adaptive ? "could let adaptive subdivision split" : "would cut");
+}
+
 Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements) {
   checkElementCount(patches, minElementM, maxElements, "would cut");
   const double count = countElements(patches, minElementM);

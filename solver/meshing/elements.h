@@ -45,6 +45,13 @@ inline constexpr std::size_t kMaxElements = 20'000'000;
 void checkElementCount(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements,
                        const std::string& what);
 
+// checkElementCount for a solve's subdivision: uniform's elements, or with `adaptive` every element
+// adaptive subdivision could make. That count bounds it: an element splits only while half its
+// longest edge is at least minElementM, and each split halves the longest edge at least (a child's
+// edges are halves of its parent's edges or of a midline, no longer than the parent's longest), so
+// a patch of longest edge L ends in at most (L / minElementM)^2 elements, its elementCuts squared.
+void checkElementBudget(const std::vector<Patch>& patches, bool adaptive, double minElementM);
+
 // Every patch cut n ways per edge (n = elementCuts): a convex quad into the n x n grid of its
 // bilinear parameterisation (straight lines joining points evenly spaced on opposite edges), a
 // triangle into n^2 triangles (n = 2: the four-way split). Elements keep their patch's

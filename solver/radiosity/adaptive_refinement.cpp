@@ -18,8 +18,6 @@ using solver_state::channelSum;
 
 namespace {
 
-constexpr size_t kMaxAdaptiveElements = 4'000'000;  // splitting stops short of this many elements
-
 // Per element before a split, its index after it, or -1 for one that split (origin and split as
 // refine has them).
 std::vector<int> newIndices(const std::vector<int>& origin, const std::vector<char>& split) {
@@ -56,7 +54,8 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
       }
     }
     const auto count = static_cast<size_t>(std::count(split.begin(), split.end(), 1));
-    if (count == 0 || n + 3 * count > kMaxAdaptiveElements) return;
+    // No cap here: checkElementBudget bounded every split this can make (solver/meshing/elements.h).
+    if (count == 0) return;
     record.elementsSplit += static_cast<int>(count);
     const std::vector<Rgb> parentRadiosity = std::move(elementRadiosity), parentGain = iterationGain;
     const std::vector<int> origin = splitElements(elements, split);

@@ -86,6 +86,9 @@ CellSolver::CellSolver(const Scene& scene, std::vector<Patch> patches, const Cel
   if (settings.exchangeShots < 1) throw OptionError("--exchange-shots must be at least 1");
   checkPortalBins(settings.portalBins);
   State& s = *state_;
+  // The building's elements within the limit, not only each cell's.
+  if (options.subdivide != Subdivide::Off)
+    checkElementBudget(s.patches, options.subdivide == Subdivide::Adaptive, options.minElementM);
   validatePartition(scene, s.patches.size(), partition);
   s.portalCount = static_cast<int>(partition.portals.size());
 

@@ -46,7 +46,7 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   if (s.subdivided()) {
     // Adaptive subdivision is refused where splitting everywhere could pass the uniform limit: a
     // tiny --min-element would otherwise refine shadow edges for hours.
-    if (s.adaptive()) checkElementCount(s.patches, options.minElementM, kMaxElements, "could let adaptive subdivision split");
+    checkElementBudget(s.patches, s.adaptive(), options.minElementM);
     s.elements = s.adaptive() ? patchesAsElements(s.patches) : subdivideUniform(s.patches, options.minElementM);
     for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
     if (s.adaptive()) s.neighbours = elementNeighbours(s.elements);

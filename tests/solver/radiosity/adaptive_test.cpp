@@ -400,6 +400,27 @@ TEST(Adaptive, AStepAcrossAPolygonSeamSplits) {
     }
 }
 
+// Splitting wherever the light changes at all, adaptive subdivision stays within the count the
+// up-front refusal bounds it by (elementCuts squared a patch), and no element is shorter than the
+// minimum: the bound that lets the solve split without a cap at run time.
+TEST(Adaptive, SplittingEverywhereStaysWithinTheRefusalsBound) {
+  const ShadowScene s;
+  constexpr double kMin = 0.06;
+  SolveOptions o = subdivided(shadowOptions(), Subdivide::Adaptive, kMin);
+  o.splitContrast = 1e-9;
+  ProgressiveSolver solver(s.t.scene, s.t.patches, o);
+  while (!solver.done()) solver.step();
+  const std::vector<Patch>& elements = solver.elements();
+  // The floor's 0.5 m patches split at most three times (0.0625 m), into 64 elements each, and all
+  // but a few (in the umbra, black all over) do.
+  const auto floor = std::ranges::count_if(elements, [](const Patch& e) { return e.material == 0; });
+  EXPECT_LE(floor, 16 * 64);
+  EXPECT_GT(floor, 16 * 60);
+  EXPECT_LE(static_cast<double>(elements.size()), countElements(s.t.patches, kMin));
+  for (const Patch& e : elements)
+    if (e.material == 0) EXPECT_GE(longestEdge(e), kMin);  // the light's 0.05 m patches were smaller to begin with
+}
+
 TEST(Adaptive, OptionsAreRefusedNamingTheFix) {
   const ShadowScene s;
   SolveOptions o = subdivided(shadowOptions(), Subdivide::Adaptive, 0.0);

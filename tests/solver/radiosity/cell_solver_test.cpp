@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "solver/io/builtin_scenes.h"
+#include "solver/meshing/elements.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
 #include "tests/solver/radiosity/two_rooms_cells.h"
@@ -86,6 +88,30 @@ TEST(CellSolver, WithoutAnUnshotStopItEndsWhenNothingMeasurableIsLeft) {
   EXPECT_LE(solver.ledger().unshotFraction(), kLedgerTolerance);
   EXPECT_GT(solver.ledger().unshotFraction(), 0.0);  // not exhausted: it stopped on the rule
   EXPECT_LT(solver.iterations(), 100'000);
+}
+
+// The element limit holds for the building, not only for each cell: an adaptive --min-element at
+// which either room alone stays under it, and the two together do not, is refused up front.
+TEST(CellSolver, TheElementLimitHoldsForTheWholeBuilding) {
+  const Scene scene = builtinScene("two-rooms");
+  const std::vector<Patch> patches = meshScene(scene, 1.0);
+  const CellPartition partition = twoRoomsPartition(patches);
+  constexpr double kMin = 0.0025;
+  std::vector<Patch> roomA, roomB;
+  for (const Patch& p : patches) (inRoomA(p) ? roomA : roomB).push_back(p);
+  ASSERT_LE(countElements(roomA, kMin), static_cast<double>(kMaxElements));
+  ASSERT_LE(countElements(roomB, kMin), static_cast<double>(kMaxElements));
+  ASSERT_GT(countElements(patches, kMin), static_cast<double>(kMaxElements));
+  SolveOptions o = testOptions();
+  o.subdivide = Subdivide::Adaptive;
+  o.minElementM = kMin;
+  try {
+    CellSolver solver(scene, patches, partition, o, {1.0, 16});
+    ADD_FAILURE() << "the building's elements were not bounded";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("could let adaptive subdivision split the 204 patches"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(CellSolver, RoomBIsLitOnlyThroughThePortal) {
