@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -199,8 +201,10 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
                        100.0 * unshot);
     ImGui::PopStyleColor();
   }
-  ImGui::Text("%s back end, %s %dx%d, k = %d, %zu patches", toString(o.backend), toString(o.projection),
-              o.resolution, o.resolution, o.shooters, snapshot.summary.patches);
+  const std::string elements =
+      o.subdivide == Subdivide::Off ? "" : fmt::format(" ({} elements)", snapshot.receivers);
+  ImGui::TextWrapped("%s back end, %s %dx%d, k = %d, %zu patches%s", toString(o.backend), toString(o.projection),
+              o.resolution, o.resolution, o.shooters, snapshot.summary.patches, elements.c_str());
   if (ImGui::Button(snapshot.playing ? "Pause" : "Play")) snapshot.playing ? solver.pause() : solver.play();
   ImGui::SameLine();
   if (ImGui::Button(snapshot.cells ? "Round 1" : "Step 1")) solver.step(1);

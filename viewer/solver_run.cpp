@@ -164,6 +164,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->setup = run.setup;
   snapshot->mesh = run.mesh;
   snapshot->summary = run.summary;
+  snapshot->receivers = run.receiverCount();
   if (run.cells) {
     snapshot->vertexB = vertexRadiosity(*run.mesh, run.cells->displayElementRadiosity());
     snapshot->cells = cellsProgress(run);

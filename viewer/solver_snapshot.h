@@ -62,6 +62,7 @@ struct SolverSnapshot {
   SolveSetup setup;
   std::shared_ptr<const DisplayMesh> mesh;   // null while meshing, or when setup failed
   SceneSummary summary;
+  std::size_t receivers = 0;                 // what receives light: the elements, or the patches
   std::vector<Effect> effects;               // the solver's effects plan: each on or off, and why
   std::vector<Rgb> vertexB;                  // display radiosity per mesh vertex
   double exposure = 1.0;                     // autoExposure of vertexB (viewer/exposure.h)

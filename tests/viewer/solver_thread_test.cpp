@@ -85,6 +85,7 @@ TEST(SolverThread, AdaptiveElementsAreDrawnAsTheySplit) {
   for (int i = 0; i < 3; ++i) direct.step();
   ASSERT_GT(direct.elements().size(), direct.patches().size()) << "nothing split: the test shows nothing";
   EXPECT_NE(s->mesh, first->mesh);
+  EXPECT_EQ(s->receivers, direct.elements().size());  // the panel's count
   const DisplayMesh mesh = buildDisplayMesh(direct.elements());
   EXPECT_EQ(s->mesh->positions.size(), mesh.positions.size());
   EXPECT_EQ(s->mesh->indices, mesh.indices);
