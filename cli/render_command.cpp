@@ -36,8 +36,8 @@ namespace {
 
 struct RenderArgs {
   SolveFlags flags;
-  std::string camera;  // "X,Y,Z"; empty: the walkthrough's start view
-  std::string look;    // "X,Y,Z"; empty: the start view's, or the scene centre with --camera
+  std::optional<glm::dvec3> camera;  // none: the walkthrough's start view
+  std::optional<glm::dvec3> look;    // none: the start view's, or the scene centre with --camera
   double fovDeg = 60.0;
   std::string size = "1024x768";
   int iterations = 0;  // 0: until --until
@@ -65,16 +65,17 @@ glm::ivec2 parseSize(const std::string& text) {
   return s;
 }
 
-// The start view of the walkthrough, moved by --camera / --look / --fov.
+// The start view of the walkthrough, moved by --camera / --look / --fov: chosen (or refused) from
+// the scene's frame before a solve, not after it.
 RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
   WalkCamera walk(frame);
   walk.fovYDeg = args.fovDeg;
   RenderView view = walk.view();
-  if (!args.camera.empty()) {
-    view.eye = parsePoint(args.camera, "--camera");
+  if (args.camera) {
+    view.eye = *args.camera;
     view.look = 0.5 * (frame.boundsMin + frame.boundsMax);
   }
-  if (!args.look.empty()) view.look = parsePoint(args.look, "--look");
+  if (args.look) view.look = *args.look;
   try {
     validateView(view);
   } catch (const std::invalid_argument& e) {
@@ -86,7 +87,7 @@ RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
 struct Solved {
   DisplayMesh mesh;
   std::vector<Rgb> vertexB;
-  SceneFrame frame;
+  RenderView view;
 };
 
 Solved solveScene(const RenderArgs& args) {
@@ -97,9 +98,10 @@ Solved solveScene(const RenderArgs& args) {
     options.maxIterations = args.iterations;
   }
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up);
+  const RenderView view = chooseView(args, sceneFrame(scene));
   const CellChoice cell = args.flags.announceCell(scene, options);
   auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {
-    Solved solved{buildDisplayMesh(patches), {}, sceneFrame(scene)};
+    Solved solved{buildDisplayMesh(patches), {}, view};
     solved.vertexB = vertexRadiosity(solved.mesh, displayRadiosity);
     return solved;
   };
@@ -130,8 +132,8 @@ std::optional<Solved> readBakeToRender(const RenderArgs& args) {
                flag, args.flags.scene);
   fmt::print("read bake {}: {} vertices, {} triangles\n", args.flags.scene, bake->mesh.positions.size(),
              bake->mesh.indices.size() / 3);
-  const SceneFrame frame = sceneFrame(bakeScene(*bake, args.flags.scene));
-  return Solved{std::move(bake->mesh), std::move(bake->vertexB), frame};
+  const RenderView view = chooseView(args, sceneFrame(bakeScene(*bake, args.flags.scene)));
+  return Solved{std::move(bake->mesh), std::move(bake->vertexB), view};
 }
 
 void run(const RenderArgs& args) {
@@ -140,7 +142,7 @@ void run(const RenderArgs& args) {
   checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
   std::optional<Solved> solved = readBakeToRender(args);
   if (!solved) solved = solveScene(args);
-  const RenderView view = chooseView(args, solved->frame);
+  const RenderView& view = solved->view;
 
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -172,8 +174,12 @@ void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Solve a scene (or read a bake) and render a view offscreen to PNG");
   addSolveFlags(cmd, args->flags);
-  cmd->add_option("--camera", args->camera, "Eye position X,Y,Z in metres (default: the walkthrough's start)");
-  cmd->add_option("--look", args->look, "Point looked at X,Y,Z (default: the scene centre with --camera)");
+  cmd->add_option_function<std::string>(
+      "--camera", [args](const std::string& text) { args->camera = parsePoint(text, "--camera"); },
+      "Eye position X,Y,Z in metres (default: the walkthrough's start)");
+  cmd->add_option_function<std::string>(
+      "--look", [args](const std::string& text) { args->look = parsePoint(text, "--look"); },
+      "Point looked at X,Y,Z (default: the scene centre with --camera)");
   cmd->add_option("--fov", args->fovDeg, "Vertical field of view, degrees")->capture_default_str();
   cmd->add_option("--size", args->size, "Image size WxH in pixels")->capture_default_str();
   CLI::Option* iterations =
@@ -182,7 +188,14 @@ void addRenderCommand(CLI::App& app) {
   cmd->get_option("--until")->excludes(iterations);
   cmd->get_option("--until-unshot")->excludes(iterations);
   cmd->add_option_function<double>(
-      "--exposure", [args](double ev) { args->exposureEv = ev; },
+      "--exposure",
+      [args](double ev) {
+        // 2^64 either way is far past any scene's range of light; beyond, a typo or an overflow.
+        if (!(std::abs(ev) <= 64.0))
+          throw OptionError(fmt::format("--exposure {} is out of range: give stops from -64 to 64, e.g. -2 "
+                                        "(or leave it out: automatic)", ev));
+        args->exposureEv = ev;
+      },
       "Exposure in stops: shown value = B x 2^EV, white at 1 (default: automatic)");
   cmd->add_option("--frames", args->frames, "Draw this many frames and report ms per frame (timing)")
       ->check(CLI::Range(1, 100000));

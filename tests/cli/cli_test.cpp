@@ -496,12 +496,16 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--fov 180", "--fov"},
       {"--camera 1,2", "--camera"},
       {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2", "--camera/--look/--fov"},
+      {"--look nan,0,0", "--look"},
+      {"--exposure nan", "--exposure nan is out of range"},
+      {"--exposure 1e308", "--exposure 1e+308 is out of range"},
       {"--effects some", "--effects"},
   };
   for (const auto& [options, named] : cases) {
     const CommandRun run = radmesh("render cornell --cell 0.2 --iterations 1 " + options + " --out " + out);
     EXPECT_EQ(run.exitCode, 2) << options << ": " << run.output;
     EXPECT_NE(run.output.find(named), std::string::npos) << options << ": " << run.output;
+    EXPECT_EQ(run.output.find("solved"), std::string::npos) << options << ": refused after the solve";
   }
   EXPECT_FALSE(std::filesystem::exists(out));
 }
