@@ -115,9 +115,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--ratio", f.options.ratio, "Half-side of the single plane at height 1")->capture_default_str();
   cmd->add_option("--shooters", f.options.shooters, "k patches shot per iteration")->capture_default_str();
   cmd->add_option("--until", f.options.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")->capture_default_str();
-  cmd->add_option("--until-unshot", f.options.untilUnshot,
-                  "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: only below 1e-9 of it, what the "
-                  "energy ledger vouches for)")
+  cmd->add_option("--until-unshot", f.options.untilUnshot, kUntilUnshotHelp)
       ->capture_default_str();
   cmd->add_option("--max-iterations", f.options.maxIterations, "Stop after this many iterations")->capture_default_str();
   cmd->add_option("--threads", f.options.threads, "Host threads; 0 uses every core")->capture_default_str();

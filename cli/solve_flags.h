@@ -48,6 +48,10 @@ inline constexpr const char* kPortalBinsHelp =
     "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
     "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
 
+inline constexpr const char* kUntilUnshotHelp =
+    "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: only below 1e-9 of it, what the "
+    "energy ledger vouches for)";
+
 inline constexpr const char* kCacheMbHelp =
     "Form-factor row cache budget in MiB (0: none; default: 1024, or a quarter of the memory where that is less, on "
     "the native back end; none on the mesh back end)";

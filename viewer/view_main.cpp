@@ -55,8 +55,7 @@ int main(int argc, char** argv) {
   app.add_option("--sun", sun, "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north and above the horizon");
   app.add_option("--until", o.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")
       ->capture_default_str();
-  app.add_option("--until-unshot", o.untilUnshot,
-                 "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: off)")
+  app.add_option("--until-unshot", o.untilUnshot, radmesh::cli::kUntilUnshotHelp)
       ->capture_default_str();
   std::string cells = "off";
   app.add_option("--cells", cells, "auto: find the rooms and solve them cell by cell, the camera's first (docs/cells.md); "
