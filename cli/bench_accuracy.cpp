@@ -227,6 +227,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
   const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up);
   if (args.cells.empty() || args.resolutions.empty())
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
+  checkResolution(args.referenceResolution, "--reference-resolution");
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
     throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
   const double finest = *std::ranges::min_element(args.cells);

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "cli/option_checks.h"
 #include "cli/bench.h"
 #include "cli/scene_input.h"
 #include "cli/commands.h"
@@ -58,7 +59,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--cells", args->cellsMode, "auto: time the cells solve (with --until 1 --until-unshot F); off")
       ->capture_default_str();
   cmd->add_option("--exchange-shots", args->exchangeShots, "With --cells auto: shots per cell per round, on average")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->capture_default_str();
@@ -150,7 +151,7 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_option("--resolution", args->resolution, "N of the projection")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Both solves stop at this unshot fraction")->capture_default_str();
   cmd->add_option("--exchange-shots", args->exchangeShots, "Shots a cell a round between portal exchanges, on average")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--focus-cell", args->focusCell, "The camera's cell, solved first")->capture_default_str();

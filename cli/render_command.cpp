@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/option_checks.h"
 #include "cli/commands.h"
 #include "cli/scene_input.h"
 #include "solver/scene/scene_error.h"
@@ -184,7 +185,7 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--size", args->size, "Image size WxH in pixels")->capture_default_str();
   CLI::Option* iterations =
       cmd->add_option("--iterations", args->iterations, "Solve exactly this many iterations (instead of --until)")
-          ->check(CLI::PositiveNumber);
+          ->check(kPositive);
   cmd->get_option("--until")->excludes(iterations);
   cmd->get_option("--until-unshot")->excludes(iterations);
   cmd->add_option_function<double>(

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/option_checks.h"
 #include "cli/cell_solve.h"
 #include "cli/commands.h"
 #include "cli/distributed_command.h"
@@ -194,7 +195,7 @@ void addSolveCommand(CLI::App& app) {
       "--checkpoint", args->checkpointPath, "Save the solver's state to this file at the end (resume with --resume)");
   cmd->add_option("--checkpoint-every", args->checkpointEverySeconds,
                   "Also save the checkpoint every this many seconds of solving")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
       ->needs(checkpoint);
   cmd->add_option("--resume", args->resumePath,
                   "Go on from a checkpoint of the same scene and options; --max-iterations counts from the start");

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "cli/option_checks.h"
 #include "cli/scene_input.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
@@ -163,7 +164,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
       ->capture_default_str();
   cmd->add_option("--exchange-shots", f.exchangeShots, "With --cells auto: shots a cell a round between portal exchanges, on average (shared by unshot power)")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", f.portalBins, kPortalBinsHelp)->capture_default_str();
   const std::vector<CLI::Option*> options = cmd->get_options();

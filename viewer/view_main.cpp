@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 
+#include "cli/option_checks.h"
 #include "cli/solve_flags.h"
 #include "solver/radiosity/cell_solver.h"
 #include "solver/scene/scene_error.h"
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("--exchange-shots", args.setup.exchangeShots,
                  "With --cells auto: the camera's cell's iterations between portal exchanges (a neighbour at portal "
                  "distance d shoots this >> d)")
-      ->check(CLI::PositiveNumber)
+      ->check(radmesh::cli::kPositive)
       ->capture_default_str();
   app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
   app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")->capture_default_str();
@@ -78,12 +79,12 @@ int main(int argc, char** argv) {
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")
       ->capture_default_str();
   app.add_option("--steps", args.steps, "Smoke test: run N iterations (none for a bake), save --screenshot, exit")
-      ->check(CLI::PositiveNumber);
+      ->check(radmesh::cli::kPositive);
   app.add_option("--min-frames", args.minFrames, "With --steps: draw at least this many frames (timing)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(radmesh::cli::kNonNegative);
   app.add_option("--frames", args.frames, "Frame-time report: solve while drawing N frames once the mesh shows, "
                  "print the lowest and median frame rates, save --screenshot, exit")
-      ->check(CLI::PositiveNumber);
+      ->check(radmesh::cli::kPositive);
   app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps or --frames)");
   CLI11_PARSE(app, argc, argv);
 

@@ -34,10 +34,14 @@ void validateMachine(const PeMachine& m) {
 
 }  // namespace
 
-void validateOptions(const SolveOptions& o) {
-  if (o.resolution < 16 || o.resolution > 2048)
-    throw OptionError("--resolution " + std::to_string(o.resolution) +
+void checkResolution(int resolution, const std::string& option) {
+  if (resolution < 16 || resolution > 2048)
+    throw OptionError(option + " " + std::to_string(resolution) +
                       " is out of range: give N from 16 to 2048 (the projection surface is N x N)");
+}
+
+void validateOptions(const SolveOptions& o) {
+  checkResolution(o.resolution, "--resolution");
   if (!std::isfinite(o.ratio) || o.ratio <= 0.0)
     throw OptionError("--ratio " + number(o.ratio) +
                       " is not a finite, positive number: give the single plane's half-side at "

@@ -233,6 +233,14 @@ TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   run = radmesh("solve furnace --projection sphere");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("sphere"), std::string::npos) << run.output;
+  // A count or time that must be positive says so, not CLI11's range up to the largest double.
+  for (const std::string command : {"solve two-rooms --cells auto --exchange-shots 0",
+                                    "solve furnace --checkpoint out.ckpt --checkpoint-every -1"}) {
+    run = radmesh(command);
+    EXPECT_EQ(run.exitCode, 2) << command;
+    EXPECT_NE(run.output.find("is not above 0: give a number above 0"), std::string::npos) << run.output;
+    EXPECT_LT(run.output.size(), 200u) << run.output;
+  }
 }
 
 TEST(Cli, EveryBadFileIsRefusedWithItsNameAndNoCrash) {
@@ -379,7 +387,7 @@ TEST(Cli, BenchAccuracyScoresTheFinestSweptMeshAgainstAFinerReferenceCell) {
   EXPECT_EQ(rows[2].back(), "0.05");
 }
 
-TEST(Cli, BenchAccuracyRefusesAReferenceCellNoFinerThanTheSweep) {
+TEST(Cli, BenchAccuracyRefusesAnImpossibleReference) {
   for (const std::string value : {"1", "0.5", "-0.1", "nan"}) {
     const CommandRun run = radmesh("bench accuracy furnace --cells 1,0.5 --reference-cell=" + value);
     EXPECT_EQ(run.exitCode, 2) << run.output;
@@ -390,6 +398,9 @@ TEST(Cli, BenchAccuracyRefusesAReferenceCellNoFinerThanTheSweep) {
         << run.output;
     EXPECT_EQ(run.output.find("reference analytic"), std::string::npos) << "refused before any solve";
   }
+  const CommandRun run = radmesh("bench accuracy furnace --cells 1,0.5 --reference-resolution 8");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--reference-resolution 8 is out of range"), std::string::npos) << run.output;
 }
 
 }  // namespace
