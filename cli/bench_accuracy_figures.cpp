@@ -178,7 +178,8 @@ std::string settingLabel(const std::string& projection, double ratio) {
 }
 
 void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) {
-  const CsvTable points = readCsv(stem + ".csv"), traces = readCsv(stem + "-traces.csv");
+  const std::string writer = "bench accuracy --out-dir DIR --name NAME";
+  const CsvTable points = readCsv(stem + ".csv", writer), traces = readCsv(stem + "-traces.csv", writer);
   drawUnlessEmpty(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName,
                                   "relative RMS error of B - E", points, "error_at_99"),
                   stem + "-error-vs-time.png");

@@ -4,7 +4,9 @@
 #include <fmt/ostream.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -42,9 +44,11 @@ double CsvTable::number(size_t row, const std::string& column) const {
   return value;
 }
 
-CsvTable readCsv(const std::string& path) {
+CsvTable readCsv(const std::string& path, const std::string& writtenBy) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read");
+  if (!in)
+    throw std::runtime_error(fmt::format("{}: cannot read ({}){}", path, std::strerror(errno),
+                                         writtenBy.empty() ? "" : "; " + writtenBy + " writes it"));
   CsvTable table;
   table.path = path;
   std::string line;

@@ -16,7 +16,9 @@ struct CsvTable {
   double number(size_t row, const std::string& column) const;
 };
 
-CsvTable readCsv(const std::string& path);  // throws naming the file and the line of a row of the wrong width
+// Throws naming the file and the line of a row of the wrong width; a file it cannot open, with
+// why and `writtenBy` (the command that writes it), when given.
+CsvTable readCsv(const std::string& path, const std::string& writtenBy = "");
 void writeCsv(const std::string& path, const CsvTable& table);
 
 }  // namespace radmesh::cli
