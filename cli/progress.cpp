@@ -45,8 +45,15 @@ void Progress::print(const IterationRecord& r, double elapsed) {
   const double done = fractionDone(r);
   const double doneNow = done - startDone_;  // this run's part
   const double unshot = 100.0 * r.ledger.unshotFraction();
+  // The pace over the latter half of the time so far: the unshot power falls fast under the first
+  // shots and ever slower after, so the pace since the start would promise too early an end.
+  if (paces_.empty()) paces_.emplace_back(0.0, startDone_);
+  while (paces_.size() > 1 && paces_[1].first <= 0.5 * elapsed) paces_.pop_front();
+  const auto [since, doneThen] = paces_.front();
+  const double pace = elapsed > since ? (done - doneThen) / (elapsed - since) : 0.0;
   const std::string left =
-      doneNow > 0.01 && done < 1.0 ? fmt::format("  ~{} left", duration(elapsed * (1.0 - done) / doneNow)) : "";
+      doneNow > 0.01 && done < 1.0 && pace > 0.0 ? fmt::format("  ~{} left", duration((1.0 - done) / pace)) : "";
+  paces_.emplace_back(elapsed, done);
   if (mode_ == Mode::Log) {
     std::string stops;
     if (stop_.untilUnshot > 0.0) stops += fmt::format(" (until {:g}%)", 100.0 * stop_.untilUnshot);

@@ -3,7 +3,9 @@
 // rule, the unshot power, C, iterations per second and the time left, redrawn with \r); in a pipe
 // or a log, a line every second (and the final one), not one per iteration.
 #include <cstdio>
+#include <deque>
 #include <functional>
+#include <utility>
 
 #include "solver/radiosity/progressive_solver.h"
 
@@ -36,6 +38,9 @@ class Progress {
   int startIteration_ = 0;
   double startDone_ = 0.0;
   bool showConvergence_ = true;
+  // (elapsed seconds, fractionDone) at each line printed, from the latest one at or before half
+  // the time so far: the time left follows the recent pace, not the first shots' fast one.
+  std::deque<std::pair<double, double>> paces_;
 };
 
 // Steps `solver` until done(), with progress on stdout unless `quiet`, calling afterStep (if any)

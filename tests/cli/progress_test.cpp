@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace radmesh::cli {
 namespace {
@@ -95,6 +96,23 @@ TEST(Progress, EstimatesTheTimeLeftFromTheUnshotPowerOnALogScale) {
     progress.report(r, 2.0);
   });
   EXPECT_NE(text.find("~2 s left"), std::string::npos) << text;
+}
+
+// The unshot power falls fast under the first shots and slowly after: the time left follows the
+// pace of the latter half of the run, not the average since the start.
+TEST(Progress, EstimatesTheTimeLeftFromTheRecentPace) {
+  const std::string text = printed(Progress::Mode::Log, [](Progress& progress) {
+    IterationRecord r;
+    r.ledger.emitted = 1.0;
+    // Done (on the log scale to 1 %): 0.5 at 1 s, 0.6 at 10 s, 0.62 at 20 s.
+    for (const auto [seconds, done] : {std::pair{1.0, 0.5}, {10.0, 0.6}, {20.0, 0.62}}) {
+      r.iteration = static_cast<int>(seconds * 100);
+      r.ledger.unshot = std::pow(0.01, done);
+      progress.report(r, seconds);
+    }
+  });
+  // From 10 s to 20 s: 0.02 in 10 s, so 0.38 more takes 190 s (the average since the start said 12 s).
+  EXPECT_NE(text.find("iteration 2000  100.0 it/s  ~3 min 10 s left"), std::string::npos) << text;
 }
 
 TEST(Progress, AResumedSolveCountsOnlyTheIterationsAndProgressSinceTheCheckpoint) {
