@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace radmesh::cli {
@@ -16,9 +17,25 @@ constexpr double kLogInterval = 1.0;        // seconds between lines in a log
 constexpr double kTerminalInterval = 0.05;  // a live line redrawn at most 20 times a second
 
 std::string duration(double seconds) {
-  if (seconds < 60.0) return fmt::format("{:.0f} s", seconds);
-  if (seconds < 3600.0) return fmt::format("{:.0f} min {:02.0f} s", std::floor(seconds / 60.0), std::fmod(seconds, 60.0));
+  if (seconds < 59.5) return fmt::format("{:.0f} s", seconds);
+  if (seconds < 3570.0) return fmt::format("{:.0f} min", seconds / 60.0);
   return fmt::format("{:.1f} h", seconds / 3600.0);
+}
+
+// The time left at two paces: the average since the start, and the recent one. Neither is right
+// alone: the unshot power falls ever slower, so the average is too hopeful (building:10x10's cells
+// solve said 1.5 min at first, then 14 min, and took over half an hour), while the form-factor cache
+// makes later shots faster, so the recent pace is too gloomy (the office: 21 s at 3 s, done at 9 s).
+// Where they differ by more than half, the line gives both.
+std::string timeLeft(double average, double recent) {
+  const bool a = std::isfinite(average) && average >= 0.0, r = std::isfinite(recent) && recent >= 0.0;
+  if (!a && !r) return "";
+  if (!a || !r || std::max(average, recent) <= 1.5 * std::min(average, recent))
+    return fmt::format("  ~{} left", duration(r ? recent : average));
+  const std::string low = duration(std::min(average, recent)), high = duration(std::max(average, recent));
+  const size_t unit = low.find(' ');  // "6 s" and "15 s": "6-15 s", within a terminal's line
+  if (high.substr(high.find(' ')) == low.substr(unit)) return fmt::format("  ~{}-{} left", low.substr(0, unit), high);
+  return fmt::format("  ~{} to {} left", low, high);
 }
 
 }  // namespace
@@ -45,14 +62,15 @@ void Progress::print(const IterationRecord& r, double elapsed) {
   const double done = fractionDone(r);
   const double doneNow = done - startDone_;  // this run's part
   const double unshot = 100.0 * r.ledger.unshotFraction();
-  // The pace over the latter half of the time so far: the unshot power falls fast under the first
-  // shots and ever slower after, so the pace since the start would promise too early an end.
+  // The recent pace: over the latter half of the time so far.
   if (paces_.empty()) paces_.emplace_back(0.0, startDone_);
   while (paces_.size() > 1 && paces_[1].first <= 0.5 * elapsed) paces_.pop_front();
   const auto [since, doneThen] = paces_.front();
   const double pace = elapsed > since ? (done - doneThen) / (elapsed - since) : 0.0;
-  const std::string left =
-      doneNow > 0.01 && done < 1.0 && pace > 0.0 ? fmt::format("  ~{} left", duration((1.0 - done) / pace)) : "";
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::string left = doneNow > 0.01 && done < 1.0
+                               ? timeLeft(elapsed * (1.0 - done) / doneNow, pace > 0.0 ? (1.0 - done) / pace : nan)
+                               : "";
   paces_.emplace_back(elapsed, done);
   if (mode_ == Mode::Log) {
     std::string stops;

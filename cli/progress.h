@@ -39,7 +39,7 @@ class Progress {
   double startDone_ = 0.0;
   bool showConvergence_ = true;
   // (elapsed seconds, fractionDone) at each line printed, from the latest one at or before half
-  // the time so far: the time left follows the recent pace, not the first shots' fast one.
+  // the time so far: the recent pace, beside the average since the start, for the time left.
   std::deque<std::pair<double, double>> paces_;
 };
 
