@@ -4,6 +4,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "cli/counted.h"
 #include "cli/bench.h"
 #include "cli/bench_timing.h"
 #include "solver/cells/find_cells.h"
@@ -155,9 +156,10 @@ nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const 
   const Scene scene = loadScene(name);
   const std::vector<Patch> patches = meshScene(scene, args.cellM);
   const CellPartition partition = findCells(scene, patches);
-  fmt::print("\n{}: {} patches, {} cells, {} portals; {} {}, until {:g}% unshot, {} shots a cell a round on average, "
+  fmt::print("\n{}: {} patches, {}, {}; {} {}, until {:g}% unshot, {} shots a cell a round on average, "
              "portal bins {}, {}{}\n",
-             scene.source, patches.size(), partition.cells.size(), partition.portals.size(), args.projection,
+             scene.source, patches.size(), counted(std::ssize(partition.cells), "cell"),
+             counted(std::ssize(partition.portals), "portal"), args.projection,
              args.resolution, 100.0 * args.untilUnshot, args.exchangeShots, args.portalBins, benchCacheText(args.cacheMb),
              o.subdivide == Subdivide::Off ? ""
                                            : fmt::format("; {} elements, --min-element {:g}", args.subdivide,

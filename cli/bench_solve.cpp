@@ -5,6 +5,7 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
+#include "cli/counted.h"
 #include "cli/bench.h"
 #include "cli/bench_ranks.h"
 #include "cli/bench_timing.h"
@@ -137,9 +138,10 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
              args.untilUnshot > 0.0 ? fmt::format(" or {:g}% unshot", 100.0 * args.untilUnshot) : "",
              benchCacheText(args.cacheMb), args.threads == 1 ? "the solving thread's CPU time" : "wall time");
   if (cells)
-    fmt::print("cells solve: {} cells, {} portals, {} shots a cell a round on average; ms/iteration: a round's time "
+    fmt::print("cells solve: {}, {}, {} shots a cell a round on average; ms/iteration: a round's time "
                "over its iterations, the median over the rounds\n",
-               partition.cells.size(), partition.portals.size(), args.exchangeShots);
+               counted(std::ssize(partition.cells), "cell"), counted(std::ssize(partition.portals), "portal"),
+               args.exchangeShots);
   const Backend backend = parseBackend(args.backend);
   if (backend == Backend::Mesh)
     fmt::print("PE grid {}, {} KB a PE\n", peGridText(args.machine), args.machine.memoryKb);

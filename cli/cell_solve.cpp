@@ -1,3 +1,4 @@
+#include "cli/counted.h"
 #include "cli/cell_solve.h"
 
 #include <fmt/core.h>
@@ -25,9 +26,9 @@ std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch
   requireCellsOptions(options);
   const CellPartition partition = findCells(scene, patches);
   auto solver = std::make_unique<CellSolver>(scene, std::move(patches), partition, options, settings, ranks);
-  fmt::print("cells: {} cells, {} portals, exchanging portal light after rounds of {} shots a cell on average, "
+  fmt::print("cells: {}, {}, exchanging portal light after rounds of {} shots a cell on average, "
              "shared by unshot power, {}\n",
-             solver->cellCount(), solver->portalCount(), settings.exchangeShots,
+             counted(solver->cellCount(), "cell"), counted(solver->portalCount(), "portal"), settings.exchangeShots,
              settings.portalBins > 1 ? fmt::format("in {} direction bins", directionBinCount(settings.portalBins))
                                      : std::string("re-emitted diffusely"));
   return solver;
@@ -58,8 +59,9 @@ void printCellsSummary(const CellSolver& solver, double seconds) {
   for (const CellFigures& cell : solver.cellFigures()) elements += cell.elements;
   const std::string elementsText =
       solver.options().subdivide == Subdivide::Off ? "" : fmt::format(" ({} elements)", elements);
-  fmt::print("solved: {} patches{} in {} cells ({} portals), {} iterations in {} rounds, unshot {:.2f}%, {:.3f} s\n",
-             solver.patches().size(), elementsText, solver.cellCount(), solver.portalCount(), solver.iterations(),
+  fmt::print("solved: {} patches{} in {} ({}), {} iterations in {} rounds, unshot {:.2f}%, {:.3f} s\n",
+             solver.patches().size(), elementsText, counted(solver.cellCount(), "cell"),
+             counted(solver.portalCount(), "portal"), solver.iterations(),
              solver.rounds(), 100.0 * l.unshotFraction(), seconds);
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} (with what waits on portals) + not captured "
              "{:.6g} + escaped {:.6g}  (imbalance {:.1e}); {:.6g} W crossed portals\n",

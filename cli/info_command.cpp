@@ -5,6 +5,7 @@
 
 #include <ctime>
 
+#include "cli/counted.h"
 #include "cli/commands.h"
 #include "cli/output_path.h"
 #include "cli/scene_input.h"
@@ -91,8 +92,8 @@ nlohmann::json cellsJson(const CellPartition& cells, const std::vector<CellFigur
 
 void printCells(const CellPartition& cells, const std::vector<CellFigures>& figures, const CellFigures& outside,
                 double seconds) {
-  fmt::print("cells           {} (found in {:.3g} s of CPU), {} portals, {} patches facing no cell\n",
-             cells.cells.size(), seconds, cells.portals.size(), outside.patches);
+  fmt::print("cells           {} (found in {:.3g} s of CPU), {}, {} facing no cell\n", cells.cells.size(), seconds,
+             counted(std::ssize(cells.portals), "portal"), counted(outside.patches, "patch", "patches"));
   fmt::print("  {:>5}  {:<16} {:>8} {:>10} {:>9} {:>10}\n", "cell", "name", "patches", "area m^2", "emitters",
              "emitted W");
   for (size_t c = 0; c < cells.cells.size(); ++c) {

@@ -66,7 +66,7 @@ TEST(Cli, SolveCellsAutoWritesPerCellStatsThatBalance) {
   const std::string stats = tempPath("stats.json");
   const CommandRun run = radmesh("solve two-rooms --cells auto --resolution 32 --until-unshot 0.05 --quiet --stats " + stats);
   ASSERT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("2 cells, 1 portals"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("2 cells, 1 portal,"), std::string::npos) << run.output;
   std::ifstream in(stats);
   const auto j = nlohmann::json::parse(in);
   EXPECT_EQ(j["cells"], 2);
