@@ -24,8 +24,9 @@ std::string duration(double seconds) {
 
 // The time left at two paces: the average since the start, and the recent one. Neither is right
 // alone: the unshot power falls ever slower, so the average is too hopeful (building:10x10's cells
-// solve said 1.5 min at first, then 14 min, and took over half an hour), while the form-factor cache
-// makes later shots faster, so the recent pace is too gloomy (the office: 21 s at 3 s, done at 9 s).
+// solve said 1.5 min left at first, and 14 min after 13 min, with 11 % still unshot), while the
+// form-factor cache makes later shots faster, so the recent pace is too gloomy (the office: 21 s
+// left at 3 s, done at 9 s).
 // Where they differ by more than half, the line gives both.
 std::string timeLeft(double average, double recent) {
   const bool a = std::isfinite(average) && average >= 0.0, r = std::isfinite(recent) && recent >= 0.0;

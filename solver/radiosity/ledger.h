@@ -25,8 +25,9 @@ struct Ledger {
   double unshotFraction() const;
 };
 
-// Throws SolveError when the ledger does not balance to kLedgerTolerance of its input, naming `iteration` and
-// every term. Every iteration, in every build: numbers that do not balance are never shown or written.
+// Throws SolveError when the ledger does not balance to kLedgerTolerance of its input, naming
+// `iteration` and every term. Every iteration, in every build: numbers that do not balance are never
+// shown or written.
 void checkLedger(const Ledger& ledger, int iteration);
 // What the ledger vouches for, as a fraction of the emitted power: rounding over millions of
 // updates stays far below; checkLedger refuses an imbalance above it.
