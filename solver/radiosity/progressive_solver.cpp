@@ -45,8 +45,8 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
   const size_t n = s.patches.size();
   if (s.subdivided()) {
     // Adaptive subdivision is refused where splitting everywhere could pass the uniform limit: a
-    // tiny --min-element would otherwise refine shadow edges for hours.
-    checkElementBudget(s.patches, s.adaptive(), options.minElementM);
+    // tiny --min-element would otherwise refine shadow edges for hours (subdivideUniform checks its own).
+    if (s.adaptive()) checkElementBudget(s.patches, true, options.minElementM);
     s.elements = s.adaptive() ? patchesAsElements(s.patches) : subdivideUniform(s.patches, options.minElementM);
     for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
     if (s.adaptive()) s.neighbours = elementNeighbours(s.elements);
