@@ -27,13 +27,13 @@ std::string duration(double seconds) {
 // solve said 1.5 min left at first, and 14 min after 13 min, with 11 % still unshot), while the
 // form-factor cache makes later shots faster, so the recent pace is too gloomy (the office: 21 s
 // left at 3 s, done at 9 s).
-// Where they differ by more than half, the line gives both.
+// Where they differ by more than half, and print differently, the line gives both.
 std::string timeLeft(double average, double recent) {
   const bool a = std::isfinite(average) && average >= 0.0, r = std::isfinite(recent) && recent >= 0.0;
   if (!a && !r) return "";
-  if (!a || !r || std::max(average, recent) <= 1.5 * std::min(average, recent))
-    return fmt::format("  ~{} left", duration(r ? recent : average));
   const std::string low = duration(std::min(average, recent)), high = duration(std::max(average, recent));
+  if (!a || !r || std::max(average, recent) <= 1.5 * std::min(average, recent) || low == high)
+    return fmt::format("  ~{} left", duration(r ? recent : average));
   const size_t unit = low.find(' ');  // "6 s" and "15 s": "6-15 s", within a terminal's line
   if (high.substr(high.find(' ')) == low.substr(unit)) return fmt::format("  ~{}-{} left", low.substr(0, unit), high);
   return fmt::format("  ~{} to {} left", low, high);

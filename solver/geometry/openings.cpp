@@ -192,7 +192,7 @@ OpeningSearch findOpenings(const Scene& scene) {
       s = *free;
     }
     if (!closed) {
-      search.skipped.push_back(describeLoop(loop) + " does not close: it is not an opening");
+      search.skipped.add("open", describeLoop(loop) + " does not close: it is not an opening");
       continue;
     }
     // The loop runs as its polygons' edges do, around the hole clockwise seen from their front.
@@ -205,9 +205,9 @@ OpeningSearch findOpenings(const Scene& scene) {
     for (const Vec3& v : loop) off = std::max(off, area > 0.0 ? std::abs(glm::dot(v - loop[0], n / (2.0 * area))) : 0.0);
     Vec3 inside(0.0);
     if (loop.size() < 3 || !(area > 1e-12 * extent * extent) || !insidePoint(loop, n, tolerance, inside)) {
-      search.skipped.push_back(describeLoop(loop) + " encloses no area: it is not an opening");
+      search.skipped.add("no area", describeLoop(loop) + " encloses no area: it is not an opening");
     } else if (off > 1e-3 * extent) {
-      search.skipped.push_back(describeLoop(loop) + fmt::format(" is not planar (a vertex {:.3g} m off its plane): "
+      search.skipped.add("bent", describeLoop(loop) + fmt::format(" is not planar (a vertex {:.3g} m off its plane): "
                                                                 "not an opening; close it with a polygon", off));
     } else {
       search.openings.push_back({std::move(loop), inside});

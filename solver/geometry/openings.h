@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/scene/note_tally.h"
 #include "solver/scene/scene.h"
 
 namespace radmesh {
@@ -30,12 +31,12 @@ struct OpeningPolygon {
 
 struct OpeningSearch {
   std::vector<OpeningPolygon> openings;
-  std::vector<std::string> skipped;  // one line per loop that is not an opening, and why
+  NoteTally skipped;  // the loops that are not openings, and why
 };
 
 // The boundary segments chained into closed loops (to 1e-7 of sceneDiagonal: vertices welded,
 // collinear runs merged into one edge). A loop that does not close, or that is not planar (a
-// vertex off its plane by more than 1e-3 of its size), is skipped with a line saying so.
+// vertex off its plane by more than 1e-3 of its size), is skipped with a note saying so.
 OpeningSearch findOpenings(const Scene& scene);
 
 // Whether the ray from `origin` along the unit `direction` meets a polygon of the scene further

@@ -43,7 +43,7 @@ double skyIlluminanceLux(SkyModel model, double horizontalLux, double cosTilt) {
 std::vector<std::string> addSkyEmitters(Scene& scene, const Daylight& daylight) {
   const OpeningSearch search = findOpenings(scene);
   const double clearance = 1e-7 * sceneDiagonal(scene);
-  std::vector<std::string> notes = search.skipped;
+  NoteTally skipped = search.skipped;
   std::vector<Polygon> emitters;
   double areaM2 = 0.0, powerW = 0.0;
   for (const OpeningPolygon& opening : search.openings) {
@@ -52,12 +52,12 @@ std::vector<std::string> addSkyEmitters(Scene& scene, const Daylight& daylight) 
                                           opening.inside.y, opening.inside.z);
     // The outside of a model (the rim of a shell standing on no floor) looks out into the model.
     if (rayHitsScene(scene, opening.inside, out, clearance)) {
-      notes.push_back(where + " looks out onto the model itself, not the sky: no daylight there");
+      skipped.add("onto the model", where + " looks out onto the model itself, not the sky: no daylight there");
       continue;
     }
     const double lux = skyIlluminanceLux(daylight.sky, daylight.skyLux, glm::dot(out, glm::normalize(daylight.up)));
     if (!(lux > 0.0)) {
-      notes.push_back(where + " looks down at the ground, which is black: no daylight there");
+      skipped.add("onto the ground", where + " looks down at the ground, which is black: no daylight there");
       continue;
     }
     const Rgb exitance(lux / kWhiteEfficacyLmPerW);  // white light, as MGF's `ed` (scene-formats.md)
@@ -67,6 +67,7 @@ std::vector<std::string> addSkyEmitters(Scene& scene, const Daylight& daylight) 
     areaM2 += polygonArea(opening.vertices);
     powerW += polygonArea(opening.vertices) * 3.0 * exitance.r;
   }
+  std::vector<std::string> notes = skipped.lines();
   if (emitters.empty()) {
     std::string why;
     for (const std::string& n : notes) why += "; " + n;

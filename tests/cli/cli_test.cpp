@@ -659,6 +659,14 @@ TEST(Cli, PresetPaperGivesThePapersSettingsAndExplicitFlagsWin) {
   // C = 0.95 leaves most of the Cornell box's light unshot, and the solve says so.
   EXPECT_GT(j["unshot_fraction"].get<double>(), 0.1);
   EXPECT_NE(run.output.find("warning: the solve stopped with"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("catches only"), std::string::npos) << run.output;  // the paper's plane is fine
+  // A narrower plane loses most of each shot, and the solve says so.
+  run = radmesh("solve cornell --cell 0.1 --quiet --preset paper --ratio 0.5 --max-iterations 2");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: the plane catches only 23.9% of each shot, and what it misses is lost "
+                            "(\"not captured\" in the ledger); --ratio 3, the paper's, catches 91.7%"),
+            std::string::npos)
+      << run.output;
   // Flags beside the preset win, before or after it.
   run = radmesh("solve cornell --cell 0.1 --quiet --until 0.5 --preset paper --resolution 64 --stats " + stats);
   ASSERT_EQ(run.exitCode, 0) << run.output;

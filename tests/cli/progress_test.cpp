@@ -105,7 +105,7 @@ TEST(Progress, GivesTheTimeLeftAtTheRecentPaceBesideTheAverage) {
     IterationRecord r;
     r.ledger.emitted = 1.0;
     // Done (on the log scale to 1 %): 0.5 at 1 s, 0.6 at 10 s, 0.62 at 20 s.
-    for (const auto [seconds, done] : {std::pair{1.0, 0.5}, {10.0, 0.6}, {20.0, 0.62}}) {
+    for (const auto& [seconds, done] : {std::pair{1.0, 0.5}, {10.0, 0.6}, {20.0, 0.62}}) {
       r.iteration = static_cast<int>(seconds * 100);
       r.ledger.unshot = std::pow(0.01, done);
       progress.report(r, seconds);
@@ -115,6 +115,20 @@ TEST(Progress, GivesTheTimeLeftAtTheRecentPaceBesideTheAverage) {
   EXPECT_NE(text.find("iteration 1000  100.0 it/s  ~7-36 s left"), std::string::npos) << text;
   // From 10 s to 20 s: 0.02 in 10 s, so 0.38 more takes 190 s; the average, 0.62 in 20 s, 12 s.
   EXPECT_NE(text.find("iteration 2000  100.0 it/s  ~12 s to 3 min left"), std::string::npos) << text;
+}
+
+TEST(Progress, GivesOneTimeLeftWhereTheTwoPacesPrintAlike) {
+  const std::string text = printed(Progress::Mode::Log, [](Progress& progress) {
+    IterationRecord r;
+    r.ledger.emitted = 1.0;
+    for (const auto& [seconds, done] : {std::pair{1.0, 0.5}, {2.0, 0.72}}) {
+      r.iteration = static_cast<int>(seconds * 100);
+      r.ledger.unshot = std::pow(0.01, done);
+      progress.report(r, seconds);
+    }
+  });
+  // At 2 s the average says 0.78 s and the last second's pace 1.27 s: both "1 s", not "~1-1 s".
+  EXPECT_NE(text.find("iteration 200  100.0 it/s  ~1 s left\n"), std::string::npos) << text;
 }
 
 TEST(Progress, AResumedSolveCountsOnlyTheIterationsAndProgressSinceTheCheckpoint) {
