@@ -8,6 +8,7 @@
 #include "solver/geometry/openings.h"
 #include "solver/io/mgf_color.h"
 #include "solver/scene/scene_error.h"
+#include "solver/scene/sun.h"
 
 namespace radmesh {
 
@@ -20,9 +21,10 @@ SkyModel parseSkyModel(const std::string& text) {
 }
 
 void checkSkyLux(double lux) {
-  if (!(std::isfinite(lux) && lux > 0.0))
-    throw OptionError(fmt::format("--sky must be the sky's horizontal illuminance in lux, above 0 (e.g. 10000, an "
-                                  "overcast day), not {}", lux));
+  if (!(lux > 0.0 && lux <= kSunAboveTheAtmosphereLux))
+    throw OptionError(fmt::format("--sky must be the sky's horizontal illuminance in lux, above 0 and at most {}, the "
+                                  "sun's above the atmosphere (e.g. 10000, an overcast day), not {}",
+                                  kSunAboveTheAtmosphereLux, lux));
 }
 
 double skyIlluminanceLux(SkyModel model, double horizontalLux, double cosTilt) {

@@ -19,9 +19,10 @@ Light sunLight(double azimuthDeg, double elevationDeg, double lux, const Compass
                                   "above 0 to 90 (90: overhead)", elevationDeg));
   if (!std::isfinite(azimuthDeg))
     throw OptionError("--sun azimuth must be a number of degrees clockwise from north (0 north, 90 east)");
-  if (!(std::isfinite(lux) && lux > 0.0))
-    throw OptionError(fmt::format("--sun illuminance {} lux must be finite and positive: e.g. {} for clear-sky direct sun",
-                                  lux, kClearSkySunLux));
+  if (!(lux > 0.0 && lux <= kSunAboveTheAtmosphereLux))
+    throw OptionError(fmt::format("--sun illuminance {} lux must be above 0 and at most {}, the sun's above the "
+                                  "atmosphere: e.g. {} for clear-sky direct sun",
+                                  lux, kSunAboveTheAtmosphereLux, kClearSkySunLux));
   const double azimuth = azimuthDeg * std::numbers::pi / 180.0;
   const double elevation = elevationDeg * std::numbers::pi / 180.0;
   const Vec3 east = glm::cross(compass.north, compass.up);

@@ -9,6 +9,9 @@ namespace radmesh {
 
 // Clear-sky direct sun at a high elevation, in lux on a surface facing it.
 inline constexpr double kClearSkySunLux = 100000.0;
+// The sun outside the atmosphere: no daylight on the ground is brighter, so a larger --sun or
+// --sky is a typo (1e308 was taken, and balanced a ledger of 1e305 W).
+inline constexpr double kSunAboveTheAtmosphereLux = 133000.0;
 
 // Which way is up and which is north in a scene. One place, so that an up-axis option can change it.
 struct Compass {
@@ -20,7 +23,7 @@ Compass sceneCompass();  // z up, y north
 // The sun at azimuth (degrees clockwise from north, seen from above) and elevation (degrees above
 // the horizon) giving `lux` on a surface facing it: irradiance lux / kWhiteEfficacyLmPerW W/m^2
 // per channel (white). Throws OptionError naming --sun for an elevation outside (0, 90], a
-// non-finite azimuth, or a lux that is not finite and positive.
+// non-finite azimuth, or a lux that is not positive and at most kSunAboveTheAtmosphereLux.
 Light sunLight(double azimuthDeg, double elevationDeg, double lux, const Compass& compass = sceneCompass());
 
 // "AZIMUTH,ELEVATION[,LUX]" (LUX defaults to kClearSkySunLux). Throws OptionError naming --sun.

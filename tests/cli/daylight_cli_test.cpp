@@ -77,9 +77,13 @@ TEST(Cli, SkyNeedsAnOpeningAndASceneWithoutLightPointsToIt) {
   run = radmesh("info " + kRoom);
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--sky LUX"), std::string::npos) << run.output;
-  run = radmesh("info " + kRoom + " --sky -5");
-  EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("--sky must be"), std::string::npos) << run.output;
+  for (const char* bad : {"-5", "nan", "1e308"}) {
+    run = radmesh("info " + kRoom + " --sky " + bad);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("--sky must be the sky's horizontal illuminance in lux, above 0 and at most 133000"),
+              std::string::npos)
+        << run.output;
+  }
   run = radmesh("info " + kRoom + " --sky 10000 --sky-model clear");
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--sky-model must be"), std::string::npos) << run.output;

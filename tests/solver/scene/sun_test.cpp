@@ -23,7 +23,7 @@ TEST(Sun, AzimuthIsClockwiseFromNorthAndElevationAboveTheHorizon) {
 }
 
 TEST(Sun, ImpossibleValuesAreRefusedNamingTheOption) {
-  for (const char* bad : {"10,0", "10,-5", "10,91", "a,45", "10", "10,45,0", "10,45,nan", "", "10,45,1,2", "10,,45"}) {
+  for (const char* bad : {"10,0", "10,-5", "10,91", "a,45", "10", "10,45,0", "10,45,nan", "10,45,inf", "10,45,133001", "10,45,1e308", "", "10,45,1,2", "10,,45"}) {
     try {
       parseSun(bad);
       ADD_FAILURE() << "--sun " << bad << " accepted";
@@ -31,6 +31,7 @@ TEST(Sun, ImpossibleValuesAreRefusedNamingTheOption) {
       EXPECT_NE(std::string(e.what()).find("--sun"), std::string::npos) << e.what();
     }
   }
+  EXPECT_DOUBLE_EQ(parseSun("10,45,133000").intensity.g, 133000 / 179.0);  // the sun above the atmosphere
 }
 
 }  // namespace
