@@ -108,11 +108,11 @@ void printCells(const CellPartition& cells, const std::vector<CellFigures>& figu
   }
 }
 
-void writePlan(const std::vector<Patch>& patches, const CellPartition& cells, const std::string& path) {
+void writePlan(const std::vector<Patch>& patches, const CellPartition& cells, int upAxis, const std::string& path) {
 #if RADMESH_HAS_VIEWER
-  writePng(drawCellPlan(patches, cells), path);
+  writePng(drawCellPlan(patches, cells, upAxis), path);
 #else
-  (void)patches, (void)cells;
+  (void)patches, (void)cells, (void)upAxis;
   throw SceneError(path, "", "--plan needs the PNG writer of the viewer, which this radmesh was built without",
                    "rebuild with -DRADMESH_BUILD_VIEWER=ON, or leave out --plan");
 #endif
@@ -246,7 +246,7 @@ void addInfoCommand(CLI::App& app) {
       partition = findCells(scene, patches, args->cellGroups);
       seconds = double(std::clock() - start) / CLOCKS_PER_SEC;
       figures = cellFigures(scene, patches, partition, outside);
-      if (!args->planPath.empty()) writePlan(patches, partition, args->planPath);
+      if (!args->planPath.empty()) writePlan(patches, partition, scene.upAxis, args->planPath);
     }
     if (args->json) {
       nlohmann::json j = toJson(summary, scene);

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <string>
 
+#include "solver/scene/up_axis.h"
+
 namespace radmesh {
 
 namespace {
@@ -126,7 +128,33 @@ std::array<std::uint8_t, 3> cellPlanColour(int cell) {
           std::uint8_t(std::lround(c[2] * 255))};
 }
 
-Image drawCellPlan(const std::vector<Patch>& patches, const CellPartition& cells) {
+namespace {
+
+// The scene turned so that its up axis is z (across, along, up of its UpFrame): the plan below
+// is drawn down z. A rotation: lengths and the picture's proportions stay.
+struct PlanFrame {
+  UpFrame axes;
+  Vec3 operator()(const Vec3& p) const { return {glm::dot(p, axes.across), glm::dot(p, axes.along), glm::dot(p, axes.up)}; }
+};
+
+}  // namespace
+
+Image drawCellPlan(const std::vector<Patch>& scenePatches, const CellPartition& sceneCells, int upAxis) {
+  const PlanFrame toPlan{upFrame(upAxis)};
+  std::vector<Patch> patches = scenePatches;
+  for (Patch& p : patches) {
+    for (int k = 0; k < p.vertexCount; ++k) p.vertices[k] = toPlan(p.vertices[k]);
+    p.centroid = toPlan(p.centroid);
+    p.normal = toPlan(p.normal);
+  }
+  CellPartition cells = sceneCells;
+  for (Cell& c : cells.cells) {
+    const Vec3 a = toPlan(c.boundsMin), b = toPlan(c.boundsMax);
+    c.boundsMin = glm::min(a, b);
+    c.boundsMax = glm::max(a, b);
+  }
+  for (Portal& portal : cells.portals)
+    for (Vec3& v : portal.vertices) v = toPlan(v);
   Vec3 lo(1e300), hi(-1e300);
   for (const Patch& p : patches)
     for (int k = 0; k < p.vertexCount; ++k) {

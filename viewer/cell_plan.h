@@ -1,6 +1,6 @@
 #pragma once
 // A floor plan of a scene's cells (`radmesh info SCENE --plan FILE.png`): the view down the up
-// axis (z), each cell's floor and furniture tops in its own colour and its number at its middle,
+// axis (the scene's: office3 stands on y), each cell's floor and furniture tops in its own colour and its number at its middle,
 // the walls cut at 1 m above the lowest floor drawn dark, and each portal a bright bar outlined dark.
 #include <array>
 #include <cstdint>
@@ -24,6 +24,7 @@ std::pair<int, int> cellPlanSize(const Vec3& lo, const Vec3& hi);
 // The colour a cell is drawn in (RGB); distinct for neighbouring indices. kOutsideCell is grey.
 std::array<std::uint8_t, 3> cellPlanColour(int cell);
 
-Image drawCellPlan(const std::vector<Patch>& patches, const CellPartition& cells);
+// Seen from above the scene's `upAxis` (0 x, 1 y, 2 z), north (its UpFrame's along) up the page.
+Image drawCellPlan(const std::vector<Patch>& patches, const CellPartition& cells, int upAxis);
 
 }  // namespace radmesh

@@ -8,6 +8,7 @@
 #include "solver/cells/find_cells.h"
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
+#include "solver/scene/up_axis.h"
 
 namespace radmesh {
 namespace {
@@ -25,7 +26,7 @@ TEST(CellPlan, TwoRoomsDrawsEachRoomInItsColourAndThePortal) {
   const std::vector<Patch> patches = meshScene(scene);
   const CellPartition cells = findCells(scene, patches);
   ASSERT_EQ(cells.cells.size(), 2u);
-  const Image plan = drawCellPlan(patches, cells);
+  const Image plan = drawCellPlan(patches, cells, scene.upAxis);
   // 8.2 m x 4 m: the long side 1000 px, the short 1000 * 4 / 8.2 = 488 px, 20 px margins.
   EXPECT_EQ(cellPlanSize({0, 0, 0}, {8.2, 4, 2.7}), std::make_pair(1040, 528));
   EXPECT_EQ(plan.width, 1040);
@@ -44,6 +45,28 @@ TEST(CellPlan, TwoRoomsDrawsEachRoomInItsColourAndThePortal) {
   EXPECT_EQ(pixel(1.0, 1.0), cellPlanColour(first));
   EXPECT_EQ(pixel(7.0, 1.0), cellPlanColour(1 - first));
   EXPECT_NE(cellPlanColour(0), cellPlanColour(1));
+}
+
+// The same rooms stood on y, as office3 stands: the plan is drawn down y, the same picture (it used
+// to be drawn down z whatever the up axis: office3's plan was a side view, 8.2 m by 2.7 m here).
+TEST(CellPlan, AScenesUpAxisIsThePlansUp) {
+  const Scene zUp = builtinScene("two-rooms");
+  Scene yUp = zUp;
+  for (Polygon& polygon : yUp.polygons)
+    for (Vec3& v : polygon.vertices) v = rotateToYUp(v, 2);
+  yUp.upAxis = 1;
+  auto plan = [](const Scene& scene) {
+    const std::vector<Patch> patches = meshScene(scene);
+    return drawCellPlan(patches, findCells(scene, patches), scene.upAxis);
+  };
+  const Image fromZ = plan(zUp), fromY = plan(yUp);
+  EXPECT_EQ(fromY.width, 1040);
+  EXPECT_EQ(fromY.height, 528);
+  long differ = 0;
+  for (size_t i = 0; i < fromZ.rgba.size() && i < fromY.rgba.size(); ++i) differ += fromZ.rgba[i] != fromY.rgba[i];
+  // Only the cell numbers may move, by a few pixels: a cell's bounds come from voxels laid along the
+  // scene's own axes. The floors, walls and portal are the same pixels.
+  EXPECT_LT(differ, 1000);
 }
 
 }  // namespace
