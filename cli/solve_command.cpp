@@ -47,12 +47,14 @@ std::string patchesText(const ProgressiveSolver& solver) {
   return fmt::format("{} patches{}", solver.patches().size(), elements);
 }
 
-void printSummary(const ProgressiveSolver& solver, double seconds) {
+// `resumedAt`: the iterations a checkpoint brought, which this run's seconds did not solve.
+void printSummary(const ProgressiveSolver& solver, double seconds, size_t resumedAt) {
   const Ledger& l = solver.ledger();
-  const size_t n = solver.history().size();
-  fmt::print("solved: {}, {} iterations, convergence {:.2f}%, unshot {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
-             patchesText(solver), n, 100.0 * solver.convergence(), 100.0 * l.unshotFraction(), seconds,
-             seconds > 0 ? n / seconds : 0.0);
+  const size_t n = solver.history().size(), solved = n - resumedAt;
+  const std::string resumed = resumedAt == 0 ? "" : fmt::format(" ({} after the checkpoint's {})", solved, resumedAt);
+  fmt::print("solved: {}, {} iterations{}, convergence {:.2f}%, unshot {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
+             patchesText(solver), n, resumed, 100.0 * solver.convergence(), 100.0 * l.unshotFraction(), seconds,
+             seconds > 0 ? solved / seconds : 0.0);
   double machineSeconds = 0.0;
   std::string machine;
   for (const IterationRecord& r : solver.history())
@@ -137,6 +139,7 @@ void run(const SolveArgs& args, Processes* processes) {
     resumeFromCheckpoint(args.resumePath, solver);
     fmt::print("resumed from {} after iteration {}\n", args.resumePath, solver.history().size());
   }
+  const size_t resumedAt = solver.history().size();
   printEffects(solver.effectsPlan());
   if (solver.options().projection != options.projection)
     fmt::print("  occlusion is off, so --projection {} becomes {}\n", toString(options.projection),
@@ -172,7 +175,7 @@ void run(const SolveArgs& args, Processes* processes) {
     writeCheckpoint(args.checkpointPath, solver);
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
-  printSummary(solver, seconds);
+  printSummary(solver, seconds, resumedAt);
   if (writes) warnIfFarFromConverged(solver.ledger());
 
   if (!args.statsPath.empty()) {

@@ -45,6 +45,7 @@ CellChoice SolveFlags::announceCell(const Scene& scene, SolveOptions& options) c
 }
 
 CellChoice commandCell(const Scene& scene, double cellM, bool given) {
+  if (given) checkCell(cellM);  // before it is announced
   return given ? CellChoice{cellM, fmt::format("cell {:.4g} m, as --cell gives", cellM)} : chooseCell(scene);
 }
 
@@ -77,6 +78,15 @@ SolveOptions SolveFlags::resolved() const {
     o.projection = Projection::Plane;
   o.mapping = parseMapping(mapping);
   o.subdivide = parseSubdivide(subdivide);
+  // An element flag without the elements it shapes would be dropped without a word.
+  for (const std::string& flag : flags) {
+    const bool elements = flag == "--min-element" || flag == "--element-rows", splits = flag.starts_with("--split-");
+    if ((elements && o.subdivide == Subdivide::Off) || (splits && o.subdivide != Subdivide::Adaptive))
+      throw OptionError(fmt::format("{} shapes {} elements, and --subdivide is {}: add --subdivide {} "
+                                    "(docs/accuracy.md), or leave {} out",
+                                    flag, splits ? "adaptive" : "the", subdivide, splits ? "adaptive" : "uniform or adaptive",
+                                    flag));
+  }
   o.formFactorCacheBytes = formFactorCacheBytes(o.backend, cacheMb);
   validateOptions(o);
   return o;

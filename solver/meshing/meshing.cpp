@@ -129,13 +129,17 @@ double cellEstimate(const std::vector<Vec2>& piece, double cellM, double noiseM)
   return std::min(span(0) * span(1), grown);
 }
 
-void refuseCell(double cellM) {
+}  // namespace
+
+void checkCell(double cellM) {
   if (!std::isfinite(cellM) || !(cellM > 0.0))
     throw OptionError(fmt::format(
         "--cell must be a finite grid size in metres greater than 0, got {}; use e.g. --cell 0.381 "
         "(15 inches, the paper's grid)",
         cellM));
 }
+
+namespace {
 
 void refuseCount(double patches, double cellM, size_t maxPatches, double areaM2) {
   // Patch count goes as area / cell^2: the cell that would about meet the limit.
@@ -197,7 +201,7 @@ Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, dou
 }  // namespace
 
 std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches) {
-  refuseCell(cellM);
+  checkCell(cellM);
   std::vector<PreparedPolygon> prepared;
   prepared.reserve(scene.polygons.size());
   double estimate = 0.0, areaM2 = 0.0;

@@ -25,6 +25,9 @@ struct CellChoice {
 // about kCellPatchBudget patches, the cell of that many.
 CellChoice chooseCell(const Scene& scene);
 
+// Throws OptionError naming --cell unless cellM is finite and positive.
+void checkCell(double cellM);
+
 // Every polygon is cut by the planes x = k*cell, y = k*cell, z = k*cell that cross its face (the
 // two axes spanning its dominant plane) into convex pieces within one cell each, then into
 // triangles and convex quads. Area, orientation and material are kept. Throws OptionError for a

@@ -230,6 +230,12 @@ TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   run = radmesh("info furnace --cell 0");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--cell"), std::string::npos) << run.output;
+  // Refused before it is announced as the cell.
+  run = radmesh("solve furnace --cell -1");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--cell must be a finite grid size in metres greater than 0, got -1"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("as --cell gives"), std::string::npos) << run.output;
   run = radmesh("solve furnace --projection sphere");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("sphere"), std::string::npos) << run.output;

@@ -130,6 +130,17 @@ TEST(CliSubdivide, ImpossibleOptionsAreRefusedNamingTheFlag) {
   run = radmesh("solve cornell --subdivide uniform --element-rows pixels");
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("--element-rows 'pixels' is unknown"), std::string::npos) << run.output;
+  // An element flag without its elements used to be dropped without a word.
+  run = radmesh("solve cornell --min-element 0.1");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--min-element shapes the elements, and --subdivide is off: add --subdivide uniform or "
+                            "adaptive (docs/accuracy.md), or leave --min-element out"),
+            std::string::npos)
+      << run.output;
+  run = radmesh("render cornell --subdivide uniform --split-contrast 0.2 --out x.png");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--split-contrast shapes adaptive elements, and --subdivide is uniform"), std::string::npos)
+      << run.output;
 }
 
 // The subdivide axis of `bench accuracy`: off on every cell, uniform and adaptive on the coarsest,
