@@ -4,6 +4,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -191,7 +192,16 @@ void Renderer::setVertexRadiosity(const std::vector<Rgb>& vertexB) {
   if (vertexB.size() != vertexCount_)
     throw std::invalid_argument("vertex radiosity has " + std::to_string(vertexB.size()) +
                                 " values for a mesh of " + std::to_string(vertexCount_) + " vertices");
-  const std::vector<float> floats = toFloats(vertexB);
+  // Uploaded as a fraction of the largest value, the scale going with the exposure (in double):
+  // floats hold radiosity up to 3e38 only, and past that a bright scene drew black (inf x 0).
+  double largest = 0.0;
+  for (const Rgb& b : vertexB)
+    for (int c = 0; c < 3; ++c)
+      if (std::isfinite(b[c])) largest = std::max(largest, std::abs(b[c]));
+  radiosityScale_ = largest > 0.0 ? largest : 1.0;
+  std::vector<Rgb> scaled(vertexB.size());
+  for (size_t v = 0; v < vertexB.size(); ++v) scaled[v] = vertexB[v] / radiosityScale_;
+  const std::vector<float> floats = toFloats(scaled);
   glBindBuffer(GL_ARRAY_BUFFER, radiosityBuffer_);
   glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(floats.size() * sizeof(float)), floats.data());
 }
@@ -251,7 +261,7 @@ void Renderer::draw(const RenderView& view, glm::ivec2 framebufferSize, const Sh
       viewProjectionMatrix(view, double(framebufferSize.x) / double(framebufferSize.y));
   glUniformMatrix4fv(viewProjectionLocation_, 1, GL_FALSE, glm::value_ptr(viewProjection));
   glUniform3f(eyeLocation_, float(view.eye.x), float(view.eye.y), float(view.eye.z));
-  glUniform1f(exposureLocation_, float(shading.exposure));
+  glUniform1f(exposureLocation_, float(shading.exposure * radiosityScale_));
   glUniform3f(tintLocation_, 1.0f, 0.25f, 0.9f);
   glUniform1f(tintAmountLocation_, 0.0f);
   glBindVertexArray(vertexArray_);

@@ -51,6 +51,7 @@ class Renderer {
   int viewProjectionLocation_ = -1, eyeLocation_ = -1, exposureLocation_ = -1;
   int tintLocation_ = -1, tintAmountLocation_ = -1;
   size_t vertexCount_ = 0;
+  double radiosityScale_ = 1.0;  // the uploaded radiosity is B / radiosityScale_
   size_t indexCount_ = 0;
   size_t highlightIndexCount_ = 0;
   std::vector<unsigned> indices_;          // kept to build the highlight's index list

@@ -82,5 +82,34 @@ TEST(Exposure, LeavesLittleOfAConvergedOfficeClipped) {
   EXPECT_LT(clipped, 0.05) << clipped;  // 0.032: the ceiling light in view
 }
 
+// The automatic exposure makes the picture independent of the light's scale, to the floats' range
+// and past it: radiosity of 1e300 W/m^2 (an `ed 1e306` lamp) drew all black, inf times 0.
+TEST(Exposure, AnyScaleOfTheLightDrawsTheSamePicture) {
+  const Scene scene = loadScene("cornell");
+  SolveOptions options;
+  options.projection = Projection::Hemicube;
+  options.resolution = 32;
+  options.maxIterations = 30;
+  ProgressiveSolver solver(scene, meshScene(scene, 0.1), options);
+  while (!solver.done()) solver.step();
+  const DisplayMesh mesh = buildDisplayMesh(solver.patches());
+  const std::vector<Rgb> vertexB = vertexRadiosity(mesh, solver.displayRadiosity());
+  OffscreenRenderer renderer(mesh, {160, 120});
+  const RenderView view = WalkCamera(sceneFrame(scene)).view();
+  const Image plain = renderer.render(vertexB, view);
+  for (const double scale : {1e300, 1e-300}) {
+    std::vector<Rgb> scaled = vertexB;
+    for (Rgb& b : scaled) b *= scale;
+    const Image image = renderer.render(scaled, view);
+    ASSERT_EQ(image.rgba.size(), plain.rgba.size());
+    int worst = 0;
+    for (size_t i = 0; i < image.rgba.size(); ++i) worst = std::max(worst, std::abs(image.rgba[i] - plain.rgba[i]));
+    EXPECT_LE(worst, 1) << "radiosity times " << scale;
+  }
+  long lit = 0;
+  for (size_t i = 0; i < plain.rgba.size(); i += 4) lit += plain.rgba[i] > 20;
+  EXPECT_GT(lit, 160 * 120 / 2);  // the picture is not black to begin with
+}
+
 }  // namespace
 }  // namespace radmesh
