@@ -123,7 +123,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   addMachineFlags(cmd, f.options.machine);
   cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")->capture_default_str();
   cmd->add_option("--resolution", f.options.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
-  cmd->add_option("--ratio", f.options.ratio, "Half-side of the single plane at height 1 (3, the paper's, catches 91.7 % of each shot)")->capture_default_str();
+  cmd->add_option("--ratio", f.options.ratio, kRatioHelp)->capture_default_str();
   cmd->add_option("--shooters", f.options.shooters, "k patches shot per iteration")->capture_default_str();
   cmd->add_option("--until", f.options.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")->capture_default_str();
   cmd->add_option("--until-unshot", f.options.untilUnshot, kUntilUnshotHelp)

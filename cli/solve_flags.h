@@ -48,6 +48,8 @@ inline constexpr const char* kPortalBinsHelp =
     "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
     "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
 
+inline constexpr const char* kRatioHelp =
+    "Half-side of the single plane at height 1 (3, the paper's, catches 91.7 % of each shot)";
 inline constexpr const char* kUntilUnshotHelp =
     "Also stop when unshot power is this fraction of the emitted, e.g. 0.01 (0: only below 1e-9 of it, what the "
     "energy ledger vouches for)";

@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   app.add_option("--pe-memory", o.machine.memoryKb, "Mesh backend: each PE's memory in KB (the MP-1's 16)")
       ->capture_default_str();
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
-  app.add_option("--ratio", o.ratio, "Half-side of the single plane at height 1")->capture_default_str();
+  app.add_option("--ratio", o.ratio, radmesh::cli::kRatioHelp)->capture_default_str();
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();
   CLI::Option* cell =
       app.add_option("--cell", args.setup.cellM, "Grid cell size for meshing, metres (default: from the scene's size)");
