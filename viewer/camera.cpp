@@ -39,16 +39,38 @@ WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
   } else {
     // A bake, turned from one frame onto another, starts where its scene does.
     eyeHeightM = std::min(1.6, 0.6 * frame.heightM());
-    standIn(frame.boundsMin, frame.boundsMax);
+    standIn(frame.boundsMin, frame.boundsMax, cornerFacingFurniture(frame));
   }
 }
 
-void WalkCamera::standIn(const Vec3& boundsMin, const Vec3& boundsMax) {
+glm::dvec2 WalkCamera::cornerFacingFurniture(const SceneFrame& frame) {
+  const glm::dvec2 least{-1.0, -1.0};
+  if (!(frame.furnitureAreaM2 > 0.0)) return least;
+  const UpFrame axes = upFrame(frame.upAxis);
+  const glm::dvec3 offset = frame.furnitureCentre - 0.5 * (frame.boundsMin + frame.boundsMax);
+  const glm::dvec3 extent = frame.boundsMax - frame.boundsMin;
+  // The furniture's place in halves of each extent: -1 at the least edge, 1 at the greatest.
+  glm::dvec2 at(0.0);
+  const glm::dvec3 plan[2] = {axes.across, axes.along};
+  for (int k = 0; k < 2; ++k) {
+    const double size = std::abs(glm::dot(extent, plan[k]));
+    at[k] = size > 0.0 ? 2.0 * glm::dot(offset, plan[k]) / size : 0.0;
+  }
+  // The corner farthest from it, if the least corner is much nearer: standing by the furniture,
+  // the view looks away from it (office3's desk fills its least corner, 0.7 from it, 2.2 from the
+  // other). Else the least corner stays (the office's furniture is 1.3 from it, 1.6 from the
+  // farthest), as it always was.
+  const glm::dvec2 farthest{at.x < 0.0 ? 1.0 : -1.0, at.y < 0.0 ? 1.0 : -1.0};
+  return glm::length(farthest - at) > 1.5 * glm::length(least - at) ? farthest : least;
+}
+
+void WalkCamera::standIn(const Vec3& boundsMin, const Vec3& boundsMax, glm::dvec2 corner) {
   const glm::dvec3 extent = boundsMax - boundsMin;
   const glm::dvec3 centre = boundsMin + 0.5 * horizontal(extent, up_);
   const UpFrame axes = upFrame(frame_.upAxis);
   ground_ = centre;
-  for (const glm::dvec3& e : {axes.across, axes.along}) ground_ -= 0.35 * std::abs(glm::dot(extent, e)) * e;
+  const glm::dvec3 plan[2] = {axes.across, axes.along};
+  for (int k = 0; k < 2; ++k) ground_ += corner[k] * 0.35 * std::abs(glm::dot(extent, plan[k])) * plan[k];
   lookAt(centre);
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // The walkthrough camera: walks on the scene's floor at an eye height, turns with the mouse.
 // Knows nothing of GLFW; the window turns keys and mouse motion into a WalkInput.
+#include <glm/vec2.hpp>
+
 #include "viewer/render_view.h"
 #include "viewer/scene_frame.h"
 
@@ -17,14 +19,21 @@ struct WalkInput {
 
 class WalkCamera {
  public:
-  // Starts inside the scene, near a corner of the bounds (upFrame's least across and along), the
-  // eye 1.6 m above the lowest floor (lower in a room under 2.7 m), looking level at the centre. A
-  // scene open on one side (a Cornell box) is looked into through that side from outside instead.
+  // Starts inside the scene, near a corner of the bounds, the eye 1.6 m above the lowest floor
+  // (lower in a room under 2.7 m), looking level at the centre: the corner of least across and
+  // along (upFrame's), unless the furniture stands on that side (cornerFacingFurniture). A scene
+  // open on one side (a Cornell box) is looked into through that side from outside instead.
   explicit WalkCamera(const SceneFrame& frame);
 
-  // Moves to a room: near the corner of its bounds at their least `across` and `along` (as the
-  // constructor stands in the scene's), looking level at their centre; the eye height is kept.
-  void standIn(const Vec3& boundsMin, const Vec3& boundsMax);
+  // The corner to start in, as the signs of across and along (-1 least, 1 greatest): the least,
+  // unless the furniture stands much nearer to it than to the corner farthest from the furniture;
+  // then that one, so that the start view looks at the furniture, not away (office3's desk).
+  static glm::dvec2 cornerFacingFurniture(const SceneFrame& frame);
+
+  // Moves to a room: near the corner of its bounds given as signs of `across` and `along` (the
+  // least corner by default, as for a building's rooms), looking level at their centre; the eye
+  // height is kept.
+  void standIn(const Vec3& boundsMin, const Vec3& boundsMax, glm::dvec2 corner = {-1.0, -1.0});
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
 

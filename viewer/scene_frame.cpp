@@ -54,6 +54,22 @@ SceneFrame frameOf(const std::vector<FrameFace>& faces, int upAxis) {
       frame.boundsMax = glm::max(frame.boundsMax, p);
     }
   frame.openSide = openSide(faces, frame);
+  // A tenth of the height clear of floor and ceiling: a raised floor or a lowered ceiling is no desk.
+  const double clearM = 0.1 * frame.heightM();
+  Vec3 weighted(0.0);
+  for (const FrameFace& face : faces) {
+    const Vec3 area = 0.5 * newellNormal(face.vertices);
+    bool top = area[upAxis] >= 0.9 * glm::length(area) && area[upAxis] > 0.0;
+    Vec3 centre(0.0);
+    for (const Vec3& v : face.vertices) {
+      top = top && v[upAxis] > frame.boundsMin[upAxis] + clearM && v[upAxis] < frame.boundsMax[upAxis] - clearM;
+      centre += v / double(face.vertices.size());
+    }
+    if (!top) continue;
+    weighted += area[upAxis] * centre;
+    frame.furnitureAreaM2 += area[upAxis];
+  }
+  if (frame.furnitureAreaM2 > 0.0) frame.furnitureCentre = weighted / frame.furnitureAreaM2;
   return frame;
 }
 

@@ -14,6 +14,10 @@ struct SceneFrame {
   // A vertical side of the bounds that walls cover less than half of: 2 * axis + (0 for the
   // side at boundsMin, 1 for the side at boundsMax). -1: every side is closed.
   int openSide = -1;
+  // Where the furniture is: the area-weighted centre of the faces facing up between the lowest
+  // floor and the ceiling (desk tops, seats), and their area; 0 in an empty room.
+  Vec3 furnitureCentre{0.0};
+  double furnitureAreaM2 = 0.0;
   double floorLevel() const { return boundsMin[upAxis]; }
   double heightM() const { return boundsMax[upAxis] - boundsMin[upAxis]; }
 };

@@ -35,6 +35,39 @@ TEST(WalkCamera, StartsInsideAClosedRoomAtEyeHeightLookingLevelAtTheCentre) {
   EXPECT_NO_THROW(validateView(view));
 }
 
+// A 4 x 4 m room (6 faces) with a 1 m square desk top at 0.75 m whose corner is at (x, y).
+std::vector<FrameFace> roomWithDesk(double x, double y) {
+  const double s = 4.0, h = 2.7;
+  std::vector<FrameFace> faces = {
+      {{{0, 0, 0}, {s, 0, 0}, {s, s, 0}, {0, s, 0}}},  // floor, facing up
+      {{{0, 0, h}, {0, s, h}, {s, s, h}, {s, 0, h}}},  // ceiling, facing down
+      {{{0, 0, 0}, {0, s, 0}, {0, s, h}, {0, 0, h}}},  {{{s, 0, 0}, {s, 0, h}, {s, s, h}, {s, s, 0}}},
+      {{{0, 0, 0}, {0, 0, h}, {s, 0, h}, {s, 0, 0}}},  {{{0, s, 0}, {s, s, 0}, {s, s, h}, {0, s, h}}},
+      {{{x, y, 0.75}, {x + 1, y, 0.75}, {x + 1, y + 1, 0.75}, {x, y + 1, 0.75}}}};
+  return faces;
+}
+
+// The start view looks at the furniture: a desk in the corner where the camera would stand sends
+// it to the opposite corner (office3 faced a bare corner); elsewhere it keeps the least corner.
+TEST(WalkCamera, StartsAcrossTheRoomFromFurnitureInItsCorner) {
+  const SceneFrame cornered = frameOf(roomWithDesk(0.2, 0.2), 2);
+  EXPECT_DOUBLE_EQ(cornered.furnitureAreaM2, 1.0);  // the desk alone: not the floor, nor the ceiling
+  EXPECT_EQ(cornered.furnitureCentre, Vec3(0.7, 0.7, 0.75));
+  EXPECT_EQ(WalkCamera::cornerFacingFurniture(cornered), glm::dvec2(1.0, 1.0));
+  RenderView view = WalkCamera(cornered).view();
+  EXPECT_NEAR(view.eye.x, 3.4, 1e-12);  // 0.15 of the room from its greatest corner
+  EXPECT_NEAR(view.eye.y, 3.4, 1e-12);
+  EXPECT_GT(glm::dot(view.look - view.eye, Vec3(0.7, 0.7, 0) - view.eye), 0.0);  // towards the desk
+  for (const auto& [x, y] : {std::pair{1.5, 1.5}, {2.8, 0.2}, {0.2, 2.8}, {2.8, 2.8}}) {
+    const SceneFrame frame = frameOf(roomWithDesk(x, y), 2);
+    EXPECT_EQ(WalkCamera::cornerFacingFurniture(frame), glm::dvec2(-1.0, -1.0)) << x << ", " << y;
+    view = WalkCamera(frame).view();
+    EXPECT_NEAR(view.eye.x, 0.6, 1e-12);
+  }
+  // Against the middle of the least x wall: across to the greatest x.
+  EXPECT_EQ(WalkCamera::cornerFacingFurniture(frameOf(roomWithDesk(0.2, 1.5), 2)), glm::dvec2(1.0, -1.0));
+}
+
 TEST(WalkCamera, LowersTheEyeInALowRoom) {
   const RenderView view = WalkCamera(room({1.0, 1.0, 0.5})).view();
   EXPECT_DOUBLE_EQ(view.eye.z, 0.3);  // 60% of the height, under 1.6 m
