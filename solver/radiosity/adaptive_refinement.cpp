@@ -36,9 +36,9 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
     std::vector<double> reflected(n);
     for (size_t e = 0; e < n; ++e)
       reflected[e] = channelSum(elementRadiosity[e] - scene.materials[elements.elements[e].material].emittance);
-    if (!backend->markContrast(neighbours, reflected, options.splitContrast,
+    if (!backend->markContrast(adjacency.neighbours, reflected, options.splitContrast,
                                [&](int e) { return splittable(elements.elements[e], options.minElementM); }, split))
-      markContrast(elements, neighbours, reflected, options.splitContrast, options.minElementM, split);
+      markContrast(elements, adjacency.neighbours, reflected, options.splitContrast, options.minElementM, split);
     if (options.splitShadows) {
       if (!occluders) occluders.emplace(patches);
       size_t r = 0;  // rows holds the patch shots' rows, in order
@@ -61,7 +61,7 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
     const std::vector<int> origin = splitElements(elements, split);
     backend->receiversSplit(origin);
     findNearField();
-    neighbours = elementNeighbours(elements);
+    splitAdjacency(adjacency, elements, origin, split);
     cache.renumberReceivers(newIndices(origin, split));
     regather(origin, split, parentRadiosity, parentGain);
   }

@@ -19,7 +19,7 @@ constexpr double kPartlyHidden = 0.95;  // a row entry below this share of the u
 // corner does not graze the patches meeting it there.
 constexpr double kInset = 1e-3;
 
-using Box = Occluders::Box;
+using Box = AxisBox;
 
 Box boxOf(const Patch& p, double margin) {
   Box b{p.vertices[0], p.vertices[0]};
@@ -69,13 +69,22 @@ bool facing(const Patch& a, const Patch& b, double slack) {
          glm::dot(b.normal, a.centroid - b.centroid) >= -slack;
 }
 
-// Pairs of elements of different polygons sharing part of an edge (and facing), added to
-// `neighbours`: each element is listed in every bucket of a grid its box meets, so two whose boxes
-// touch share a bucket, and an element looks only in the buckets of its own box. The buckets are
-// the median element's size (the largest element's would put much of a room in each lookup), but
-// no smaller than an eighth of the largest's (which would then be listed in thousands of them).
-void addCrossPolygonNeighbours(const std::vector<Patch>& es, const std::vector<Box>& boxes,
-                               std::vector<std::vector<int>>& neighbours) {
+// Whether a and b (a < b), whose boxes overlap, are neighbours: of one polygon, or of two sharing
+// part of an edge and facing. A function of the pair alone (the slack is the lower index's), so
+// that the pairs found from scratch and those kept across splits agree bit for bit.
+bool neighbourPair(const std::vector<Patch>& es, int a, int b) {
+  if (es[a].polygon == es[b].polygon) return true;
+  const double slack = 1e-6 * longestEdge(es[a]);
+  return facing(es[a], es[b], slack) && shareEdge(es[a], es[b], slack);
+}
+
+// Pairs of elements of different polygons whose boxes overlap, added to `overlapping`: each
+// element is listed in every bucket of a grid its box meets, so two whose boxes touch share a
+// bucket, and an element looks only in the buckets of its own box. The buckets are the median
+// element's size (the largest element's would put much of a room in each lookup), but no smaller
+// than an eighth of the largest's (which would then be listed in thousands of them).
+void addCrossPolygonOverlaps(const std::vector<Patch>& es, const std::vector<Box>& boxes,
+                             std::vector<std::vector<int>>& overlapping) {
   std::vector<double> sizes;
   for (const Box& b : boxes) sizes.push_back(glm::length(b.hi - b.lo));
   if (sizes.empty()) return;
@@ -91,17 +100,24 @@ void addCrossPolygonNeighbours(const std::vector<Patch>& es, const std::vector<B
   }
   std::vector<int> lastSeenBy(es.size(), -1);  // an element meets `a` in several buckets: one test
   for (size_t a = 0; a < es.size(); ++a) {
-    const double slack = 1e-6 * longestEdge(es[a]);
     grid.anyInBox(boxes[a].lo, boxes[a].hi, [&](int b) {
       if (b > static_cast<int>(a) && lastSeenBy[b] != static_cast<int>(a) && es[b].polygon != es[a].polygon &&
-          overlap(boxes[a], boxes[b]) && facing(es[a], es[b], slack) && shareEdge(es[a], es[b], slack)) {
-        neighbours[a].push_back(b);
-        neighbours[b].push_back(static_cast<int>(a));
+          overlap(boxes[a], boxes[b])) {
+        overlapping[a].push_back(b);
+        overlapping[b].push_back(static_cast<int>(a));
       }
       lastSeenBy[b] = static_cast<int>(a);
       return false;
     });
   }
+}
+
+// The neighbours among the overlapping pairs, ascending.
+std::vector<int> neighboursAmong(const std::vector<Patch>& es, int a, const std::vector<int>& overlapping) {
+  std::vector<int> out;
+  for (int b : overlapping)
+    if (a < b ? neighbourPair(es, a, b) : neighbourPair(es, b, a)) out.push_back(b);
+  return out;
 }
 
 }  // namespace
@@ -117,10 +133,17 @@ bool segmentCrosses(const Vec3& a, const Vec3& b, const Patch& p) {
   return true;
 }
 
-std::vector<std::vector<int>> elementNeighbours(const Elements& elements) {
+namespace {
+
+Box elementBox(const Patch& e) { return boxOf(e, 1e-6 * longestEdge(e)); }
+
+}  // namespace
+
+ElementAdjacency elementAdjacency(const Elements& elements) {
   const std::vector<Patch>& es = elements.elements;
-  std::vector<Box> boxes;
-  for (const Patch& e : es) boxes.push_back(boxOf(e, 1e-6 * longestEdge(e)));
+  ElementAdjacency out;
+  std::vector<Box>& boxes = out.boxes;
+  for (const Patch& e : es) boxes.push_back(elementBox(e));
   // By polygon, then by the low end of the box along the axis its polygon's elements spread most
   // (along x, a wall in a y-z plane would pair every element with every other): a sweep finds the
   // touching pairs.
@@ -142,20 +165,70 @@ std::vector<std::vector<int>> elementNeighbours(const Elements& elements) {
     const double la = boxes[a].lo[axis[a]], lb = boxes[b].lo[axis[b]];
     return la != lb ? la < lb : a < b;
   });
-  std::vector<std::vector<int>> neighbours(es.size());
+  std::vector<std::vector<int>>& overlapping = out.overlapping;
+  overlapping.resize(es.size());
   for (size_t i = 0; i < order.size(); ++i) {
     const int a = order[i];
     for (size_t j = i + 1; j < order.size(); ++j) {
       const int b = order[j];
       if (es[b].polygon != es[a].polygon || boxes[b].lo[axis[b]] > boxes[a].hi[axis[a]]) break;
       if (!overlap(boxes[a], boxes[b])) continue;
-      neighbours[a].push_back(b);
-      neighbours[b].push_back(a);
+      overlapping[a].push_back(b);
+      overlapping[b].push_back(a);
     }
   }
-  addCrossPolygonNeighbours(es, boxes, neighbours);
-  for (std::vector<int>& n : neighbours) std::sort(n.begin(), n.end());
-  return neighbours;
+  addCrossPolygonOverlaps(es, boxes, overlapping);
+  out.neighbours.resize(es.size());
+  for (size_t a = 0; a < es.size(); ++a) {
+    std::sort(overlapping[a].begin(), overlapping[a].end());
+    out.neighbours[a] = neighboursAmong(es, static_cast<int>(a), overlapping[a]);
+  }
+  return out;
+}
+
+std::vector<std::vector<int>> elementNeighbours(const Elements& elements) {
+  return elementAdjacency(elements).neighbours;
+}
+
+// A child's box lies within its parent's (its corners are the parent's or midpoints of them, its
+// margin is smaller), so two elements whose boxes overlap after a split descend from two whose
+// boxes overlapped before: the pairs to look at are the old overlaps' children, nothing else.
+void splitAdjacency(ElementAdjacency& adjacency, const Elements& elements, const std::vector<int>& origin,
+                    const std::vector<char>& split) {
+  const std::vector<Patch>& es = elements.elements;
+  const size_t n = es.size();
+  // The elements each old one became (itself, or its four children), in order.
+  std::vector<int> firstOf(split.size() + 1, 0);
+  for (size_t e = 0; e < n; ++e) firstOf[origin[e] + 1] = static_cast<int>(e) + 1;
+  for (size_t o = 1; o < firstOf.size(); ++o) firstOf[o] = std::max(firstOf[o], firstOf[o - 1]);
+  ElementAdjacency after;
+  after.boxes.resize(n);
+  after.overlapping.resize(n);
+  after.neighbours.resize(n);
+  for (size_t e = 0; e < n; ++e) after.boxes[e] = split[origin[e]] ? elementBox(es[e]) : adjacency.boxes[origin[e]];
+  for (size_t e = 0; e < n; ++e) {
+    const int o = origin[e];
+    bool changed = split[o];
+    std::vector<int>& list = after.overlapping[e];
+    const auto consider = [&](int old) {
+      for (int x = firstOf[old]; x < firstOf[old + 1]; ++x)
+        if (x != static_cast<int>(e) && (!split[o] && !split[old] ? true : overlap(after.boxes[e], after.boxes[x])))
+          list.push_back(x);
+    };
+    if (split[o]) consider(o);  // the siblings
+    for (int old : adjacency.overlapping[o]) {
+      changed = changed || split[old];
+      consider(old);
+    }
+    std::sort(list.begin(), list.end());
+    if (changed) {
+      after.neighbours[e] = neighboursAmong(es, static_cast<int>(e), list);
+    } else {  // the same pairs, in the same order: the same answer, renumbered
+      after.neighbours[e] = std::move(adjacency.neighbours[o]);
+      for (int& x : after.neighbours[e]) x = firstOf[x];
+    }
+  }
+  adjacency = std::move(after);
 }
 
 bool splittable(const Patch& element, double minElementM) {

@@ -49,7 +49,7 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
     if (s.adaptive()) checkElementBudget(s.patches, true, options.minElementM);
     s.elements = s.adaptive() ? patchesAsElements(s.patches) : subdivideUniform(s.patches, options.minElementM);
     for (const Patch& e : s.elements.elements) s.elementRadiosity.push_back(s.scene.materials[e.material].emittance);
-    if (s.adaptive()) s.neighbours = elementNeighbours(s.elements);
+    if (s.adaptive()) s.adjacency = elementAdjacency(s.elements);
     if (s.adaptive()) s.shotTotal.assign(s.patches.size(), Rgb(0.0));
     // A cells solve's lights arrive before the first step (receiveLight): their gain counts too.
     if (s.adaptive()) s.iterationGain.assign(s.elements.elements.size(), Rgb(0.0));

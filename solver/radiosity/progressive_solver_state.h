@@ -63,7 +63,8 @@ struct ProgressiveSolver::State {
   std::optional<NearFieldFinder> elementNear;         // per shooter patch, its near elements
   std::vector<std::vector<NearFieldPair>> nearPairs;   // per shooter patch, as its rows reach them
   // Adaptive subdivision (adaptive_refinement.cpp): this iteration's shots, what each element
-  // received from them (reflected, W/m^2 per channel), and each element's neighbours.
+  // received from them (reflected, W/m^2 per channel), and each element's neighbours (kept across
+  // splits: adjacency.neighbours).
   struct Shot {
     int patch = -1;  // the shooting patch, or -1 for scene light `light`
     int light = -1;
@@ -73,7 +74,7 @@ struct ProgressiveSolver::State {
   bool lightsShot = false;
   std::vector<Rgb> shotTotal;  // per patch: all it has shot (adaptive, --split-regather all)
   std::vector<Rgb> iterationGain;
-  std::vector<std::vector<int>> neighbours;
+  ElementAdjacency adjacency;
   double firstShotPowerW = 0.0;
   double convergence = 0.0;
   bool exhausted = false;

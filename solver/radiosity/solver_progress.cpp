@@ -69,7 +69,7 @@ void ProgressiveSolver::restoreProgress(SolverProgress p) {
     s.elements = std::move(*split);
     s.backend = s.makeBackend();  // with the portal patches' direction bins
     s.findNearField();
-    s.neighbours = elementNeighbours(s.elements);
+    s.adjacency = elementAdjacency(s.elements);
   }
   s.backend->restoreMachineState(p.machineState);  // throws, changing nothing, for another machine's
   s.radiosity = std::move(p.radiosity);
