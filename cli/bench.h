@@ -79,7 +79,7 @@ AccuracyArgs quickAccuracyArgs(AccuracyArgs args);
 // With an outDir, writes NAME.csv (a row per point) and NAME-traces.csv (error against iteration), then draws them.
 nlohmann::json benchAccuracy(const AccuracyArgs& args);
 // The plots of docs/accuracy.md, STEM-*.png, drawn from STEM.csv and STEM-traces.csv.
-void drawAccuracyFigures(const std::string& stem, const std::string& sceneName);
+std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std::string& sceneName);  // the PNGs drawn
 struct BenchCellsArgs {
   std::vector<std::string> scenes{"two-rooms", "building:3x3"};
   double cellM = 0.381;

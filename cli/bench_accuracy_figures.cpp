@@ -100,8 +100,8 @@ void addParetoFront(Plot& plot, const std::vector<std::pair<double, double>>& al
   if (!all.empty()) plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
 }
 
-void drawUnlessEmpty(const Plot& plot, const std::string& path) {
-  if (!plot.series.empty()) drawPlot(plot, path);
+void drawUnlessEmpty(const Plot& plot, const std::string& path, std::vector<std::string>& drawn) {
+  if (!plot.series.empty() && drawPlot(plot, path)) drawn.push_back(path);
 }
 
 std::string rowSetting(const CsvTable& t, size_t row) { return settingLabel(t.text(row, "projection"), t.number(row, "ratio")); }
@@ -177,16 +177,17 @@ std::string settingLabel(const std::string& projection, double ratio) {
   return projection == "plane" ? fmt::format("plane r{}", ratio) : projection;
 }
 
-void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) {
+std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std::string& sceneName) {
+  std::vector<std::string> drawn;
   const std::string writer = "bench accuracy --out-dir DIR --name NAME";
   const CsvTable points = readCsv(stem + ".csv", writer), traces = readCsv(stem + "-traces.csv", writer);
   drawUnlessEmpty(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName,
                                   "relative RMS error of B - E", points, "error_at_99"),
-                  stem + "-error-vs-time.png");
+                  stem + "-error-vs-time.png", drawn);
   // Not without the viewer, which the pictures need.
   drawUnlessEmpty(errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
                                   "RMSE of the pictures, 8-bit levels", points, "image_rmse_at_99"),
-                  stem + "-image-error-vs-time.png");
+                  stem + "-image-error-vs-time.png", drawn);
   // Each setting's true error and unshot power; 1 - C of the first, which is what C promises.
   Plot conv{.title = "What convergence C says against the true error: " + sceneName, .xLabel = "iteration",
             .yLabel = "fraction", .logY = true};
@@ -208,8 +209,9 @@ void drawAccuracyFigures(const std::string& stem, const std::string& sceneName) 
       remaining.points.emplace_back(iteration, std::max(1.0 - traces.number(row, "convergence"), 1e-9));
   }
   if (!remaining.points.empty()) conv.series.push_back(remaining);
-  drawUnlessEmpty(conv, stem + "-error-vs-convergence.png");  // traces follow off rows only
-  if (hasSubdivide(points)) drawUnlessEmpty(subdivisionPlot(sceneName, points), stem + "-subdivide.png");
+  drawUnlessEmpty(conv, stem + "-error-vs-convergence.png", drawn);  // traces follow off rows only
+  if (hasSubdivide(points)) drawUnlessEmpty(subdivisionPlot(sceneName, points), stem + "-subdivide.png", drawn);
+  return drawn;
 }
 
 }  // namespace radmesh::cli

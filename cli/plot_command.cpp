@@ -200,7 +200,8 @@ void addPlotCommand(CLI::App& app) {
     // The table's own path is what a user has at hand: its stem is meant.
     const std::filesystem::path given(*stem);
     const std::string s = given.extension() == ".csv" ? (given.parent_path() / given.stem()).string() : *stem;
-    drawAccuracyFigures(s, std::filesystem::path(s).filename().string());
+    for (const std::string& png : drawAccuracyFigures(s, std::filesystem::path(s).filename().string()))
+      fmt::print("drew {}\n", png);
   });
   auto model = std::make_shared<std::string>();
   auto scaling = std::make_shared<std::vector<std::string>>();

@@ -229,6 +229,8 @@ TEST(CliSubdivide, BenchAccuracyOfElementsAloneDrawsTheSubdividePlot) {
   const CommandRun redrawn = radmesh("plot accuracy " + dir + "/furnace.csv");
   ASSERT_EQ(redrawn.exitCode, 0) << redrawn.output;
   EXPECT_EQ(std::filesystem::exists(dir + "/furnace-subdivide.png"), gnuplotInstalled()) << redrawn.output;
+  EXPECT_EQ(redrawn.output.find("drew " + dir + "/furnace-subdivide.png\n") != std::string::npos, gnuplotInstalled())
+      << redrawn.output;  // it used to say nothing
 }
 
 TEST(CliSubdivide, BenchAccuracyRefusesASubdivisionItCannotRun) {
