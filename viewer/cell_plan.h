@@ -1,7 +1,8 @@
 #pragma once
 // A floor plan of a scene's cells (`radmesh info SCENE --plan FILE.png`): the view down the up
-// axis (the scene's: office3 stands on y), each cell's floor and furniture tops in its own colour and its number at its middle,
-// the walls cut at 1 m above the lowest floor drawn dark, and each portal a bright bar outlined dark.
+// axis (the scene's: office3 stands on y), each cell's floor and furniture tops in its own colour
+// and its number at its middle, the walls cut at 1 m above the lowest floor drawn dark, and each
+// portal a bright bar outlined dark.
 #include <array>
 #include <cstdint>
 #include <utility>

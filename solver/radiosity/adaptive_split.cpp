@@ -32,6 +32,9 @@ Box boxOf(const Patch& p, double margin) {
   return b;
 }
 
+// An element's box, grown by rounding's reach, so that elements meeting at an edge or a corner overlap.
+Box elementBox(const Patch& e) { return boxOf(e, 1e-6 * longestEdge(e)); }
+
 bool overlap(const Box& a, const Box& b) {
   return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
          b.lo.z <= a.hi.z;
@@ -133,12 +136,6 @@ bool segmentCrosses(const Vec3& a, const Vec3& b, const Patch& p) {
   return true;
 }
 
-namespace {
-
-Box elementBox(const Patch& e) { return boxOf(e, 1e-6 * longestEdge(e)); }
-
-}  // namespace
-
 ElementAdjacency elementAdjacency(const Elements& elements) {
   const std::vector<Patch>& es = elements.elements;
   ElementAdjacency out;
@@ -212,7 +209,7 @@ void splitAdjacency(ElementAdjacency& adjacency, const Elements& elements, const
     std::vector<int>& list = after.overlapping[e];
     const auto consider = [&](int old) {
       for (int x = firstOf[old]; x < firstOf[old + 1]; ++x)
-        if (x != static_cast<int>(e) && (!split[o] && !split[old] ? true : overlap(after.boxes[e], after.boxes[x])))
+        if (x != static_cast<int>(e) && ((!split[o] && !split[old]) || overlap(after.boxes[e], after.boxes[x])))
           list.push_back(x);
     };
     if (split[o]) consider(o);  // the siblings
