@@ -20,7 +20,6 @@ class NoteTally {
       }
     kinds_.push_back({kind, std::move(message), 0});
   }
-  bool empty() const { return kinds_.empty(); }
   std::vector<std::string> lines() const {
     std::vector<std::string> out;
     for (const Kind& k : kinds_)
