@@ -183,10 +183,6 @@ ElementAdjacency elementAdjacency(const Elements& elements) {
   return out;
 }
 
-std::vector<std::vector<int>> elementNeighbours(const Elements& elements) {
-  return elementAdjacency(elements).neighbours;
-}
-
 // A child's box lies within its parent's (its corners are the parent's or midpoints of them, its
 // margin is smaller), so two elements whose boxes overlap after a split descend from two whose
 // boxes overlapped before: the pairs to look at are the old overlaps' children, nothing else.

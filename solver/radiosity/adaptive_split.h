@@ -14,25 +14,24 @@ namespace radmesh {
 // edges: weaker shooters cast soft shadows the gradient criterion sees, and the check costs rays.
 inline constexpr double kShadowShotFraction = 0.05;
 
-// Per element, its neighbours, ascending: the elements of the same scene polygon whose bounding
-// boxes touch its own (sharing an edge or a corner, or, between triangles, lying close), and the
-// elements of other polygons sharing part of an edge with it where light passes between the two
-// (coplanar, or a concave fold such as a wall meeting the floor; not a convex fold such as a table's
-// edge, whose step is its outline, nor faces back to back).
-std::vector<std::vector<int>> elementNeighbours(const Elements& elements);
-
-// The neighbours kept across splits: every pair whose (slightly grown) bounding boxes overlap, of
-// which the neighbours are some, and the boxes. splitAdjacency after splitElements (origin and
-// split as it has them) gives bit for bit what elementAdjacency gives from scratch, looking only
-// at the split elements' old overlaps: the split rounds of a large scene (the corridor's 24,000
-// elements) spent a third of the solve finding every element's neighbours anew.
 struct AxisBox {
   Vec3 lo{0.0}, hi{0.0};
 };
+
+// Each element's neighbours, ascending: the elements of the same scene polygon whose bounding
+// boxes touch its own (sharing an edge or a corner, or, between triangles, lying close), and the
+// elements of other polygons sharing part of an edge with it where light passes between the two
+// (coplanar, or a concave fold such as a wall meeting the floor; not a convex fold such as a table's
+// edge, whose step is its outline, nor faces back to back). Kept across splits with what finds them:
+// every pair whose (slightly grown) bounding boxes overlap, of which the neighbours are some, and
+// the boxes. splitAdjacency after splitElements (origin and split as it has them) gives bit for bit
+// what elementAdjacency gives from scratch, looking only at the split elements' old overlaps: the
+// split rounds of a large scene (the corridor's 24,000 elements) spent a third of the solve finding
+// every element's neighbours anew.
 struct ElementAdjacency {
   std::vector<AxisBox> boxes;
   std::vector<std::vector<int>> overlapping;  // ascending
-  std::vector<std::vector<int>> neighbours;   // ascending: elementNeighbours
+  std::vector<std::vector<int>> neighbours;   // ascending
 };
 ElementAdjacency elementAdjacency(const Elements& elements);
 void splitAdjacency(ElementAdjacency& adjacency, const Elements& elements, const std::vector<int>& origin,

@@ -278,7 +278,7 @@ TEST(MeshAdaptive, SplitsAsTheNativeBackEndDoesOnAnyThreadCount) {
 TEST(MeshAdaptive, TheGradientTestMarksOnThePesWhatTheHostMarks) {
   const ShadowScene s;
   const Elements elements = subdivideUniform(s.t.patches, 0.125);  // the floor 16 x 16
-  const std::vector<std::vector<int>> neighbours = elementNeighbours(elements);
+  const std::vector<std::vector<int>> neighbours = elementAdjacency(elements).neighbours;
   std::vector<double> reflected(elements.elements.size());
   for (size_t e = 0; e < reflected.size(); ++e) {  // a step across x = 0.3, a gentle slope elsewhere
     const Vec3& c = elements.elements[e].centroid;
@@ -348,7 +348,7 @@ TEST(Adaptive, NeighboursCrossPolygonSeamsWhereLightPasses) {
   // A closed box cut 2 x 2 a face (normals inward: every fold concave): each patch touches its
   // face's three others and shares an edge with one patch of each of the two faces it borders.
   const TestScene box = closedBox(Vec3(1.0), 2, {grey(0.5)});
-  const std::vector<std::vector<int>> n = elementNeighbours(patchesAsElements(box.patches));
+  const std::vector<std::vector<int>> n = elementAdjacency(patchesAsElements(box.patches)).neighbours;
   for (size_t e = 0; e < n.size(); ++e) {
     EXPECT_EQ(n[e].size(), 5u) << "patch " << e;
     EXPECT_EQ(std::count_if(n[e].begin(), n[e].end(), [&](int o) { return box.patches[o].polygon != box.patches[e].polygon; }), 2)
@@ -361,7 +361,7 @@ TEST(Adaptive, NeighboursCrossPolygonSeamsWhereLightPasses) {
                           makePatch({Vec3(1, 0, 0), Vec3(1.5, 0, 0), Vec3(1.5, 0.5, 0), Vec3(1, 0.5, 0)}, 0, 1),
                           makePatch({Vec3(1, 0.5, 0), Vec3(1.5, 0.5, 0), Vec3(1.5, 1, 0), Vec3(1, 1, 0)}, 0, 1),
                           makePatch({Vec3(1, 1, 0), Vec3(1.5, 1, 0), Vec3(1.5, 1.5, 0), Vec3(1, 1.5, 0)}, 0, 2)};
-  const std::vector<std::vector<int>> coplanar = elementNeighbours(patchesAsElements(flat));
+  const std::vector<std::vector<int>> coplanar = elementAdjacency(patchesAsElements(flat)).neighbours;
   EXPECT_EQ(coplanar[0], (std::vector<int>{1, 2}));
   EXPECT_EQ(coplanar[3], (std::vector<int>{2}));  // polygon 2 borders polygon 1's patch 2 along y = 1
   // A convex fold (a ridge: each face behind the other) and a face back to back with the first:
@@ -369,7 +369,8 @@ TEST(Adaptive, NeighboursCrossPolygonSeamsWhereLightPasses) {
   const std::vector<Patch> ridge{makePatch({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 1), Vec3(0, 1, 1)}, 0, 0),
                                  makePatch({Vec3(0, 1, 1), Vec3(1, 1, 1), Vec3(1, 2, 0), Vec3(0, 2, 0)}, 0, 1),
                                  makePatch({Vec3(0, 0, 0), Vec3(0, 1, 1), Vec3(1, 1, 1), Vec3(1, 0, 0)}, 0, 2)};
-  for (const std::vector<int>& none : elementNeighbours(patchesAsElements(ridge))) EXPECT_TRUE(none.empty());
+  const ElementAdjacency ridged = elementAdjacency(patchesAsElements(ridge));
+  for (const std::vector<int>& none : ridged.neighbours) EXPECT_TRUE(none.empty());
 }
 
 // A step in the light along a seam between two polygons splits the elements on both sides: a floor
