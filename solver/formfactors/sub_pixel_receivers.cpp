@@ -11,11 +11,15 @@ namespace radmesh {
 
 namespace {
 
-// The analytic form factor of patch j if nothing in the item buffer is in front of its
-// centroid, else 0.
+// The analytic form factor of patch j times the fraction of its covered pixel centres showing
+// it; covering none, the whole of it if nothing in the item buffer is in front of its centroid,
+// else 0.
 double visibleFormFactor(const ProjectedShot& shot, int j) {
   const Patch& shooter = shot.shooter;
   const LocalPolygon local = toShooterFrame(shooter, shot.patches[j]);
+  const double unhidden = smallPolygonFormFactor(local.corners(), local.centroid, local.normal, shot.patches[j].areaM2);
+  if (shot.coveredPixels[j] > 0)
+    return unhidden * static_cast<double>(shot.shownPixels[j]) / static_cast<double>(shot.coveredPixels[j]);
   for (size_t f = 0; f < shot.surface.faces.size(); ++f) {
     const ProjectionFace& face = shot.surface.faces[f];
     const Vec3 c = toFace(face, local.centroid);
@@ -34,7 +38,7 @@ double visibleFormFactor(const ProjectedShot& shot, int j) {
           kDepthTieTolerance * std::max(std::abs(ownerInverseDepth), inverseDepth))
         return 0.0;
     }
-    return pointToPolygonFormFactor(local.corners());
+    return unhidden;
   }
   return 0.0;  // its centroid is outside the projection surface
 }
@@ -51,7 +55,8 @@ void refineSubPixelReceivers(const ProjectedShot& shot, ThreadPool& pool,
                              std::vector<double>& formFactors) {
   std::vector<int> candidates;
   for (size_t j = 0; j < shot.projectedAreaPixels.size(); ++j)
-    if (shot.projectedAreaPixels[j] > 0.0 && shot.projectedAreaPixels[j] < kSubPixelAreaPixels)
+    if (shot.projectedAreaPixels[j] > 0.0 &&
+        (shot.projectedAreaPixels[j] < kSubPixelAreaPixels || shot.projectedWidthPixels[j] < kThinWidthPixels))
       candidates.push_back(static_cast<int>(j));
   if (candidates.empty()) return;
 

@@ -36,6 +36,7 @@ void EnvironmentProjection::patchesChanged() {
   slotOfPatch_.assign(pool_.size(), std::vector<int>(n, -1));
   pixelFormFactors_.assign(n, 0.0);
   projectedArea_.assign(n, 0.0);
+  projectedWidth_.assign(n, 0.0);
   coveredPixels_.assign(n, 0);
   shownPixels_.assign(n, 0);
   seenFromFront_.assign(n, 0);
@@ -55,6 +56,7 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
     const int end = std::min(n, (chunk + 1) * kChunkPatches);
     for (int j = chunk * kChunkPatches; j < end; ++j) {
       projectedArea_[j] = 0.0;
+      projectedWidth_[j] = 0.0;
       seenFromFront_[j] = 0;
       facesReached_[j] = 0;
       if (j == skip) continue;
@@ -70,6 +72,7 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
         PolygonSetup& setup = out[f].emplace_back();
         if (setupPolygon(screen, face.width, face.height, j, rank_[j], setup)) {
           projectedArea_[j] += setup.areaPixels;
+          projectedWidth_[j] = std::max(projectedWidth_[j], setup.widthPixels);
           facesReached_[j] |= 1u << f;
         } else
           out[f].pop_back();

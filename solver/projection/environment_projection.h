@@ -36,6 +36,8 @@ class EnvironmentProjection {
   // its projected area in pixels over all faces, and whether the shooter sees its front.
   const std::vector<double>& pixelFormFactors() const { return pixelFormFactors_; }
   const std::vector<double>& projectedAreaPixels() const { return projectedArea_; }
+  // After project(), per patch: the widest of its faces' PolygonSetup::widthPixels (0: not projected).
+  const std::vector<double>& projectedWidthPixels() const { return projectedWidth_; }
   const std::vector<char>& seenFromFront() const { return seenFromFront_; }
   // After project(), per patch: the pixel centres its projection covers over all faces, and how
   // many of them show it (fewer: something hides part of it, or a coplanar neighbour won a tie).
@@ -75,6 +77,7 @@ class EnvironmentProjection {
   std::vector<std::vector<int>> slotOfPatch_;                        // [worker] scratch, -1 when free
   std::vector<double> pixelFormFactors_;
   std::vector<double> projectedArea_;
+  std::vector<double> projectedWidth_;
   std::vector<long long> coveredPixels_;
   std::vector<long long> shownPixels_;
   std::vector<char> seenFromFront_;

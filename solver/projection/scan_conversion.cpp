@@ -65,6 +65,7 @@ bool setupPolygon(const ScreenPolygon& polygon, int width, int height, int id, i
   setup.inverseDepthY = polygon.inverseDepthY;
   setup.inverseDepthC = polygon.inverseDepthC;
   setup.edgeCount = 0;
+  double longestSquared = 0.0;
   for (int k = 0; k < n; ++k) {
     const glm::dvec2 p = v[k];
     const glm::dvec2 q = v[(k + 1) % n];
@@ -75,6 +76,7 @@ bool setupPolygon(const ScreenPolygon& polygon, int width, int height, int id, i
     // sign flip is exact, so a neighbour across the edge evaluates exactly the negated value.
     const double sign = -(forward ? 1.0 : -1.0) * orientation;
     const glm::dvec2 dir = sign * (forward ? q - p : p - q);
+    longestSquared = std::max(longestSquared, glm::dot(dir, dir));
     EdgeFunction& e = setup.edges[setup.edgeCount++];
     e.startX = start.x;
     e.startY = start.y;
@@ -90,6 +92,7 @@ bool setupPolygon(const ScreenPolygon& polygon, int width, int height, int id, i
     const double magnitude = std::abs(start.x) + width + 1.0 + (std::abs(start.y) + height + 1.0) * std::abs(e.inverseSlope);
     e.crossingSlack = 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
   }
+  setup.widthPixels = setup.areaPixels / std::sqrt(longestSquared);
   return setup.edgeCount >= 3;
 }
 
@@ -177,6 +180,15 @@ std::pair<int, int> rowSpan(const PolygonSetup& setup, int row) {
       right = first;
   }
   return {left, std::max(left, right)};
+}
+
+long long coveredPixelCount(const PolygonSetup& setup) {
+  long long covered = 0;
+  for (int row = setup.rowBegin; row < setup.rowEnd; ++row) {
+    const auto [left, right] = rowSpan(setup, row);
+    covered += right - left;
+  }
+  return covered;
 }
 
 long long rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin, int rowEnd,

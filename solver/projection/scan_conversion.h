@@ -38,6 +38,7 @@ struct PolygonSetup {
   int columnBegin = 0, columnEnd = 0;  // pixels [columnBegin, columnEnd) x [rowBegin, rowEnd)
   int rowBegin = 0, rowEnd = 0;        // hold every pixel centre the polygon may cover
   double areaPixels = 0.0;             // projected area, in pixels
+  double widthPixels = 0.0;            // area over the longest edge: a sliver's narrow width, in pixels
   double depthTieTolerance = 0.0;     // for closer(): kDepthTieTolerance, or kBeamDepthTieTolerance
 };
 
@@ -78,6 +79,9 @@ std::vector<int> depthTieRanks(const std::vector<Patch>& patches);
 // The pixels [first, second) of `row` whose centres the polygon covers (empty: first == second),
 // by the rule covers() applies pixel by pixel.
 std::pair<int, int> rowSpan(const PolygonSetup& setup, int row);
+
+// How many pixel centres the polygon covers: rowSpan over its rows.
+long long coveredPixelCount(const PolygonSetup& setup);
 
 // z-buffers the polygon into rows [rowBegin, rowEnd) of the buffer, span by span; rankOf gives
 // the rank of a patch already in the buffer. Returns how many pixel centres it covers there.

@@ -221,21 +221,33 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
     int patch = 0;
     bool seenFromFront = false;
     double areaPixels = 0.0;  // 0 where not projected
+    double widthPixels = 0.0;
+    long long coveredPixels = 0;
   };
   std::vector<Seen> held;
   for (int j = 0; j < layout_.patches; ++j) {
     if (!machine_.holds(layout_.peOf(j))) continue;
     const PatchProjection& p = shot.projection(layout_.peOf(j), layout_.slotOf(j), plane);
-    held.push_back({layout_.peOf(j), j, p.seenFromFront, p.projected ? p.setup.areaPixels : 0.0});
+    held.push_back(p.projected ? Seen{layout_.peOf(j), j, p.seenFromFront, p.setup.areaPixels, p.setup.widthPixels,
+                                      coveredPixelCount(p.setup)}
+                               : Seen{layout_.peOf(j), j, p.seenFromFront});
   }
-  std::vector<char> seenFromFront(layout_.patches, 0);
-  std::vector<double> projectedAreaPixels(layout_.patches, 0.0);
-  for (const Seen& s : emu::gatherByPe(machine_, std::move(held)))
-    seenFromFront[s.patch] = s.seenFromFront, projectedAreaPixels[s.patch] = s.areaPixels;
+  const auto n = static_cast<size_t>(layout_.patches);
+  std::vector<char> seenFromFront(n, 0);
+  std::vector<double> projectedAreaPixels(n, 0.0), projectedWidthPixels(n, 0.0);
+  std::vector<long long> coveredPixels(n, 0), shownPixels(n, 0);
+  for (const Seen& s : emu::gatherByPe(machine_, std::move(held))) {
+    seenFromFront[s.patch] = s.seenFromFront;
+    projectedAreaPixels[s.patch] = s.areaPixels;
+    projectedWidthPixels[s.patch] = s.widthPixels;
+    coveredPixels[s.patch] = s.coveredPixels;
+  }
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
+    for (int id : buffer.items)
+      if (id != ItemBuffer::kNone) ++shownPixels[id];
     const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
-                                  projectedAreaPixels};
+                                  projectedAreaPixels, projectedWidthPixels, coveredPixels, shownPixels};
     refineSubPixelReceivers(projected, hostPool_, formFactors);
   }
   return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors, seenFromFront);

@@ -128,14 +128,19 @@ FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int
   projection.projectFrom(patches_[shooter], skipOf(shooter));
   formFactors_ = projection.pixelFormFactors();
   seenFromFront_ = projection.seenFromFront();
-  if (options_.subPixelReceivers) {
+  if (refinesRow(shooter)) {
     const ProjectedShot shot{receivers_, patches_[shooter], projection.surface(), projection.itemBuffers(),
-                             projection.depthTieRank(), projection.projectedAreaPixels()};
+                             projection.depthTieRank(), projection.projectedAreaPixels(),
+                             projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels()};
     refineSubPixelReceivers(shot, pool_, formFactors_);
   }
   FormFactorRow row = assembleRow(shooter, projection.surface().capturedFraction, formFactors_, seenFromFront_);
   if (!directional_.empty() && directional_[shooter]) addPixelBins(projection, row);
   return row;
+}
+
+bool NativeBackend::refinesRow(int shooter) const {
+  return options_.subPixelReceivers && (directional_.empty() || !directional_[shooter]);
 }
 
 // The patches projected, their pixel sums refined below a pixel as patches' rows are, and shared
@@ -145,8 +150,9 @@ void NativeBackend::shareShot(EnvironmentProjection& projection, int shooter) {
   patchFormFactors_ = projection.pixelFormFactors();
   patchSeenFromFront_ = projection.seenFromFront();
   const ProjectedShot shot{patches_, patches_[shooter], projection.surface(), projection.itemBuffers(),
-                           projection.depthTieRank(), projection.projectedAreaPixels()};
-  if (options_.subPixelReceivers) refineSubPixelReceivers(shot, pool_, patchFormFactors_);
+                           projection.depthTieRank(), projection.projectedAreaPixels(),
+                           projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels()};
+  if (refinesRow(shooter)) refineSubPixelReceivers(shot, pool_, patchFormFactors_);
   const PatchShot patchShot{patchFormFactors_, patchSeenFromFront_, projection.coveredPixels(),
                             projection.shownPixels(), projection.facesReached()};
   shareAmongElements(shot, nearDepth_, patchShot, *elements_, pool_, formFactors_, seenFromFront_);

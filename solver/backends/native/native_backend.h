@@ -34,6 +34,10 @@ class NativeBackend final : public FormFactorBackend {
                 const Elements* elements, const SolveOptions& options);
   // The per-receiver buffers, and the projection over what it z-buffers as it is now (made on the first call).
   void takeReceivers();
+  // Whether a shot's pixel sums are refined (sub_pixel_receivers.h). Not a directional shooter's:
+  // its light goes by its pixels' direction bins, each to no more than the bin's directions catch
+  // (portal_power.cpp), and refined entries would not fit them.
+  bool refinesRow(int shooter) const;
   // The receivers' entries of a shot the projection made over the patches (shares_).
   void shareShot(EnvironmentProjection& projection, int shooter);
   FormFactorRow projectedRow(EnvironmentProjection& projection, int shooter);
