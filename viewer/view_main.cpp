@@ -68,7 +68,9 @@ int main(int argc, char** argv) {
       ->check(radmesh::cli::kPositive)
       ->capture_default_str();
   app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
-  app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")->capture_default_str();
+  app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")
+      ->transform(radmesh::cli::kThreadCount)
+      ->capture_default_str();
   std::optional<double> cacheMb;
   app.add_option("--cache-mb", cacheMb, radmesh::cli::kCacheMbHelp);
   app.add_option("--resume", args.resume, "Go on from a checkpoint of the same scene and options (radmesh solve "

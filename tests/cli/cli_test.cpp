@@ -1,4 +1,5 @@
 // The `radmesh` command as a user runs it: exit codes, messages, and the JSON others depend on.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tests/cli/cli_run.h"
@@ -246,6 +248,26 @@ TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
     EXPECT_EQ(run.exitCode, 2) << command;
     EXPECT_NE(run.output.find("is not above 0: give a number above 0"), std::string::npos) << run.output;
     EXPECT_LT(run.output.size(), 200u) << run.output;
+  }
+  run = radmesh("solve furnace --threads -1");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--threads: -1 is not a thread count: give 0 (every core) or a positive count"),
+            std::string::npos)
+      << run.output;
+}
+
+// More threads than the machine runs at once only wait, each with its own scratch: cut to that many.
+TEST(Cli, ThreadsBeyondTheMachinesAreCutToItsCount) {
+  const unsigned hardware = std::thread::hardware_concurrency();
+  if (hardware == 0) GTEST_SKIP() << "this machine does not say how many threads it runs";
+  for (const std::string command : {"solve furnace --cell 0.25 --max-iterations 2 --threads 100000",
+                                    "bench solve furnace --cell 0.25 --resolutions 16 --until 0.5 --threads 100000"}) {
+    const CommandRun run = radmesh(command);
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find(fmt::format("warning: --threads 100000 is more than the {} this machine runs at once: "
+                                          "using {}", hardware, hardware)),
+              std::string::npos)
+        << run.output;
   }
 }
 
