@@ -21,6 +21,7 @@ struct SolveFlags {
   std::string mapping = "hierarchical";
   std::string effects = "auto";   // --effects auto|all: simulate only what the scene calls for, or everything
   std::string subdivide = "off";  // --subdivide off|uniform (--min-element is options.minElementM)
+  Preset preset = Preset::Bake;   // the last --preset given
   bool strict = false;  // --strict: a scene that needed any repair is refused
   std::string cells = "off";  // --cells auto: solve cell by cell (docs/cells.md)
   int exchangeShots = 16;     // --exchange-shots: iterations per cell between portal exchanges
@@ -37,10 +38,11 @@ struct SolveFlags {
   bool cellsOn() const;  // --cells auto: parseCells(cells)
   // The solver flags given on the command line, e.g. {"--resolution", "--preset"}.
   std::vector<std::string> given() const;
-  // The cell to mesh `scene` with: --cell when given, else the one chosen from the scene's size.
+  // The cell to mesh `scene` with: --cell when given, else the one chosen from the scene's size
+  // (with --preset elements, elementsPresetCell of it).
   CellChoice cell(const Scene& scene) const;
   // cell(scene), printing why, and the default --min-element it implies for `options` (adaptive
-  // subdivision given none: a quarter of the cell).
+  // subdivision, or --preset elements, given none: a quarter of the cell).
   CellChoice announceCell(const Scene& scene, SolveOptions& options) const;
 };
 

@@ -146,13 +146,14 @@ bool parseCells(const std::string& text) {
 }
 
 void applyPreset(Preset preset, SolveOptions& o) {
-  const bool bake = preset == Preset::Bake;
-  o.projection = bake ? Projection::Hemicube : Projection::Plane;
-  o.resolution = bake ? 256 : 128;
+  const bool paper = preset == Preset::Paper, elements = preset == Preset::Elements;
+  o.projection = paper ? Projection::Plane : Projection::Hemicube;
+  o.resolution = paper ? 128 : elements ? 96 : 256;
   o.ratio = 3.0;
   o.shooters = 1;
-  o.until = bake ? 1.0 : 0.95;  // the bake stops on the unshot power alone
-  o.untilUnshot = bake ? 0.01 : 0.0;
+  o.until = paper ? 0.95 : 1.0;  // the others stop on the unshot power alone
+  o.untilUnshot = paper ? 0.0 : 0.01;
+  o.subdivide = elements ? Subdivide::Uniform : Subdivide::Off;
 }
 
 std::size_t defaultFormFactorCacheBytes() {
@@ -172,13 +173,27 @@ double checkedCacheMb(double givenMb) {
   return givenMb;
 }
 
-const char* toString(Preset preset) { return preset == Preset::Bake ? "bake" : "paper"; }
+double elementsPresetCell(double sceneCellM) {
+  const double cell = kElementsCellScale * sceneCellM;
+  const double unit = std::pow(10.0, std::floor(std::log10(cell)) - 1.0);
+  return std::round(cell / unit) * unit;
+}
+
+const char* toString(Preset preset) {
+  switch (preset) {
+    case Preset::Bake: return "bake";
+    case Preset::Paper: return "paper";
+    case Preset::Elements: return "elements";
+  }
+  return "?";
+}
 
 Preset parsePreset(const std::string& text) {
-  for (Preset p : {Preset::Bake, Preset::Paper})
+  for (Preset p : {Preset::Bake, Preset::Paper, Preset::Elements})
     if (text == toString(p)) return p;
-  throw OptionError("--preset '" + text + "' is unknown: give bake (hemicube 256, until 1 % unshot) or paper "
-                    "(single plane 128, ratio 3, until C = 0.95)");
+  throw OptionError("--preset '" + text + "' is unknown: give bake (hemicube 256, until 1 % unshot), paper "
+                    "(single plane 128, ratio 3, until C = 0.95) or elements (the bake's stop; 1 m patches shoot, "
+                    "0.25 m elements receive, hemicube 96, on a room-sized model)");
 }
 
 const char* toString(EffectsMode mode) { return mode == EffectsMode::All ? "all" : "auto"; }

@@ -82,9 +82,17 @@ struct SolveOptions {
 
 // Named settings (docs/accuracy.md): Bake, what a user can trust (the CLI's default: the
 // hemicube at 256², until 1 % of the emitted power is unshot); Paper, Varshney & Prins's (the
-// single plane at ratio 3 and 128², k = 1, until C = 0.95). Both mesh on the paper's 15-inch grid.
-// A preset sets the projection, resolution, ratio, shooters and stopping rule, nothing else.
-enum class Preset { Bake, Paper };
+// single plane at ratio 3 and 128², k = 1, until C = 0.95); both on the cell the scene's size
+// gives. Elements, the bake's picture in a fifth of its time or less: the bake's stopping rule,
+// the hemicube at 96², patches kElementsCellScale times that cell shooting and uniform elements a
+// quarter of theirs receiving (the CLI sets both sizes: cli/solve_flags.h). A preset sets the
+// projection, resolution, ratio, shooters, stopping rule and subdivision, nothing else.
+enum class Preset { Bake, Paper, Elements };
+inline constexpr double kElementsCellScale = 2.625;
+// --preset elements' patch cell for a scene whose size gives `sceneCellM`: kElementsCellScale times
+// it, to two significant figures (the paper's 0.381 m becomes 1 m). Models are drawn in round
+// measures, and a cell off them by a hair would cut a sliver along every edge on a grid line.
+double elementsPresetCell(double sceneCellM);
 void applyPreset(Preset preset, SolveOptions& options);
 // The form-factor cache a solve on the host gets unless told: 1 GiB, or a quarter of this
 // machine's memory where that is less (docs/accuracy.md, Defaults).

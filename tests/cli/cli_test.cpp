@@ -715,6 +715,43 @@ TEST(Cli, PresetPaperGivesThePapersSettingsAndExplicitFlagsWin) {
   EXPECT_NE(run.output.find("--preset 'fast' is unknown"), std::string::npos) << run.output;
 }
 
+// --preset elements: the bake's stop and the hemicube at 96², patches 2.625 times the scene's cell
+// (rounded) shooting onto uniform elements a quarter of theirs; flags beside it win.
+TEST(Cli, PresetElementsShootsFromCoarserPatchesOntoElements) {
+  const std::string stats = tempPath("stats.json");
+  CommandRun run = radmesh("solve cornell --quiet --preset elements --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("cell 0.09 m, --preset elements' 2.625 x the scene's, rounded: cell 0.0343 m, a "
+                            "sixteenth of the model's smallest extent"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("min element 0.0225 m, a quarter of the cell"), std::string::npos) << run.output;
+  auto j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["projection"], "hemicube");
+  EXPECT_EQ(j["resolution"], 96);
+  EXPECT_EQ(j["subdivide"], "uniform");
+  EXPECT_EQ(j["until"], 1.0);
+  EXPECT_EQ(j["until_unshot"], 0.01);
+  EXPECT_LE(j["unshot_fraction"].get<double>(), 0.01);
+  EXPECT_EQ(j["patches"], 384);
+  EXPECT_EQ(j["elements"], 6898);
+  EXPECT_NEAR(j["min_element"].get<double>(), 0.0225, 1e-15);
+  // --cell sets the patches, and the elements follow --min-element when given.
+  run = radmesh("solve cornell --quiet --min-element 0.05 --preset elements --cell 0.1 --resolution 64 "
+                "--max-iterations 2 --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("min element"), std::string::npos) << run.output;
+  j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["patches"], 300);
+  EXPECT_EQ(j["min_element"], 0.05);
+  EXPECT_EQ(j["resolution"], 64);
+  run = radmesh("solve cornell --quiet --subdivide off --preset elements --max-iterations 2 --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["subdivide"], "off");
+  EXPECT_EQ(j["elements"], j["patches"]);
+}
+
 // What the reader repaired is listed by info, and --strict makes each repair an error on every command.
 TEST(Cli, StrictRefusesAFileThatNeededRepairs) {
   const std::string file = std::string(RADMESH_SOURCE_DIR) + "/tests/data/repaired/mgf_unknown_entity.mgf";

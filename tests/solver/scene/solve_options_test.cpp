@@ -103,8 +103,18 @@ TEST(SolveOptions, NamesRoundTripAndUnknownNamesAreRefused) {
   for (Projection p : {Projection::Plane, Projection::Hemicube, Projection::Analytic})
     EXPECT_EQ(parseProjection(toString(p)), p);
   for (Backend b : {Backend::Native, Backend::Mesh}) EXPECT_EQ(parseBackend(toString(b)), b);
+  for (Preset p : {Preset::Bake, Preset::Paper, Preset::Elements}) EXPECT_EQ(parsePreset(toString(p)), p);
   EXPECT_THROW(parseProjection("sphere"), OptionError);
   EXPECT_THROW(parseBackend("gpu"), OptionError);
+  EXPECT_THROW(parsePreset("fast"), OptionError);
+}
+
+// Round measures stay round: a cell a hair off the model's grid would cut slivers along its edges.
+TEST(SolveOptions, ThePresetElementsCellIsTheScenesTimes2625ToTwoFigures) {
+  EXPECT_EQ(elementsPresetCell(0.381), 1.0);  // 1.000125
+  EXPECT_DOUBLE_EQ(elementsPresetCell(0.0343), 0.09);
+  EXPECT_DOUBLE_EQ(elementsPresetCell(0.75), 2.0);   // 1.96875
+  EXPECT_DOUBLE_EQ(elementsPresetCell(4.0), 11.0);   // 10.5, halfway, rounds up
 }
 
 }  // namespace
