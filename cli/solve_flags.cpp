@@ -129,8 +129,8 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option_function<std::string>(
          "--preset", [&f](const std::string& name) { applyPresetFlags(parsePreset(name), f); },
          "bake (the default: hemicube 256, until 1 % of the power is unshot), paper (Varshney & Prins: single "
-         "plane 128, ratio 3, until C = 0.95) or elements (the bake's stop, a fifth of its time or less: patches "
-         "2.625 x the cell shoot, elements a quarter of theirs receive, hemicube 96); flags given beside it win")
+         "plane 128, ratio 3, until C = 0.95) or elements (the bake, a better picture in a third of its time or "
+         "less: patches 2.625 x the cell shoot, elements a quarter of theirs receive); flags given beside it win")
       ->trigger_on_parse();
   cmd->add_option("--effects", f.effects, "auto: simulate only what the scene calls for; all: everything")
       ->capture_default_str();

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--subdivide", subdivide, "off; uniform: patches shoot, their elements receive and are shown; adaptive: elements split where the light changes (docs/accuracy.md)")
       ->capture_default_str();
-  app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch); with adaptive: the smallest split (0: a quarter of the cell)")
+  CLI::Option* minElement = app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch); with adaptive: the smallest split (0: a quarter of the cell)")
       ->capture_default_str();
   app.add_option_function<std::string>(
       "--pe-grid", [&o](const std::string& text) { radmesh::parsePeGrid(text, o.machine); },
@@ -46,6 +46,22 @@ int main(int argc, char** argv) {
   app.add_option("--resolution", o.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   app.add_option("--ratio", o.ratio, radmesh::cli::kRatioHelp)->capture_default_str();
   app.add_option("--shooters", o.shooters, "k patches shot per iteration")->capture_default_str();
+  radmesh::Preset preset = radmesh::Preset::Bake;
+  CLI::Option* presetGiven =
+      app.add_option_function<std::string>(
+             "--preset",
+             [&](const std::string& name) {
+               preset = radmesh::parsePreset(name);
+               radmesh::applyPreset(preset, o);
+               projection = radmesh::toString(o.projection);
+               subdivide = radmesh::toString(o.subdivide);
+               // The hemicube runs on the host; the paper's plane stays on the emulated machine.
+               backend = preset == radmesh::Preset::Paper ? "mesh" : "native";
+             },
+             "bake (hemicube 256 on the host), paper (single plane 128 on the emulated MP-1, to C = 0.95) or "
+             "elements (the bake, but 1 m patches shoot and 0.25 m elements receive), as radmesh solve's; "
+             "flags given beside it win")
+          ->trigger_on_parse();
   CLI::Option* cell =
       app.add_option("--cell", args.setup.cellM, "Grid cell size for meshing, metres (default: from the scene's size)");
   CLI::Option* sky = app.add_option("--sky", args.daylight.skyLux,
@@ -88,10 +104,10 @@ int main(int argc, char** argv) {
                  "print the lowest and median frame rates, save --screenshot, exit")
       ->check(radmesh::cli::kPositive);
   app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps or --frames)");
-  CLI11_PARSE(app, argc, argv);
-
   try {
+    CLI11_PARSE(app, argc, argv);  // inside: an option's own check throws OptionError while parsing
     args.cellGiven = cell->count() > 0;
+    args.elementsPreset = presetGiven->count() > 0 && preset == radmesh::Preset::Elements && minElement->count() == 0;
     if (sky->count() > 0) radmesh::checkSkyLux(args.daylight.skyLux);
     args.daylight.sky = radmesh::parseSkyModel(skyModel);
     if (!sun.empty()) args.daylight.sun = {radmesh::parseSun(sun)};

@@ -21,6 +21,9 @@ struct ViewerArgs {
   UpChoice up = UpChoice::Format;
   SolveSetup setup = viewerSetup();
   bool cellGiven = false;  // --cell; else setup.cellM is chosen from the scene's size
+  // --preset elements without --min-element: each scene's patches are elementsPresetCell of its
+  // chosen cell (unless --cell), its elements a quarter of that (solver/scene/solve_options.h).
+  bool elementsPreset = false;
   Daylight daylight;       // --sky, --sky-model
   glm::ivec2 windowSize{1280, 720};
   PanelTab firstTab = PanelTab::Progress;

@@ -148,7 +148,7 @@ bool parseCells(const std::string& text) {
 void applyPreset(Preset preset, SolveOptions& o) {
   const bool paper = preset == Preset::Paper, elements = preset == Preset::Elements;
   o.projection = paper ? Projection::Plane : Projection::Hemicube;
-  o.resolution = paper ? 128 : elements ? 96 : 256;
+  o.resolution = paper ? 128 : 256;
   o.ratio = 3.0;
   o.shooters = 1;
   o.until = paper ? 0.95 : 1.0;  // the others stop on the unshot power alone
@@ -192,8 +192,8 @@ Preset parsePreset(const std::string& text) {
   for (Preset p : {Preset::Bake, Preset::Paper, Preset::Elements})
     if (text == toString(p)) return p;
   throw OptionError("--preset '" + text + "' is unknown: give bake (hemicube 256, until 1 % unshot), paper "
-                    "(single plane 128, ratio 3, until C = 0.95) or elements (the bake's stop; 1 m patches shoot, "
-                    "0.25 m elements receive, hemicube 96, on a room-sized model)");
+                    "(single plane 128, ratio 3, until C = 0.95) or elements (the bake, but 1 m patches shoot and "
+                    "0.25 m elements receive, on a room-sized model)");
 }
 
 const char* toString(EffectsMode mode) { return mode == EffectsMode::All ? "all" : "auto"; }

@@ -83,9 +83,9 @@ struct SolveOptions {
 // Named settings (docs/accuracy.md): Bake, what a user can trust (the CLI's default: the
 // hemicube at 256², until 1 % of the emitted power is unshot); Paper, Varshney & Prins's (the
 // single plane at ratio 3 and 128², k = 1, until C = 0.95); both on the cell the scene's size
-// gives. Elements, the bake's picture in a fifth of its time or less: the bake's stopping rule,
-// the hemicube at 96², patches kElementsCellScale times that cell shooting and uniform elements a
-// quarter of theirs receiving (the CLI sets both sizes: cli/solve_flags.h). A preset sets the
+// gives. Elements, a better picture than the bake's in a third of its time or less: the bake, but
+// patches kElementsCellScale times that cell shoot and uniform elements a quarter of theirs
+// receive (the CLI sets both sizes: cli/solve_flags.h). A preset sets the
 // projection, resolution, ratio, shooters, stopping rule and subdivision, nothing else.
 enum class Preset { Bake, Paper, Elements };
 inline constexpr double kElementsCellScale = 2.625;

@@ -199,14 +199,21 @@ TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   EXPECT_NE(run.output.find("--portal-bins 17 is out of range"), std::string::npos) << run.output;
 }
 
-// radmesh-view takes --portal-bins as solve does, and refuses a count out of range the same way,
-// before any window opens.
+// radmesh-view takes --portal-bins, --preset and --pe-grid as solve does, and refuses a count out
+// of range, an unknown preset or a machine that is not one the same way, before any window opens.
 TEST(Cli, ViewerRefusesPortalBinsAsSolveDoes) {
   const std::string viewer = (test::binaryDir() / "viewer" / "radmesh-view").string();
   if (!std::filesystem::exists(viewer)) GTEST_SKIP() << "radmesh-view is not built";
   const CommandRun run = runCommand(viewer + " two-rooms --cells auto --portal-bins 17");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--portal-bins 17 is out of range"), std::string::npos) << run.output;
+  // Checks made while parsing exit 2 with the message too (they used to abort the viewer).
+  for (const auto& [flags, message] : {std::pair{"--preset fast", "--preset 'fast' is unknown: give bake"},
+                                       {"--pe-grid 3", "--pe-grid '3' is not COLSxROWS"}}) {
+    const CommandRun refused = runCommand(viewer + " two-rooms " + flags);
+    EXPECT_EQ(refused.exitCode, 2) << flags;
+    EXPECT_NE(refused.output.find(std::string("radmesh-view: error: ") + message), std::string::npos) << refused.output;
+  }
 }
 
 // CLI11's own refusals (a value not in a list, an unknown flag, a number that is not one) exit 2
@@ -715,8 +722,8 @@ TEST(Cli, PresetPaperGivesThePapersSettingsAndExplicitFlagsWin) {
   EXPECT_NE(run.output.find("--preset 'fast' is unknown"), std::string::npos) << run.output;
 }
 
-// --preset elements: the bake's stop and the hemicube at 96², patches 2.625 times the scene's cell
-// (rounded) shooting onto uniform elements a quarter of theirs; flags beside it win.
+// --preset elements: the bake, but patches 2.625 times the scene's cell (rounded) shoot onto uniform
+// elements a quarter of theirs; flags beside it win.
 TEST(Cli, PresetElementsShootsFromCoarserPatchesOntoElements) {
   const std::string stats = tempPath("stats.json");
   CommandRun run = radmesh("solve cornell --quiet --preset elements --stats " + stats);
@@ -728,7 +735,7 @@ TEST(Cli, PresetElementsShootsFromCoarserPatchesOntoElements) {
   EXPECT_NE(run.output.find("min element 0.0225 m, a quarter of the cell"), std::string::npos) << run.output;
   auto j = nlohmann::json::parse(std::ifstream(stats));
   EXPECT_EQ(j["projection"], "hemicube");
-  EXPECT_EQ(j["resolution"], 96);
+  EXPECT_EQ(j["resolution"], 256);
   EXPECT_EQ(j["subdivide"], "uniform");
   EXPECT_EQ(j["until"], 1.0);
   EXPECT_EQ(j["until_unshot"], 0.01);

@@ -3,6 +3,7 @@
 // by name (the window then keeps the scene it shows).
 #include "viewer/viewed_file.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,6 +33,27 @@ TEST(ViewedFile, AScenesCellIsChosenFromItsSizeUnlessGiven) {
   const ViewedFile given = readViewedFile("cornell", args);
   EXPECT_EQ(given.setup.cellM, 0.2);
   EXPECT_FALSE(hasNote(given, cell.why));
+}
+
+// --preset elements: each scene opened gets patches 2.625 times its own cell (rounded) and elements
+// a quarter of those, as radmesh solve's preset makes them.
+TEST(ViewedFile, ThePresetElementsSizesEachScenesPatchesAndElements) {
+  ViewerArgs args;
+  args.elementsPreset = true;
+  args.setup.options.subdivide = Subdivide::Uniform;
+  for (const auto& [scene, cellM] : {std::pair{"office", 1.0}, {"cornell", 0.09}}) {
+    const ViewedFile file = readViewedFile(scene, args);
+    EXPECT_DOUBLE_EQ(file.setup.cellM, cellM) << scene;
+    EXPECT_DOUBLE_EQ(file.setup.options.minElementM, 0.25 * cellM) << scene;
+    EXPECT_TRUE(hasNote(file, fmt::format("cell {:.4g} m, --preset elements' 2.625 x the scene's, rounded: {}", cellM,
+                                          chooseCell(file.scene).why)))
+        << scene;
+  }
+  args.cellGiven = true;  // --cell sizes the patches; the elements still follow
+  args.setup.cellM = 0.2;
+  const ViewedFile given = readViewedFile("cornell", args);
+  EXPECT_EQ(given.setup.cellM, 0.2);
+  EXPECT_DOUBLE_EQ(given.setup.options.minElementM, 0.05);
 }
 
 TEST(ViewedFile, ABakeIsWalkedAsItIsWithItsGeometryForTheFrame) {
