@@ -64,13 +64,13 @@ glm::dvec2 WalkCamera::cornerFacingFurniture(const SceneFrame& frame) {
   return glm::length(farthest - at) > 1.5 * glm::length(least - at) ? farthest : least;
 }
 
-void WalkCamera::standIn(const Vec3& boundsMin, const Vec3& boundsMax, glm::dvec2 corner) {
+void WalkCamera::standIn(const Vec3& boundsMin, const Vec3& boundsMax, glm::dvec2 corner, double reach) {
   const glm::dvec3 extent = boundsMax - boundsMin;
   const glm::dvec3 centre = boundsMin + 0.5 * horizontal(extent, up_);
   const UpFrame axes = upFrame(frame_.upAxis);
   ground_ = centre;
   const glm::dvec3 plan[2] = {axes.across, axes.along};
-  for (int k = 0; k < 2; ++k) ground_ += corner[k] * 0.35 * std::abs(glm::dot(extent, plan[k])) * plan[k];
+  for (int k = 0; k < 2; ++k) ground_ += corner[k] * reach * std::abs(glm::dot(extent, plan[k])) * plan[k];
   lookAt(centre);
 }
 

@@ -30,10 +30,13 @@ class WalkCamera {
   // then that one, so that the start view looks at the furniture, not away (office3's desk).
   static glm::dvec2 cornerFacingFurniture(const SceneFrame& frame);
 
-  // Moves to a room: near the corner of its bounds given as signs of `across` and `along` (the
-  // least corner by default, as for a building's rooms), looking level at their centre; the eye
-  // height is kept.
-  void standIn(const Vec3& boundsMin, const Vec3& boundsMax, glm::dvec2 corner = {-1.0, -1.0});
+  // Moves to a room: `reach` of its extent from the centre of its bounds towards the corner given
+  // as signs of `across` and `along` (the least corner by default), looking level at the centre;
+  // the eye height is kept.
+  void standIn(const Vec3& boundsMin, const Vec3& boundsMax, glm::dvec2 corner = {-1.0, -1.0}, double reach = 0.35);
+  // A cell's bounds are its free space's voxels', up to a voxel past its walls on every side: 0.35
+  // of them from the centre stood in the spine's outer wall on building:2x2.
+  static constexpr double kCellReach = 0.25;
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
 

@@ -145,7 +145,8 @@ class ShownSolve : public Shown {
       placedGeneration_ = s.generation;
       const std::vector<Cell>& cells = s.cells->partition->cells;
       if (!s.cells->eyeInFocus && s.cells->focus < static_cast<int>(cells.size()))
-        camera.standIn(cells[s.cells->focus].boundsMin, cells[s.cells->focus].boundsMax);
+        camera.standIn(cells[s.cells->focus].boundsMin, cells[s.cells->focus].boundsMax, {-1.0, -1.0},
+                       WalkCamera::kCellReach);
     }
   }
   bool meshShown() const override { return feed_.shown().mesh != nullptr; }

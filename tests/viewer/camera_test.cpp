@@ -5,7 +5,9 @@
 
 #include <cmath>
 
+#include "solver/cells/find_cells.h"
 #include "solver/io/scene_loader.h"
+#include "solver/meshing/meshing.h"
 #include "solver/scene/up_axis.h"
 #include "tests/test_paths.h"
 
@@ -33,6 +35,24 @@ TEST(WalkCamera, StartsInsideAClosedRoomAtEyeHeightLookingLevelAtTheCentre) {
   const Vec3 toCentre = Vec3(3.5, 2.5, 1.6) - view.eye;
   EXPECT_NEAR(glm::dot(glm::normalize(view.look - view.eye), glm::normalize(toCentre)), 1.0, 1e-12);
   EXPECT_NO_THROW(validateView(view));
+}
+
+// The viewer sends a camera outside every room into the room solved first. On building:2x2 it
+// starts in the wall between the spine and the first room, and 0.35 of the spine's cell bounds
+// (its voxels', reaching past the corridor's walls) from their centre stood it in the outer wall.
+TEST(WalkCamera, ACellsRoomIsEnteredInsideItsWalls) {
+  const Scene building = loadScene("building:2x2");
+  const CellPartition partition = findCells(building, meshScene(building));
+  const Cell& spine = partition.cells.at(0);
+  ASSERT_EQ(spine.name, "spine");
+  ASSERT_LT(spine.boundsMin.x, -0.2);  // past the outer wall, which is 0.2 m thick at x < 0
+  WalkCamera camera(sceneFrame(building));
+  camera.standIn(spine.boundsMin, spine.boundsMax, {-1.0, -1.0}, WalkCamera::kCellReach);
+  const Vec3 eye = camera.view().eye;
+  EXPECT_GT(eye.x, 0.0);  // inside the 2.4 m wide corridor
+  EXPECT_LT(eye.x, 2.4);
+  EXPECT_GT(eye.y, 0.0);
+  EXPECT_LT(eye.y, spine.boundsMax.y);
 }
 
 // A 4 x 4 m room (6 faces) with a 1 m square desk top at 0.75 m whose corner is at (x, y).
