@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "solver/scene/up_axis.h"
 
@@ -40,7 +41,35 @@ WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
     // A bake, turned from one frame onto another, starts where its scene does.
     eyeHeightM = std::min(1.6, 0.6 * frame.heightM());
     standIn(frame.boundsMin, frame.boundsMax, cornerFacingFurniture(frame));
+    stepIntoFreeSpace();
   }
+}
+
+void WalkCamera::stepIntoFreeSpace() {
+  constexpr double kStepM = 0.25, kReachM = 4.0, kClearM = 0.3;
+  auto eyeAt = [&](const glm::dvec3& ground) {
+    return ground + up_ * (frame_.floorLevel() - glm::dot(ground, up_) + eyeHeightM);
+  };
+  if (freeSpaceAt(frame_, eyeAt(ground_), kClearM)) return;
+  const UpFrame axes = upFrame(frame_.upAxis);
+  const glm::dvec3 start = ground_;
+  for (int ring = 1; ring * kStepM <= kReachM; ++ring)  // the square rings of a grid round the start
+    for (int i = -ring; i <= ring; ++i)
+      for (int j = -ring; j <= ring; ++j) {
+        if (std::max(std::abs(i), std::abs(j)) != ring) continue;
+        const glm::dvec3 ground = start + kStepM * (double(i) * axes.across + double(j) * axes.along);
+        if (!freeSpaceAt(frame_, eyeAt(ground), kClearM)) continue;
+        // Looking the longest way clear from there, every 45 degrees: down a corridor, across a room.
+        ground_ = ground;
+        double longest = -1.0;
+        for (int k = 0; k < 8; ++k) {
+          const double a = k * 0.25 * std::numbers::pi;
+          const glm::dvec3 direction = std::cos(a) * axes.across + std::sin(a) * axes.along;
+          const double clear = clearDistance(frame_, eyeAt(ground), direction);
+          if (clear > longest) longest = clear, forward_ = direction;
+        }
+        return;
+      }
 }
 
 glm::dvec2 WalkCamera::cornerFacingFurniture(const SceneFrame& frame) {

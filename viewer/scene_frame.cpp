@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+
+#include "solver/scene/up_axis.h"
 
 namespace radmesh {
 
@@ -42,10 +45,12 @@ int openSide(const std::vector<FrameFace>& faces, const SceneFrame& frame) {
 
 }  // namespace
 
-SceneFrame frameOf(const std::vector<FrameFace>& faces, int upAxis) {
+SceneFrame frameOf(std::vector<FrameFace> faceList, int upAxis) {
   SceneFrame frame;
   frame.upAxis = upAxis;
-  if (faces.empty()) return frame;
+  if (faceList.empty()) return frame;
+  frame.faces = std::make_shared<const std::vector<FrameFace>>(std::move(faceList));
+  const std::vector<FrameFace>& faces = *frame.faces;
   frame.boundsMin = Vec3(std::numeric_limits<double>::infinity());
   frame.boundsMax = -frame.boundsMin;
   for (const FrameFace& face : faces)
@@ -73,12 +78,58 @@ SceneFrame frameOf(const std::vector<FrameFace>& faces, int upAxis) {
   return frame;
 }
 
+namespace {
+
+// The nearest face the ray from `origin` along the unit `direction` crosses: its distance, and
+// whether it shows the origin its front. Infinity where it crosses none.
+std::pair<double, bool> nearestFace(const std::vector<FrameFace>& faces, const Vec3& origin, const Vec3& direction) {
+  std::pair<double, bool> nearest{std::numeric_limits<double>::infinity(), false};
+  for (const FrameFace& face : faces) {
+    const Vec3 n = newellNormal(face.vertices);
+    const double along = glm::dot(n, direction);
+    if (along == 0.0) continue;
+    const double t = glm::dot(n, face.vertices[0] - origin) / along;
+    if (!(t > 0.0 && t < nearest.first)) continue;
+    // Is the crossing inside the polygon? Even-odd, in the plane of its two minor axes.
+    const Vec3 q = origin + t * direction;
+    const Vec3 m = glm::abs(n);
+    const int drop = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+    const int a = (drop + 1) % 3, b = (drop + 2) % 3;
+    bool in = false;
+    for (size_t i = 0, j = face.vertices.size() - 1; i < face.vertices.size(); j = i++) {
+      const Vec3& p = face.vertices[i];
+      const Vec3& r = face.vertices[j];
+      if ((p[b] > q[b]) != (r[b] > q[b]) && q[a] < (r[a] - p[a]) * (q[b] - p[b]) / (r[b] - p[b]) + p[a]) in = !in;
+    }
+    if (in) nearest = {t, along < 0.0};
+  }
+  return nearest;
+}
+
+}  // namespace
+
+bool freeSpaceAt(const SceneFrame& frame, const Vec3& eye, double clearM) {
+  if (!frame.faces) return true;
+  const UpFrame axes = upFrame(frame.upAxis);
+  for (const Vec3& direction : {axes.up, -axes.up})
+    if (!nearestFace(*frame.faces, eye, direction).second) return false;
+  for (const Vec3& direction : {axes.across, -axes.across, axes.along, -axes.along}) {
+    const auto [distance, front] = nearestFace(*frame.faces, eye, direction);
+    if (!front || distance < clearM) return false;
+  }
+  return true;
+}
+
+double clearDistance(const SceneFrame& frame, const Vec3& eye, const Vec3& direction) {
+  return frame.faces ? nearestFace(*frame.faces, eye, direction).first : 0.0;
+}
+
 SceneFrame sceneFrame(const Scene& scene) {
   std::vector<FrameFace> faces;
   faces.reserve(scene.polygons.size());
   for (const Polygon& polygon : scene.polygons)
     faces.push_back({polygon.vertices});
-  return frameOf(faces, scene.upAxis);
+  return frameOf(std::move(faces), scene.upAxis);
 }
 
 }  // namespace radmesh

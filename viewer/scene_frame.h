@@ -1,11 +1,17 @@
 #pragma once
 // What a walkthrough needs to know about a scene's geometry: its bounds, which axis is up, and
 // whether one side of it is open (a Cornell box is looked into from its open front).
+#include <memory>
 #include <vector>
 
 #include "solver/scene/scene.h"
 
 namespace radmesh {
+
+// A planar face of the geometry (polygon or triangle), counter-clockwise seen from its front.
+struct FrameFace {
+  std::vector<Vec3> vertices;
+};
 
 struct SceneFrame {
   Vec3 boundsMin{0.0};
@@ -18,16 +24,20 @@ struct SceneFrame {
   // floor and the ceiling (desk tops, seats), and their area; 0 in an empty room.
   Vec3 furnitureCentre{0.0};
   double furnitureAreaM2 = 0.0;
+  // The faces it was made from (shared: frames are copied), for freeSpaceAt.
+  std::shared_ptr<const std::vector<FrameFace>> faces;
   double floorLevel() const { return boundsMin[upAxis]; }
   double heightM() const { return boundsMax[upAxis] - boundsMin[upAxis]; }
 };
 
-// A planar face of the geometry (polygon or triangle), counter-clockwise seen from its front.
-struct FrameFace {
-  std::vector<Vec3> vertices;
-};
+SceneFrame frameOf(std::vector<FrameFace> faces, int upAxis);
 
-SceneFrame frameOf(const std::vector<FrameFace>& faces, int upAxis);
+// Whether an eye at `eye` stands in free space: the nearest face straight above it and straight
+// below it, and along each direction of the plan, shows it its front, none of the four in the plan
+// nearer than `clearM`. Inside a wall the nearest faces show their backs. True without faces.
+bool freeSpaceAt(const SceneFrame& frame, const Vec3& eye, double clearM);
+// How far the eye sees along the unit `direction` before a face (infinity: none; 0 without faces).
+double clearDistance(const SceneFrame& frame, const Vec3& eye, const Vec3& direction);
 
 // A scene's frame, with the scene's up axis.
 SceneFrame sceneFrame(const Scene& scene);

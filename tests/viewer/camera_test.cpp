@@ -55,6 +55,25 @@ TEST(WalkCamera, ACellsRoomIsEnteredInsideItsWalls) {
   EXPECT_LT(eye.y, spine.boundsMax.y);
 }
 
+// building:2x2's start, 0.35 of the bounds from their centre, falls in the wall between the spine
+// and the first room (x 2.4 to 2.6): the render and a walk without cells showed a wall's inside.
+// It steps to the nearest free space, the spine, and looks down it.
+TEST(WalkCamera, AStartInsideAWallStepsIntoTheNearestFreeSpace) {
+  const SceneFrame frame = sceneFrame(loadScene("building:2x2"));
+  const RenderView view = WalkCamera(frame).view();
+  EXPECT_TRUE(freeSpaceAt(frame, view.eye, 0.3));
+  EXPECT_FALSE(freeSpaceAt(frame, Vec3(2.44, 1.9, 1.6), 0.3));  // where it would have stood
+  EXPECT_GT(view.eye.x, 0.0);  // in the 2.4 m wide spine
+  EXPECT_LT(view.eye.x, 2.4);
+  EXPECT_LT(glm::distance(view.eye, Vec3(2.44, 1.9, 1.6)), 4.0 * std::sqrt(2.0));
+  EXPECT_GT(clearDistance(frame, view.eye, glm::normalize(view.look - view.eye)), 5.0);  // down the corridor
+  // A start in free space stays where it was: the office's.
+  const SceneFrame office = sceneFrame(loadScene("office"));
+  const Vec3 eye = WalkCamera(office).view().eye;
+  EXPECT_TRUE(freeSpaceAt(office, eye, 0.3));
+  EXPECT_NEAR(eye.x, office.boundsMin.x + 0.15 * (office.boundsMax.x - office.boundsMin.x), 1e-9);
+}
+
 // A 4 x 4 m room (6 faces) with a 1 m square desk top at 0.75 m whose corner is at (x, y).
 std::vector<FrameFace> roomWithDesk(double x, double y) {
   const double s = 4.0, h = 2.7;
