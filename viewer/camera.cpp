@@ -46,27 +46,32 @@ WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
 }
 
 void WalkCamera::stepIntoFreeSpace() {
-  constexpr double kStepM = 0.25, kReachM = 4.0, kClearM = 0.3;
+  constexpr double kStepM = 0.25, kReachM = 4.0;
+  const UpFrame axes = upFrame(frame_.upAxis);
+  // 0.3 m from any wall, or a tenth of a model smaller than 3 m across (the 1 m furnace's corner).
+  const glm::dvec3 extent = frame_.boundsMax - frame_.boundsMin;
+  const double clearM =
+      std::min(0.3, 0.1 * std::min(std::abs(glm::dot(extent, axes.across)), std::abs(glm::dot(extent, axes.along))));
   auto eyeAt = [&](const glm::dvec3& ground) {
     return ground + up_ * (frame_.floorLevel() - glm::dot(ground, up_) + eyeHeightM);
   };
-  if (freeSpaceAt(frame_, eyeAt(ground_), kClearM)) return;
-  const UpFrame axes = upFrame(frame_.upAxis);
+  if (freeSpaceAt(frame_, eyeAt(ground_), clearM)) return;
   const glm::dvec3 start = ground_;
   for (int ring = 1; ring * kStepM <= kReachM; ++ring)  // the square rings of a grid round the start
     for (int i = -ring; i <= ring; ++i)
       for (int j = -ring; j <= ring; ++j) {
         if (std::max(std::abs(i), std::abs(j)) != ring) continue;
         const glm::dvec3 ground = start + kStepM * (double(i) * axes.across + double(j) * axes.along);
-        if (!freeSpaceAt(frame_, eyeAt(ground), kClearM)) continue;
-        // Looking the longest way clear from there, every 45 degrees: down a corridor, across a room.
+        if (!freeSpaceAt(frame_, eyeAt(ground), clearM)) continue;
+        // Looking the longest way clear from there to a face, every 45 degrees: down a corridor,
+        // across a room, not out through a window.
         ground_ = ground;
         double longest = -1.0;
         for (int k = 0; k < 8; ++k) {
           const double a = k * 0.25 * std::numbers::pi;
           const glm::dvec3 direction = std::cos(a) * axes.across + std::sin(a) * axes.along;
           const double clear = clearDistance(frame_, eyeAt(ground), direction);
-          if (clear > longest) longest = clear, forward_ = direction;
+          if (std::isfinite(clear) && clear > longest) longest = clear, forward_ = direction;
         }
         return;
       }

@@ -48,7 +48,7 @@ class WalkCamera {
   void lookAt(const glm::dvec3& target);  // level, from where it stands
   // Where the start stands in no room (in a wall between a building's rooms, in its courtyard): to
   // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m, looking the longest
-  // way clear.
+  // way clear to a face.
   void stepIntoFreeSpace();
 
   SceneFrame frame_;

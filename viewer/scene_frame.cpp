@@ -115,7 +115,7 @@ bool freeSpaceAt(const SceneFrame& frame, const Vec3& eye, double clearM) {
     if (!nearestFace(*frame.faces, eye, direction).second) return false;
   for (const Vec3& direction : {axes.across, -axes.across, axes.along, -axes.along}) {
     const auto [distance, front] = nearestFace(*frame.faces, eye, direction);
-    if (!front || distance < clearM) return false;
+    if (std::isfinite(distance) && (!front || distance < clearM)) return false;  // none: an opening
   }
   return true;
 }

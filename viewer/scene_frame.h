@@ -33,8 +33,9 @@ struct SceneFrame {
 SceneFrame frameOf(std::vector<FrameFace> faces, int upAxis);
 
 // Whether an eye at `eye` stands in free space: the nearest face straight above it and straight
-// below it, and along each direction of the plan, shows it its front, none of the four in the plan
-// nearer than `clearM`. Inside a wall the nearest faces show their backs. True without faces.
+// below it shows it its front, and so does the nearest along each direction of the plan, if any (a
+// window or a door may open on nothing), none of those nearer than `clearM`. Inside a wall the
+// nearest faces show their backs; in a courtyard nothing is above. True without faces.
 bool freeSpaceAt(const SceneFrame& frame, const Vec3& eye, double clearM);
 // How far the eye sees along the unit `direction` before a face (infinity: none; 0 without faces).
 double clearDistance(const SceneFrame& frame, const Vec3& eye, const Vec3& direction);
