@@ -39,14 +39,8 @@ std::vector<std::string> SolveFlags::given() const {
 
 CellChoice SolveFlags::cell(const Scene& scene) const {
   const bool cellGiven = contains(given(), "--cell");
-  CellChoice chosen = commandCell(scene, cellM, cellGiven);
-  if (preset == Preset::Elements && !cellGiven) {
-    const double patchCell = elementsPresetCell(chosen.cellM);
-    chosen.why = fmt::format("cell {:.4g} m, --preset elements' {:.4g} x the scene's, rounded: {}", patchCell,
-                             kElementsCellScale, chosen.why);
-    chosen.cellM = patchCell;
-  }
-  return chosen;
+  const CellChoice chosen = commandCell(scene, cellM, cellGiven);
+  return preset == Preset::Elements && !cellGiven ? elementsPresetChoice(chosen) : chosen;
 }
 
 CellChoice SolveFlags::announceCell(const Scene& scene, SolveOptions& options) const {
@@ -56,7 +50,7 @@ CellChoice SolveFlags::announceCell(const Scene& scene, SolveOptions& options) c
       preset == Preset::Elements && options.subdivide == Subdivide::Uniform && !contains(given(), "--min-element");
   if (presetElements) options.minElementM = 0.25 * chosen.cellM;
   if (presetElements || defaultMinElement(options, chosen.cellM))
-    fmt::print("min element {:.4g} m, a quarter of the cell (--min-element sets it)\n", options.minElementM);
+    fmt::print("{}\n", quarterMinElementNote(options.minElementM));
   return chosen;
 }
 

@@ -1,7 +1,5 @@
 #include "viewer/viewed_file.h"
 
-#include <fmt/format.h>
-
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
 
@@ -23,17 +21,13 @@ ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args) {
   if (!upChosen.empty()) file.notes.push_back(upChosen);
   if (file.bake) return file;
   if (!args.cellGiven) {
-    const CellChoice cell = chooseCell(file.scene);
-    file.setup.cellM = args.elementsPreset ? elementsPresetCell(cell.cellM) : cell.cellM;
-    file.notes.push_back(args.elementsPreset
-                             ? fmt::format("cell {:.4g} m, --preset elements' {:.4g} x the scene's, rounded: {}",
-                                           file.setup.cellM, kElementsCellScale, cell.why)
-                             : cell.why);
+    const CellChoice cell = args.elementsPreset ? elementsPresetChoice(chooseCell(file.scene)) : chooseCell(file.scene);
+    file.setup.cellM = cell.cellM;
+    file.notes.push_back(cell.why);
   }
   if (args.elementsPreset && file.setup.options.subdivide == Subdivide::Uniform) {
     file.setup.options.minElementM = 0.25 * file.setup.cellM;
-    file.notes.push_back(fmt::format("min element {:.4g} m, a quarter of the cell (--min-element sets it)",
-                                     file.setup.options.minElementM));
+    file.notes.push_back(quarterMinElementNote(file.setup.options.minElementM));
   }
   return file;
 }

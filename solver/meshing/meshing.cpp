@@ -9,6 +9,7 @@
 #include "solver/geometry/polygon_clip.h"
 #include "solver/geometry/polygon_convex.h"
 #include "solver/scene/scene_error.h"
+#include "solver/scene/solve_options.h"
 
 namespace radmesh {
 
@@ -235,6 +236,12 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
     }
   }
   return patches;
+}
+
+CellChoice elementsPresetChoice(const CellChoice& sceneCell) {
+  const double cellM = elementsPresetCell(sceneCell.cellM);
+  return {cellM, fmt::format("cell {:.4g} m, --preset elements' {:.4g} x the scene's, rounded: {}", cellM,
+                             kElementsCellScale, sceneCell.why)};
 }
 
 CellChoice chooseCell(const Scene& scene) {

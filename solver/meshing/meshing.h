@@ -24,6 +24,8 @@ struct CellChoice {
 // would be 42 patches at 15 inches); and for a model so large that 15 inches would make more than
 // about kCellPatchBudget patches, the cell of that many.
 CellChoice chooseCell(const Scene& scene);
+// --preset elements' patch cell from the scene's choice: elementsPresetCell of it, and why.
+CellChoice elementsPresetChoice(const CellChoice& sceneCell);
 
 // Throws OptionError naming --cell unless cellM is finite and positive.
 void checkCell(double cellM);

@@ -92,6 +92,10 @@ bool defaultMinElement(SolveOptions& o, double cellM) {
   return true;
 }
 
+std::string quarterMinElementNote(double minElementM) {
+  return fmt::format("min element {:.4g} m, a quarter of the cell (--min-element sets it)", minElementM);
+}
+
 void parsePeGrid(const std::string& text, PeMachine& machine) {
   auto whole = [&](std::string_view part, int& value) {
     const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);

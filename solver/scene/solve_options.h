@@ -118,6 +118,8 @@ void checkAdaptiveMinElement(const SolveOptions& options);
 // Adaptive subdivision given no minElementM splits down to a quarter of the meshing cell:
 // docs/accuracy.md measures finer splits scoring worse on every scene. True when it set it.
 bool defaultMinElement(SolveOptions& options, double cellM);
+// What the user is told of a --min-element taken as a quarter of the cell.
+std::string quarterMinElementNote(double minElementM);
 
 const char* toString(Projection projection);
 const char* toString(Backend backend);
