@@ -220,8 +220,7 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
     int pe = 0;
     int patch = 0;
     bool seenFromFront = false;
-    double areaPixels = 0.0;  // 0 where not projected
-    double widthPixels = 0.0;
+    double areaPixels = 0.0, widthPixels = 0.0;  // 0 where not projected
     long long coveredPixels = 0;
   };
   std::vector<Seen> held;
@@ -236,12 +235,9 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
   std::vector<char> seenFromFront(n, 0);
   std::vector<double> projectedAreaPixels(n, 0.0), projectedWidthPixels(n, 0.0);
   std::vector<long long> coveredPixels(n, 0), shownPixels(n, 0);
-  for (const Seen& s : emu::gatherByPe(machine_, std::move(held))) {
-    seenFromFront[s.patch] = s.seenFromFront;
-    projectedAreaPixels[s.patch] = s.areaPixels;
-    projectedWidthPixels[s.patch] = s.widthPixels;
-    coveredPixels[s.patch] = s.coveredPixels;
-  }
+  for (const Seen& s : emu::gatherByPe(machine_, std::move(held)))
+    seenFromFront[s.patch] = s.seenFromFront, projectedAreaPixels[s.patch] = s.areaPixels,
+    projectedWidthPixels[s.patch] = s.widthPixels, coveredPixels[s.patch] = s.coveredPixels;
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
     for (int id : buffer.items)
