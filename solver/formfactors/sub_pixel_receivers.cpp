@@ -55,8 +55,7 @@ void refineSubPixelReceivers(const ProjectedShot& shot, ThreadPool& pool,
                              std::vector<double>& formFactors) {
   std::vector<int> candidates;
   for (size_t j = 0; j < shot.projectedAreaPixels.size(); ++j)
-    if (shot.projectedAreaPixels[j] > 0.0 &&
-        (shot.projectedAreaPixels[j] < kSubPixelAreaPixels || shot.projectedWidthPixels[j] < kThinWidthPixels))
+    if (shot.projectedAreaPixels[j] > 0.0 && refinedAnalytically(shot.projectedAreaPixels[j], shot.projectedWidthPixels[j]))
       candidates.push_back(static_cast<int>(j));
   if (candidates.empty()) return;
 

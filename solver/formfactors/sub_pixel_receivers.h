@@ -3,7 +3,7 @@
 // (it gets nothing) or hits it (it gets the whole pixel's delta form factor): the aliasing of the
 // paper's section 1.6, which for a patch 1e-6 the size of its neighbour makes its radiosity 0 or
 // absurd, and which for a sliver (a wall's 0.1 m strip between a grid line and a door's top) moves
-// with the resolution alike along the whole strip: 25 % dark at 96², 8 % bright at 128². Such a
+// with the resolution alike along the whole strip: a fifth dark at 96², an eighth bright at 128². Such a
 // patch gets instead the analytic point-to-polygon form factor (Baum, Rushmeier & Winget 1989:
 // analytic form factors, visibility from the projection), times the fraction of the pixel centres
 // it covers that show it; one covering none is seen where the item buffer shows nothing in front
@@ -21,6 +21,10 @@ namespace radmesh {
 
 inline constexpr double kSubPixelAreaPixels = 1.0;  // projected area below which a patch is refined
 inline constexpr double kThinWidthPixels = 4.0;     // so is one narrower than this (PolygonSetup::widthPixels)
+// Whether a projected patch (areaPixels > 0) is refined: smaller than a pixel, or thin.
+inline bool refinedAnalytically(double areaPixels, double widthPixels) {
+  return areaPixels < kSubPixelAreaPixels || widthPixels < kThinWidthPixels;
+}
 
 struct ProjectedShot {  // what one environment projection left behind
   const std::vector<Patch>& patches;  // the receivers: patches, or elements (solver/meshing/elements.h)

@@ -227,9 +227,10 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
   for (int j = 0; j < layout_.patches; ++j) {
     if (!machine_.holds(layout_.peOf(j))) continue;
     const PatchProjection& p = shot.projection(layout_.peOf(j), layout_.slotOf(j), plane);
-    held.push_back(p.projected ? Seen{layout_.peOf(j), j, p.seenFromFront, p.setup.areaPixels, p.setup.widthPixels,
-                                      coveredPixelCount(p.setup)}
-                               : Seen{layout_.peOf(j), j, p.seenFromFront});
+    Seen s{layout_.peOf(j), j, p.seenFromFront};
+    if (p.projected) s.areaPixels = p.setup.areaPixels, s.widthPixels = p.setup.widthPixels;
+    if (p.projected && refinedAnalytically(s.areaPixels, s.widthPixels)) s.coveredPixels = coveredPixelCount(p.setup);
+    held.push_back(s);
   }
   const auto n = static_cast<size_t>(layout_.patches);
   std::vector<char> seenFromFront(n, 0);
@@ -240,8 +241,7 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
     projectedWidthPixels[s.patch] = s.widthPixels, coveredPixels[s.patch] = s.coveredPixels;
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
-    for (int id : buffer.items)
-      if (id != ItemBuffer::kNone) ++shownPixels[id];
+    for (int id : buffer.items) if (id != ItemBuffer::kNone) ++shownPixels[id];
     const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
                                   projectedAreaPixels, projectedWidthPixels, coveredPixels, shownPixels};
     refineSubPixelReceivers(projected, hostPool_, formFactors);

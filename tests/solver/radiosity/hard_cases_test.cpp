@@ -146,7 +146,7 @@ TEST(HardCases, SliverTrianglesOfAspect1e4) {
 // (building:1x1 at --cell 1): the strip is 2 to 3.2 pixels tall on the hemicube's side face at
 // these resolutions, and whether a row of pixel centres more or less falls in it moves with the
 // resolution. Pixel sums alone were 7 % low for this light at 96², and in the whole solve the
-// strip's elements 25 % dark at 95² and 96², alike along the whole wall: a dark line.
+// strip's elements a fifth dark at 95² and 96², alike along the whole wall: a dark line.
 TEST(HardCases, AStripAFewPixelsTallGetsItsFormFactorAtAnyResolution) {
   TestScene t;
   t.scene.source = "strip";
