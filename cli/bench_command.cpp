@@ -62,7 +62,7 @@ void addBenchSolve(CLI::App* bench) {
       ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->transform(kThreadCount)->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->transform(threadCount("radmesh"))->capture_default_str();
   addCacheOption(cmd, args->cacheMb);
   cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
@@ -109,7 +109,7 @@ void addBenchAccuracy(CLI::App* bench) {
                   "And the most unshot power the reference may leave, as a fraction of the emitted")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")
-      ->transform(kThreadCount)
+      ->transform(threadCount("radmesh"))
       ->capture_default_str();
   cmd->add_option("--projections", args->projections, "Projections: plane (ratios 3 and 5), hemicube")
       ->delimiter(',')->capture_default_str();

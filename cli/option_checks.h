@@ -26,20 +26,22 @@ inline const CLI::Validator kNonNegative = numberAbove(0.0, true);
 
 // --threads: 0 (every core) or a count, at most the machine's hardware threads. More only wait
 // for a core, each holding its own scratch (a patch index per patch), so they are cut to that
-// many, with a warning.
-inline const CLI::Validator kThreadCount(
-    [](std::string& text) -> std::string {
+// many, with a warning under the program's name.
+inline CLI::Validator threadCount(const char* program) {
+  return CLI::Validator(
+    [program](std::string& text) -> std::string {
       int value = 0;
       if (!CLI::detail::lexical_cast(text, value) || value < 0)
         return text + " is not a thread count: give 0 (every core) or a positive count";
       const int hardware = static_cast<int>(std::thread::hardware_concurrency());
       if (hardware > 0 && value > hardware) {
-        std::fprintf(stderr, "radmesh: warning: --threads %d is more than the %d this machine runs at once: using %d\n",
-                     value, hardware, hardware);
+        std::fprintf(stderr, "%s: warning: --threads %d is more than the %d this machine runs at once: using %d\n",
+                     program, value, hardware, hardware);
         text = std::to_string(hardware);
       }
       return {};
     },
     "THREADS");
+}
 
 }  // namespace radmesh::cli

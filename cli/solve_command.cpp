@@ -94,9 +94,9 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
     fmt::print("resumed from {} after round {} ({} iterations)\n", args.resumePath, solver->rounds(),
                solver->iterations());
   }
-  fmt::print("solving {} cell by cell: {} patches, {} {}x{}, k={}, until {:g}% unshot\n", scene.source,
-             solver->patches().size(), toString(options.projection), options.resolution, options.resolution,
-             options.shooters, 100.0 * options.untilUnshot);
+  fmt::print("solving {} cell by cell: {} patches, {}, k={}, until {:g}% unshot\n", scene.source,
+             solver->patches().size(), projectionText(options.projection, options.resolution), options.shooters,
+             100.0 * options.untilUnshot);
   double lastCheckpoint = 0.0;
   const double seconds = solveCellsWithProgress(*solver, args.quiet, [&](double elapsed) {
     if (!(args.checkpointEverySeconds > 0.0)) return;
@@ -149,9 +149,8 @@ void run(const SolveArgs& args, Processes* processes) {
   if (options.until < 1.0) until = fmt::format("C={:.2f}", options.until);
   if (options.untilUnshot > 0.0)
     until += fmt::format("{}{:g}% unshot", until.empty() ? "" : " or ", 100.0 * options.untilUnshot);
-  fmt::print("solving {}: {}, {} {}x{}, k={}, until {}\n", scene.source, patchesText(solver),
-             toString(options.projection), options.resolution, options.resolution, options.shooters,
-             until.empty() ? "C=1" : until);
+  fmt::print("solving {}: {}, {}, k={}, until {}\n", scene.source, patchesText(solver),
+             projectionText(options.projection, options.resolution), options.shooters, until.empty() ? "C=1" : until);
   const ProjectionSummary capture = solver.projectionSummary();
   if (options.projection != Projection::Analytic)
     fmt::print("projection catches {:.6f} of each shot (closed form), {:.6f} as the sum of its delta form factors\n",

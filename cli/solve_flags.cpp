@@ -140,7 +140,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--until-unshot", f.options.untilUnshot, kUntilUnshotHelp)
       ->capture_default_str();
   cmd->add_option("--max-iterations", f.options.maxIterations, "Stop after this many iterations")->capture_default_str();
-  cmd->add_option("--threads", f.options.threads, "Host threads; 0 uses every core")->transform(kThreadCount)->capture_default_str();
+  cmd->add_option("--threads", f.options.threads, "Host threads; 0 uses every core")->transform(threadCount("radmesh"))->capture_default_str();
   cmd->add_option_function<double>(
          "--cache-mb",
          [&f](double mb) { f.cacheMb = checkedCacheMb(mb); },

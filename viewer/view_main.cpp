@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
   app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")
-      ->transform(radmesh::cli::kThreadCount)
+      ->transform(radmesh::cli::threadCount("radmesh-view"))
       ->capture_default_str();
   std::optional<double> cacheMb;
   app.add_option("--cache-mb", cacheMb, radmesh::cli::kCacheMbHelp);

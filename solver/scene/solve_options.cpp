@@ -123,6 +123,11 @@ const char* toString(Projection projection) {
   return "?";
 }
 
+std::string projectionText(Projection projection, int resolution) {
+  if (projection == Projection::Analytic) return toString(projection);
+  return fmt::format("{} {}x{}", toString(projection), resolution, resolution);
+}
+
 const char* toString(Backend backend) {
   switch (backend) {
     case Backend::Native: return "native";

@@ -122,6 +122,8 @@ bool defaultMinElement(SolveOptions& options, double cellM);
 std::string quarterMinElementNote(double minElementM);
 
 const char* toString(Projection projection);
+// The projection as a solve reports it: with its N x N, which analytic form factors do not have.
+std::string projectionText(Projection projection, int resolution);
 const char* toString(Backend backend);
 Projection parseProjection(const std::string& text);  // throws OptionError
 Backend parseBackend(const std::string& text);        // throws OptionError

@@ -271,11 +271,25 @@ TEST(Cli, ThreadsBeyondTheMachinesAreCutToItsCount) {
                                     "bench solve furnace --cell 0.25 --resolutions 16 --until 0.5 --threads 100000"}) {
     const CommandRun run = radmesh(command);
     EXPECT_EQ(run.exitCode, 0) << run.output;
-    EXPECT_NE(run.output.find(fmt::format("warning: --threads 100000 is more than the {} this machine runs at once: "
-                                          "using {}", hardware, hardware)),
+    EXPECT_NE(run.output.find(fmt::format("radmesh: warning: --threads 100000 is more than the {} this machine runs "
+                                          "at once: using {}", hardware, hardware)),
               std::string::npos)
         << run.output;
   }
+  // The viewer warns under its own name (refused right after, before a window opens).
+  const std::string viewer = (test::binaryDir() / "viewer" / "radmesh-view").string();
+  if (!std::filesystem::exists(viewer)) return;
+  const CommandRun run = runCommand(viewer + " two-rooms --cells auto --threads 100000 --portal-bins 17");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("radmesh-view: warning: --threads 100000"), std::string::npos) << run.output;
+}
+
+// Analytic form factors have no N x N: the solve line names the projection alone.
+TEST(Cli, AnAnalyticSolveSaysNoResolution) {
+  const CommandRun run = radmesh("solve furnace --projection analytic --max-iterations 2");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("patches, analytic, k=1,"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("analytic 256x256"), std::string::npos) << run.output;
 }
 
 TEST(Cli, EveryBadFileIsRefusedWithItsNameAndNoCrash) {
