@@ -116,6 +116,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
     if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }
   if (args.outPath.empty()) return;
+  solver->dropFormFactorCaches();  // the bake's gathering would otherwise come on top of them
   const Elements elements = solver->elements();  // every process gathers them together
   const std::vector<Rgb> radiosity = solver->displayElementRadiosity();
   if (writes) writeBake(args.outPath, elements.elements, radiosity, scene.upAxis);
@@ -182,6 +183,8 @@ void run(const SolveArgs& args, Processes* processes) {
     if (processes) stats["distributed"] = processes->meshStats(solver);
     if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }
+  if (args.outPath.empty()) return;
+  solver.dropFormFactorCache();
   if (writes) writeBake(args.outPath, solver.elements(), solver.displayElementRadiosity(), scene.upAxis);
 }
 

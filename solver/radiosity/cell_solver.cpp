@@ -189,6 +189,11 @@ void CellSolver::setUntilUnshot(double untilUnshot) {
   state_->options = changed;
 }
 
+void CellSolver::dropFormFactorCaches() {
+  for (auto& cell : state_->cells)
+    if (cell.solver) cell.solver->dropFormFactorCache();
+}
+
 Ledger CellSolver::ledger() const {
   const State& s = *state_;
   Ledger total;

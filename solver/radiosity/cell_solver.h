@@ -89,6 +89,8 @@ class CellSolver {
   // A new stopping rule for the solve under way (the viewer's panel): throws OptionError for a
   // value out of range.
   void setUntilUnshot(double untilUnshot);
+  // Every cell's ProgressiveSolver::dropFormFactorCache (those this process solves).
+  void dropFormFactorCaches();
   // The camera's cell: a cell's unshot power and its part of the round's budget count half for each
   // portal between it and the focus, and the cells are started in that order. -1: no focus.
   void focus(int cell);

@@ -116,6 +116,9 @@ class ProgressiveSolver {
   void splitAfterLights(std::vector<Rgb> powers, LightRowOver again);
   // Changes options().until and untilUnshot of the solve under way (throws OptionError).
   void setStoppingRule(double until, double untilUnshot);
+  // Frees the form-factor cache's rows: a finished solve's bake needs none, and on a building they
+  // are most of its memory. Later shots fill it again.
+  void dropFormFactorCache();
   double convergence() const;
 
   const Scene& scene() const;

@@ -202,6 +202,12 @@ TEST(CellSolver, CellsShareTheCacheBudgetByPatchesAndTheAnswerIsTheUncachedOne) 
   CellSolver plain(t.scene, t.patches, twoRoomsPartition(t.patches), o, {kDefaultCellM, 7});
   while (!cached.done()) cached.round();
   while (!plain.done()) plain.round();
+  std::size_t rows = 0;
+  for (size_t c = 0; c < cached.cellFigures().size(); ++c) rows += cached.cellSolver(static_cast<int>(c)).progress().cachedRows.size();
+  EXPECT_GT(rows, 0u);
+  cached.dropFormFactorCaches();  // what the solve command does before the bake
+  for (size_t c = 0; c < cached.cellFigures().size(); ++c)
+    EXPECT_TRUE(cached.cellSolver(static_cast<int>(c)).progress().cachedRows.empty()) << "cell " << c;
   int hits = 0;
   for (size_t c = 0; c < cached.cellFigures().size(); ++c)
     for (const IterationRecord& r : cached.cellSolver(static_cast<int>(c)).history()) hits += r.cacheHits;

@@ -231,6 +231,29 @@ TEST(ProgressiveSolver, FormFactorCacheServesReusedRowsAndChangesNothing) {
   EXPECT_TRUE(sameBits(b[0], b[1]));
 }
 
+// The solve command drops the cache before the bake: the rows are gone, and shots after it project
+// them again, to the same bits.
+TEST(ProgressiveSolver, ADroppedFormFactorCacheIsEmptiedAndChangesNothing) {
+  const TestScene t = room();
+  SolveOptions o = test::fixedIterations(optionsFor(Projection::Plane, 64), 400);
+  o.formFactorCacheBytes = size_t{64} << 20;
+  ProgressiveSolver straight(t.scene, t.patches, o), dropped(t.scene, t.patches, o);
+  solveChecked(straight);
+  for (int i = 0; i < 300; ++i) dropped.step();
+  ASSERT_GT(dropped.progress().cachedRows.size(), 100u);
+  dropped.dropFormFactorCache();
+  EXPECT_TRUE(dropped.progress().cachedRows.empty());
+  solveChecked(dropped);
+  EXPECT_TRUE(sameBits(straight.radiosity(), dropped.radiosity()));
+  int hitsAfter[2] = {0, 0};
+  for (int i = 300; i < 400; ++i) {
+    hitsAfter[0] += straight.history()[i].cacheHits;
+    hitsAfter[1] += dropped.history()[i].cacheHits;
+  }
+  EXPECT_LT(hitsAfter[1], hitsAfter[0]);  // its rows were projected again
+  EXPECT_EQ(dropped.options().formFactorCacheBytes, o.formFactorCacheBytes);
+}
+
 TEST(ProgressiveSolver, ReuseComesLateAndAShortCacheMissesIt) {
   // Rows come back in nearly the order they were first shot (the paper's Table 1.3: reuse starts
   // once most patches have shot), so a least-recently-used cache shorter than that cycle never hits.
