@@ -5,6 +5,10 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
 
 #include "cli/bench.h"
 #include "cli/plot.h"
@@ -14,6 +18,16 @@ namespace radmesh::cli {
 using namespace accuracy_sweep;
 
 namespace accuracy_sweep {
+
+std::vector<size_t> paretoIndices(const std::vector<std::pair<double, double>>& points) {
+  std::vector<size_t> order(points.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return points[a] < points[b]; });
+  std::vector<size_t> front;
+  for (size_t i : order)
+    if (front.empty() || points[i].second < points[front.back()].second) front.push_back(i);
+  return front;
+}
 
 std::string traceLabel(const std::string& setting, int n, double cellM) {
   return fmt::format("{} {}x{}, cell {}", setting, n, n, cellM);
@@ -85,19 +99,13 @@ CsvTable tracesTable(const std::vector<Trace>& traces) {
 
 namespace {
 
-// Points no other point beats in both time and error, in order of time.
-std::vector<std::pair<double, double>> paretoFront(std::vector<std::pair<double, double>> points) {
-  std::sort(points.begin(), points.end());
-  std::vector<std::pair<double, double>> front;
-  for (const auto& pt : points)
-    if (front.empty() || pt.second < front.back().second) front.push_back(pt);
-  return front;
-}
-
 // The front in black after the series, when there is anything to draw: a plot with no point (a
 // sweep of elements alone has no patch rows for the same-mesh plot) is not drawn at all.
 void addParetoFront(Plot& plot, const std::vector<std::pair<double, double>>& all) {
-  if (!all.empty()) plot.series.push_back({"Pareto front", paretoFront(all), "lines lw 3 lc rgb 'black'"});
+  if (all.empty()) return;
+  Series front{"Pareto front", {}, "lines lw 3 lc rgb 'black'"};
+  for (size_t i : paretoIndices(all)) front.points.push_back(all[i]);
+  plot.series.push_back(front);
 }
 
 void drawUnlessEmpty(const Plot& plot, const std::string& path, std::vector<std::string>& drawn) {
@@ -129,6 +137,62 @@ Plot errorVersusTime(const std::string& title, const std::string& errorLabel, co
   return plot;
 }
 
+// The frame gnuplot draws within its 1000 x 700 picture (the key below), and a label at font 9.
+constexpr double kFrameWidthPx = 894.0, kFrameHeightPx = 576.0, kLabelCharPx = 6.0, kLabelHeightPx = 12.0;
+
+// Log axes fitted to the points: time to whole decades, error to a quarter beyond its extremes,
+// ticked at 1, 1.5, 2, 3, 5 and 7 times powers of ten so that a range under a decade reads. Returns
+// the frame in decades: {x0, x1, y0, y1}.
+std::array<double, 4> fitLogFrame(const std::vector<std::pair<double, double>>& points, Plot& plot) {
+  double xLow = points[0].first, xHigh = xLow, yLow = points[0].second, yHigh = yLow;
+  for (const auto& [x, y] : points) {
+    xLow = std::min(xLow, x), xHigh = std::max(xHigh, x);
+    yLow = std::min(yLow, y), yHigh = std::max(yHigh, y);
+  }
+  const std::array<double, 4> frame = {std::floor(std::log10(xLow)), std::ceil(std::log10(xHigh) + 1e-9),
+                                       std::log10(yLow / 1.25), std::log10(yHigh * 1.25)};
+  std::string ticks;
+  for (double decade = std::floor(frame[2]); decade <= frame[3]; ++decade)
+    for (double mantissa : {1.0, 1.5, 2.0, 3.0, 5.0, 7.0})
+      if (const double tick = mantissa * std::pow(10.0, decade); std::log10(tick) >= frame[2] && std::log10(tick) <= frame[3])
+        ticks += fmt::format("{}{:g}", ticks.empty() ? "" : ", ", tick);
+  plot.settings.push_back(fmt::format("set xrange [{:g}:{:g}]", std::pow(10.0, frame[0]), std::pow(10.0, frame[1])));
+  plot.settings.push_back(fmt::format("set yrange [{:g}:{:g}]", std::pow(10.0, frame[2]), std::pow(10.0, frame[3])));
+  if (!ticks.empty()) plot.settings.push_back("set ytics (" + ticks + ")");
+  return frame;
+}
+
+// The labels to draw, in order of priority, as gnuplot commands: each a character right of its
+// point, half a line above it or else a line below, and skipped where both would cover a label
+// drawn before it.
+std::vector<std::string> unclutteredLabels(const std::vector<std::pair<double, double>>& points,
+                                           const std::vector<std::string>& labels, const std::vector<size_t>& priority,
+                                           const std::array<double, 4>& frame) {
+  struct Box {
+    double left, right, bottom, top;
+  };
+  std::vector<Box> drawn;
+  std::vector<std::string> commands;
+  for (size_t i : priority) {
+    const double x = (std::log10(points[i].first) - frame[0]) / (frame[1] - frame[0]) * kFrameWidthPx + kLabelCharPx;
+    const double y = (std::log10(points[i].second) - frame[2]) / (frame[3] - frame[2]) * kFrameHeightPx;
+    const double width = kLabelCharPx * static_cast<double>(labels[i].size());
+    for (const double lines : {0.5, -1.0}) {
+      const double middle = y + lines * kLabelHeightPx;
+      const Box box{x, x + width, middle - kLabelHeightPx / 2, middle + kLabelHeightPx / 2};
+      if (std::ranges::any_of(drawn, [&](const Box& d) {
+            return box.left < d.right && d.left < box.right && box.bottom < d.top && d.bottom < box.top;
+          }))
+        continue;
+      drawn.push_back(box);
+      commands.push_back(fmt::format("set label \"{}\" at {},{} offset 1,{} font ',9'", labels[i], points[i].first,
+                                     points[i].second, lines));
+      break;
+    }
+  }
+  return commands;
+}
+
 // A point's --element-rows when it was not the default (older CSVs have no such column).
 std::string rowsNote(const CsvTable& points, size_t row) {
   if (std::ranges::find(points.columns, "element_rows") == points.columns.end()) return "";
@@ -136,8 +200,10 @@ std::string rowsNote(const CsvTable& points, size_t row) {
   return rows == "auto" ? "" : " " + rows;
 }
 
-// The subdivide axis: picture error against time, a series per subdivide mode, each point labelled
-// with its cell and element size, the Pareto front in black. At --until-unshot when it was measured.
+// The subdivide axis: picture error against time, a series per subdivide mode, the Pareto front in
+// black. Its points are labelled with their resolution, cell and element size, and so is each
+// mode's point of least error (the patch mesh elements are measured against, and the best of each
+// kind of element); a label on every point would cover the others. At --until-unshot when it was measured.
 Plot subdivisionPlot(const std::string& sceneName, const CsvTable& points) {
   bool atUnshot = false;
   for (size_t row = 0; row < points.rows.size(); ++row) atUnshot |= points.number(row, "seconds_to_unshot") > 0;
@@ -149,24 +215,38 @@ Plot subdivisionPlot(const std::string& sceneName, const CsvTable& points) {
             .logX = true, .logY = true};
   const std::vector<std::pair<std::string, std::string>> modes = {
       {"off", "patches (off)"}, {"uniform", "uniform elements"}, {"adaptive", "adaptive elements"}};
+  bool oneSetting = true;
+  for (size_t row = 1; row < points.rows.size(); ++row) oneSetting &= rowSetting(points, row) == rowSetting(points, 0);
   std::vector<std::pair<double, double>> all;
+  std::vector<std::string> labels;
+  std::vector<size_t> best;  // per mode drawn, its point of least error
   for (size_t m = 0; m < modes.size(); ++m) {
     Series series{modes[m].second, {}, fmt::format("points pt {} ps 2", 5 + 2 * m)};
+    size_t modeBest = SIZE_MAX;
     for (size_t row = 0; row < points.rows.size(); ++row) {
       const double seconds = points.number(row, secondsColumn), error = points.number(row, errorColumn);
       if (seconds <= 0 || error < 0 || points.text(row, "subdivide") != modes[m].first) continue;
       series.points.emplace_back(seconds, std::max(error, 1e-9));
+      if (modeBest == SIZE_MAX || error < all[modeBest].second) modeBest = all.size();
       all.push_back(series.points.back());
-      const std::string setting = fmt::format("{} {}", rowSetting(points, row), points.text(row, "resolution"));
-      const std::string what = modes[m].first == "off"
-                                   ? fmt::format("{} cell {}", setting, points.text(row, "cell_m"))
-                                   : fmt::format("{} cell {} el {}{}", setting, points.text(row, "cell_m"),
-                                                 points.text(row, "min_element"), rowsNote(points, row));
-      plot.settings.push_back(fmt::format("set label \"{}\" at {},{} offset 1,0.5 font ',8'", what, seconds,
-                                          std::max(error, 1e-9)));
+      const std::string n = points.text(row, "resolution");
+      const std::string setting = oneSetting ? n + "²" : fmt::format("{} {}²", rowSetting(points, row), n);
+      labels.push_back(modes[m].first == "off"
+                           ? fmt::format("{}, cell {}", setting, points.text(row, "cell_m"))
+                           : fmt::format("{}, cell {}, el {}{}", setting, points.text(row, "cell_m"),
+                                         points.text(row, "min_element"), rowsNote(points, row)));
     }
-    if (!series.points.empty()) plot.series.push_back(series);
+    if (!series.points.empty()) plot.series.push_back(series), best.push_back(modeBest);
   }
+  // Each mode's best first, then the front from its most accurate end.
+  std::vector<size_t> priority = best;
+  const std::vector<size_t> front = paretoIndices(all);
+  for (auto i = front.rbegin(); i != front.rend(); ++i)
+    if (std::ranges::find(priority, *i) == priority.end()) priority.push_back(*i);
+  if (!all.empty())
+    for (std::string& label : unclutteredLabels(all, labels, priority, fitLogFrame(all, plot)))
+      plot.settings.push_back(std::move(label));
+  if (oneSetting && !points.rows.empty()) plot.title += " (" + rowSetting(points, 0) + ")";
   addParetoFront(plot, all);
   return plot;
 }

@@ -2,6 +2,7 @@
 // What a bench accuracy sweep measures, its points and traces: shared by the sweep (bench_accuracy.cpp)
 // and its tables and plots (bench_accuracy_figures.cpp).
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/csv.h"
@@ -52,6 +53,10 @@ struct Trace {
   double cellM = 0.0;
   std::vector<TracePoint> points;
 };
+
+// Which of (seconds, error) points no other point beats in both (the Pareto front): their
+// indices, in order of time. The plots draw the front and label its points.
+std::vector<size_t> paretoIndices(const std::vector<std::pair<double, double>>& points);
 
 // A trace's name in the JSON and on the plot.
 std::string traceLabel(const std::string& setting, int n, double cellM);
