@@ -203,7 +203,8 @@ std::string rowsNote(const CsvTable& points, size_t row) {
 // The subdivide axis: picture error against time, a series per subdivide mode, the Pareto front in
 // black. Its points are labelled with their resolution, cell and element size, and so is each
 // mode's point of least error (the patch mesh elements are measured against, and the best of each
-// kind of element); a label on every point would cover the others. At --until-unshot when it was measured.
+// kind of element); a label on every point would cover the others. At --until-unshot when it was
+// measured.
 Plot subdivisionPlot(const std::string& sceneName, const CsvTable& points) {
   bool atUnshot = false;
   for (size_t row = 0; row < points.rows.size(); ++row) atUnshot |= points.number(row, "seconds_to_unshot") > 0;

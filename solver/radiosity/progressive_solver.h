@@ -117,7 +117,7 @@ class ProgressiveSolver {
   // Changes options().until and untilUnshot of the solve under way (throws OptionError).
   void setStoppingRule(double until, double untilUnshot);
   // Frees the form-factor cache's rows: a finished solve's bake needs none, and on a building they
-  // are most of its memory. Later shots fill it again.
+  // are up to half its heap (building:6x6). Later shots fill it again.
   void dropFormFactorCache();
   double convergence() const;
 
