@@ -85,6 +85,9 @@ class FormFactorBackend {
   // records to their new PEs); rows from now on index the new receivers, as a back end made anew
   // for them would.
   virtual void receiversSplit(std::span<const int> origin) = 0;
+  // Frees what the host keeps from one shot to the next, to be made again at the next shot (a cells
+  // solve's cell between its turns). The mesh back end's memory is its machine's: it keeps it.
+  virtual void releaseScratch() {}
 };
 
 // Throws SolveError naming the first patch whose unshot power is NaN: such a patch can neither be

@@ -19,10 +19,10 @@ EnvironmentProjection::EnvironmentProjection(const std::vector<Patch>& patches,
       surface_(std::move(surface)),
       nearDepth_(nearDepth),
       pool_(pool) {
+  makeBuffers();
   const int faces = static_cast<int>(surface_.faces.size());
   for (int f = 0; f < faces; ++f) {
     const ProjectionFace& face = surface_.faces[f];
-    buffers_.emplace_back(face.width, face.height);
     firstBandOfFace_.push_back(static_cast<int>(bands_.size()));
     for (int row = 0; row < face.height; row += kBandRows)
       bands_.push_back({f, row, std::min(row + kBandRows, face.height), {}, {}, {}});
@@ -44,6 +44,17 @@ void EnvironmentProjection::patchesChanged() {
   for (Band& band : bands_) band.setups.clear();  // they point into chunkSetups_
   chunkSetups_.assign((n + kChunkPatches - 1) / kChunkPatches,
                       std::vector<std::vector<PolygonSetup>>(surface_.faces.size()));
+}
+
+void EnvironmentProjection::makeBuffers() {
+  for (const ProjectionFace& face : surface_.faces) buffers_.emplace_back(face.width, face.height);
+}
+
+void EnvironmentProjection::releaseScratch() {
+  buffers_ = {};
+  for (Band& band : bands_) band.setups = {}, band.covered = {}, band.sums = {};
+  for (auto& chunk : chunkSetups_)
+    for (std::vector<PolygonSetup>& faceSetups : chunk) faceSetups = {};
 }
 
 void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
@@ -127,6 +138,7 @@ void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
 void EnvironmentProjection::project(int shooter) { projectFrom(patches_[shooter], shooter); }
 
 void EnvironmentProjection::projectFrom(const Patch& viewpoint, int skip) {
+  if (buffers_.empty()) makeBuffers();  // released since the last shot
   setUpPatches(viewpoint, skip);
   pool_.parallelFor(static_cast<int>(bands_.size()),
                     [&](int b, int worker) { rasteriseBand(bands_[b], worker); });

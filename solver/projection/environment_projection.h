@@ -23,6 +23,9 @@ class EnvironmentProjection {
   // The list of patches (held by reference) changed, e.g. elements split: what is kept per patch
   // is made again for it, as a new projection would make it.
   void patchesChanged();
+  // Frees what is kept from one shot to the next (item buffers, set-ups, bands' lists): a cells
+  // solve's cells wait between their turns. The next projection makes them again.
+  void releaseScratch();
 
   void project(int shooter);
   // From a viewpoint that is no patch (a light: its position and frame), every patch but `skip`
@@ -62,6 +65,7 @@ class EnvironmentProjection {
     std::vector<Seen> sums;                   // per patch seen in the band, in first-seen order
   };
 
+  void makeBuffers();
   void setUpPatches(const Patch& from, int skip);
   void rasteriseBand(Band& band, int worker);
 

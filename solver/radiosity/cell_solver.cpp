@@ -155,9 +155,12 @@ void CellSolver::round() {
   std::stable_sort(active.begin(), active.end(), [&](int a, int b) {
     return s.hops(a) != s.hops(b) ? s.hops(a) < s.hops(b) : cost(a) > cost(b);
   });
+  // A cell's item buffers and set-ups are freed after its turn: held by every cell of a building
+  // between turns, they would be hundreds of megabytes (docs/cells.md).
   s.pool.parallelFor(static_cast<int>(active.size()), [&](int i, int) {
     ProgressiveSolver& solver = *s.cells[active[i]].solver;
     for (int n = 0; n < shots[active[i]] && !solver.exhausted(); ++n) solver.step();
+    solver.releaseScratch();
   });
   ++s.rounds;
   s.refresh();

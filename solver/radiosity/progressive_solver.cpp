@@ -294,6 +294,8 @@ void ProgressiveSolver::setStoppingRule(double until, double untilUnshot) {
   state_->options = changed;
 }
 
+void ProgressiveSolver::releaseScratch() { state_->backend->releaseScratch(); }
+
 void ProgressiveSolver::dropFormFactorCache() { state_->cache = FormFactorCache(state_->options.formFactorCacheBytes); }
 
 double ProgressiveSolver::convergence() const { return state_->convergence; }

@@ -119,6 +119,9 @@ class ProgressiveSolver {
   // Frees the form-factor cache's rows: a finished solve's bake needs none, and on a building they
   // are up to half its heap (building:6x6). Later shots fill it again.
   void dropFormFactorCache();
+  // Frees the back end's scratch kept between shots (FormFactorBackend::releaseScratch): the next
+  // step makes it again.
+  void releaseScratch();
   double convergence() const;
 
   const Scene& scene() const;

@@ -72,6 +72,11 @@ void NativeBackend::takeReceivers() {
 
 void NativeBackend::receiversSplit(std::span<const int>) { takeReceivers(); }
 
+void NativeBackend::releaseScratch() {
+  for (EnvironmentProjection* projection : {projection_.get(), singlePlane_.get()})
+    if (projection) projection->releaseScratch();
+}
+
 NativeBackend::~NativeBackend() = default;
 
 ProjectionSummary NativeBackend::projectionSummary() const {

@@ -26,6 +26,7 @@ class NativeBackend final : public FormFactorBackend {
   ItemBuffer singlePlaneItemBuffer(int shooter) override;
   // The per-receiver buffers sized anew; the projections keep their surfaces and re-read the receivers.
   void receiversSplit(std::span<const int> origin) override;
+  void releaseScratch() override;
 
   double nearDepth() const { return nearDepth_; }
 
