@@ -75,7 +75,6 @@ void printSummary(const ProgressiveSolver& solver, double seconds, size_t resume
 
 void writeBake(const std::string& path, const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity,
                int upAxis) {
-  if (path.empty()) return;
   const DisplayMesh mesh = buildDisplayMesh(patches);
   writeBakeGlb(path, mesh, vertexRadiosity(mesh, displayRadiosity), upAxis);
   fmt::print("wrote {}\n", path);
