@@ -15,6 +15,7 @@ namespace radmesh::cli {
 struct BenchSolveArgs {
   std::string scene = "office";
   UpChoice up = UpChoice::Format;
+  double metresPerUnit = 0.0;  // --units; 0: not given
   double cellM = 0.381;
   bool cellGiven = false;  // else the cell is chosen from the scene's size
   Daylight daylight;
@@ -46,6 +47,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks = nullptr
 struct AccuracyArgs {
   std::string scene = "office";
   UpChoice up = UpChoice::Format;
+  double metresPerUnit = 0.0;  // --units; 0: not given
   std::string name = "office";   // file stem of the outputs
   std::string outDir;            // CSV and plots go here; empty: table only
   Daylight daylight;

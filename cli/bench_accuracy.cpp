@@ -224,7 +224,7 @@ std::vector<double> checkedSubdividedCells(const AccuracyArgs& args, const std::
 }  // namespace
 
 nlohmann::json benchAccuracy(const AccuracyArgs& args) {
-  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up);
+  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up, args.metresPerUnit);
   if (args.cells.empty() || args.resolutions.empty())
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   checkResolution(args.referenceResolution, "--reference-resolution");

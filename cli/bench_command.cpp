@@ -46,6 +46,7 @@ void addBenchSolve(CLI::App* bench) {
   CLI::App* cmd = bench->add_subcommand("solve", "Time per iteration and to convergence by projection and resolution");
   cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
   addUpOption(cmd, args->up);
+  addUnitsOption(cmd, args->metresPerUnit);
   cmd->add_option("--cell", args->cellM, "Grid cell size, metres (default: chosen from the scene's size)");
   addDaylightFlags(cmd, args->daylight);
   cmd->add_option("--projections", args->projections, "Projections to time")->delimiter(',')->capture_default_str();
@@ -93,6 +94,7 @@ void addBenchAccuracy(CLI::App* bench) {
   CLI::App* cmd = bench->add_subcommand("accuracy", "Error against a reference by projection, resolution and cell size");
   cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
   addUpOption(cmd, args->up);
+  addUnitsOption(cmd, args->metresPerUnit);
   cmd->add_option("--name", args->name, "File stem of the outputs (default: the scene's)");
   cmd->add_option("--out-dir", args->outDir, "Write the CSV (NAME.csv, NAME-traces.csv) and the PNG plots here");
   cmd->add_option("--json", *json, "Also write every figure, with the traces of every iteration, as JSON");

@@ -125,7 +125,7 @@ Timing timeCells(const Scene& scene, const std::vector<Patch>& patches, const Ce
 nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   if (!args.csvStem.empty() && !ranks)
     throw OptionError("--csv writes the per-rank figures of a distributed run: give --distributed (under mpirun)");
-  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up);
+  const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up, args.metresPerUnit);
   const CellChoice cell = commandCell(scene, args.cellM, args.cellGiven);
   fmt::print("{}\n", cell.why);
   const std::vector<Patch> patches = meshScene(scene, cell.cellM);

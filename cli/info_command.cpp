@@ -35,6 +35,7 @@ struct InfoArgs {
   bool json = false;
   bool strict = false;
   UpChoice up = UpChoice::Format;
+  double metresPerUnit = 0.0;  // --units; 0: not given
   EffectsMode effects = EffectsMode::Auto;
   bool cells = false;
   CellGroups cellGroups = CellGroups::Name;
@@ -211,6 +212,7 @@ void addInfoCommand(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
   cmd->add_flag("--strict", args->strict, "Refuse a scene that needed any repair (each warning an error)");
   addUpOption(cmd, args->up);
+  addUnitsOption(cmd, args->metresPerUnit);
   cmd->add_option_function<std::string>(
       "--effects", [args](const std::string& v) { args->effects = parseEffects(v); },
       "auto (simulate only what the scene calls for) or all");
@@ -230,7 +232,7 @@ void addInfoCommand(CLI::App& app) {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
     if (const std::optional<Bake> bake = readCommandBake(args->scene, args->up)) return printBake(args->scene, *bake, args->json);
     std::vector<std::string> warnings, notes;
-    const Scene scene = loadCommandScene(args->scene, args->strict, args->daylight, args->up, warnings, notes);
+    const Scene scene = loadCommandScene(args->scene, args->strict, args->daylight, args->up, args->metresPerUnit, warnings, notes);
     const CellChoice cell = commandCell(scene, args->cellM, cmd->count("--cell") > 0);
     const std::vector<Patch> patches = meshScene(scene, cell.cellM);
     const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);

@@ -8,9 +8,9 @@
 namespace radmesh::cli {
 
 Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
-                       std::vector<std::string>& warnings, std::vector<std::string>& notes) {
+                       double metresPerUnit, std::vector<std::string>& warnings, std::vector<std::string>& notes) {
   std::string upNote;
-  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes, up, &upNote);
+  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes, up, &upNote, metresPerUnit);
   if (!upNote.empty()) fmt::print(stderr, "radmesh: {}\n", upNote);
   if (strict && !warnings.empty()) {
     std::string list;
@@ -22,9 +22,10 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, const Dayligh
   return scene;
 }
 
-Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up) {
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
+                       double metresPerUnit) {
   std::vector<std::string> warnings, notes;
-  Scene scene = loadCommandScene(pathOrName, strict, daylight, up, warnings, notes);
+  Scene scene = loadCommandScene(pathOrName, strict, daylight, up, metresPerUnit, warnings, notes);
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
   for (const std::string& n : notes) fmt::print("{}\n", n);
   return scene;
@@ -45,6 +46,11 @@ void addUpOption(CLI::App* cmd, UpChoice& up) {
       "--up", [&up](const std::string& v) { up = parseUpChoice(v); },
       "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's (glTF y, the "
       "built-in rooms z; MGF, which does not say, auto)");
+}
+
+void addUnitsOption(CLI::App* cmd, double& metresPerUnit) {
+  cmd->add_option_function<std::string>(
+      "--units", [&metresPerUnit](const std::string& v) { metresPerUnit = parseUnits(v); }, kUnitsHelp);
 }
 
 }  // namespace radmesh::cli

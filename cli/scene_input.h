@@ -12,15 +12,16 @@
 
 namespace radmesh::cli {
 
-// Loads pathOrName, with what the reader repaired (an unknown entity skipped, `rd 1` lowered...) in
+// Loads pathOrName, in `metresPerUnit` (--units; 0: metres, not given), with what the reader repaired (an unknown entity skipped, `rd 1` lowered...) in
 // `warnings`, turned by `up` (--up; what --up auto chose is printed on stderr) and lit by `daylight`
 // (--sky, --sun; what that added in `notes`). With `strict`, a scene that needed any repair is
 // refused: SceneError listing them.
 Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
-                       std::vector<std::string>& warnings, std::vector<std::string>& notes);
+                       double metresPerUnit, std::vector<std::string>& warnings, std::vector<std::string>& notes);
 
 // The same for a command that only prints them: the warnings on stderr, the notes on stdout.
-Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up);
+Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
+                       double metresPerUnit);
 
 // The bake at `path` with its up axis set by `up`, or empty when `path` is not a glTF bake
 // (solver/bake/bake_reader.h).
@@ -28,5 +29,9 @@ std::optional<Bake> readCommandBake(const std::string& path, UpChoice up);
 
 // Adds --up to a subcommand.
 void addUpOption(CLI::App* cmd, UpChoice& up);
+// Adds --units (metres per unit; 0 when not given).
+void addUnitsOption(CLI::App* cmd, double& metresPerUnit);
+inline constexpr const char* kUnitsHelp =
+    "What the scene's coordinates are in: m, cm, mm, in or ft (default: metres, as glTF defines and MGF assumes)";
 
 }  // namespace radmesh::cli

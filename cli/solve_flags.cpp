@@ -118,6 +118,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
       ->capture_default_str();
   cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
   addUpOption(cmd, f.up);
+  addUnitsOption(cmd, f.metresPerUnit);
   const size_t first = cmd->get_options().size();
   addDaylightFlags(cmd, f.daylight);
   cmd->add_option_function<std::string>(

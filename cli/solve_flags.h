@@ -28,6 +28,7 @@ struct SolveFlags {
   int portalBins = 4;         // --portal-bins: direction bins of light crossing a portal (0, 1: diffuse)
   Daylight daylight;          // --sky, --sky-model, --sun
   UpChoice up = UpChoice::Format;  // --up
+  double metresPerUnit = 0.0;      // --units; 0: not given
   std::optional<double> cacheMb;   // --cache-mb; unset: the back end's default (formFactorCacheBytes)
   SolveOptions options;
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given

@@ -8,15 +8,17 @@
 #include <thread>
 
 #include "cli/option_checks.h"
+#include "cli/scene_input.h"
 #include "cli/solve_flags.h"
 #include "solver/radiosity/cell_solver.h"
 #include "solver/scene/scene_error.h"
 #include "solver/scene/sun.h"
+#include "solver/scene/units.h"
 #include "viewer/viewer_app.h"
 
 int main(int argc, char** argv) {
   radmesh::ViewerArgs args;
-  std::string up;
+  std::string up, units;
   std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress",
               subdivide = "off";
   radmesh::SolveOptions& o = args.setup.options;
@@ -25,6 +27,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
                  "(MGF and the built-in rooms z, glTF y)");
+  app.add_option("--units", units, radmesh::cli::kUnitsHelp);
   CLI::Option* backendGiven =
       app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here; native with --cells auto) or "
                      "native (host CPU)")
@@ -124,6 +127,7 @@ int main(int argc, char** argv) {
       throw radmesh::OptionError("--size must be WxH with both at least 64, e.g. 1280x720");
     args.firstTab = radmesh::parsePanelTab(panel);
     if (!up.empty()) args.up = radmesh::parseUpChoice(up);
+    if (!units.empty()) args.metresPerUnit = radmesh::parseUnits(units);
     o.backend = radmesh::parseBackend(backend);
     o.projection = radmesh::parseProjection(projection);
     o.mapping = radmesh::parseMapping(mapping);

@@ -43,8 +43,12 @@ std::string lowerCaseExtension(const std::string& path) {
 }
 
 Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings, const Daylight& daylight,
-                std::vector<std::string>* notes, UpChoice up, std::string* upNote) {
+                std::vector<std::string>* notes, UpChoice up, std::string* upNote, double metresPerUnit) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
+  if (metresPerUnit > 0.0)
+    scaleScene(scene, metresPerUnit);
+  else if (const std::string units = unitsNote(scene); notes && !units.empty())
+    notes->push_back(units);
   // MGF does not say which axis is up, and files differ: office3 stands on y, the others on z.
   const bool silent = up == UpChoice::Format && lowerCaseExtension(pathOrName) == ".mgf";
   std::string note = applyUpChoice(scene, silent ? UpChoice::Auto : up);

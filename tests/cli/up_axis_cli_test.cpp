@@ -48,6 +48,26 @@ TEST(UpAxisCli, ABadUpIsRefusedOnEveryCommand) {
   }
 }
 
+// --units scales what the file holds to metres: the built-in office read as millimetres is a
+// thousandth of its size, a millionth of its area and power (emittance stays per square metre).
+TEST(UpAxisCli, UnitsScaleTheSceneOnEveryCommandAndABadOneIsRefused) {
+  const nlohmann::json metres = infoJson("office");
+  const nlohmann::json millimetres = infoJson("office --units mm");
+  EXPECT_NEAR(millimetres["total_area"].get<double>(), 1e-6 * metres["total_area"].get<double>(),
+              1e-12 * metres["total_area"].get<double>());
+  EXPECT_NEAR(millimetres["emitted_power"].get<double>(), 1e-6 * metres["emitted_power"].get<double>(),
+              1e-12 * metres["emitted_power"].get<double>());
+  EXPECT_NEAR(infoJson("office --units ft")["bounds_max"][2].get<double>(),
+              0.3048 * metres["bounds_max"][2].get<double>(), 1e-12);
+  for (const std::string command : {"info office", "solve office --max-iterations 1", "render office",
+                                    "bench solve cornell", "bench accuracy cornell"}) {
+    const CommandRun run = radmesh(command + " --units furlong");
+    EXPECT_EQ(run.exitCode, 2) << command;
+    EXPECT_NE(run.output.find("--units 'furlong' is not a unit: give m, cm, mm, in or ft"), std::string::npos)
+        << command << ": " << run.output;
+  }
+}
+
 TEST(UpAxisCli, TheOfficesBakeIsYUpAndInfoDescribesItAsABake) {
   const std::string bake = tempPath("office.glb");
   const CommandRun solve = radmesh("solve office --cell 1 --resolution 32 --max-iterations 5 --quiet --out " + bake);
