@@ -13,16 +13,16 @@ constexpr int kChunkPatches = 256;  // patches per set-up task
 }  // namespace
 
 EnvironmentProjection::EnvironmentProjection(const std::vector<Patch>& patches,
-                                             ProjectionSurface surface, double nearDepth,
+                                             std::shared_ptr<const ProjectionSurface> surface, double nearDepth,
                                              ThreadPool& pool)
     : patches_(patches),
       surface_(std::move(surface)),
       nearDepth_(nearDepth),
       pool_(pool) {
   makeBuffers();
-  const int faces = static_cast<int>(surface_.faces.size());
+  const int faces = static_cast<int>(surface_->faces.size());
   for (int f = 0; f < faces; ++f) {
-    const ProjectionFace& face = surface_.faces[f];
+    const ProjectionFace& face = surface_->faces[f];
     firstBandOfFace_.push_back(static_cast<int>(bands_.size()));
     for (int row = 0; row < face.height; row += kBandRows)
       bands_.push_back({f, row, std::min(row + kBandRows, face.height), {}, {}, {}});
@@ -43,11 +43,11 @@ void EnvironmentProjection::patchesChanged() {
   facesReached_.assign(n, 0);
   for (Band& band : bands_) band.setups.clear();  // they point into chunkSetups_
   chunkSetups_.assign((n + kChunkPatches - 1) / kChunkPatches,
-                      std::vector<std::vector<PolygonSetup>>(surface_.faces.size()));
+                      std::vector<std::vector<PolygonSetup>>(surface_->faces.size()));
 }
 
 void EnvironmentProjection::makeBuffers() {
-  for (const ProjectionFace& face : surface_.faces) buffers_.emplace_back(face.width, face.height);
+  for (const ProjectionFace& face : surface_->faces) buffers_.emplace_back(face.width, face.height);
 }
 
 void EnvironmentProjection::releaseScratch() {
@@ -58,7 +58,7 @@ void EnvironmentProjection::releaseScratch() {
 }
 
 void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
-  const bool parallel = surface_.faces.front().parallel;
+  const bool parallel = surface_->faces.front().parallel;
   const int n = static_cast<int>(patches_.size());
   pool_.parallelFor(static_cast<int>(chunkSetups_.size()), [&](int chunk, int) {
     auto& out = chunkSetups_[chunk];
@@ -71,14 +71,14 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
       seenFromFront_[j] = 0;
       facesReached_[j] = 0;
       if (j == skip) continue;
-      const std::optional<LocalPolygon> local = inSurfaceView(surface_, from, patches_[j]);
+      const std::optional<LocalPolygon> local = inSurfaceView(*surface_, from, patches_[j]);
       if (!local) continue;
       // A parallel beam meets a front that faces against it, wherever the patch lies.
       seenFromFront_[j] = parallel ? local->normal.z < 0.0 : local->seenFromFront();
       for (size_t f = 0; f < out.size(); ++f) {
         // setUpProjection's two steps apart: most faces refuse the patch in the first, and a set-up
         // (a few hundred bytes, cleared when made, so made in place) is made only for the rest.
-        const ProjectionFace& face = surface_.faces[f];
+        const ProjectionFace& face = surface_->faces[f];
         if (!projectOntoFace(*local, face, nearDepth_, screen)) continue;
         PolygonSetup& setup = out[f].emplace_back();
         if (setupPolygon(screen, face.width, face.height, j, rank_[j], setup)) {
@@ -109,7 +109,7 @@ void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
 
   // Form-factor phase: the delta form factor of every pixel goes to the patch seen there.
   std::vector<int>& slot = slotOfPatch_[worker];
-  const std::vector<double>& df = surface_.deltaFormFactors[band.face];
+  const std::vector<double>& df = surface_->deltaFormFactors[band.face];
   band.sums.clear();
   const size_t begin = static_cast<size_t>(band.rowBegin) * buffer.width;
   const size_t end = static_cast<size_t>(band.rowEnd) * buffer.width;

@@ -4,6 +4,7 @@
 // factors of the pixels where each patch is seen are summed (its form factor, before any
 // refinement). Rows of pixels are split into fixed bands, so the work spreads over threads while
 // the sums stay bitwise the same for any thread count.
+#include <memory>
 #include <vector>
 
 #include "solver/projection/item_buffer.h"
@@ -16,9 +17,12 @@ namespace radmesh {
 
 class EnvironmentProjection {
  public:
-  // nearDepth: the near plane, a small length relative to the scene's size.
-  EnvironmentProjection(const std::vector<Patch>& patches, ProjectionSurface surface,
+  // nearDepth: the near plane, a small length relative to the scene's size. The surface may be
+  // shared with other projections (sharedSurface): it is only read.
+  EnvironmentProjection(const std::vector<Patch>& patches, std::shared_ptr<const ProjectionSurface> surface,
                         double nearDepth, ThreadPool& pool);
+  EnvironmentProjection(const std::vector<Patch>& patches, ProjectionSurface surface, double nearDepth, ThreadPool& pool)
+      : EnvironmentProjection(patches, std::make_shared<const ProjectionSurface>(std::move(surface)), nearDepth, pool) {}
 
   // The list of patches (held by reference) changed, e.g. elements split: what is kept per patch
   // is made again for it, as a new projection would make it.
@@ -32,7 +36,7 @@ class EnvironmentProjection {
   // (-1: none) projected.
   void projectFrom(const Patch& viewpoint, int skip);
 
-  const ProjectionSurface& surface() const { return surface_; }
+  const ProjectionSurface& surface() const { return *surface_; }
   const std::vector<ItemBuffer>& itemBuffers() const { return buffers_; }
   const std::vector<int>& depthTieRank() const { return rank_; }
   // After project(), per patch: the summed delta form factors of the pixels showing it,
@@ -70,7 +74,7 @@ class EnvironmentProjection {
   void rasteriseBand(Band& band, int worker);
 
   const std::vector<Patch>& patches_;
-  ProjectionSurface surface_;
+  std::shared_ptr<const ProjectionSurface> surface_;
   double nearDepth_;
   ThreadPool& pool_;
   std::vector<int> rank_;

@@ -1,6 +1,22 @@
 #include "solver/projection/projection_surface.h"
 
+#include <map>
+#include <mutex>
+
 namespace radmesh {
+
+std::shared_ptr<const ProjectionSurface> sharedSurface(const std::string& key,
+                                                       const std::function<ProjectionSurface()>& make) {
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<const ProjectionSurface>> made;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<const ProjectionSurface> surface = made[key].lock();
+  if (!surface) {
+    surface = std::make_shared<const ProjectionSurface>(make());
+    made[key] = surface;
+  }
+  return surface;
+}
 
 void addFace(ProjectionSurface& surface, const ProjectionFace& face, const DeltaFormFactorFn& df) {
   const double pixelArea = face.pixelWidth() * face.pixelHeight();

@@ -2,7 +2,9 @@
 // A projection surface (the paper's section 1.2): planar faces above the shooter, each split into
 // pixels that carry a delta form factor. The single plane has one face, the hemicube five.
 #include <functional>
+#include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "solver/projection/projection.h"
@@ -26,6 +28,12 @@ std::optional<LocalPolygon> inSurfaceView(const ProjectionSurface& surface, cons
 
 // Delta form factor of a pixel centred at face coordinates (a, b), of area pixelArea at depth 1.
 using DeltaFormFactorFn = std::function<double(double a, double b, double pixelArea)>;
+
+// The surface `make` returns for `key`, made once and kept while anything holds it: the back ends of
+// a cells solve's cells (a hundred in a building) project onto one set of delta form factors, 1.6 MB
+// for a hemicube at 256², not one each. Thread-safe.
+std::shared_ptr<const ProjectionSurface> sharedSurface(const std::string& key,
+                                                       const std::function<ProjectionSurface()>& make);
 
 // Adds a face whose pixels carry df at their centres.
 void addFace(ProjectionSurface& surface, const ProjectionFace& face, const DeltaFormFactorFn& df);

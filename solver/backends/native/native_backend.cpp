@@ -20,12 +20,17 @@ namespace {
 constexpr int kAnalyticChunk = 256;
 constexpr double kRowSumSlack = 1e-6;  // analytic rows of a convex enclosure sum to 1 within rounding
 
-std::unique_ptr<ProjectionSurface> surfaceFor(const SolveOptions& options) {
+std::shared_ptr<const ProjectionSurface> singlePlaneFor(const SolveOptions& options) {
+  return sharedSurface(fmt::format("plane {} {:a}", options.resolution, options.ratio),
+                       [&] { return makeSinglePlane(options.resolution, options.ratio); });
+}
+
+std::shared_ptr<const ProjectionSurface> surfaceFor(const SolveOptions& options) {
   switch (options.projection) {
-    case Projection::Plane:
-      return std::make_unique<ProjectionSurface>(makeSinglePlane(options.resolution, options.ratio));
+    case Projection::Plane: return singlePlaneFor(options);
     case Projection::Hemicube:
-      return std::make_unique<ProjectionSurface>(makeHemicube(options.resolution));
+      return sharedSurface(fmt::format("hemicube {}", options.resolution),
+                           [&] { return makeHemicube(options.resolution); });
     case Projection::Analytic: break;
   }
   return nullptr;
@@ -61,7 +66,7 @@ void NativeBackend::takeReceivers() {
   seenFromFront_.assign(receivers_.size(), 0);
   if (!projection_) {
     if (auto surface = surfaceFor(options_))
-      projection_ = std::make_unique<EnvironmentProjection>(shares_ ? patches_ : receivers_, std::move(*surface),
+      projection_ = std::make_unique<EnvironmentProjection>(shares_ ? patches_ : receivers_, std::move(surface),
                                                             nearDepth_, pool_);
     return;
   }
@@ -117,7 +122,7 @@ ItemBuffer NativeBackend::singlePlaneItemBuffer(int shooter) {
   const bool same = options_.projection == Projection::Plane && !shares_;
   if (!same && !singlePlane_)
     singlePlane_ = std::make_unique<EnvironmentProjection>(
-        receivers_, makeSinglePlane(options_.resolution, options_.ratio), nearDepth_, pool_);
+        receivers_, singlePlaneFor(options_), nearDepth_, pool_);
   EnvironmentProjection& plane = same ? *projection_ : *singlePlane_;
   plane.projectFrom(patches_[shooter], skipOf(shooter));
   return plane.itemBuffers()[0];

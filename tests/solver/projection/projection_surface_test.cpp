@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include "solver/projection/hemicube.h"
@@ -68,6 +69,27 @@ TEST(Hemicube, SideFacesCarryCosineWeightedDeltaFormFactors) {
   EXPECT_NEAR(hemicubeSideDeltaFormFactor(0.0, 1.0, 1.0), 1.0 / (4.0 * std::numbers::pi), 1e-15);
   // The top face's corner and the side face's top corner are the same direction: equal per solid angle.
   EXPECT_NEAR(singlePlaneDeltaFormFactor(1.0, 1.0, 1.0), hemicubeSideDeltaFormFactor(1.0, 1.0, 1.0), 1e-15);
+}
+
+// A cells solve's hundred back ends project onto one surface: made once while any holds it.
+TEST(SharedSurface, IsMadeOnceWhileHeldAndAgainWhenLetGo) {
+  int made = 0;
+  auto make = [&] {
+    ++made;
+    return makeHemicube(16);
+  };
+  std::shared_ptr<const ProjectionSurface> first = sharedSurface("test hemicube 16", make);
+  const std::shared_ptr<const ProjectionSurface> second = sharedSurface("test hemicube 16", make);
+  EXPECT_EQ(made, 1);
+  EXPECT_EQ(first.get(), second.get());
+  EXPECT_EQ(first->deltaFormFactors, makeHemicube(16).deltaFormFactors);
+  const std::shared_ptr<const ProjectionSurface> other = sharedSurface("test hemicube 16 again", make);
+  EXPECT_EQ(made, 2);
+  EXPECT_NE(other.get(), first.get());
+  const ProjectionSurface* was = first.get();
+  first.reset();
+  EXPECT_EQ(sharedSurface("test hemicube 16", make).get(), was);  // `second` still holds it
+  EXPECT_EQ(made, 2);
 }
 
 }  // namespace
