@@ -120,10 +120,8 @@ bool insidePoint(const std::vector<Vec3>& loop, const Vec3& normal, double toler
 }  // namespace
 
 double sceneDiagonal(const Scene& scene) {
-  Vec3 lo(INFINITY), hi(-INFINITY);
-  for (const Polygon& p : scene.polygons)
-    for (const Vec3& v : p.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
-  return scene.polygons.empty() ? 0.0 : glm::length(hi - lo);
+  const auto [low, high] = boundingBox(scene.polygons);
+  return scene.polygons.empty() ? 0.0 : glm::length(high - low);
 }
 
 std::vector<BoundarySegment> boundarySegments(const Scene& scene, double tolerance) {

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 #include "solver/geometry/coplanar_merge.h"
 #include "solver/io/gltf_accessor.h"
@@ -231,12 +230,7 @@ std::vector<std::pair<int, std::string>> sceneRoots(const tinygltf::Model& model
 // projection's near depth) so that from either side the facing copy is the nearer one and the
 // other lies behind the shooter.
 void addBackFaces(const tinygltf::Model& model, std::vector<Polygon>& triangles) {
-  Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
-  for (const Polygon& t : triangles)
-    for (const Vec3& v : t.vertices) {
-      low = glm::min(low, v);
-      high = glm::max(high, v);
-    }
+  const auto [low, high] = boundingBox(triangles);
   const double setBack = 1e-6 * glm::length(high - low);
   const size_t n = triangles.size();
   for (size_t i = 0; i < n; ++i) {

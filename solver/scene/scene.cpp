@@ -44,13 +44,18 @@ double spotFalloff(const Light& spot, double cosTheta) {
   return t * t;
 }
 
-ParallelWindow parallelWindow(const Scene& scene, const Vec3& direction) {
-  Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
-  for (const Polygon& p : scene.polygons)
+BoundingBox boundingBox(const std::vector<Polygon>& polygons) {
+  BoundingBox box{Vec3(std::numeric_limits<double>::max()), Vec3(-std::numeric_limits<double>::max())};
+  for (const Polygon& p : polygons)
     for (const Vec3& v : p.vertices) {
-      low = glm::min(low, v);
-      high = glm::max(high, v);
+      box.low = glm::min(box.low, v);
+      box.high = glm::max(box.high, v);
     }
+  return box;
+}
+
+ParallelWindow parallelWindow(const Scene& scene, const Vec3& direction) {
+  const auto [low, high] = boundingBox(scene.polygons);
   ParallelWindow w;
   std::tie(w.u, w.v) = perpendicularAxes(direction);
   w.a0 = w.b0 = std::numeric_limits<double>::max();

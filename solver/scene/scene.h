@@ -61,6 +61,12 @@ struct Scene {
   int upAxis = 2;
 };
 
+// The axis-aligned box around the polygons' vertices; low above high when there are none.
+struct BoundingBox {
+  Vec3 low, high;
+};
+BoundingBox boundingBox(const std::vector<Polygon>& polygons);
+
 // Newell's normal: its length is twice the polygon's area, robust for non-convex polygons.
 Vec3 newellNormal(const std::vector<Vec3>& vertices);
 double polygonArea(const std::vector<Vec3>& vertices);

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <limits>
 
 #include "solver/scene/scene_error.h"
 
@@ -27,12 +26,7 @@ void scaleScene(Scene& scene, double metresPerUnit) {
 
 std::string unitsNote(const Scene& scene) {
   constexpr double kLargestBuildingM = 1000.0;
-  Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
-  for (const Polygon& p : scene.polygons)
-    for (const Vec3& v : p.vertices) {
-      low = glm::min(low, v);
-      high = glm::max(high, v);
-    }
+  const auto [low, high] = boundingBox(scene.polygons);
   const Vec3 extent = high - low;
   const double across = std::max({extent.x, extent.y, extent.z});
   if (!(across > kLargestBuildingM)) return "";

@@ -1,7 +1,6 @@
 #include "solver/scene/up_axis.h"
 
 #include <algorithm>
-#include <limits>
 
 #include "solver/scene/scene_error.h"
 
@@ -29,12 +28,7 @@ Vec3 rotateToYUp(const Vec3& p, int upAxis) {
 }
 
 int guessUpAxis(const Scene& scene) {
-  Vec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
-  for (const Polygon& p : scene.polygons)
-    for (const Vec3& v : p.vertices) {
-      low = glm::min(low, v);
-      high = glm::max(high, v);
-    }
+  const auto [low, high] = boundingBox(scene.polygons);
   const Vec3 extent = high - low;
   Vec3 floorArea(0.0), downwardLight(0.0);
   double light = 0.0, total = 0.0;
