@@ -199,7 +199,8 @@ TEST(ElementShares, AWholePatchSharesInProportionToItsElementsClosedForms) {
   EnvironmentProjection projection(t.patches, makeHemicube(64), nearDepth, pool);
   projection.project(0);
   const ProjectedShot shot{t.patches, t.patches[0], projection.surface(), projection.itemBuffers(),
-                           projection.depthTieRank(), projection.projectedAreaPixels()};
+                           projection.depthTieRank(), projection.projectedAreaPixels(),
+                           projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels()};
   const PatchShot patchShot{projection.pixelFormFactors(), projection.seenFromFront(), projection.coveredPixels(),
                             projection.shownPixels(), projection.facesReached()};
   std::vector<double> formFactors;

@@ -418,8 +418,11 @@ TEST(Adaptive, SplittingEverywhereStaysWithinTheRefusalsBound) {
   EXPECT_LE(floor, 16 * 64);
   EXPECT_GT(floor, 16 * 60);
   EXPECT_LE(static_cast<double>(elements.size()), countElements(s.t.patches, kMin));
+  // Not the light's elements: its 0.05 m patches were smaller to begin with.
   for (const Patch& e : elements)
-    if (e.material == 0) EXPECT_GE(longestEdge(e), kMin);  // the light's 0.05 m patches were smaller to begin with
+    if (e.material == 0) {
+      EXPECT_GE(longestEdge(e), kMin);
+    }
 }
 
 TEST(Adaptive, OptionsAreRefusedNamingTheFix) {

@@ -152,7 +152,7 @@ TEST(HardCases, AStripAFewPixelsTallGetsItsFormFactorAtAnyResolution) {
   t.scene.source = "strip";
   t.scene.materials = {test::grey(0.5, 1.0), test::grey(0.5)};
   addGrid(t.patches, {-0.3, 1.2, 2.7}, {0, 0.6, 0}, {0.6, 0, 0}, 1, 1, 0);  // facing down
-  for (const auto [z0, z1] : {std::pair{1.0, 2.0}, {2.0, 2.1}, {2.1, 2.7}})  // facing the light
+  for (const auto& [z0, z1] : {std::pair{1.0, 2.0}, {2.0, 2.1}, {2.1, 2.7}})  // facing the light
     addGrid(t.patches, {-0.5, 0, z0}, {0, 0, z1 - z0}, {1, 0, 0}, 1, 1, 1);
   const int strip = 2;
   const double exact = pointToPolygonFormFactor(toShooterFrame(t.patches[0], t.patches[strip]).corners());
