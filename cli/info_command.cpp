@@ -232,7 +232,8 @@ void addInfoCommand(CLI::App& app) {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
     if (const std::optional<Bake> bake = readCommandBake(args->scene, args->up)) return printBake(args->scene, *bake, args->json);
     std::vector<std::string> warnings, notes;
-    const Scene scene = loadCommandScene(args->scene, args->strict, args->daylight, args->up, args->metresPerUnit, warnings, notes);
+    const Scene scene =
+        loadCommandScene(args->scene, args->strict, args->daylight, args->up, args->metresPerUnit, warnings, notes);
     const CellChoice cell = commandCell(scene, args->cellM, cmd->count("--cell") > 0);
     const std::vector<Patch> patches = meshScene(scene, cell.cellM);
     const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);

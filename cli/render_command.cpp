@@ -98,7 +98,8 @@ Solved solveScene(const RenderArgs& args) {
     options.untilUnshot = 0.0;
     options.maxIterations = args.iterations;
   }
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up, args.flags.metresPerUnit);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up,
+                                       args.flags.metresPerUnit);
   const RenderView view = chooseView(args, sceneFrame(scene));
   const CellChoice cell = args.flags.announceCell(scene, options);
   auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {

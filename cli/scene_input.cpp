@@ -4,6 +4,7 @@
 
 #include "solver/io/scene_loader.h"
 #include "solver/scene/scene_error.h"
+#include "solver/scene/units.h"
 
 namespace radmesh::cli {
 

@@ -12,10 +12,10 @@
 
 namespace radmesh::cli {
 
-// Loads pathOrName, in `metresPerUnit` (--units; 0: metres, not given), with what the reader repaired (an unknown entity skipped, `rd 1` lowered...) in
-// `warnings`, turned by `up` (--up; what --up auto chose is printed on stderr) and lit by `daylight`
-// (--sky, --sun; what that added in `notes`). With `strict`, a scene that needed any repair is
-// refused: SceneError listing them.
+// Loads pathOrName in `metresPerUnit` (--units; 0, not given: metres), with what the reader
+// repaired (an unknown entity skipped, `rd 1` lowered...) in `warnings`, turned by `up` (--up; what
+// --up auto chose is printed on stderr) and lit by `daylight` (--sky, --sun; what that added in
+// `notes`). With `strict`, a scene that needed any repair is refused: SceneError listing them.
 Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
                        double metresPerUnit, std::vector<std::string>& warnings, std::vector<std::string>& notes);
 

@@ -128,7 +128,8 @@ void run(const SolveArgs& args, Processes* processes) {
   if (readBake(args.flags.scene))  // else refused as a scene with no emitter
     throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",
                      "walk it with radmesh-view, describe it with radmesh info, or draw it with radmesh render");
-  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up, args.flags.metresPerUnit);
+  const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up,
+                                       args.flags.metresPerUnit);
   const CellChoice cell = args.flags.announceCell(scene, options);
   if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, processes ? &processes->ranks : nullptr);
   if (processes) options.meshTransport = processes->meshMachine;

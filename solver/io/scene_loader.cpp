@@ -9,6 +9,7 @@
 #include "solver/io/gltf_import.h"
 #include "solver/io/mgf_import.h"
 #include "solver/scene/scene_error.h"
+#include "solver/scene/units.h"
 
 namespace radmesh {
 

@@ -21,8 +21,10 @@ class EnvironmentProjection {
   // shared with other projections (sharedSurface): it is only read.
   EnvironmentProjection(const std::vector<Patch>& patches, std::shared_ptr<const ProjectionSurface> surface,
                         double nearDepth, ThreadPool& pool);
-  EnvironmentProjection(const std::vector<Patch>& patches, ProjectionSurface surface, double nearDepth, ThreadPool& pool)
-      : EnvironmentProjection(patches, std::make_shared<const ProjectionSurface>(std::move(surface)), nearDepth, pool) {}
+  EnvironmentProjection(const std::vector<Patch>& patches, ProjectionSurface surface, double nearDepth,
+                        ThreadPool& pool)
+      : EnvironmentProjection(patches, std::make_shared<const ProjectionSurface>(std::move(surface)), nearDepth,
+                              pool) {}
 
   // The list of patches (held by reference) changed, e.g. elements split: what is kept per patch
   // is made again for it, as a new projection would make it.

@@ -14,7 +14,8 @@ double parseUnits(const std::string& text) {
   if (text == "mm") return 0.001;
   if (text == "in") return 0.0254;
   if (text == "ft") return 0.3048;
-  throw OptionError("--units '" + text + "' is not a unit: give m, cm, mm, in or ft (what the file's coordinates are in)");
+  throw OptionError("--units '" + text +
+                    "' is not a unit: give m, cm, mm, in or ft (what the file's coordinates are in)");
 }
 
 void scaleScene(Scene& scene, double metresPerUnit) {
