@@ -16,7 +16,8 @@ ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args) {
     upChosen = applyUpChoice(file.scene, args.up);
     file.bake->upAxis = file.scene.upAxis;
   } else {
-    file.scene = loadScene(path, &file.warnings, args.daylight, &file.notes, args.up, &upChosen, args.metresPerUnit);
+    file.scene =
+        loadScene(path, &file.warnings, args.daylight, &file.notes, args.up, &upChosen, args.metresPerUnit);
   }
   if (!upChosen.empty()) file.notes.push_back(upChosen);
   if (file.bake) return file;

@@ -19,7 +19,6 @@ double parseUnits(const std::string& text) {
 }
 
 void scaleScene(Scene& scene, double metresPerUnit) {
-  if (metresPerUnit == 1.0) return;
   for (Polygon& p : scene.polygons)
     for (Vec3& v : p.vertices) v *= metresPerUnit;
   for (Light& light : scene.lights) light.position *= metresPerUnit;
