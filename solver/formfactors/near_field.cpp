@@ -73,6 +73,34 @@ const NearFieldFinder::Grid& NearFieldFinder::gridFor(double size) {
   return grid;
 }
 
+void NearFieldFinder::receiversSplit(const std::vector<int>& origin, const std::vector<char>& split) {
+  std::vector<int> newIndex(split.size(), -1);
+  std::vector<int> children;
+  for (size_t e = 0; e < origin.size(); ++e) {
+    if (split[origin[e]])
+      children.push_back(static_cast<int>(e));
+    else
+      newIndex[origin[e]] = static_cast<int>(e);
+  }
+  for (Grid& grid : grids_) {
+    if (grid.cellSize == 0.0) continue;
+    // Renumbering keeps the order of the receivers that did not split (it is monotone): so the
+    // merge gives the fresh sort's order exactly.
+    std::vector<std::pair<Cell, int>> kept, made;
+    kept.reserve(grid.sorted.size());
+    for (const auto& [cell, j] : grid.sorted)
+      if (newIndex[j] >= 0) kept.push_back({cell, newIndex[j]});
+    for (int e : children) made.push_back({grid.cellOf(receivers_[e].centroid), e});
+    std::sort(made.begin(), made.end());
+    grid.sorted.resize(kept.size() + made.size());
+    std::merge(kept.begin(), kept.end(), made.begin(), made.end(), grid.sorted.begin());
+    grid.centroids.clear();
+    for (const auto& [cell, j] : grid.sorted) grid.centroids.push_back(receivers_[j].centroid);
+  }
+  for (std::vector<int>& near : near_) near.clear();
+  std::fill(found_.begin(), found_.end(), 0);
+}
+
 const std::vector<int>& NearFieldFinder::receiversNear(int i) {
   std::vector<int>& near = near_[i];
   const double reach = size_[i];

@@ -31,6 +31,10 @@ class NearFieldFinder {
  public:
   NearFieldFinder(const std::vector<Patch>& shooters, const std::vector<Patch>& receivers);
   const std::vector<int>& receiversNear(int shooter);
+  // After the receivers split (adaptive subdivision; origin and split as splitElements gives and
+  // takes): the grids keep their order, renumbered, with the children merged in, where building
+  // them anew would sort every receiver again; every shooter's near receivers are found again.
+  void receiversSplit(const std::vector<int>& origin, const std::vector<char>& split);
 
  private:
   using Cell = std::array<long long, 3>;

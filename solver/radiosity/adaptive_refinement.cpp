@@ -60,7 +60,8 @@ void ProgressiveSolver::State::refine(IterationRecord& record) {
     const std::vector<Rgb> parentRadiosity = std::move(elementRadiosity), parentGain = iterationGain;
     const std::vector<int> origin = splitElements(elements, split);
     backend->receiversSplit(origin);
-    findNearField();
+    if (elementNear) elementNear->receiversSplit(origin, split);
+    nearPairs.assign(patches.size(), {});
     splitAdjacency(adjacency, elements, origin, split);
     cache.renumberReceivers(newIndices(origin, split));
     regather(origin, split, parentRadiosity, parentGain);

@@ -201,7 +201,14 @@ void splitAdjacency(ElementAdjacency& adjacency, const Elements& elements, const
   for (size_t e = 0; e < n; ++e) after.boxes[e] = split[origin[e]] ? elementBox(es[e]) : adjacency.boxes[origin[e]];
   for (size_t e = 0; e < n; ++e) {
     const int o = origin[e];
-    bool changed = split[o];
+    const bool changed = split[o] || std::ranges::any_of(adjacency.overlapping[o], [&](int old) { return split[old]; });
+    if (!changed) {  // the same pairs, in the same order: the lists renumbered where they are
+      after.overlapping[e] = std::move(adjacency.overlapping[o]);
+      after.neighbours[e] = std::move(adjacency.neighbours[o]);
+      for (int& x : after.overlapping[e]) x = firstOf[x];
+      for (int& x : after.neighbours[e]) x = firstOf[x];
+      continue;
+    }
     std::vector<int>& list = after.overlapping[e];
     const auto consider = [&](int old) {
       for (int x = firstOf[old]; x < firstOf[old + 1]; ++x)
@@ -209,17 +216,9 @@ void splitAdjacency(ElementAdjacency& adjacency, const Elements& elements, const
           list.push_back(x);
     };
     if (split[o]) consider(o);  // the siblings
-    for (int old : adjacency.overlapping[o]) {
-      changed = changed || split[old];
-      consider(old);
-    }
+    for (int old : adjacency.overlapping[o]) consider(old);
     std::sort(list.begin(), list.end());
-    if (changed) {
-      after.neighbours[e] = neighboursAmong(es, static_cast<int>(e), list);
-    } else {  // the same pairs, in the same order: the same answer, renumbered
-      after.neighbours[e] = std::move(adjacency.neighbours[o]);
-      for (int& x : after.neighbours[e]) x = firstOf[x];
-    }
+    after.neighbours[e] = neighboursAmong(es, static_cast<int>(e), list);
   }
   adjacency = std::move(after);
 }

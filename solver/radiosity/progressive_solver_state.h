@@ -92,7 +92,8 @@ struct ProgressiveSolver::State {
   void updateUnshot();
   void computeFreshRows(const std::vector<int>& shooters, std::vector<FormFactorRow>& computed);
   // The elements' near-field receivers to be found anew, as shooters ask (after elements are made
-  // or split), and every shooter's pairs computed again.
+  // or read back; a split renumbers the finder instead: NearFieldFinder::receiversSplit), and every
+  // shooter's pairs computed again.
   void findNearField();
   void refine(IterationRecord& record);
   // The lights regather takes anew: the scene's, or a cells solve's building's.

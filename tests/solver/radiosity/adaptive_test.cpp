@@ -12,6 +12,7 @@
 
 #include "solver/backends/mesh/mesh_backend.h"
 #include "solver/formfactors/analytic_form_factor.h"
+#include "solver/formfactors/near_field.h"
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/elements.h"
 #include "solver/meshing/meshing.h"
@@ -507,6 +508,33 @@ TEST(Adaptive, NeighboursKeptAcrossSplitsAreThoseFoundFromScratch) {
     for (int n : kept.neighbours[e]) crossPolygon += elements.elements[n].polygon != elements.elements[e].polygon;
   EXPECT_GT(elements.elements.size(), 8000u);
   EXPECT_GT(crossPolygon, 1000);  // the seams are in the comparison
+}
+
+// The near-field finder is renumbered across splits, not built anew: each shooter's near elements
+// are those a fresh finder finds, on every round.
+TEST(Adaptive, NearReceiversKeptAcrossSplitsAreThoseFoundFromScratch) {
+  const std::vector<Patch> patches = meshScene(builtinScene("office"), 0.75);
+  Elements elements = patchesAsElements(patches);
+  NearFieldFinder kept(patches, elements.elements);
+  const int n = static_cast<int>(patches.size());
+  for (int i = 0; i < n; ++i) kept.receiversNear(i);  // every size class's grid built before the splits
+  unsigned state = 4242u;
+  size_t nearPairs = 0;
+  for (int round = 0; round < 4; ++round) {
+    std::vector<char> split(elements.elements.size(), 0);
+    for (char& s : split) {
+      state = state * 1664525u + 1013904223u;
+      s = (state >> 16) % 5 == 0;
+    }
+    const std::vector<int> origin = splitElements(elements, split);
+    kept.receiversSplit(origin, split);
+    NearFieldFinder fresh(patches, elements.elements);
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(kept.receiversNear(i), fresh.receiversNear(i)) << "round " << round << ", shooter " << i;
+      nearPairs += fresh.receiversNear(i).size();
+    }
+  }
+  EXPECT_GT(nearPairs, 100000u);  // near receivers are in the comparison, not just empty lists
 }
 
 }  // namespace
