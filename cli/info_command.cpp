@@ -261,6 +261,7 @@ void addInfoCommand(CLI::App& app) {
       j["warnings"] = warnings;
       if (cells) j.update(cellsJson(partition, figures, outside, seconds));
       j["daylight"] = notes;
+      j["metres_per_unit"] = args->metresPerUnit > 0.0 ? args->metresPerUnit : 1.0;
       fmt::print("{}\n", j.dump(2));
     } else {
       printText(summary, scene, warnings, notes, cell);

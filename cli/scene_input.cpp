@@ -10,9 +10,9 @@ namespace radmesh::cli {
 
 Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
                        double metresPerUnit, std::vector<std::string>& warnings, std::vector<std::string>& notes) {
-  std::string upNote;
-  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes, up, &upNote, metresPerUnit);
-  if (!upNote.empty()) fmt::print(stderr, "radmesh: {}\n", upNote);
+  std::vector<std::string> readNotes;
+  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes, up, &readNotes, metresPerUnit);
+  for (const std::string& n : readNotes) fmt::print(stderr, "radmesh: {}\n", n);
   if (strict && !warnings.empty()) {
     std::string list;
     for (const std::string& w : warnings) list += "\n  " + w;

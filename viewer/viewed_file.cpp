@@ -10,16 +10,16 @@ ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args) {
   file.path = path;
   file.setup = args.setup;
   file.bake = readBake(path);
-  std::string upChosen;
+  std::vector<std::string> readNotes;
   if (file.bake) {
     file.scene = bakeScene(*file.bake, path);
-    upChosen = applyUpChoice(file.scene, args.up);
+    if (std::string chosen = applyUpChoice(file.scene, args.up); !chosen.empty()) readNotes.push_back(chosen);
     file.bake->upAxis = file.scene.upAxis;
   } else {
     file.scene =
-        loadScene(path, &file.warnings, args.daylight, &file.notes, args.up, &upChosen, args.metresPerUnit);
+        loadScene(path, &file.warnings, args.daylight, &file.notes, args.up, &readNotes, args.metresPerUnit);
   }
-  if (!upChosen.empty()) file.notes.push_back(upChosen);
+  file.notes.insert(file.notes.end(), readNotes.begin(), readNotes.end());
   if (file.bake) return file;
   if (!args.cellGiven) {
     const CellChoice cell = args.elementsPreset ? elementsPresetChoice(chooseCell(file.scene)) : chooseCell(file.scene);

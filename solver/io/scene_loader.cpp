@@ -44,19 +44,20 @@ std::string lowerCaseExtension(const std::string& path) {
 }
 
 Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings, const Daylight& daylight,
-                std::vector<std::string>* notes, UpChoice up, std::string* upNote, double metresPerUnit) {
+                std::vector<std::string>* notes, UpChoice up, std::vector<std::string>* readNotes,
+                double metresPerUnit) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
   if (metresPerUnit > 0.0)
     scaleScene(scene, metresPerUnit);
-  else if (const std::string units = unitsNote(scene); notes && !units.empty())
-    notes->push_back(units);
+  else if (const std::string units = unitsNote(scene); readNotes && !units.empty())
+    readNotes->push_back(units);
   // MGF does not say which axis is up, and files differ: office3 stands on y, the others on z.
   const bool silent = up == UpChoice::Format && lowerCaseExtension(pathOrName) == ".mgf";
   std::string note = applyUpChoice(scene, silent ? UpChoice::Auto : up);
   if (silent)
     note = std::string("MGF does not say which axis is up: ") + upAxisName(scene.upAxis) +
            ", from the geometry as --up auto decides (--up sets it)";
-  if (upNote) *upNote = note;
+  if (readNotes && !note.empty()) readNotes->push_back(note);
   const UpFrame frame = upFrame(scene.upAxis);
   if (daylight.skyLux > 0.0) {
     validateGeometry(scene);  // openings are looked for in sound geometry only

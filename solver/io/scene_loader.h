@@ -15,13 +15,15 @@ inline constexpr const char* kDefaultScene = "office";
 std::string lowerCaseExtension(const std::string& path);
 
 // Loads, scales to metres (`metresPerUnit`, --units: solver/scene/units.h; 0, not given, reads
-// metres and notes a model over a kilometre across), turns by `up` (by default the format's axis,
-// and for MGF, which does not say, --up auto's guess: solver/scene/up_axis.h; `upNote` gets the
-// line to print when the axis was guessed), lights by `daylight` (its sky at the openings, what
-// that added a line each in `notes`; its sun among the scene's lights, north along the up frame's
+// metres), turns by `up` (by default the format's axis, and for MGF, which does not say, --up
+// auto's guess: solver/scene/up_axis.h), lights by `daylight` (its sky at the openings, what that
+// added a line each in `notes`; its sun among the scene's lights, north along the up frame's
 // `along`), and validates; throws SceneError with file, element and fix on anything unusable.
+// `readNotes` gets a line for each guess about how the file is drawn: the axis when it was guessed,
+// and the units when a model read in metres is over a kilometre across.
 Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warnings = nullptr,
                 const Daylight& daylight = {}, std::vector<std::string>* notes = nullptr,
-                UpChoice up = UpChoice::Format, std::string* upNote = nullptr, double metresPerUnit = 0.0);
+                UpChoice up = UpChoice::Format, std::vector<std::string>* readNotes = nullptr,
+                double metresPerUnit = 0.0);
 
 }  // namespace radmesh

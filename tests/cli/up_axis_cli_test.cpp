@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -57,6 +58,8 @@ TEST(UpAxisCli, UnitsScaleTheSceneOnEveryCommandAndABadOneIsRefused) {
               1e-12 * metres["total_area"].get<double>());
   EXPECT_NEAR(millimetres["emitted_power"].get<double>(), 1e-6 * metres["emitted_power"].get<double>(),
               1e-12 * metres["emitted_power"].get<double>());
+  EXPECT_EQ(metres["metres_per_unit"], 1.0);
+  EXPECT_EQ(millimetres["metres_per_unit"], 0.001);
   EXPECT_NEAR(infoJson("office --units ft")["bounds_max"][2].get<double>(),
               0.3048 * metres["bounds_max"][2].get<double>(), 1e-12);
   for (const std::string command : {"info office", "solve office --max-iterations 1", "render office",
@@ -66,6 +69,25 @@ TEST(UpAxisCli, UnitsScaleTheSceneOnEveryCommandAndABadOneIsRefused) {
     EXPECT_NE(run.output.find("--units 'furlong' is not a unit: give m, cm, mm, in or ft"), std::string::npos)
         << command << ": " << run.output;
   }
+}
+
+// A model read in metres that is 2 km across is noted, as the axis MGF does not give is: on stderr,
+// one line each, so `info --json` stays JSON and its "daylight" lines are daylight's.
+TEST(UpAxisCli, AModelOverAKilometreIsNotedBesideTheJsonNotInIt) {
+  const std::string path = tempPath("plaza.mgf");
+  std::ofstream(path) << "m lamp =\n\tc\n\ted 10\n"
+                         "v a =\n\tp 0 0 0\nv b =\n\tp 2000 0 0\nv c =\n\tp 2000 2000 0\nv d =\n\tp 0 2000 0\n"
+                         "f a b c d\n";
+  const CommandRun run = radmesh("info " + path + " --json");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("radmesh: the model is 2000 m across, read in metres; if its coordinates are in "
+                            "millimetres"),
+            std::string::npos)
+      << run.output;
+  const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+  EXPECT_EQ(j["daylight"], nlohmann::json::array());
+  EXPECT_EQ(j["metres_per_unit"], 1.0);
+  EXPECT_EQ(radmesh("info " + path + " --units mm").output.find("the model is"), std::string::npos);
 }
 
 TEST(UpAxisCli, TheOfficesBakeIsYUpAndInfoDescribesItAsABake) {

@@ -56,10 +56,11 @@ TEST(Units, ParsesTheFiveUnitsAndRefusesAnythingElse) {
 
 TEST(Units, ARoomInMillimetresLoadsAsTheSameRoomInMetres) {
   const std::string metres = writeUnitsRoom(1.0, "m.mgf"), millimetres = writeUnitsRoom(1000.0, "mm.mgf");
-  std::vector<std::string> metreNotes, scaledNotes, unscaledNotes;
-  const Scene reference = loadScene(metres, nullptr, {}, &metreNotes);
-  const Scene scaled = loadScene(millimetres, nullptr, {}, &scaledNotes, UpChoice::Format, nullptr, parseUnits("mm"));
-  const Scene unscaled = loadScene(millimetres, nullptr, {}, &unscaledNotes);
+  // The notes on how each file is read: with the axis given, only the units'.
+  std::vector<std::string> metreNotes, scaledNotes, unscaledNotes, daylightNotes;
+  const Scene reference = loadScene(metres, nullptr, {}, &daylightNotes, UpChoice::Z, &metreNotes);
+  const Scene scaled = loadScene(millimetres, nullptr, {}, &daylightNotes, UpChoice::Z, &scaledNotes, parseUnits("mm"));
+  const Scene unscaled = loadScene(millimetres, nullptr, {}, &daylightNotes, UpChoice::Z, &unscaledNotes);
   ASSERT_EQ(scaled.polygons.size(), reference.polygons.size());
   for (size_t p = 0; p < scaled.polygons.size(); ++p)
     for (size_t v = 0; v < scaled.polygons[p].vertices.size(); ++v)
@@ -69,6 +70,7 @@ TEST(Units, ARoomInMillimetresLoadsAsTheSameRoomInMetres) {
   EXPECT_NEAR(emittedPowerW(reference), 3.0, 1e-12);
   EXPECT_NEAR(emittedPowerW(scaled), 3.0, 1e-9);
   EXPECT_NEAR(emittedPowerW(unscaled), 3.0e6, 1e-3);
+  EXPECT_TRUE(daylightNotes.empty());  // not a daylight line (info --json lists those under "daylight")
   EXPECT_TRUE(metreNotes.empty());
   EXPECT_TRUE(scaledNotes.empty());
   ASSERT_EQ(unscaledNotes.size(), 1u);
