@@ -145,8 +145,8 @@ Elements patchesAsElements(const std::vector<Patch>& patches) {
 
 std::vector<int> splitElements(Elements& elements, const std::vector<char>& split) {
   // In place, from the back: each split adds three elements, and the vectors keep their memory
-  // from one round of splits to the next (a fresh copy of them a round was a tenth of a corridor's
-  // adaptive solve, most of it faulting new pages in).
+  // from one round of splits to the next (a fresh copy of them a round was 8 % of a corridor's
+  // adaptive solve, much of it faulting new pages in).
   const size_t n = elements.elements.size();
   const size_t count = n + 3 * static_cast<size_t>(std::count(split.begin(), split.end(), 1));
   std::vector<int> origin(count);
