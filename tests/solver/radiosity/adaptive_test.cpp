@@ -480,6 +480,16 @@ TEST(Adaptive, OccludersAnswerAsTestingEveryPatch) {
   EXPECT_LT(blocked, rays - rays / 10);
 }
 
+// One element in `oneIn` marked to split, drawn by a linear congruential generator from `state`.
+std::vector<char> randomSplits(size_t elements, unsigned& state, unsigned oneIn) {
+  std::vector<char> split(elements, 0);
+  for (char& s : split) {
+    state = state * 1664525u + 1013904223u;
+    s = (state >> 16) % oneIn == 0;
+  }
+  return split;
+}
+
 // The neighbours kept across split rounds are those found from scratch, bit for bit (a resumed
 // solve finds them from scratch and must go on as the straight one): the office's 0.75 m patches
 // split at random, a sixth of the elements a round, five rounds, with seams across polygons.
@@ -489,11 +499,7 @@ TEST(Adaptive, NeighboursKeptAcrossSplitsAreThoseFoundFromScratch) {
   unsigned state = 777u;
   long crossPolygon = 0;
   for (int round = 0; round < 5; ++round) {
-    std::vector<char> split(elements.elements.size(), 0);
-    for (char& s : split) {
-      state = state * 1664525u + 1013904223u;
-      s = (state >> 16) % 6 == 0;
-    }
+    const std::vector<char> split = randomSplits(elements.elements.size(), state, 6);
     const std::vector<int> origin = splitElements(elements, split);
     splitAdjacency(kept, elements, origin, split);
     const ElementAdjacency fresh = elementAdjacency(elements);
@@ -521,11 +527,7 @@ TEST(Adaptive, NearReceiversKeptAcrossSplitsAreThoseFoundFromScratch) {
   unsigned state = 4242u;
   size_t nearPairs = 0;
   for (int round = 0; round < 4; ++round) {
-    std::vector<char> split(elements.elements.size(), 0);
-    for (char& s : split) {
-      state = state * 1664525u + 1013904223u;
-      s = (state >> 16) % 5 == 0;
-    }
+    const std::vector<char> split = randomSplits(elements.elements.size(), state, 5);
     const std::vector<int> origin = splitElements(elements, split);
     kept.receiversSplit(origin, split);
     NearFieldFinder fresh(patches, elements.elements);
