@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/formfactors/analytic_form_factor.h"
+#include "solver/meshing/elements.h"
 #include "solver/projection/projection.h"
 
 namespace radmesh {
@@ -74,14 +75,10 @@ const NearFieldFinder::Grid& NearFieldFinder::gridFor(double size) {
 }
 
 void NearFieldFinder::receiversSplit(const std::vector<int>& origin, const std::vector<char>& split) {
-  std::vector<int> newIndex(split.size(), -1);
+  const std::vector<int> newIndex = newIndices(origin, split);
   std::vector<int> children;
-  for (size_t e = 0; e < origin.size(); ++e) {
-    if (split[origin[e]])
-      children.push_back(static_cast<int>(e));
-    else
-      newIndex[origin[e]] = static_cast<int>(e);
-  }
+  for (size_t e = 0; e < origin.size(); ++e)
+    if (split[origin[e]]) children.push_back(static_cast<int>(e));
   for (Grid& grid : grids_) {
     if (grid.cellSize == 0.0) continue;
     // Renumbering keeps the order of the receivers that did not split (it is monotone): so the

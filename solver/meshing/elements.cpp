@@ -179,6 +179,13 @@ std::vector<int> splitElements(Elements& elements, const std::vector<char>& spli
   return origin;
 }
 
+std::vector<int> newIndices(const std::vector<int>& origin, const std::vector<char>& split) {
+  std::vector<int> index(split.size(), -1);
+  for (size_t e = 0; e < origin.size(); ++e)
+    if (!split[origin[e]]) index[origin[e]] = static_cast<int>(e);
+  return index;
+}
+
 Elements splitToLevels(const std::vector<Patch>& patches, const std::vector<int>& levels) {
   constexpr int kMaxLevel = 31;  // a leaf's share of its patch, 4^-level, counted in a u64
   int deepest = 0;

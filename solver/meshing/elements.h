@@ -69,6 +69,8 @@ double longestEdge(const Patch& patch);
 // Splits the elements marked in `split` (one flag per element) into four children each, in place
 // (see Elements above). Returns, per element after the split, the element it was or came from.
 std::vector<int> splitElements(Elements& elements, const std::vector<char>& split);
+// Per element before that split, its index after it, or -1 for one that split.
+std::vector<int> newIndices(const std::vector<int>& origin, const std::vector<char>& split);
 
 // The elements adaptive subdivision split `patches` into, from their levels alone (a checkpoint
 // keeps those): a patch's leaves in order, with their levels, name its split tree, since splitting

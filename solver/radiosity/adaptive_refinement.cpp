@@ -16,18 +16,6 @@ namespace radmesh {
 
 using solver_state::channelSum;
 
-namespace {
-
-// Per element before a split, its index after it, or -1 for one that split (origin and split as
-// refine has them).
-std::vector<int> newIndices(const std::vector<int>& origin, const std::vector<char>& split) {
-  std::vector<int> index(split.size(), -1);
-  for (size_t e = 0; e < origin.size(); ++e)
-    if (!split[origin[e]]) index[origin[e]] = static_cast<int>(e);
-  return index;
-}
-
-}  // namespace
 
 void ProgressiveSolver::State::refine(IterationRecord& record) {
   for (;;) {

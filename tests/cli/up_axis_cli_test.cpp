@@ -14,10 +14,13 @@ namespace {
 
 const std::string kYUpRoom = test::dataPath("yup_room.gltf").string();
 
+// The JSON a command printed, after what went to stderr.
+nlohmann::json jsonOf(const CommandRun& run) { return nlohmann::json::parse(run.output.substr(run.output.find('{'))); }
+
 nlohmann::json infoJson(const std::string& arguments) {
   const CommandRun run = radmesh("info " + arguments + " --json");
   EXPECT_EQ(run.exitCode, 0) << run.output;
-  return nlohmann::json::parse(run.output.substr(run.output.find('{')));  // after what went to stderr
+  return jsonOf(run);
 }
 
 TEST(UpAxisCli, InfoGivesTheUpAxisTheFormatOrTheOptionSets) {
@@ -78,16 +81,16 @@ TEST(UpAxisCli, AModelOverAKilometreIsNotedBesideTheJsonNotInIt) {
   std::ofstream(path) << "m lamp =\n\tc\n\ted 10\n"
                          "v a =\n\tp 0 0 0\nv b =\n\tp 2000 0 0\nv c =\n\tp 2000 2000 0\nv d =\n\tp 0 2000 0\n"
                          "f a b c d\n";
-  const CommandRun run = radmesh("info " + path + " --json");
+  const CommandRun run = radmesh("info " + path + " --cell 100 --json");  // a coarse cell: meshed at once
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("radmesh: the model is 2000 m across, read in metres; if its coordinates are in "
                             "millimetres"),
             std::string::npos)
       << run.output;
-  const nlohmann::json j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+  const nlohmann::json j = jsonOf(run);
   EXPECT_EQ(j["daylight"], nlohmann::json::array());
   EXPECT_EQ(j["metres_per_unit"], 1.0);
-  EXPECT_EQ(radmesh("info " + path + " --units mm").output.find("the model is"), std::string::npos);
+  EXPECT_EQ(radmesh("info " + path + " --cell 100 --units mm").output.find("the model is"), std::string::npos);
 }
 
 TEST(UpAxisCli, TheOfficesBakeIsYUpAndInfoDescribesItAsABake) {
