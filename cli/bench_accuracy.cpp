@@ -228,8 +228,16 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
   if (args.cells.empty() || args.resolutions.empty())
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   checkResolution(args.referenceResolution, "--reference-resolution");
+  for (int n : args.resolutions) checkResolution(n, "--resolutions");
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
     throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
+  if (!(args.referenceUntil > 0.0 && args.referenceUntil <= 1.0))
+    throw OptionError(fmt::format("--reference-until must be a convergence in (0, 1], e.g. 0.999; got {}", args.referenceUntil));
+  std::error_code error;
+  if (!args.outDir.empty() && std::filesystem::exists(args.outDir, error) &&
+      !std::filesystem::is_directory(args.outDir, error))
+    throw OptionError(fmt::format("--out-dir '{}' is a file, not a folder: give a folder (it is made if missing)",
+                                  args.outDir));
   const double finest = *std::ranges::min_element(args.cells);
   if (!(args.referenceCellM == 0.0 || (args.referenceCellM > 0.0 && args.referenceCellM < finest)))
     throw OptionError(fmt::format(

@@ -6,6 +6,8 @@
 #include <cctype>
 #include <filesystem>
 
+#include "solver/io/atomic_file.h"
+#include "solver/io/builtin_scenes.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
@@ -22,13 +24,29 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
   if (path.empty()) return;
   if (!hasExtension(path, extension))
     throw OptionError(fmt::format("{} '{}': {}: give a path ending in {}", option, path, what, extension));
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw OptionError(fmt::format("{} '{}' is a folder: give the path of a file in it", option, path));
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   if (folder.empty()) return;  // the current folder
-  std::error_code error;
   if (!std::filesystem::is_directory(folder, error))
     throw OptionError(fmt::format("{} '{}': the folder '{}' does not exist: create it (mkdir -p {}) or give "
                                   "another path",
                                   option, path, folder.string(), folder.string()));
+}
+
+void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& outputs) {
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    if (path.empty()) continue;
+    if (!isBuiltinScene(scene) && sameFile(path, scene))
+      throw OptionError(fmt::format("{} '{}' is the scene being solved: writing it would replace the scene; give "
+                                    "another path", option, path));
+    for (size_t j = 0; j < i; ++j)
+      if (!outputs[j].second.empty() && sameFile(path, outputs[j].second))
+        throw OptionError(fmt::format("{} '{}' is the file {} writes too: one would replace the other; give each "
+                                      "its own path", option, path, outputs[j].first));
+  }
 }
 
 }  // namespace radmesh::cli

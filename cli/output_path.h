@@ -2,6 +2,8 @@
 // Work that can fail at the end is checked at the start: an output path is refused before a long
 // solve, not after it.
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace radmesh::cli {
 
@@ -12,5 +14,10 @@ bool hasExtension(const std::string& path, const std::string& extension);
 // says what the file is, e.g. "a bake is glTF binary") or its folder does not exist. Empty: no file.
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
                      const std::string& what);
+
+// Throws OptionError when one of `outputs` (option, path; empty: no file) is the scene's own file
+// or the same file as another: the later write would replace the scene, or the earlier output,
+// without a word. A built-in scene name is no file.
+void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& outputs);
 
 }  // namespace radmesh::cli

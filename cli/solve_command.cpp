@@ -124,6 +124,8 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
 void run(const SolveArgs& args, Processes* processes) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
+  checkOutputsDistinct(args.flags.scene,
+                       {{"--out", args.outPath}, {"--stats", args.statsPath}, {"--checkpoint", args.checkpointPath}});
   SolveOptions options = args.flags.resolved();
   if (readBake(args.flags.scene))  // else refused as a scene with no emitter
     throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",

@@ -8,6 +8,8 @@
 
 #include "solver/cells/cell_at.h"
 #include "solver/cells/find_cells.h"
+#include "solver/io/atomic_file.h"
+#include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/checkpoint.h"
 #include "solver/scene/scene_error.h"
@@ -131,6 +133,10 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
 }
 
 void SolverThread::save(Run& run, const std::string& path) {
+  if (!isBuiltinScene(scene_.source) && sameFile(path, scene_.source)) {
+    run.checkpointMessage = path + " is the scene itself: save the checkpoint to another path";
+    return;
+  }
   try {
     if (run.cells) {
       writeCellsCheckpoint(path, scene_, *run.cells);

@@ -71,9 +71,21 @@ void writeAtomically(const std::string& path, const std::string& bytes) {
 }
 
 void checkWritableBeside(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw std::runtime_error(fmt::format("{} is a folder: a file cannot replace it", path));
   const TempFile temp = createTempBeside(path);
   ::close(temp.fd);
   ::unlink(temp.path.c_str());
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::exists(a, error) && fs::exists(b, error)) return fs::equivalent(a, b, error);
+  const fs::path left = fs::weakly_canonical(fs::absolute(a, error), error);
+  const fs::path right = fs::weakly_canonical(fs::absolute(b, error), error);
+  return !error && left == right;
 }
 
 }  // namespace radmesh

@@ -14,4 +14,8 @@ void writeAtomically(const std::string& path, const std::string& bytes);
 // the work whose result it is to hold.
 void checkWritableBeside(const std::string& path);
 
+// Whether two paths name one file (the same file reached by links or relative paths included,
+// and paths to files not yet written compared as they would resolve).
+bool sameFile(const std::string& a, const std::string& b);
+
 }  // namespace radmesh

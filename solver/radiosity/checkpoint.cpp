@@ -218,6 +218,9 @@ SceneError refusal(const std::string& path, const std::string& problem, const st
 // Throws SceneError naming the file, what is wrong and the fix.
 template <class T> T readFile(const std::string& path, const std::string& kind) {
   auto refuse = [&](const std::string& problem, const std::string& fix) { return refusal(path, problem, fix); };
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw refuse("is a folder, not a checkpoint", "give --resume a checkpoint written by --checkpoint");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw refuse("cannot be read: " + errnoText(), "give --resume a checkpoint written by --checkpoint");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -450,6 +450,23 @@ TEST(Cli, BenchAccuracyRefusesAnImpossibleReference) {
   const CommandRun run = radmesh("bench accuracy furnace --cells 1,0.5 --reference-resolution 8");
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--reference-resolution 8 is out of range"), std::string::npos) << run.output;
+  // Every other value is checked before the references are solved too, not only the first.
+  const std::string file = tempPath("a-file");
+  std::ofstream(file) << "x";
+  const std::map<std::string, std::string> cases = {
+      {"--resolutions 32,5", "--resolutions 5 is out of range"},
+      {"--reference-until nan", "--reference-until must be a convergence in (0, 1], e.g. 0.999; got nan"},
+      {"--reference-until 2", "--reference-until must be a convergence in (0, 1]"},
+      {"--out-dir " + file, "--out-dir '" + file + "' is a file, not a folder"},
+      {"--json " + tempPath("a.txt"), "give a path ending in .json"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun refused = radmesh("bench accuracy furnace --cells 1 " + arguments);
+    EXPECT_EQ(refused.exitCode, 2) << arguments << ": " << refused.output;
+    EXPECT_NE(refused.output.find(message), std::string::npos) << arguments << ": " << refused.output;
+    for (const char* solved : {"reference analytic", "reference hemicube"})
+      EXPECT_EQ(refused.output.find(solved), std::string::npos) << arguments << ": refused before any solve";
+  }
 }
 
 }  // namespace
@@ -863,6 +880,19 @@ TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
     EXPECT_EQ(run.output.find("solving"), std::string::npos) << arguments << ": " << run.output;
   }
   EXPECT_NE(radmesh("solve office --out " + missing + ".glb").output.find("mkdir -p"), std::string::npos);
+  // A folder named like the file: refused before, not after, the solve.
+  const std::string folder = tempPath("folder.json");
+  std::filesystem::create_directories(folder);
+  CommandRun run = radmesh("solve furnace --stats " + folder);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--stats '" + folder + "' is a folder"), std::string::npos) << run.output;
+  run = radmesh("solve furnace --checkpoint " + folder);
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find(folder + " is a folder"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("solving"), std::string::npos) << run.output;
+  run = radmesh("solve furnace --resume " + folder);
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("is a folder, not a checkpoint"), std::string::npos) << run.output;
   if (radmesh("render --help").output.find("not built") != std::string::npos) return;
   for (const std::string& out : {missing + ".png", tempPath("x.jpg")}) {
     const CommandRun run = radmesh("render office --out " + out);
@@ -870,6 +900,37 @@ TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
     EXPECT_NE(run.output.find("--out '" + out + "'"), std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("solved"), std::string::npos) << run.output;
   }
+}
+
+// Two outputs on one file, or an output on the scene, would lose one of them without a word.
+TEST(Cli, OutputsThatWouldReplaceTheSceneOrEachOtherAreRefused) {
+  const std::string scene = tempPath("room.gltf");
+  std::filesystem::copy_file(test::sourceDir() / "assets" / "cornell.gltf", scene);
+  const std::string before = readBytes(scene);
+  const std::string dir = std::filesystem::path(scene).parent_path().string();
+  const std::map<std::string, std::string> cases = {
+      {"solve " + scene + " --checkpoint " + dir + "/../" + std::filesystem::path(dir).filename().string() +
+           "/room.gltf",
+       "is the scene being solved: writing it would replace the scene"},
+      {"solve furnace --checkpoint " + tempPath("same.glb") + " --out " + tempPath("same.glb"),
+       "--checkpoint '" + tempPath("same.glb") + "' is the file --out writes too"},
+      {"solve furnace --stats " + tempPath("s.json") + " --checkpoint " + tempPath("s.json"),
+       "--checkpoint '" + tempPath("s.json") + "' is the file --stats writes too"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun run = radmesh(arguments + " --max-iterations 2");
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
+    EXPECT_EQ(run.output.find("solving"), std::string::npos) << arguments << ": " << run.output;
+  }
+  EXPECT_NE(radmesh("solve " + scene + " --checkpoint " + scene).output.find("is the scene being solved"),
+            std::string::npos);
+  EXPECT_EQ(readBytes(scene), before);
+  // Going on from a checkpoint and saving it again in place stays allowed.
+  const std::string checkpoint = tempPath("c.ckpt");
+  ASSERT_EQ(radmesh("solve furnace --max-iterations 2 --checkpoint " + checkpoint).exitCode, 0);
+  const CommandRun again = radmesh("solve furnace --max-iterations 4 --checkpoint " + checkpoint + " --resume " + checkpoint);
+  EXPECT_EQ(again.exitCode, 0) << again.output;
 }
 
 }  // namespace
