@@ -238,6 +238,7 @@ void addInfoCommand(CLI::App& app) {
     const std::vector<Patch> patches = meshScene(scene, cell.cellM);
     const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
+    checkMinElement(args->minElementM);
     const double elements = countElements(patches, args->minElementM);
     const bool cells = args->cells || !args->planPath.empty();
     CellPartition partition;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "solver/scene/scene_error.h"
+#include "solver/scene/solve_options.h"
 
 namespace radmesh {
 
@@ -96,9 +97,7 @@ double countElements(const std::vector<Patch>& patches, double minElementM) {
 
 void checkElementCount(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements,
                        const std::string& what) {
-  if (!std::isfinite(minElementM) || !(minElementM >= 0.0))
-    throw OptionError(fmt::format("--min-element must be a finite length in metres, at least 0 (0: every patch cut "
-                                  "into four), got {}; use e.g. --min-element 0.1", minElementM));
+  checkMinElement(minElementM);
   const double count = countElements(patches, minElementM);
   if (count > static_cast<double>(maxElements)) {
     const std::string fix = minElementM > 0.0

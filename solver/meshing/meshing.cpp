@@ -203,6 +203,12 @@ Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, dou
 
 std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches) {
   checkCell(cellM);
+  // A cell holds at most cell^2 of area: a cell so small that the area alone passes the limit is
+  // refused before the polygons are laid on its grid, where coordinates over it would overflow.
+  double sceneAreaM2 = 0.0;
+  for (const Polygon& polygon : scene.polygons) sceneAreaM2 += polygonArea(polygon.vertices);
+  if (!(sceneAreaM2 / (cellM * cellM) <= static_cast<double>(maxPatches)))
+    refuseCount(sceneAreaM2 / (cellM * cellM), cellM, maxPatches, sceneAreaM2);
   std::vector<PreparedPolygon> prepared;
   prepared.reserve(scene.polygons.size());
   double estimate = 0.0, areaM2 = 0.0;

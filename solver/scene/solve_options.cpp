@@ -34,6 +34,12 @@ void validateMachine(const PeMachine& m) {
 
 }  // namespace
 
+void checkMinElement(double minElementM) {
+  if (!(std::isfinite(minElementM) && minElementM >= 0.0))
+    throw OptionError("--min-element " + number(minElementM) +
+                      " is out of range: give the longest element edge in metres, e.g. 0.1 (0: every patch cut into four)");
+}
+
 void checkResolution(int resolution, const std::string& option) {
   if (resolution < 16 || resolution > 2048)
     throw OptionError(option + " " + std::to_string(resolution) +
@@ -62,9 +68,7 @@ void validateOptions(const SolveOptions& o) {
     throw OptionError("--threads " + std::to_string(o.threads) +
                       " is out of range: give 0 (every core) or a positive count");
   validateMachine(o.machine);
-  if (!(std::isfinite(o.minElementM) && o.minElementM >= 0.0))
-    throw OptionError("--min-element " + number(o.minElementM) +
-                      " is out of range: give the longest element edge in metres, e.g. 0.1 (0: every patch cut into four)");
+  checkMinElement(o.minElementM);
   if (o.backend == Backend::Mesh && o.projection != Projection::Plane)
     throw OptionError(std::string("--backend mesh runs the paper's single plane; --projection ") +
                       toString(o.projection) + " is native only: use --projection plane or --backend native");

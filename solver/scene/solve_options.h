@@ -111,6 +111,8 @@ Preset parsePreset(const std::string& text);  // throws OptionError
 void validateOptions(const SolveOptions& options);
 // Throws OptionError, naming `option`, for an N x N projection outside 16..2048.
 void checkResolution(int resolution, const std::string& option);
+// Throws OptionError unless --min-element is a finite length of at least 0.
+void checkMinElement(double minElementM);
 // Throws OptionError for adaptive subdivision without a minElementM above 0. Not in validateOptions:
 // the CLI and the viewer check their flags before the scene is read, and choose the default
 // (defaultMinElement) once its cell is known. The solvers check it.

@@ -261,6 +261,17 @@ TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   EXPECT_NE(run.output.find("--threads: -1 is not a thread count: give 0 (every core) or a positive count"),
             std::string::npos)
       << run.output;
+  // A cell too small to lay a grid at is refused as the cell, not blamed on a polygon.
+  run = radmesh("info two-rooms --cell 1e-308");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--cell 1e-308 m would cut the scene into uncountably many patches"), std::string::npos)
+      << run.output;
+  // info counts the elements --min-element would make: a length it cannot be is refused there too.
+  for (const std::string value : {"nan", "-1", "inf"}) {
+    run = radmesh("info furnace --min-element " + value);
+    EXPECT_EQ(run.exitCode, 2) << value << ": " << run.output;
+    EXPECT_NE(run.output.find("--min-element " + value + " is out of range"), std::string::npos) << run.output;
+  }
 }
 
 // More threads than the machine runs at once only wait, each with its own scratch: cut to that many.
