@@ -1,12 +1,16 @@
 #include "solver/projection/single_plane.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
+
+#include "solver/scene/scene_error.h"
 
 namespace radmesh {
 
 double singlePlaneCapturedFraction(double ratio) {
-  const double s = ratio / std::sqrt(1.0 + ratio * ratio);
+  const double s = 1.0 / std::sqrt(1.0 + 1.0 / (ratio * ratio));  // r / sqrt(1 + r^2), with no r^2 to overflow
   return 4.0 / std::numbers::pi * s * std::atan(s);
 }
 
@@ -26,7 +30,16 @@ ProjectionFace singlePlaneFace(int resolution, double ratio) {
 ProjectionSurface makeSinglePlane(int resolution, double ratio) {
   ProjectionSurface surface;
   addFace(surface, singlePlaneFace(resolution, ratio), singlePlaneDeltaFormFactor);
-  scaleToCapturedFraction(surface, singlePlaneCapturedFraction(ratio));
+  const double closedForm = singlePlaneCapturedFraction(ratio);
+  scaleToCapturedFraction(surface, closedForm);
+  // Pixels wide against the plane's height sample the form factor at their centres too coarsely:
+  // scaling the table to the closed form would keep the total and put the light in the wrong places.
+  if (std::abs(surface.tableSum - closedForm) > kPlaneSamplingTolerance * closedForm)
+    throw OptionError(fmt::format(
+        "--ratio {} at --resolution {}: the plane's pixels, {:.3g} wide at height 1, are too coarse to sample the "
+        "form factor (their delta form factors sum to {:.4f}, the closed form is {:.4f}); use --ratio {:.3g} or "
+        "less, or a larger --resolution",
+        ratio, resolution, 2.0 * ratio / resolution, surface.tableSum, closedForm, 0.3 * resolution));
   return surface;
 }
 

@@ -16,6 +16,9 @@ double singlePlaneDeltaFormFactor(double x, double y, double pixelArea);
 // The plane's face: N x N pixels over [-r, r]^2, a along u, b along v.
 ProjectionFace singlePlaneFace(int resolution, double ratio);
 
+// Throws OptionError naming --ratio and --resolution when the pixels' delta form factors sum to
+// more than kPlaneSamplingTolerance away from the closed form: pixels too wide to sample it.
+inline constexpr double kPlaneSamplingTolerance = 0.01;
 ProjectionSurface makeSinglePlane(int resolution, double ratio);
 
 }  // namespace radmesh

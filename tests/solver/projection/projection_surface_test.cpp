@@ -3,9 +3,12 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "solver/projection/hemicube.h"
 #include "solver/projection/single_plane.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh {
 namespace {
@@ -21,6 +24,22 @@ TEST(SinglePlane, CapturedFractionClosedForm) {
   EXPECT_NEAR(singlePlaneCapturedFraction(3.0), 0.91688173, 1e-8);  // the paper's 91.7 %
   EXPECT_NEAR(singlePlaneCapturedFraction(1e6), 1.0, 1e-6);      // an infinite plane: everything
   EXPECT_NEAR(singlePlaneCapturedFraction(1e-3), 4.0 / std::numbers::pi * 1e-6, 1e-11);  // small: area / pi
+  EXPECT_DOUBLE_EQ(singlePlaneCapturedFraction(1e155), 1.0);  // r^2 would overflow: still everything
+}
+
+// Pixels as wide as the plane's height miss the peak under the shooter: the table sums to far less
+// than the closed form, and scaling it up would put the light in the wrong places. Refused.
+TEST(SinglePlane, PixelsTooCoarseToSampleTheFormFactorAreRefused) {
+  EXPECT_NO_THROW(makeSinglePlane(64, 20.0));  // pixels 0.625 wide: 0.07 % off
+  EXPECT_NO_THROW(makeSinglePlane(16, 3.0));   // the coarsest the CLI allows at the paper's ratio
+  for (const auto& [n, ratio] : {std::pair{64, 50.0}, std::pair{16, 10.0}, std::pair{256, 1000.0}}) {
+    try {
+      makeSinglePlane(n, ratio);
+      ADD_FAILURE() << "N " << n << ", ratio " << ratio << " was accepted";
+    } catch (const OptionError& e) {
+      EXPECT_NE(std::string(e.what()).find("too coarse to sample the form factor"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SinglePlane, TableSumConvergesToTheClosedFormAsResolutionGrows) {
