@@ -68,6 +68,8 @@ glm::ivec2 parseSize(const std::string& text) {
 
 // The start view of the walkthrough, moved by --camera / --look / --fov: chosen (or refused) from
 // the scene's frame before a solve, not after it.
+constexpr double kMinFovDeg = 0.01;
+
 RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
   WalkCamera walk(frame);
   walk.fovYDeg = args.fovDeg;
@@ -77,6 +79,12 @@ RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
     view.look = 0.5 * (frame.boundsMin + frame.boundsMax);
   }
   if (args.look) view.look = *args.look;
+  if (!std::isfinite(glm::length(view.look - view.eye)))
+    throw OptionError("--camera/--look: too far apart to aim the camera; give points near the scene");
+  // A camera placed outside the walk's reach still sees the whole scene: the far plane lies
+  // beyond the scene's farthest corner from it.
+  const glm::dvec3 centre = 0.5 * (frame.boundsMin + frame.boundsMax);
+  view.farM = std::max(view.farM, 1.5 * (glm::length(view.eye - centre) + 0.5 * glm::length(frame.boundsMax - frame.boundsMin)));
   try {
     validateView(view);
   } catch (const std::invalid_argument& e) {
@@ -140,7 +148,9 @@ std::optional<Solved> readBakeToRender(const RenderArgs& args) {
 
 void run(const RenderArgs& args) {
   const glm::ivec2 size = parseSize(args.size);
-  if (!(args.fovDeg > 0.0 && args.fovDeg < 180.0)) throw OptionError("--fov must lie strictly between 0 and 180");
+  if (!(args.fovDeg >= kMinFovDeg && args.fovDeg < 180.0))
+    throw OptionError(fmt::format("--fov must lie between {} and 180 degrees (narrower, the picture's single-precision "
+                                  "projection has no pixels left), got {}", kMinFovDeg, args.fovDeg));
   checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
   std::optional<Solved> solved = readBakeToRender(args);
   if (!solved) solved = solveScene(args);

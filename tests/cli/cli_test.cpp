@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tests/cli/cli_run.h"
+#include "viewer/image.h"
 
 namespace radmesh {
 namespace {
@@ -588,6 +589,8 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--exposure nan", "--exposure nan is out of range"},
       {"--exposure 1e308", "--exposure 1e+308 is out of range"},
       {"--effects some", "--effects"},
+      {"--fov 1e-308", "--fov must lie between 0.01 and 180 degrees"},
+      {"--camera 1e308,0,0", "--camera/--look: too far apart to aim the camera"},
   };
   for (const auto& [options, named] : cases) {
     const CommandRun run = radmesh("render cornell --cell 0.2 --iterations 1 " + options + " --out " + out);
@@ -596,6 +599,17 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
     EXPECT_EQ(run.output.find("solved"), std::string::npos) << options << ": refused after the solve";
   }
   EXPECT_FALSE(std::filesystem::exists(out));
+#ifdef RADMESH_HAS_VIEWER
+  // A camera 12 m from the 0.55 m box, beyond the walk's far plane (10 m): the box is still drawn.
+  const std::string far = tempPath("far.png");
+  const CommandRun run = radmesh("render cornell --cell 0.2 --iterations 1 --camera 0.27,-12,0.27 --size 160x120 --out " + far);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Image picture = readPng(far);
+  int drawn = 0;
+  for (size_t i = 0; i < picture.rgba.size(); i += 4)
+    drawn += !std::equal(picture.rgba.begin() + i, picture.rgba.begin() + i + 3, picture.rgba.begin());  // not as the corner
+  EXPECT_GT(drawn, 4) << far;
+#endif
 }
 
 // render simulates what solve does: only the effects the scene calls for, unless --effects all.
