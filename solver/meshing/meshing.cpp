@@ -199,6 +199,23 @@ Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, dou
   return patch;
 }
 
+// How many patches the cell makes, from above (cellEstimate), each polygon prepared for it;
+// `prepared` and `areaM2` (the pieces' projected area) are filled when given.
+double patchEstimate(const Scene& scene, double cellM, std::vector<PreparedPolygon>* prepared = nullptr,
+                     double* areaM2 = nullptr) {
+  if (prepared) prepared->reserve(scene.polygons.size());
+  double estimate = 0.0;
+  for (size_t i = 0; i < scene.polygons.size(); ++i) {
+    PreparedPolygon p = prepare(scene, i, cellM);
+    for (const auto& piece : p.pieces) {
+      estimate += cellEstimate(piece, cellM, p.noiseM);
+      if (areaM2) *areaM2 += signedArea(piece);
+    }
+    if (prepared) prepared->push_back(std::move(p));
+  }
+  return estimate;
+}
+
 }  // namespace
 
 std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches) {
@@ -210,15 +227,8 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
   if (!(sceneAreaM2 / (cellM * cellM) <= static_cast<double>(maxPatches)))
     refuseCount(sceneAreaM2 / (cellM * cellM), cellM, maxPatches, sceneAreaM2);
   std::vector<PreparedPolygon> prepared;
-  prepared.reserve(scene.polygons.size());
-  double estimate = 0.0, areaM2 = 0.0;
-  for (size_t i = 0; i < scene.polygons.size(); ++i) {
-    prepared.push_back(prepare(scene, i, cellM));
-    for (const auto& piece : prepared.back().pieces) {
-      estimate += cellEstimate(piece, cellM, prepared.back().noiseM);
-      areaM2 += signedArea(piece);
-    }
-  }
+  double areaM2 = 0.0;
+  const double estimate = patchEstimate(scene, cellM, &prepared, &areaM2);
   // Refuse before slicing: a tiny cell must fail fast, not exhaust memory.
   if (!(estimate <= static_cast<double>(maxPatches))) refuseCount(estimate, cellM, maxPatches, areaM2);
 
@@ -270,10 +280,27 @@ CellChoice chooseCell(const Scene& scene) {
   if (smallest < kRoomSizedM)
     return {smallest / 16.0, fmt::format("cell {:.4g} m, a sixteenth of the model's smallest extent ({:.3g} m, "
                                          "smaller than a room)", smallest / 16.0, smallest)};
-  const double budgetCell = std::sqrt(area / kCellPatchBudget);
-  if (budgetCell > kDefaultCellM)
-    return {budgetCell, fmt::format("cell {:.4g} m, so that its {:.4g} m^2 make about {:.0f} patches", budgetCell,
-                                    area, kCellPatchBudget)};
+  double budgetCell = std::sqrt(area / kCellPatchBudget);
+  if (budgetCell > kDefaultCellM) {
+    // Polygons narrower than the cell make partial patches, many more than area / cell^2 (a
+    // building's walls: three times as many): grow the cell until the count itself fits.
+    // The estimate is from above: "about" allows it a quarter over. Where the polygons alone are
+    // most of the count, a larger cell stops helping: the cell stays where it did.
+    double estimate = patchEstimate(scene, budgetCell);
+    for (int step = 0; step < 20 && estimate > 1.25 * kCellPatchBudget; ++step) {
+      const double grown = budgetCell * std::min(2.0, estimate / kCellPatchBudget);
+      const double fewer = patchEstimate(scene, grown);
+      if (fewer > 0.9 * estimate) break;
+      budgetCell = grown;
+      estimate = fewer;
+    }
+    if (estimate > 1.25 * kCellPatchBudget)
+      return {budgetCell, fmt::format("cell {:.4g} m: its {} polygons alone make more than {:.0f} patches (about "
+                                      "{:.3g} here; a larger cell hardly lowers that)",
+                                      budgetCell, scene.polygons.size(), kCellPatchBudget, estimate)};
+    return {budgetCell, fmt::format("cell {:.4g} m, so that its {:.4g} m^2 make at most about {:.0f} patches",
+                                    budgetCell, area, kCellPatchBudget)};
+  }
   return {kDefaultCellM, fmt::format("cell {} m, the paper's 15 inches (a room-sized model)", kDefaultCellM)};
 }
 

@@ -102,6 +102,20 @@ TEST(Meshing, TheDefaultCellFollowsTheModelsSize) {
   EXPECT_DOUBLE_EQ(campus.cellM, std::sqrt((400.0 * 300.0 + 400.0 * 20.0) / kCellPatchBudget));
   EXPECT_NEAR(static_cast<double>(meshScene(box({400.0, 300.0, 20.0}), campus.cellM).size()), kCellPatchBudget,
               0.02 * kCellPatchBudget);
+  // Narrow polygons (a building's walls) make partial patches: 40 000 strips 0.2 m x 20 m would be
+  // 920 000 patches at the cell of their area (0.89 m); the chosen cell keeps to about the budget.
+  Scene strips;
+  strips.materials.push_back(Material{});
+  for (int k = 0; k < 40'000; ++k) {
+    const double x = (k % 200) * 1.0, y = (k / 200) * 25.0;
+    strips.polygons.push_back({{{x, y, 0.0}, {x + 0.2, y, 0.0}, {x + 0.2, y + 20.0, 0.0}, {x, y + 20.0, 0.0}}, 0, "strip"});
+  }
+  const CellChoice stripsCell = chooseCell(strips);
+  EXPECT_GT(stripsCell.cellM, 2.0 * std::sqrt(40'000 * 4.0 / kCellPatchBudget)) << stripsCell.why;
+  const double count = static_cast<double>(meshScene(strips, stripsCell.cellM).size());
+  EXPECT_LE(count, 1.25 * kCellPatchBudget) << stripsCell.why;
+  EXPECT_GE(count, 0.5 * kCellPatchBudget) << stripsCell.why;
+  EXPECT_NE(stripsCell.why.find("at most about 200000 patches"), std::string::npos) << stripsCell.why;
 }
 
 TEST(Meshing, UnitSquareAtOriginIsSixteenQuads) {
