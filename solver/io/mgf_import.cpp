@@ -31,6 +31,9 @@ namespace fs = std::filesystem;
 // Beyond these the input is refused rather than allowed to exhaust memory.
 constexpr size_t kMaxPolygons = 2'000'000;
 constexpr size_t kMaxIncludeDepth = 64;
+// Includes read anew each time: a file that includes another twice, at each of 22 levels, reads
+// four million files.
+constexpr size_t kMaxIncludedReads = 100'000;
 
 // Entities radmesh reads and checks but cannot represent, and why.
 struct IgnoredEntity {
@@ -101,6 +104,7 @@ class MgfInterpreter {
   std::vector<int> transformLines_{0};
   std::vector<std::string> objects_;
   std::vector<OpenFile> files_;
+  size_t includedReads_ = 0;
   std::map<std::string, Note> notes_;  // by message
   std::map<std::string, std::vector<int>> materialsByName_;
   std::vector<std::string> warnings_;
@@ -232,6 +236,9 @@ void MgfInterpreter::include(const MgfEntity& e) {
   if (files_.size() >= kMaxIncludeDepth)
     throw MgfError("includes nest deeper than " + std::to_string(kMaxIncludeDepth) + " files",
                    "flatten the include hierarchy");
+  if (++includedReads_ > kMaxIncludedReads)
+    throw MgfError("more than " + std::to_string(kMaxIncludedReads) + " files included in all",
+                   "include each file fewer times (an include repeated at every level multiplies)");
   const bool transformed = e.words.size() > 2;
   if (transformed) pushTransform(std::vector<std::string>(e.words.begin() + 2, e.words.end()), e.line);
   load(target, target.filename().string());

@@ -33,6 +33,7 @@ struct Segment {
 
 std::vector<Segment> parseSegments(const std::vector<std::string>& args) {
   std::vector<Segment> segments(1);
+  size_t repeats = 0;  // every -i applies its transform that many times: bounded as instances are
   const auto number = [&](size_t& k, const std::string& what) {
     if (++k >= args.size())
       throw MgfError(args[k - 1] + " is missing its " + what, "give " + args[k - 1] + " a " + what);
@@ -60,6 +61,9 @@ std::vector<Segment> parseSegments(const std::vector<std::string>& args) {
       if (static_cast<size_t>(n) > kMaxMgfInstances)
         throw MgfError(a + " " + args[k] + " is more than " + std::to_string(kMaxMgfInstances),
                        "use a smaller count");
+      if (a == "-i" && (repeats += static_cast<size_t>(n)) > kMaxMgfInstances)
+        throw MgfError("the -i counts of this transform add up to more than " + std::to_string(kMaxMgfInstances),
+                       "use smaller -i counts");
       segments.push_back({MgfAffine{}, n, a == "-a"});
       continue;
     } else {

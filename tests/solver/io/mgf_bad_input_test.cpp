@@ -135,10 +135,34 @@ TEST(MgfBadInput, ContextAndCountErrorsNameTheirLine) {
   }
 }
 
+// Includes are read anew each time: two of the next file at each of 22 levels would be four
+// million reads. Refused when the reads pass the limit, long before.
+TEST(MgfBadInput, IncludesThatFanOutAreRefusedWithoutHanging) {
+  TempDir dir;
+  const int levels = 22;
+  for (int k = 0; k < levels; ++k)
+    test::writeMgf(dir, "level" + std::to_string(k) + ".mgf",
+                   "i level" + std::to_string(k + 1) + ".mgf\ni level" + std::to_string(k + 1) + ".mgf\n");
+  test::writeMgf(dir, "level" + std::to_string(levels) + ".mgf", "# empty\n");
+  try {
+    importMgf((dir / "level0.mgf").string());
+    ADD_FAILURE() << "a fan-out of 2^22 includes was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 100000 files included in all"), std::string::npos) << e.what();
+  }
+}
+
 TEST(MgfBadInput, HugeArraysAreRefusedBeforeTheyAreBuilt) {
   const std::string sphere = "m w =\n  rd 0.5\nv c =\n  p 0 0 0\n";
   for (const std::string& text : {sphere + "xf -a 1000 -a 1000\n", sphere + "xf -a 50000\nsph c 1\n",
-                                   sphere + "xf -a 400\nxf -a 400\n", sphere + "xf -i 1000000 -t 1 0 0\n"}) {
+                                   sphere + "xf -a 400\nxf -a 400\n", sphere + "xf -i 1000000 -t 1 0 0\n",
+                                   // each -i under the limit, together far over it: 100 000 segments of
+                                   // 100 000 steps each would be 10^10 products
+                                   sphere + "xf" + [] {
+                                     std::string segments;
+                                     for (int k = 0; k < 3000; ++k) segments += " -i 100000 -rz 1";
+                                     return segments;
+                                   }() + "\n"}) {
     try {
       test::importMgfText(text);
       ADD_FAILURE() << text << " was accepted";
