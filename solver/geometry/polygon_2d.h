@@ -26,6 +26,18 @@ inline double signedArea(const std::vector<Vec2>& polygon) {
   return 0.5 * twice;
 }
 
+// How many times the polygon winds around p, counter-clockwise positive (p off its edges).
+inline int windingNumber(const std::vector<Vec2>& polygon, const Vec2& p) {
+  int winding = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2& a = polygon[i];
+    const Vec2& b = polygon[(i + 1) % polygon.size()];
+    if (a.y <= p.y && b.y > p.y && cross2(b - a, p - a) > 0.0) ++winding;       // upward, p on its left
+    else if (a.y > p.y && b.y <= p.y && cross2(b - a, p - a) < 0.0) --winding;  // downward, p on its right
+  }
+  return winding;
+}
+
 // Length scale of a polygon (its bounding-box diagonal) from which tolerances are derived.
 inline double extentOf(const std::vector<Vec2>& polygon) {
   if (polygon.empty()) return 0.0;

@@ -310,6 +310,22 @@ TEST(Meshing, FaceWithASeamToAHole) {
   }
 }
 
+// The same square listed twice round: every part is inside it twice, and both its area and its
+// convex parts' count that twice, so only the winding tells. Refused, as a bow-tie is.
+TEST(Meshing, AFaceThatGoesRoundTwiceIsRefused) {
+  const std::vector<Vec3> twice{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<Vec3> lShapeTwice{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0},
+                                      {0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+  for (const auto& face : {twice, lShapeTwice}) {
+    try {
+      meshScene(sceneOf({face}), 0.25);
+      ADD_FAILURE() << face.size() << "-vertex face accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("its outline goes round part of it 2 times"), std::string::npos) << e.what();
+    }
+  }
+}
+
 // A comb: many reflex corners, all on grid lines, so each tooth and the spine mesh into cells.
 TEST(Meshing, AxisAlignedCombOnTheGrid) {
   std::vector<Vec3> comb{{0, 0, 0}, {2, 0, 0}, {2, 0.25, 0}};
