@@ -21,6 +21,8 @@ constexpr double kPlaneAngleRad = 1e-4;
 constexpr double kCollinearSine = 1e-7;
 // A triangle thinner than this (area / longest edge^2) has no area worth solving.
 constexpr double kDegenerateAreaRatio = 1e-10;
+// A model spans at most this many of its typical triangles, as far as the tolerances are concerned.
+constexpr double kExtentPerMedianEdge = 1000.0;
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -79,19 +81,31 @@ struct Triangle {
   size_t source;  // index into the input
 };
 
-// The diagonal of the bounding box of the mergeable triangles (1 when there is none).
+// The length the tolerances are relative to: the diagonal of the bounding box of the mergeable
+// triangles (1 when there is none), but no more than a thousand times their median longest edge.
+// One stray triangle far away (or one vertex at 3e38) would otherwise stretch the box until the
+// weld joined every corner of the model: rounding grows with the coordinates, not with the box.
 double sceneExtent(const std::vector<Polygon>& input) {
   bool any = false;
   Vec3 lo{0.0}, hi{0.0};
+  std::vector<double> longest;
   for (const Polygon& p : input)
-    if (isMergeable(p))
+    if (isMergeable(p)) {
       for (const Vec3& v : p.vertices) {
         lo = any ? glm::min(lo, v) : v;
         hi = any ? glm::max(hi, v) : v;
         any = true;
       }
-  const double extent = glm::length(hi - lo);
-  return extent > 0.0 ? extent : 1.0;
+      const auto& v = p.vertices;
+      longest.push_back(std::max({glm::length(v[1] - v[0]), glm::length(v[2] - v[1]), glm::length(v[0] - v[2])}));
+    }
+  double extent = glm::length(hi - lo);
+  if (!longest.empty()) {
+    std::nth_element(longest.begin(), longest.begin() + longest.size() / 2, longest.end());
+    const double median = longest[longest.size() / 2];
+    if (median > 0.0 && std::isfinite(median)) extent = std::min(extent, kExtentPerMedianEdge * median);
+  }
+  return extent > 0.0 && std::isfinite(extent) ? extent : 1.0;
 }
 
 uint64_t edgeKey(int from, int to) {

@@ -18,7 +18,8 @@ struct MergeReport {
 // within 1e-6 of the scene's size of its plane) are merged into one polygon: its outer boundary in
 // order, counter-clockwise like the triangles, with collinear boundary vertices removed. Vertices
 // are welded when they coincide to 1e-7 of the scene's size (float precision), so separately
-// stored corners join.
+// stored corners join. The scene's size here is its bounding box's diagonal, but at most a thousand
+// of its median triangle's longest edges: one stray triangle far away does not weld the model.
 //
 // Every output polygon is simple (convex or not): a region is grown only while it stays a
 // topological disk, so a region with a hole (a ring around a light, say) comes out as several

@@ -95,6 +95,24 @@ TEST(CoplanarMerge, NearlyEqualCornersAreWelded) {
   EXPECT_EQ(out[0].vertices, kQuad);
 }
 
+// One stray triangle 1e7 m away must not stretch the weld over the model: the two unit squares,
+// 0.01 m apart, stay two squares and keep their corners.
+TEST(CoplanarMerge, AStrayFarTriangleDoesNotWeldTheModelTogether) {
+  const Vec3 gap{2.01, 0, 0};
+  std::vector<Polygon> input{tri(kQuad[0], kQuad[1], kQuad[2]), tri(kQuad[0], kQuad[2], kQuad[3]),
+                             tri(kQuad[0] + gap, kQuad[1] + gap, kQuad[2] + gap),
+                             tri(kQuad[0] + gap, kQuad[2] + gap, kQuad[3] + gap)};
+  input.push_back(tri({1e7, 0, 0}, {1e7 + 1, 0, 0}, {1e7, 1, 0}));
+  MergeReport report;
+  const auto out = mergeCoplanarTriangles(input, &report);
+  EXPECT_EQ(report.degenerateDropped, 0u);
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_EQ(out[0].vertices, kQuad);
+  double area = 0.0;
+  for (const Polygon& p : out) area += polygonArea(p.vertices);
+  EXPECT_NEAR(area, 2.0 + 2.0 + 0.5, 1e-9);
+}
+
 TEST(CoplanarMerge, VertexInTheMiddleOfAnEdgeIsRemoved) {
   const Vec3 a{0, 0, 0}, m{1, 0, 0}, b{2, 0, 0}, c{2, 1, 0}, d{0, 1, 0};
   const auto out = mergeCoplanarTriangles({tri(a, m, d), tri(m, b, c), tri(m, c, d)});
