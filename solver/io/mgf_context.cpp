@@ -123,6 +123,7 @@ bool MgfContexts::handle(const MgfEntity& e) {
   } else if (k == "p") {
     requireMgfArguments(e, 3, 3, "p x y z");
     vertex.position = vector3(e, "coordinate");
+    checkMgfPoint(vertex.position, "the point", "check the coordinates");
   } else if (k == "n") {
     requireMgfArguments(e, 3, 3, "n dx dy dz");
     vertex.normal = vector3(e, "normal component");

@@ -1,8 +1,14 @@
 #pragma once
 // What the MGF helpers throw for bad input. They know the problem and its fix but not where it
 // happened; the interpreter (mgf_import.cpp) adds the file and line and rethrows a SceneError.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "solver/scene/scene.h"
 
 namespace radmesh {
 
@@ -15,5 +21,15 @@ class MgfError : public std::runtime_error {
  private:
   std::string fix_;
 };
+
+// Past this, lengths and areas overflow (or rounding swallows the model): a point farther from the
+// origin is refused where it is given or placed, not dropped later as degenerate.
+inline constexpr double kMaxMgfCoordinate = 1e30;
+inline void checkMgfPoint(const Vec3& p, const std::string& what, const std::string& fix) {
+  if (!(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxMgfCoordinate))
+    throw MgfError(fmt::format("{} ({:g}, {:g}, {:g}) is farther than {:g} from the origin", what, p.x, p.y, p.z,
+                               kMaxMgfCoordinate),
+                   fix);
+}
 
 }  // namespace radmesh

@@ -353,7 +353,10 @@ void MgfInterpreter::emit(const MgfPolygons& polygons, const MgfEntity& e, int m
   for (const MgfAffine& t : transforms_.back()) {
     for (const std::vector<Vec3>& local : polygons) {
       Polygon p{{}, material, origin};
-      for (const Vec3& v : local) p.vertices.push_back(t.point(v));
+      for (const Vec3& v : local) {
+        p.vertices.push_back(t.point(v));
+        checkMgfPoint(p.vertices.back(), "a vertex placed at", "check the radii and xf scales that place it");
+      }
       if (t.mirrors()) std::reverse(p.vertices.begin(), p.vertices.end());
       dropRepeatedVertices(p.vertices);
       if (p.vertices.size() >= 3) scene_.polygons.push_back(std::move(p));  // else a pole or apex

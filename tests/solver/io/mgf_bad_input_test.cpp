@@ -2,6 +2,9 @@
 // entity at fault, the problem and a fix, and never a crash or a hang.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 #include "solver/io/mgf_import.h"
 #include "solver/scene/scene_error.h"
 #include "solver/io/scene_loader.h"
@@ -131,6 +134,26 @@ TEST(MgfBadInput, ContextAndCountErrorsNameTheirLine) {
     } catch (const SceneError& e) {
       EXPECT_EQ(e.element(), c.element) << c.text;
       EXPECT_NE(std::string(e.what()).find(c.problem), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Geometry placed where lengths and areas overflow was dropped as degenerate, or left the scene
+// with no emitter: refused where it is given, naming the line.
+TEST(MgfBadInput, PointsBeyondAnyModelAreRefusedNotDropped) {
+  const std::string light = test::kUnitSquare + "m light\n";
+  const std::map<std::string, std::string> cases = {
+      {"v e =\n  p 1e160 0 0\nf a b e\n", "the point (1e+160, 0, 0) is farther than 1e+30 from the origin"},
+      {"xf -s 1e155\nf a b c d\nxf\n", "a vertex placed at (1e+155, 0, 0) is farther than 1e+30"},
+      {"xf -i 400 -s 2\nf a b c d\nxf\n", "is farther than 1e+30 from the origin"},
+      {"sph a 1e308\n", "is farther than 1e+30 from the origin"},
+  };
+  for (const auto& [text, problem] : cases) {
+    try {
+      test::importMgfText(light + text);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << text << ": " << e.what();
     }
   }
 }
