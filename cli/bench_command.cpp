@@ -136,7 +136,7 @@ void addBenchAccuracy(CLI::App* bench) {
   addCacheOption(cmd, args->cacheMb);
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, json, cmd] {
-    checkOutputPath("--json", *json, ".json", "the figures are JSON");
+    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*folderMade=*/true);
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
     dropRepeats(a.cells), dropRepeats(a.resolutions), dropRepeats(a.projections), dropRepeats(a.subdivide);
     dropRepeats(a.minElements), dropRepeats(a.adaptiveMinElements), dropRepeats(a.subdivideCells);

@@ -20,7 +20,7 @@ bool hasExtension(const std::string& path, const std::string& extension) {
 }
 
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
-                     const std::string& what) {
+                     const std::string& what, bool folderMade) {
   if (path.empty()) return;
   if (!hasExtension(path, extension))
     throw OptionError(fmt::format("{} '{}': {}: give a path ending in {}", option, path, what, extension));
@@ -28,7 +28,7 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
   if (std::filesystem::is_directory(path, error))
     throw OptionError(fmt::format("{} '{}' is a folder: give the path of a file in it", option, path));
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (folder.empty()) return;  // the current folder
+  if (folder.empty() || folderMade) return;  // the current folder, or one the command makes
   if (!std::filesystem::is_directory(folder, error))
     throw OptionError(fmt::format("{} '{}': the folder '{}' does not exist: create it (mkdir -p {}) or give "
                                   "another path",

@@ -12,8 +12,9 @@ bool hasExtension(const std::string& path, const std::string& extension);
 
 // Throws OptionError naming `option` and the fix when `path` does not end in `extension` (`what`
 // says what the file is, e.g. "a bake is glTF binary") or its folder does not exist. Empty: no file.
+// `folderMade`: the command makes a missing folder (bench accuracy's outputs), so only the rest is checked.
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
-                     const std::string& what);
+                     const std::string& what, bool folderMade = false);
 
 // Throws OptionError when one of `outputs` (option, path; empty: no file) is the scene's own file
 // or the same file as another: the later write would replace the scene, or the earlier output,

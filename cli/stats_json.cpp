@@ -77,6 +77,7 @@ nlohmann::json effectsJson(const EffectsPlan& plan) {
 void writeJson(const std::string& path, const nlohmann::json& document) {
   std::ofstream out = openOutput(path);
   out << document.dump() << '\n';  // compact: a per-iteration document runs to megabytes indented
+  out.close();  // what is still buffered can fail too
   if (!out) throw std::runtime_error(path + ": write failed (disk full?)");
 }
 

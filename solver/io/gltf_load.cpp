@@ -1,5 +1,6 @@
 #include "solver/io/gltf_load.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <string_view>
 
 #include "solver/scene/scene_error.h"
 
@@ -34,9 +36,17 @@ uint32_t littleEndian32(const std::string& bytes, size_t at) {
 }
 
 // tinygltf's messages come as lines; one line reads better inside ours.
+// tinygltf's message on one line, and short: it can quote a whole data: URI (megabytes of base64).
 std::string oneLine(const std::string& message) {
+  constexpr size_t kMaxChars = 400;
   std::string out;
-  for (char c : message) out += c == '\n' ? std::string("; ") : std::string(1, c);
+  for (char c : message) {
+    if (out.size() >= kMaxChars) {
+      out += "...";
+      break;
+    }
+    out += c == '\n' ? std::string("; ") : std::string(1, c);
+  }
   while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
   return out.empty() ? "no message" : out;
 }
@@ -85,16 +95,28 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes) {
       const nlohmann::json& b = (*buffers)[i];
       if (!b.is_object() || !b.contains("uri") || !b["uri"].is_string()) continue;
       const std::string uri = b["uri"].get<std::string>();
-      if (uri.rfind("data:", 0) == 0) continue;
+      const std::string element = "buffer " + std::to_string(i);
+      const bool declared = b.contains("byteLength") && b["byteLength"].is_number_unsigned();
+      if (uri.rfind("data:", 0) == 0) {
+        // Base64 carries 3 bytes in 4 characters, less its '=' padding.
+        const size_t comma = uri.find(',');
+        if (comma == std::string::npos || !declared) continue;
+        const std::string_view payload = std::string_view(uri).substr(comma + 1);
+        const size_t padding = payload.size() - std::min(payload.size(), payload.find_last_not_of('=') + 1);
+        const uint64_t held = payload.size() / 4 * 3 - std::min<uint64_t>(padding, payload.size() / 4 * 3);
+        if (held < b["byteLength"].get<uint64_t>())
+          return {element, fmt::format("its data: URI holds {} bytes, fewer than its byteLength, {}", held,
+                                       b["byteLength"].get<uint64_t>()),
+                  "export the file again (the embedded buffer and its byteLength disagree)"};
+        continue;
+      }
       const fs::path file = fs::path(path).parent_path() / uri;
       std::error_code ec;
-      const std::string element = "buffer " + std::to_string(i);
       if (!fs::is_regular_file(file, ec))
         return {element, "its file '" + file.string() + "' does not exist",
                 "put '" + uri + "' beside the glTF file, or embed the buffer"};
       const auto size = fs::file_size(file, ec);
-      if (!ec && b.contains("byteLength") && b["byteLength"].is_number_unsigned() &&
-          size < b["byteLength"].get<uint64_t>())
+      if (!ec && declared && size < b["byteLength"].get<uint64_t>())
         return {element, "its file '" + file.string() + "' has " + std::to_string(size) + " bytes, fewer than byteLength",
                 "supply the whole buffer file (it may be truncated)"};
     }
