@@ -2,8 +2,15 @@
 // at fault and (where tinygltf refused it) tinygltf's own message.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <future>
+#include <memory>
+#include <string>
+#include <thread>
+
 #include "solver/io/gltf_import.h"
 #include "solver/scene/scene_error.h"
+#include "tests/solver/io/gltf_test_file.h"
 #include "tests/test_paths.h"
 
 namespace radmesh {
@@ -14,8 +21,7 @@ struct GltfRefusal {
   std::string what;  // the message includes this
 };
 
-GltfRefusal gltfRefusal(const std::string& name) {
-  const std::string path = test::dataPath("bad/" + name).string();
+GltfRefusal gltfRefusalAt(const std::string& path) {
   try {
     importGltf(path);
   } catch (const SceneError& e) {
@@ -24,9 +30,11 @@ GltfRefusal gltfRefusal(const std::string& name) {
     EXPECT_NE(std::string(e.what()).find("(fix: "), std::string::npos) << e.what();
     return {e.element(), e.what()};
   }
-  ADD_FAILURE() << name << " was accepted";
+  ADD_FAILURE() << path << " was accepted";
   return {};
 }
+
+GltfRefusal gltfRefusal(const std::string& name) { return gltfRefusalAt(test::dataPath("bad/" + name).string()); }
 
 TEST(GltfBadInput, TruncatedJsonNamesTheJsonAndKeepsTinygltfsMessage) {
   const GltfRefusal r = gltfRefusal("gltf_truncated.gltf");
@@ -70,6 +78,24 @@ TEST(GltfBadInput, NegativeEmissionNamesTheMaterial) {
   const GltfRefusal r = gltfRefusal("gltf_negative_emission.gltf");
   EXPECT_EQ(r.element, "material 0 'lamp'");
   EXPECT_NE(r.what.find("negative"), std::string::npos) << r.what;
+}
+
+// Each factor is checked, not only their product: -1 x -1 must not become an emitter.
+TEST(GltfBadInput, NegativeEmissiveFactorTimesNegativeStrengthNamesEachFactor) {
+  test::TempDir dir;
+  const auto refusal = [&](const nlohmann::json& factor, double strength) {
+    test::GltfBuilder b;
+    const int lamp = b.add("materials", {{"name", "lamp"},
+                                         {"emissiveFactor", factor},
+                                         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", strength}}}}}});
+    b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, lamp);
+    return gltfRefusalAt(b.write(dir / "lamp.gltf").string());
+  };
+  const GltfRefusal both = refusal({-1, -1, -1}, -1.0);
+  EXPECT_EQ(both.element, "material 0 'lamp'");
+  EXPECT_NE(both.what.find("emissiveFactor -1 is negative"), std::string::npos) << both.what;
+  const GltfRefusal strength = refusal({1, 1, 1}, -1.0);
+  EXPECT_NE(strength.what.find("emissiveStrength -1 is negative"), std::string::npos) << strength.what;
 }
 
 // glTF's default white (1, 1, 1) is lowered to the largest reflectance with a warning; a factor
