@@ -112,6 +112,57 @@ TEST(GltfBadInput, NodeCycleNamesTheNode) {
   EXPECT_NE(r.what.find("cycle"), std::string::npos) << r.what;
 }
 
+// Imported on a thread of its own, so that a hang fails the test instead of stalling the run.
+GltfRefusal gltfRefusalWithin(std::chrono::seconds limit, const std::string& path) {
+  auto task = std::make_shared<std::packaged_task<GltfRefusal()>>([path] { return gltfRefusalAt(path); });
+  std::future<GltfRefusal> refusal = task->get_future();
+  std::thread([task] { (*task)(); }).detach();
+  if (refusal.wait_for(limit) == std::future_status::timeout) {
+    ADD_FAILURE() << path << " still importing after " << limit.count() << " s";
+    return {};
+  }
+  return refusal.get();
+}
+
+// glTF 2.0 allows a node one parent. A node shared by two parents is refused by name; so is a
+// chain of 40 nodes each listed twice as the next one's child, which a traversal would walk 2^40
+// times, before any traversal.
+TEST(GltfBadInput, ANodeWithTwoParentsIsRefusedBeforeTraversal) {
+  test::TempDir dir;
+  test::GltfBuilder shared;
+  const int mesh = shared.addTriangles("t", shared.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                                       {{"name", "shared"}});
+  shared.add("nodes", {{"name", "left"}, {"children", {mesh}}});
+  shared.add("nodes", {{"name", "right"}, {"children", {mesh}}});
+  const GltfRefusal two = gltfRefusalAt(shared.write(dir / "two_parents.gltf").string());
+  EXPECT_EQ(two.element, "node 0 'shared'");
+  EXPECT_NE(two.what.find("is a child of both node 1 'left' and node 2 'right'; glTF 2.0 (3.5.2) allows a node at "
+                          "most one parent"),
+            std::string::npos)
+      << two.what;
+
+  test::GltfBuilder chain;
+  const int levels = 40;
+  for (int i = 0; i < levels; ++i)
+    chain.add("nodes", {{"name", "L" + std::to_string(i)}, {"children", {i + 1, i + 1}}});
+  chain.addTriangles("t", chain.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                     {{"name", "L" + std::to_string(levels)}});
+  const GltfRefusal twice = gltfRefusalWithin(std::chrono::seconds(20), chain.write(dir / "chain.gltf").string());
+  EXPECT_EQ(twice.element, "node 1 'L1'");
+  EXPECT_NE(twice.what.find("is listed twice among the children of node 0 'L0'"), std::string::npos) << twice.what;
+}
+
+// A rotation that is no rotation at all cannot be normalised (GltfImport.* checks the repair).
+TEST(GltfBadInput, AZeroRotationNamesTheNode) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                 {{"name", "wall"}, {"rotation", {0, 0, 0, 0}}});
+  const GltfRefusal r = gltfRefusalAt(b.write(dir / "zero.gltf").string());
+  EXPECT_EQ(r.element, "node 0 'wall'");
+  EXPECT_NE(r.what.find("rotation (0, 0, 0, 0) is zero or not finite"), std::string::npos) << r.what;
+}
+
 TEST(GltfBadInput, MissingFileIsAClearError) {
   const GltfRefusal r = gltfRefusal("gltf_no_such_file.gltf");
   EXPECT_NE(r.what.find("does not exist"), std::string::npos) << r.what;
