@@ -8,11 +8,14 @@
 #include <array>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "solver/geometry/coplanar_merge.h"
 #include "solver/io/gltf_accessor.h"
 #include "solver/io/gltf_lights.h"
 #include "solver/io/gltf_load.h"
 #include "solver/io/gltf_material.h"
+#include "solver/scene/note_tally.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -85,12 +88,13 @@ class TriangleCollector {
   std::vector<Polygon>& triangles() { return triangles_; }
   const std::vector<Light>& lights() const { return lights_; }
   int rangeIgnored() const { return rangeIgnored_; }
+  const NoteTally& repairs() const { return repairs_; }
   // Per triangle, its vertices' COLOR_0; empty once a triangle primitive had none.
   std::vector<std::array<Rgb, 3>> colours() const { return uncoloured_ ? std::vector<std::array<Rgb, 3>>{} : colours_; }
   int defaultMaterialUsers() const { return defaultMaterialUsers_; }
 
  private:
-  glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& element) const {
+  glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& element) {
     auto sizeError = [&](const char* field, size_t want, size_t got) {
       return SceneError(file_, element, std::string(field) + " has " + std::to_string(got) + " numbers",
                         "give " + std::string(field) + " exactly " + std::to_string(want) + " numbers");
@@ -106,14 +110,37 @@ class TriangleCollector {
     }
     if (!n.rotation.empty()) {
       if (n.rotation.size() != 4) throw sizeError("rotation", 4, n.rotation.size());
-      // glTF stores the quaternion as (x, y, z, w); glm's constructor takes w first.
-      m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+      m *= glm::mat4_cast(unitRotation(n.rotation, element));
     }
     if (!n.scale.empty()) {
       if (n.scale.size() != 3) throw sizeError("scale", 3, n.scale.size());
       m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
     }
     return m;
+  }
+
+  // glTF stores the quaternion as (x, y, z, w); glm's constructor takes w first. glTF requires a
+  // unit quaternion, and one that is not would scale and shear too (mat4_cast assumes unit
+  // length): it is normalised, with a warning past the Khronos validator's tolerance (0.00769,
+  // above the rounding of 8-bit quantised rotations).
+  glm::dquat unitRotation(const std::vector<double>& r, const std::string& element) {
+    const glm::dquat q(r[3], r[0], r[1], r[2]);
+    bool finite = true;
+    double largest = 0.0;  // dividing by it first keeps tiny and huge quaternions from under/overflowing
+    for (double v : r) {
+      finite = finite && std::isfinite(v);
+      largest = std::max(largest, std::abs(v));
+    }
+    if (!finite || largest == 0.0)
+      throw SceneError(file_, element,
+                       fmt::format("rotation ({}, {}, {}, {}) is zero or not finite: no rotation", r[0], r[1], r[2], r[3]),
+                       "give rotation as a unit quaternion (x, y, z, w), [0, 0, 0, 1] for none");
+    const double length = glm::length(q / largest);
+    if (std::abs(length * largest - 1.0) > 0.00769)
+      repairs_.add("rotation", fmt::format("{}: {}: rotation ({}, {}, {}, {}) has length {:.6g}, not 1: normalised "
+                                           "(glTF 2.0 requires a unit quaternion)",
+                                           file_, element, r[0], r[1], r[2], r[3], length * largest));
+    return q / largest / length;
   }
 
   void addMesh(int mesh, const glm::dmat4& world, const std::string& element) {
@@ -196,13 +223,39 @@ class TriangleCollector {
   std::vector<Polygon> triangles_;
   std::vector<Light> lights_;
   int rangeIgnored_ = 0;
+  NoteTally repairs_;  // rotations normalised
   std::vector<std::array<Rgb, 3>> colours_;
   bool uncoloured_ = false;
   int defaultMaterialUsers_ = 0;
 };
 
+// Whether each node is some node's child. glTF 2.0 (3.5.2) requires the hierarchy to be disjoint
+// trees, each node with at most one parent: a node under two parents (or listed twice under one)
+// is refused, as the traversal would visit it once per path (2^40 times down 40 such levels).
+std::vector<bool> childNodes(const tinygltf::Model& model, const std::string& file) {
+  std::vector<int> parent(model.nodes.size(), -1);
+  for (size_t p = 0; p < model.nodes.size(); ++p)
+    for (int c : model.nodes[p].children) {
+      if (c < 0 || static_cast<size_t>(c) >= parent.size()) continue;  // refused when visited, by its referrer
+      if (parent[c] >= 0) {
+        const std::string label = nodeLabel(model, static_cast<int>(p));
+        throw SceneError(file, nodeLabel(model, c),
+                         "is " + (parent[c] == static_cast<int>(p) ? "listed twice among the children of " + label
+                                  : "a child of both " + nodeLabel(model, parent[c]) + " and " + label) +
+                             "; glTF 2.0 (3.5.2) allows a node at most one parent (the hierarchy must be disjoint trees)",
+                         "give each parent its own node (nodes may share a mesh), and list each child once");
+      }
+      parent[c] = static_cast<int>(p);
+    }
+  std::vector<bool> isChild(parent.size());
+  for (size_t n = 0; n < parent.size(); ++n) isChild[n] = parent[n] >= 0;
+  return isChild;
+}
+
 // The roots to draw: the default scene's, else every scene's, else every node no node has as a child.
+// Refuses a hierarchy that is not a forest first (childNodes), before anything is traversed.
 std::vector<std::pair<int, std::string>> sceneRoots(const tinygltf::Model& model, const std::string& file) {
+  const std::vector<bool> isChild = childNodes(model, file);
   std::vector<std::pair<int, std::string>> roots;
   auto addScene = [&](int s) {
     for (int node : model.scenes[s].nodes) roots.emplace_back(node, "scene " + std::to_string(s));
@@ -215,10 +268,6 @@ std::vector<std::pair<int, std::string>> sceneRoots(const tinygltf::Model& model
   } else if (!model.scenes.empty()) {
     for (size_t s = 0; s < model.scenes.size(); ++s) addScene(static_cast<int>(s));
   } else {
-    std::vector<bool> isChild(model.nodes.size(), false);
-    for (const tinygltf::Node& n : model.nodes)
-      for (int c : n.children)
-        if (c >= 0 && static_cast<size_t>(c) < isChild.size()) isChild[c] = true;
     for (size_t n = 0; n < model.nodes.size(); ++n)
       if (!isChild[n]) roots.emplace_back(static_cast<int>(n), "nodes");
   }
@@ -271,6 +320,8 @@ Scene importGltf(const std::string& path, std::vector<std::string>* warnings) {
                           " primitive(s) without a material get the material '" + scene.materials.back().name + "'");
   }
   scene.lights = collector.lights();
+  if (warnings)
+    for (const std::string& line : collector.repairs().lines()) warnings->push_back(line);
   if (collector.rangeIgnored() > 0 && warnings)
     warnings->push_back(path + ": " + std::to_string(collector.rangeIgnored()) +
                         " KHR_lights_punctual light(s) with a range: ignored, their light falls off with the inverse "

@@ -1,7 +1,5 @@
 #include "solver/io/gltf_lights.h"
 
-#include <cmath>
-
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -43,14 +41,12 @@ Light gltfLight(const tinygltf::Model& model, int index, const glm::dmat4& world
                        "give color as 3 linear RGB numbers");
     color = Rgb(in.color[0], in.color[1], in.color[2]);
   }
-  const Rgb intensity = in.intensity * color / kWhiteEfficacyLmPerW;
+  requireNonNegativeFactor(in.intensity, "intensity", file, element,
+                           "give a finite intensity >= 0 (candela, or lux for a directional light)");
   for (int c = 0; c < 3; ++c)
-    if (!(std::isfinite(intensity[c]) && intensity[c] >= 0.0))
-      throw SceneError(file, element,
-                       "has intensity " + std::to_string(in.intensity) + " and color (" + std::to_string(color.r) + ", " +
-                           std::to_string(color.g) + ", " + std::to_string(color.b) + "): not finite and non-negative",
-                       "give a finite, non-negative intensity (candela, or lux for a directional light) and color");
-  light.intensity = intensity;
+    requireNonNegativeFactor(color[c], "color", file, element, "give color 3 linear RGB numbers >= 0");
+  // A product that overflows is refused with the scene (validateScene).
+  light.intensity = in.intensity * color / kWhiteEfficacyLmPerW;
   light.position = Vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   const Vec3 along = Vec3(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));  // the node's local -Z
   if (!(glm::length(along) > 0.0))

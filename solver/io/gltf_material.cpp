@@ -95,6 +95,8 @@ Rgb emittance(const tinygltf::Model& model, const tinygltf::Material& m, const s
       throw SceneError(file, element, "emissiveFactor has " + std::to_string(m.emissiveFactor.size()) + " values",
                        "give emissiveFactor as 3 numbers (RGB)");
     e = Rgb(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+    for (int c = 0; c < 3; ++c)
+      requireNonNegativeFactor(e[c], "emissiveFactor", file, element, "give emissiveFactor 3 numbers >= 0 (linear RGB)");
   }
   double strength = 1.0;
   const auto ext = m.extensions.find("KHR_materials_emissive_strength");
@@ -104,14 +106,10 @@ Rgb emittance(const tinygltf::Model& model, const tinygltf::Material& m, const s
       throw SceneError(file, element, "KHR_materials_emissive_strength.emissiveStrength is not a number",
                        "give emissiveStrength as a number (W/m^2 per unit emissiveFactor)");
     strength = s.GetNumberAsDouble();
+    requireNonNegativeFactor(strength, "KHR_materials_emissive_strength.emissiveStrength", file, element,
+                             "give emissiveStrength a number >= 0 (W/m^2 per unit emissiveFactor)");
   }
-  e *= strength;
-  for (int c = 0; c < 3; ++c)
-    if (!(e[c] >= 0.0) || !std::isfinite(e[c]))
-      throw SceneError(file, element,
-                       "emission " + std::to_string(e[c]) +
-                           " W/m^2 (emissiveFactor x emissiveStrength) is negative or not finite",
-                       "give a non-negative emissiveFactor and emissiveStrength");
+  e *= strength;  // a product that overflows is refused with the scene (validateScene)
   if (e == Rgb(0.0)) return e;  // no need to decode an emissive texture of a dark material
   return e * textureAverage(model, m.emissiveTexture, file, element, "emissiveTexture", warnings);
 }

@@ -124,11 +124,14 @@ Rgb fitRgb(const Xyz& xyz, double y, double ceiling, bool* desaturated) {
   if (!(y > 0.0)) return Rgb(0.0);
   const Rgb unit = linearRgb(xyz / xyz.y);
   // Along unit(t) = 1 + t (unit - 1) luminance stays 1; take the largest t <= 1 that fits.
+  // A neutral colour's channels come out of the colour matrices 1 +- rounding: at a ceiling of y
+  // (rd 0.99) such a channel is not out of gamut, so excesses of rounding size are let through.
+  constexpr double kRounding = 1e-12;
   double t = 1.0;
   for (int c = 0; c < 3; ++c) {
     const double d = unit[c] - 1.0;
     if (d < 0.0) t = std::min(t, 1.0 / -d);
-    if (d > 0.0) t = std::min(t, (ceiling / y - 1.0) / d);
+    if (d > kRounding) t = std::min(t, (ceiling / y - 1.0) / d);
   }
   t = std::max(t, 0.0);
   if (desaturated) *desaturated = t < 1.0;

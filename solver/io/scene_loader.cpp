@@ -26,6 +26,9 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
     throw SceneError(path, "", "no such file, and not a built-in scene name", acceptedForms());
   if (std::filesystem::is_directory(p, error))
     throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
+  // A FIFO, socket or device would block the reader, or never end.
+  if (!std::filesystem::is_regular_file(p, error))
+    throw SceneError(path, "", "is not a regular file (a FIFO, socket or device), not a scene file", acceptedForms());
   const std::string extension = lowerCaseExtension(path);
   if (extension == ".gltf" || extension == ".glb") return importGltf(path, warnings);
   if (extension == ".mgf") return importMgf(path, warnings);

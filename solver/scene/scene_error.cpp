@@ -1,5 +1,9 @@
 #include "solver/scene/scene_error.h"
 
+#include <cmath>
+
+#include <fmt/format.h>
+
 namespace radmesh {
 
 namespace {
@@ -17,5 +21,11 @@ SceneError::SceneError(std::string file, std::string element, std::string proble
     : std::runtime_error(format(file, element, problem, fix)),
       file_(std::move(file)),
       element_(std::move(element)) {}
+
+void requireNonNegativeFactor(double value, const std::string& what, const std::string& file,
+                              const std::string& element, const std::string& fix) {
+  if (!(value >= 0.0 && std::isfinite(value)))
+    throw SceneError(file, element, fmt::format("{} {} is negative or not finite", what, value), fix);
+}
 
 }  // namespace radmesh

@@ -20,6 +20,11 @@ class SceneError : public std::runtime_error {
   std::string element_;
 };
 
+// Refuses a factor of light (an intensity, a colour channel, an emission factor) that is negative
+// or not finite, by name: checking only a product would let two negative factors pass as light.
+void requireNonNegativeFactor(double value, const std::string& what, const std::string& file,
+                              const std::string& element, const std::string& fix);
+
 // Refused options (an impossible --cell, --resolution out of range, ...): named option and fix.
 class OptionError : public std::runtime_error {
  public:

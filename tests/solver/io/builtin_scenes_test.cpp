@@ -2,8 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <functional>
+#include <future>
 #include <map>
 #include <string>
 
@@ -12,6 +19,7 @@
 #include "solver/io/scene_builder.h"
 #include "solver/scene/scene_error.h"
 #include "solver/io/scene_loader.h"
+#include "tests/solver/io/gltf_test_file.h"  // TempDir
 #include "tests/solver/meshing/mesh_checks.h"
 #include "tests/test_paths.h"
 
@@ -230,22 +238,42 @@ TEST(SceneLoader, LoadsBuiltinsByNameAndFilesByExtension) {
   EXPECT_EQ(gltf.polygons.size(), builtinScene("cornell").polygons.size());
 }
 
+// `load` (a loadScene of `path`) refused the path with a message naming it, `needle` and the
+// accepted forms.
+void expectRefused(const std::function<void()>& load, const std::string& path, const std::string& needle) {
+  try {
+    load();
+    ADD_FAILURE() << "accepted " << path;
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(needle), std::string::npos) << message;
+    EXPECT_NE(message.find(".mgf"), std::string::npos) << message;  // lists the accepted forms
+    EXPECT_NE(message.find("office"), std::string::npos) << message;
+  }
+}
+
+void expectRefused(const std::string& path, const std::string& needle) {
+  expectRefused([&] { loadScene(path); }, path, needle);
+}
+
 TEST(SceneLoader, RefusesMissingFilesAndUnknownExtensionsNamingThePath) {
-  const auto expectRefused = [](const std::string& path, const std::string& needle) {
-    try {
-      loadScene(path);
-      ADD_FAILURE() << "accepted " << path;
-    } catch (const SceneError& e) {
-      const std::string message = e.what();
-      EXPECT_NE(message.find(path), std::string::npos) << message;
-      EXPECT_NE(message.find(needle), std::string::npos) << message;
-      EXPECT_NE(message.find(".mgf"), std::string::npos) << message;  // lists the accepted forms
-      EXPECT_NE(message.find("office"), std::string::npos) << message;
-    }
-  };
   expectRefused("no/such/scene.gltf", "no such file");
   expectRefused((test::sourceDir() / "CMakeLists.txt").string(), "unknown extension '.txt'");
   expectRefused(test::sourceDir().string(), "directory");
+}
+
+// A FIFO named .mgf used to block the reader forever: it is refused without being opened.
+TEST(SceneLoader, RefusesAFifoWithoutBlocking) {
+  const test::TempDir dir;
+  const std::string path = (dir / "scene.mgf").string();
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  std::future<void> load = std::async(std::launch::async, [&] { loadScene(path); });
+  if (load.wait_for(std::chrono::seconds(10)) == std::future_status::timeout) {
+    ADD_FAILURE() << "blocked on the FIFO";
+    ::close(::open(path.c_str(), O_WRONLY));  // a writer that ends at once: the reader sees the end
+  }
+  expectRefused([&] { load.get(); }, path, "is not a regular file");
 }
 
 TEST(SceneLoader, LoadsSharedMgfByExtension) {

@@ -2,8 +2,15 @@
 // at fault and (where tinygltf refused it) tinygltf's own message.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <future>
+#include <memory>
+#include <string>
+#include <thread>
+
 #include "solver/io/gltf_import.h"
 #include "solver/scene/scene_error.h"
+#include "tests/solver/io/gltf_test_file.h"
 #include "tests/test_paths.h"
 
 namespace radmesh {
@@ -14,8 +21,7 @@ struct GltfRefusal {
   std::string what;  // the message includes this
 };
 
-GltfRefusal gltfRefusal(const std::string& name) {
-  const std::string path = test::dataPath("bad/" + name).string();
+GltfRefusal gltfRefusalAt(const std::string& path) {
   try {
     importGltf(path);
   } catch (const SceneError& e) {
@@ -24,9 +30,11 @@ GltfRefusal gltfRefusal(const std::string& name) {
     EXPECT_NE(std::string(e.what()).find("(fix: "), std::string::npos) << e.what();
     return {e.element(), e.what()};
   }
-  ADD_FAILURE() << name << " was accepted";
+  ADD_FAILURE() << path << " was accepted";
   return {};
 }
+
+GltfRefusal gltfRefusal(const std::string& name) { return gltfRefusalAt(test::dataPath("bad/" + name).string()); }
 
 TEST(GltfBadInput, TruncatedJsonNamesTheJsonAndKeepsTinygltfsMessage) {
   const GltfRefusal r = gltfRefusal("gltf_truncated.gltf");
@@ -72,6 +80,24 @@ TEST(GltfBadInput, NegativeEmissionNamesTheMaterial) {
   EXPECT_NE(r.what.find("negative"), std::string::npos) << r.what;
 }
 
+// Each factor is checked, not only their product: -1 x -1 must not become an emitter.
+TEST(GltfBadInput, NegativeEmissiveFactorTimesNegativeStrengthNamesEachFactor) {
+  test::TempDir dir;
+  const auto refusal = [&](const nlohmann::json& factor, double strength) {
+    test::GltfBuilder b;
+    const int lamp = b.add("materials", {{"name", "lamp"},
+                                         {"emissiveFactor", factor},
+                                         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", strength}}}}}});
+    b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, lamp);
+    return gltfRefusalAt(b.write(dir / "lamp.gltf").string());
+  };
+  const GltfRefusal both = refusal({-1, -1, -1}, -1.0);
+  EXPECT_EQ(both.element, "material 0 'lamp'");
+  EXPECT_NE(both.what.find("emissiveFactor -1 is negative"), std::string::npos) << both.what;
+  const GltfRefusal strength = refusal({1, 1, 1}, -1.0);
+  EXPECT_NE(strength.what.find("emissiveStrength -1 is negative"), std::string::npos) << strength.what;
+}
+
 // glTF's default white (1, 1, 1) is lowered to the largest reflectance with a warning; a factor
 // outside [0, 1] breaks the format itself.
 TEST(GltfBadInput, BaseColorAboveOneNamesTheMaterial) {
@@ -84,6 +110,57 @@ TEST(GltfBadInput, NodeCycleNamesTheNode) {
   const GltfRefusal r = gltfRefusal("gltf_node_cycle.gltf");
   EXPECT_EQ(r.element, "node 0 'a'");
   EXPECT_NE(r.what.find("cycle"), std::string::npos) << r.what;
+}
+
+// Imported on a thread of its own, so that a hang fails the test instead of stalling the run.
+GltfRefusal gltfRefusalWithin(std::chrono::seconds limit, const std::string& path) {
+  auto task = std::make_shared<std::packaged_task<GltfRefusal()>>([path] { return gltfRefusalAt(path); });
+  std::future<GltfRefusal> refusal = task->get_future();
+  std::thread([task] { (*task)(); }).detach();
+  if (refusal.wait_for(limit) == std::future_status::timeout) {
+    ADD_FAILURE() << path << " still importing after " << limit.count() << " s";
+    return {};
+  }
+  return refusal.get();
+}
+
+// glTF 2.0 allows a node one parent. A node shared by two parents is refused by name; so is a
+// chain of 40 nodes each listed twice as the next one's child, which a traversal would walk 2^40
+// times, before any traversal.
+TEST(GltfBadInput, ANodeWithTwoParentsIsRefusedBeforeTraversal) {
+  test::TempDir dir;
+  test::GltfBuilder shared;
+  const int mesh = shared.addTriangles("t", shared.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                                       {{"name", "shared"}});
+  shared.add("nodes", {{"name", "left"}, {"children", {mesh}}});
+  shared.add("nodes", {{"name", "right"}, {"children", {mesh}}});
+  const GltfRefusal two = gltfRefusalAt(shared.write(dir / "two_parents.gltf").string());
+  EXPECT_EQ(two.element, "node 0 'shared'");
+  EXPECT_NE(two.what.find("is a child of both node 1 'left' and node 2 'right'; glTF 2.0 (3.5.2) allows a node at "
+                          "most one parent"),
+            std::string::npos)
+      << two.what;
+
+  test::GltfBuilder chain;
+  const int levels = 40;
+  for (int i = 0; i < levels; ++i)
+    chain.add("nodes", {{"name", "L" + std::to_string(i)}, {"children", {i + 1, i + 1}}});
+  chain.addTriangles("t", chain.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                     {{"name", "L" + std::to_string(levels)}});
+  const GltfRefusal twice = gltfRefusalWithin(std::chrono::seconds(20), chain.write(dir / "chain.gltf").string());
+  EXPECT_EQ(twice.element, "node 1 'L1'");
+  EXPECT_NE(twice.what.find("is listed twice among the children of node 0 'L0'"), std::string::npos) << twice.what;
+}
+
+// A rotation that is no rotation at all cannot be normalised (GltfImport.* checks the repair).
+TEST(GltfBadInput, AZeroRotationNamesTheNode) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                 {{"name", "wall"}, {"rotation", {0, 0, 0, 0}}});
+  const GltfRefusal r = gltfRefusalAt(b.write(dir / "zero.gltf").string());
+  EXPECT_EQ(r.element, "node 0 'wall'");
+  EXPECT_NE(r.what.find("rotation (0, 0, 0, 0) is zero or not finite"), std::string::npos) << r.what;
 }
 
 TEST(GltfBadInput, MissingFileIsAClearError) {

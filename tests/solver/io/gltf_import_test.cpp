@@ -129,6 +129,36 @@ TEST(GltfImport, NodeTransformsComposeFromTheRootDown) {
   EXPECT_EQ(s.materials.at(s.polygons[0].material).name, "default (grey)");
 }
 
+// A rotation quaternion must be unit length; one that is not (as written by hand or by a broken
+// exporter) is normalised with a warning counting the nodes, instead of scaling the node.
+TEST(GltfImport, NonUnitRotationsAreNormalisedWithACountedWarning) {
+  TempDir dir;
+  GltfBuilder b;
+  const int positions = b.addPositions(kQuadVertices);  // 2 x 1 m, area 2
+  const int indices = b.addIndices({0, 1, 2, 0, 2, 3});
+  const double h = std::sqrt(0.5);
+  b.addTriangles("a", positions, indices, -1, {{"name", "wall"}, {"rotation", {0, 0, 1, 1}}});  // 90 deg about z
+  b.addTriangles("b", positions, indices, -1, {{"name", "floor"}, {"rotation", {0, 0, 2, 2}}, {"translation", {0, 0, 1}}});
+  // Within the Khronos validator's tolerance (length 1.005): normalised without a word.
+  b.addTriangles("c", positions, indices, -1, {{"rotation", {0, 0, 1.005 * h, 1.005 * h}}, {"translation", {0, 0, 2}}});
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(b.write(dir / "rotations.gltf").string(), &warnings);
+  ASSERT_EQ(s.polygons.size(), 3u);
+  for (const Polygon& p : s.polygons) {
+    EXPECT_NEAR(polygonArea(p.vertices), 2.0, 1e-12) << p.origin;
+    const std::vector<Vec3> turned = {{0, 0, 0}, {0, 2, 0}, {-1, 2, 0}, {-1, 0, 0}};  // (x, y) -> (-y, x)
+    for (size_t k = 0; k < turned.size(); ++k) {
+      EXPECT_NEAR(p.vertices[k].x, turned[k].x, 1e-12) << p.origin;
+      EXPECT_NEAR(p.vertices[k].y, turned[k].y, 1e-12) << p.origin;
+    }
+  }
+  const auto rotation = std::count_if(warnings.begin(), warnings.end(),
+                                      [](const std::string& w) { return w.find(": rotation (") != std::string::npos; });
+  ASSERT_EQ(rotation, 1) << "one warning for the kind";
+  EXPECT_TRUE(mentions(warnings, "node 0 'wall': rotation (0, 0, 1, 1) has length 1.41421, not 1: normalised "
+                                 "(glTF 2.0 requires a unit quaternion) (and 1 more like it)"));
+}
+
 TEST(GltfImport, MirroringTransformKeepsTheFrontFace) {
   TempDir dir;
   GltfBuilder b;

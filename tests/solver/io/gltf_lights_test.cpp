@@ -5,6 +5,7 @@
 #include "solver/io/gltf_import.h"
 #include "solver/io/scene_loader.h"
 #include "solver/scene/scene_error.h"
+#include "tests/solver/io/gltf_test_file.h"
 #include "tests/test_paths.h"
 
 namespace radmesh {
@@ -48,17 +49,18 @@ TEST(GltfLights, ReadsEveryTypeThroughItsNodesWorldTransformAndWarnsOfRange) {
   EXPECT_NE(warnings[0].find("1 KHR_lights_punctual light(s) with a range"), std::string::npos) << warnings[0];
 }
 
-std::string lightRefusal(const std::string& name) {
-  const std::string path = test::dataPath("bad/" + name).string();
+std::string lightRefusalAt(const std::string& path) {
   try {
     loadScene(path);
   } catch (const SceneError& e) {
     EXPECT_EQ(e.file(), path);
     return e.element() + " | " + e.what();
   }
-  ADD_FAILURE() << name << " was accepted";
+  ADD_FAILURE() << path << " was accepted";
   return {};
 }
+
+std::string lightRefusal(const std::string& name) { return lightRefusalAt(test::dataPath("bad/" + name).string()); }
 
 TEST(GltfLights, BrokenLightsAreRefusedNamingTheLight) {
   const std::string noType = lightRefusal("gltf_light_no_type.gltf");
@@ -72,6 +74,23 @@ TEST(GltfLights, BrokenLightsAreRefusedNamingTheLight) {
   EXPECT_NE(negative.find("intensity -5"), std::string::npos) << negative;
   // JSON has no NaN or infinity: 1e999 is refused by the JSON reader.
   EXPECT_NE(lightRefusal("gltf_light_infinite_intensity.gltf").find("1e999"), std::string::npos);
+}
+
+// Intensity and colour are checked each, not only their product: -10 x -1 is not a 10 cd light.
+TEST(GltfLights, NegativeIntensityTimesNegativeColourIsRefused) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  const int lamp = b.add("materials", {{"emissiveFactor", {1, 1, 1}}});
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, lamp);
+  b.doc()["extensions"]["KHR_lights_punctual"]["lights"] = {
+      {{"name", "bulb"}, {"type", "point"}, {"intensity", -10}, {"color", {-1, -1, -1}}}};
+  b.add("nodes", {{"name", "bulb node"}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  const std::string both = lightRefusalAt(b.write(dir / "both.gltf").string());
+  EXPECT_NE(both.find("light 0 'bulb' (node 1 'bulb node')"), std::string::npos) << both;
+  EXPECT_NE(both.find("intensity -10 is negative"), std::string::npos) << both;
+  b.doc()["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = 10;
+  const std::string colour = lightRefusalAt(b.write(dir / "colour.gltf").string());
+  EXPECT_NE(colour.find("color -1 is negative"), std::string::npos) << colour;
 }
 
 TEST(GltfLights, ValidationNamesALightWithNaNIntensityOrImpossibleCone) {

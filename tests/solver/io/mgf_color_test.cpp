@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "solver/io/mgf_error.h"
 #include "tests/solver/io/mgf_test_scene.h"
@@ -83,6 +85,24 @@ TEST(MgfColor, OutOfGamutReflectanceIsDesaturatedKeepingLuminance) {
   const Rgb grey = mgfReflectance(0.5, kMgfNeutral, &desaturated);
   EXPECT_FALSE(desaturated);
   EXPECT_NEAR(glm::length(grey - Rgb(0.5)), 0.0, 1e-12);
+}
+
+// rd 0.99 puts the ceiling at the luminance itself: a neutral colour's channels, 1 up to rounding,
+// must not count as outside the gamut (they did, and --strict refused the file).
+TEST(MgfColor, NeutralAtTheHighestReflectanceIsNotDesaturated) {
+  bool desaturated = true;
+  const Rgb rho = mgfReflectance(kHighestReflectance, kMgfNeutral, &desaturated);
+  EXPECT_FALSE(desaturated);
+  EXPECT_NEAR(glm::length(rho - Rgb(kHighestReflectance)), 0.0, 1e-12);
+  const std::string face = "v a =\n p 0 0 0\nv b =\n p 1 0 0\nv c =\n p 0 1 0\n";
+  std::vector<std::string> warnings;
+  test::importMgfText("m white =\n  c\n  rd 0.99\n" + face + "f a b c\n", &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  // A colour truly outside the gamut still warns at the same reflectance.
+  test::importMgfText("m red =\n  c\n    cxy 0.75 0.10\n  rd 0.99\n" + face + "f a b c\n", &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("material 'red': its colour lies outside the Rec. 709 gamut"), std::string::npos)
+      << warnings[0];
 }
 
 TEST(MgfColor, EmittanceIsLumensOver179PerChannel) {
