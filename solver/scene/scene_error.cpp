@@ -9,11 +9,8 @@ namespace radmesh {
 namespace {
 std::string format(const std::string& file, const std::string& element, const std::string& problem,
                    const std::string& fix) {
-  std::string message = file;
-  if (!element.empty()) message += ": " + element;
-  message += ": " + problem;
-  if (!fix.empty()) message += " (fix: " + fix + ")";
-  return message;
+  return fmt::format("{}{}{}: {}{}{}{}", file, element.empty() ? "" : ": ", element, problem, fix.empty() ? "" : " (fix: ",
+                     fix, fix.empty() ? "" : ")");
 }
 }  // namespace
 

@@ -1,6 +1,11 @@
 // Each file under tests/data/bad/gltf_* is refused with a SceneError naming the file, the element
 // at fault and (where tinygltf refused it) tinygltf's own message.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <vector>
 
 #include <chrono>
 #include <future>
@@ -53,6 +58,27 @@ TEST(GltfBadInput, MissingExternalBufferNamesTheBuffer) {
   const GltfRefusal r = gltfRefusal("gltf_missing_buffer.gltf");
   EXPECT_EQ(r.element, "buffer 0");
   EXPECT_NE(r.what.find("gltf_missing_buffer.bin' does not exist"), std::string::npos) << r.what;
+}
+
+// An embedded buffer shorter than its byteLength: tinygltf quotes the whole data: URI (megabytes
+// in a real model); the message names the buffer and the two lengths, and stays short.
+TEST(GltfBadInput, ADataUriShorterThanItsByteLengthNamesTheBufferBriefly) {
+  test::TempDir dir;
+  test::GltfBuilder gltf;
+  std::vector<Vec3> points(3000);
+  for (size_t i = 0; i < points.size(); ++i) points[i] = {static_cast<double>(i), 0.0, static_cast<double>(i % 2)};
+  gltf.addTriangles("strip", gltf.addPositions(points), gltf.addIndices({0, 1, 2}), -1);
+  const std::string path = gltf.write(dir / "short.gltf").string();
+  nlohmann::json doc = nlohmann::json::parse(std::ifstream(path));
+  const uint64_t held = doc["buffers"][0]["byteLength"].get<uint64_t>();
+  doc["buffers"][0]["byteLength"] = held + 4;
+  std::ofstream(path) << doc.dump();
+  const GltfRefusal r = gltfRefusalAt(path);
+  EXPECT_EQ(r.element, "buffer 0");
+  EXPECT_NE(r.what.find(fmt::format("its data: URI holds {} bytes, fewer than its byteLength, {}", held, held + 4)),
+            std::string::npos)
+      << r.what;
+  EXPECT_LT(r.what.size(), 1000u);
 }
 
 TEST(GltfBadInput, IndexOutOfRangeNamesTheMeshPrimitive) {
