@@ -3,11 +3,17 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <string>
 
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "solver/scene/scene_error.h"
 
 int main(int argc, char** argv) {
+  if (const std::string option = radmesh::cli::optionWithEmptyValue(argc, argv); !option.empty()) {
+    fmt::print(stderr, "radmesh: error: {} is given an empty value: give it a value, or leave it out\n", option);
+    return 2;
+  }
   CLI::App app{"radmesh: view-independent diffuse global illumination (Varshney & Prins)"};
   app.require_subcommand(1);
   radmesh::cli::addInfoCommand(app);

@@ -44,4 +44,15 @@ inline CLI::Validator threadCount(const char* program) {
     "THREADS");
 }
 
+// CLI11 reads an empty value as 0 for a number (--cache-mb "" would turn the cache off), and no
+// option here means anything by one: the option given an empty value ("" or --option=), or "".
+inline std::string optionWithEmptyValue(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.empty()) return i > 1 ? argv[i - 1] : "the first argument";
+    if (arg.rfind("--", 0) == 0 && arg.back() == '=') return arg.substr(0, arg.size() - 1);
+  }
+  return "";
+}
+
 }  // namespace radmesh::cli

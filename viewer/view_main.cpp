@@ -17,6 +17,11 @@
 #include "viewer/viewer_app.h"
 
 int main(int argc, char** argv) {
+  if (const std::string option = radmesh::cli::optionWithEmptyValue(argc, argv); !option.empty()) {
+    std::fprintf(stderr, "radmesh-view: error: %s is given an empty value: give it a value, or leave it out\n",
+                 option.c_str());
+    return 2;
+  }
   radmesh::ViewerArgs args;
   std::string up, units;
   std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress",

@@ -231,6 +231,13 @@ TEST(Cli, EveryUsageErrorExits2) {
   EXPECT_NE(run.output.find("--resolution"), std::string::npos) << run.output;
   EXPECT_EQ(radmesh("--help").exitCode, 0);
   EXPECT_EQ(radmesh("solve --help").exitCode, 0);
+  // An empty value is no number: CLI11 would read it as 0 (the cache off, the stopping rule changed).
+  for (const std::string arguments : {"solve furnace --cache-mb ''", "solve furnace --until-unshot=", "info '' "}) {
+    run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find("is given an empty value: give it a value, or leave it out"), std::string::npos)
+        << arguments << ": " << run.output;
+  }
 }
 
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
