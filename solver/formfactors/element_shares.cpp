@@ -29,11 +29,12 @@ Cover coverOf(const ProjectedShot& shot, const LocalPolygon& local, double nearD
     if (!(faces >> f & 1u) || !setUpProjection(local, shot.surface.faces[f], nearDepth, item, 0, setup)) continue;
     c.onSurface = true;
     const ItemBuffer& buffer = shot.itemBuffers[f];
-    forEachSpan(setup, setup.rowBegin, setup.rowEnd, [&](int row, int left, int right) {
+    for (int row = setup.rowBegin; row < setup.rowEnd; ++row) {
+      const auto [left, right] = rowSpan(setup, row);
       const int* items = buffer.items.data() + static_cast<std::ptrdiff_t>(row) * buffer.width;
       c.covered += right - left;
       for (int column = left; column < right; ++column) c.showing += items[column] == item;
-    });
+    }
   }
   return c;
 }

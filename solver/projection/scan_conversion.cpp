@@ -140,61 +140,54 @@ std::vector<int> depthTieRanks(const std::vector<Patch>& patches) {
   return rank;
 }
 
-void rowSpans(const PolygonSetup& setup, int rowBegin, int rowEnd, int* lefts, int* rights) {
-  const int lo = setup.columnBegin, hi = setup.columnEnd;
-  const int count = rowEnd - rowBegin;
-  std::fill_n(lefts, count, lo);
-  std::fill_n(rights, count, hi);
-  // Edge by edge over all the rows, not row by row over the edges: an edge's fields stay in
-  // registers and its branches go the same way row after row, and no edge waits on another's clamp.
-  // Each edge bounds the span on its own side; the span is what all of them leave.
-  for (int k = 0; k < setup.edgeCount; ++k) {
+std::pair<int, int> rowSpan(const PolygonSetup& setup, int row) {
+  const double cy = row + 0.5;
+  int left = setup.columnBegin;
+  int right = setup.columnEnd;
+  for (int k = 0; k < setup.edgeCount && left < right; ++k) {
     const EdgeFunction& e = setup.edges[k];
-    if (e.dirY == 0.0) {  // parallel to the rows: all of a row or none, whatever the column
-      for (int i = 0; i < count; ++i)
-        if (!inside(e, lo + 0.5, (rowBegin + i) + 0.5)) rights[i] = lo;
+    auto pass = [&](int column) { return inside(e, column + 0.5, cy); };
+    if (e.dirY == 0.0) {  // parallel to the rows: all of the row or none
+      if (!pass(left)) right = left;
       continue;
     }
-    const bool leftEdge = e.dirY > 0.0;
+    // The first column whose centre lies past the edge (on the inside for a left edge, the
+    // outside for a right one): ceil(t). When the crossing is clear of every pixel centre by
+    // more than rounding can move it, that is exact; otherwise the edge function decides,
+    // column by column. (Integer ceil: std::ceil is a library call on baseline x86-64.)
+    const double t = e.startX + (cy - e.startY) * e.inverseSlope - 0.5;
     const double slack = e.crossingSlack;
-    for (int i = 0; i < count; ++i) {
-      const double cy = (rowBegin + i) + 0.5;
-      auto pass = [&](int column) { return inside(e, column + 0.5, cy) == leftEdge; };
-      // The first column whose centre lies past the edge (on the inside for a left edge, the
-      // outside for a right one): ceil(t). When the crossing is clear of every pixel centre by
-      // more than rounding can move it, that is exact; otherwise the edge function decides,
-      // column by column. (Integer ceil: std::ceil is a library call on baseline x86-64.)
-      const double t = e.startX + (cy - e.startY) * e.inverseSlope - 0.5;
-      int first;
-      if (t >= lo - 2.0 && t <= hi + 2.0) {
-        int g = static_cast<int>(t);  // truncation: ceil for negative t ...
-        g += g < t;                   // ... and for positive t after this (no branch to mispredict)
-        first = g - t > slack && t - (g - 1) > slack ? std::clamp(g, lo, hi) : firstPassing(g, lo, hi, pass);
-      } else if (slack < 1.0 && t < lo) {
-        first = lo;  // crossing well left of the span
-      } else if (slack < 1.0 && t > hi) {
-        first = hi;  // well right of it
-      } else {  // not a number, or magnitudes rounding can move by pixels
-        first = firstPassing(lo, lo, hi, pass);
-      }
-      if (leftEdge)
-        lefts[i] = std::max(lefts[i], first);
+    int first;
+    if (t >= left - 2.0 && t <= right + 2.0) {
+      int g = static_cast<int>(t);  // truncation: ceil for negative t ...
+      g += g < t;                   // ... and for positive t after this (no branch to mispredict)
+      if (g - t > slack && t - (g - 1) > slack)
+        first = std::clamp(g, left, right);
       else
-        rights[i] = std::min(rights[i], first);
+        first = e.dirY > 0.0 ? firstPassing(g, left, right, pass)
+                             : firstPassing(g, left, right, [&](int column) { return !pass(column); });
+    } else if (slack < 1.0 && t < left) {
+      first = left;  // crossing well left of the span
+    } else if (slack < 1.0 && t > right) {
+      first = right;  // well right of it
+    } else {  // not a number, or magnitudes rounding can move by pixels
+      first = e.dirY > 0.0 ? firstPassing(left, left, right, pass)
+                           : firstPassing(left, left, right, [&](int column) { return !pass(column); });
     }
+    if (e.dirY > 0.0)
+      left = first;
+    else
+      right = first;
   }
-  for (int i = 0; i < count; ++i) rights[i] = std::max(lefts[i], rights[i]);
-}
-
-std::pair<int, int> rowSpan(const PolygonSetup& setup, int row) {
-  int left = 0, right = 0;
-  rowSpans(setup, row, row + 1, &left, &right);
-  return {left, right};
+  return {left, std::max(left, right)};
 }
 
 long long coveredPixelCount(const PolygonSetup& setup) {
   long long covered = 0;
-  forEachSpan(setup, setup.rowBegin, setup.rowEnd, [&](int, int left, int right) { covered += right - left; });
+  for (int row = setup.rowBegin; row < setup.rowEnd; ++row) {
+    const auto [left, right] = rowSpan(setup, row);
+    covered += right - left;
+  }
   return covered;
 }
 
@@ -203,7 +196,8 @@ long long rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin,
   const int firstRow = std::max(rowBegin, setup.rowBegin);
   const int lastRow = std::min(rowEnd, setup.rowEnd);
   long long covered = 0;
-  forEachSpan(setup, firstRow, lastRow, [&](int row, int left, int right) {
+  for (int row = firstRow; row < lastRow; ++row) {
+    const auto [left, right] = rowSpan(setup, row);
     covered += right - left;
     int* items = buffer.items.data() + static_cast<std::ptrdiff_t>(row) * buffer.width;
     double* depths = buffer.inverseDepth.data() + static_cast<std::ptrdiff_t>(row) * buffer.width;
@@ -216,7 +210,7 @@ long long rasterise(const PolygonSetup& setup, ItemBuffer& buffer, int rowBegin,
         depths[column] = inverseDepth;
       }
     }
-  });
+  }
   return covered;
 }
 

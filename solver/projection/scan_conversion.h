@@ -79,21 +79,6 @@ std::vector<int> depthTieRanks(const std::vector<Patch>& patches);
 // The pixels [first, second) of `row` whose centres the polygon covers (empty: first == second),
 // by the rule covers() applies pixel by pixel.
 std::pair<int, int> rowSpan(const PolygonSetup& setup, int row);
-// The same for rows [rowBegin, rowEnd) at once, into lefts[i] and rights[i] for row rowBegin + i.
-void rowSpans(const PolygonSetup& setup, int rowBegin, int rowEnd, int* lefts, int* rights);
-
-// Calls visit(row, left, right) for rows [rowBegin, rowEnd) in order, with rowSpan's pixels,
-// found a block of rows at a time.
-template <typename Visit>
-void forEachSpan(const PolygonSetup& setup, int rowBegin, int rowEnd, Visit&& visit) {
-  constexpr int kBlock = 128;
-  int lefts[kBlock], rights[kBlock];
-  for (int block = rowBegin; block < rowEnd; block += kBlock) {
-    const int blockEnd = std::min(rowEnd, block + kBlock);
-    rowSpans(setup, block, blockEnd, lefts, rights);
-    for (int row = block; row < blockEnd; ++row) visit(row, lefts[row - block], rights[row - block]);
-  }
-}
 
 // How many pixel centres the polygon covers: rowSpan over its rows.
 long long coveredPixelCount(const PolygonSetup& setup);
