@@ -97,6 +97,18 @@ SolveOptions SolveFlags::resolved() const {
                                     flag, splits ? "adaptive" : "the", subdivide, splits ? "adaptive" : "uniform or adaptive",
                                     flag));
   }
+  // So would a flag that shapes what this solve does not run.
+  for (const std::string& flag : flags) {
+    const auto unused = [&](const std::string& shapes, const std::string& setting, const std::string& add) {
+      return OptionError(fmt::format("{} shapes {}, and {}: add {}, or leave {} out", flag, shapes, setting, add, flag));
+    };
+    if (flag == "--ratio" && o.projection != Projection::Plane)
+      throw unused("the single plane", "--projection is " + projection, "--projection plane");
+    if ((flag == "--mapping" || flag == "--pe-grid" || flag == "--pe-memory") && o.backend != Backend::Mesh)
+      throw unused("the emulated MP-1", "--backend is " + backend, "--backend mesh");
+    if ((flag == "--exchange-shots" || flag == "--portal-bins") && !cellsOn())
+      throw unused("a cells solve", "--cells is " + cells, "--cells auto");
+  }
   o.formFactorCacheBytes = formFactorCacheBytes(o.backend, cacheMb);
   validateOptions(o);
   return o;

@@ -110,7 +110,7 @@ TEST(CliCheckpoint, RefusesACheckpointThatDoesNotFit) {
   const std::string good = readBytes(checkpoint);
   expectRefused("solve furnace --quiet --resolution 64 --shooters 2", checkpoint, "another meshed scene");
   expectRefused("solve cornell --cell 0.2 " + kOptions, checkpoint, "another meshed scene");
-  expectRefused(kSolve + "--ratio 2", checkpoint, "--ratio 3 there, 2 here");
+  expectRefused(kSolve + "--projection plane --ratio 2", checkpoint, "--ratio 3 there, 2 here");
   expectRefused(kSolve + "--subdivide uniform", checkpoint, "--subdivide off there, uniform here");
 
   std::ofstream(checkpoint, std::ios::binary) << good.substr(0, good.size() / 2);

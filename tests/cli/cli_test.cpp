@@ -200,6 +200,28 @@ TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   EXPECT_NE(run.output.find("--portal-bins 17 is out of range"), std::string::npos) << run.output;
 }
 
+// A flag that shapes what the solve does not run would be dropped without a word: refused, naming
+// the flag to add. Beside what it shapes, it is taken.
+TEST(Cli, FlagsForWhatTheSolveDoesNotRunAreRefused) {
+  const std::map<std::string, std::string> cases = {
+      {"--ratio 5", "--ratio shapes the single plane, and --projection is hemicube: add --projection plane"},
+      {"--mapping adaptive", "--mapping shapes the emulated MP-1, and --backend is native: add --backend mesh"},
+      {"--pe-grid 32x32", "--pe-grid shapes the emulated MP-1, and --backend is native: add --backend mesh"},
+      {"--exchange-shots 4", "--exchange-shots shapes a cells solve, and --cells is off: add --cells auto"},
+      {"--portal-bins 2", "--portal-bins shapes a cells solve, and --cells is off: add --cells auto"},
+  };
+  for (const auto& [flags, message] : cases) {
+    const CommandRun run = radmesh("solve furnace --max-iterations 1 " + flags);
+    EXPECT_EQ(run.exitCode, 2) << flags << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << flags << ": " << run.output;
+  }
+  for (const std::string flags : {"--projection plane --ratio 5", "--backend mesh --mapping adaptive --ratio 5",
+                                  "--preset paper --ratio 5"}) {
+    const CommandRun run = radmesh("solve furnace --max-iterations 1 --quiet " + flags);
+    EXPECT_EQ(run.exitCode, 0) << flags << ": " << run.output;
+  }
+}
+
 // radmesh-view takes --portal-bins, --preset and --pe-grid as solve does, and refuses a count out
 // of range, an unknown preset or a machine that is not one the same way, before any window opens.
 TEST(Cli, ViewerRefusesPortalBinsAsSolveDoes) {
