@@ -230,6 +230,7 @@ void addInfoCommand(CLI::App& app) {
       ->check(CLI::IsMember({"name", "join"}));
   cmd->callback([args, cmd] {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
+    checkMinElement(args->minElementM);
     if (const std::optional<Bake> bake = readCommandBake(args->scene, args->up)) return printBake(args->scene, *bake, args->json);
     std::vector<std::string> warnings, notes;
     const Scene scene =
@@ -238,7 +239,6 @@ void addInfoCommand(CLI::App& app) {
     const std::vector<Patch> patches = meshScene(scene, cell.cellM);
     const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
-    checkMinElement(args->minElementM);
     const double elements = countElements(patches, args->minElementM);
     const bool cells = args->cells || !args->planPath.empty();
     CellPartition partition;

@@ -66,9 +66,10 @@ glm::ivec2 parseSize(const std::string& text) {
   return s;
 }
 
+constexpr double kMinFovDeg = 0.01;
+
 // The start view of the walkthrough, moved by --camera / --look / --fov: chosen (or refused) from
 // the scene's frame before a solve, not after it.
-constexpr double kMinFovDeg = 0.01;
 
 RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
   WalkCamera walk(frame);
