@@ -72,10 +72,7 @@ FocusRun focusRun(const Scene& scene, const std::vector<Patch>& patches, const C
   FocusRun run;
   const double start = benchSeconds(o.threads);
   CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots, args.portalBins});
-  if (args.focusCell < 0 || args.focusCell >= solver.cellCount())
-    throw OptionError(fmt::format("--focus-cell {} is not a cell of {}: give 0 to {}", args.focusCell, scene.source,
-                                  solver.cellCount() - 1));
-  solver.focus(args.focusCell);
+  solver.focus(args.focusCell);  // a cell of the partition: benchScene checked it
   run.setupSeconds = benchSeconds(o.threads) - start;
   auto reached = [&] {
     const Ledger& l = solver.cellSolver(args.focusCell).ledger();
@@ -149,6 +146,9 @@ SolveOptions solveOptions(const BenchCellsArgs& args) {
   defaultMinElement(o, args.cellM);
   o.formFactorCacheBytes = formFactorCacheBytes(o.backend, args.cacheMb);
   validateOptions(o);
+  checkPortalBins(args.portalBins);
+  if (!(args.focusUnshot >= 0.0 && args.focusUnshot < 1.0))
+    throw OptionError(fmt::format("--focus-unshot must be a fraction in [0, 1), e.g. 0.05; got {}", args.focusUnshot));
   return o;
 }
 
@@ -156,6 +156,9 @@ nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const 
   const Scene scene = loadScene(name);
   const std::vector<Patch> patches = meshScene(scene, args.cellM);
   const CellPartition partition = findCells(scene, patches);
+  if (args.focusCell < 0 || static_cast<size_t>(args.focusCell) >= partition.cells.size())  // before any solve
+    throw OptionError(fmt::format("--focus-cell {} is not a cell of {}: give 0 to {}", args.focusCell, scene.source,
+                                  partition.cells.size() - 1));
   fmt::print("\n{}: {} patches, {}, {}; {} {}, until {:g}% unshot, {} shots a cell a round on average, "
              "portal bins {}, {}{}\n",
              scene.source, patches.size(), counted(std::ssize(partition.cells), "cell"),

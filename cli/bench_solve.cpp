@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <nlohmann/json.hpp>
 
@@ -167,6 +168,10 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   for (const std::string& projection : projections)
     for (int n : args.resolutions)
       for (int k : args.shooters) optionsOf(projection, n, k);
+  if (!args.cells.empty()) checkResolution(args.scalingResolution, "--scaling-resolution");
+  for (double cell : args.cells)
+    if (!(std::isfinite(cell) && cell > 0.0))
+      throw OptionError(fmt::format("--scaling-cells {}: give cell sizes in metres greater than 0, e.g. 0.75,0.381", cell));
   fmt::print("{:<10} {:>6} {:>4} {:>14} {:>12} {:>12} {:>10} {:>8} {:>12}\n", "projection", "N", "k", "ms/iteration",
              "iterations", "s to C", "it/s", "unshot", "MP-1 s/it");
   for (const std::string& projection : projections) {

@@ -200,6 +200,24 @@ TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   EXPECT_NE(run.output.find("--portal-bins 17 is out of range"), std::string::npos) << run.output;
 }
 
+// bench cells and bench solve check every value before their first solve, not after minutes of rows.
+TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
+  const std::map<std::string, std::string> cases = {
+      {"bench cells two-rooms --focus-cell 99", "--focus-cell 99 is not a cell of two-rooms: give 0 to 1"},
+      {"bench cells two-rooms --focus-unshot nan", "--focus-unshot must be a fraction in [0, 1), e.g. 0.05; got nan"},
+      {"bench cells two-rooms --portal-bins 99", "--portal-bins 99 is out of range"},
+      {"bench solve furnace --scaling-cells 0", "--scaling-cells 0: give cell sizes in metres greater than 0"},
+      {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
+    for (const char* solved : {"whole building, 1 thread", "\nplane ", "\nhemicube "})
+      EXPECT_EQ(run.output.find(solved), std::string::npos) << arguments << ": solved before refusing";
+  }
+}
+
 // A flag that shapes what the solve does not run would be dropped without a word: refused, naming
 // the flag to add. Beside what it shapes, it is taken.
 TEST(Cli, FlagsForWhatTheSolveDoesNotRunAreRefused) {
