@@ -72,8 +72,7 @@ Xyz unitLuminance(const Xyz& xyz, const std::string& what) {
 
 Xyz xyzFromChromaticity(double x, double y) {
   if (x < 0.0 || y <= 0.0 || x + y > 1.0)
-    throw MgfError("chromaticity (" + std::to_string(x) + ", " + std::to_string(y) +
-                       ") is impossible (needs x >= 0, y > 0, x + y <= 1)",
+    throw MgfError(fmt::format("chromaticity ({:g}, {:g}) is impossible (needs x >= 0, y > 0, x + y <= 1)", x, y),
                    "give CIE 1931 x y of a real colour, e.g. cxy 0.333 0.333 for white");
   return chromaticityToXyz(x, y);
 }
@@ -94,24 +93,26 @@ Xyz xyzFromSpectrum(double minNm, double maxNm, const std::vector<double>& sampl
 
 Xyz xyzFromTemperature(double kelvin) {
   if (!(kelvin > 0.0))
-    throw MgfError("colour temperature " + std::to_string(kelvin) + " K is not positive",
+    throw MgfError(fmt::format("colour temperature {:g} K is not positive", kelvin),
                    "give cct a temperature in kelvin, e.g. cct 3000");
   // Planck's law up to a constant factor; the second radiation constant c2 in nm K.
   const auto planck = [kelvin](double nm) {
     return std::pow(nm / 1000.0, -5.0) / std::expm1(1.438776877e7 / (nm * kelvin));
   };
   return unitLuminance(integrate(kVisibleMinNm, kVisibleMaxNm, planck),
-                       "a black body at " + std::to_string(kelvin) + " K");
+                       fmt::format("a black body at {:g} K", kelvin));
 }
 
 Xyz mixColors(const std::vector<double>& weights, const std::vector<Xyz>& colors) {
   Xyz sum{0.0};
   for (size_t i = 0; i < weights.size(); ++i) {
     if (weights[i] < 0.0)
-      throw MgfError("cmix weight " + std::to_string(weights[i]) + " is negative",
+      throw MgfError(fmt::format("cmix weight {:g} is negative", weights[i]),
                      "give each colour a relative brightness >= 0");
     sum += weights[i] * colors[i] / colors[i].y;
   }
+  if (!std::isfinite(sum.x + sum.y + sum.z))
+    throw MgfError("the cmix weights add up past the largest number", "give relative weights, e.g. 1 and 3");
   return unitLuminance(sum, "the mix (all weights zero)");
 }
 

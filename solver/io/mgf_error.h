@@ -15,11 +15,18 @@ namespace radmesh {
 class MgfError : public std::runtime_error {
  public:
   MgfError(const std::string& problem, std::string fix)
-      : std::runtime_error(problem), fix_(std::move(fix)) {}
+      : std::runtime_error(printable(problem)), fix_(std::move(fix)) {}
   const std::string& fix() const { return fix_; }
 
  private:
   std::string fix_;
+
+  // A NUL byte quoted from a binary file would end what() there: it is shown as \0.
+  static std::string printable(const std::string& text) {
+    std::string out;
+    for (char c : text) out += c == '\0' ? std::string("\\0") : std::string(1, c);
+    return out;
+  }
 };
 
 // Past this, lengths and areas overflow (or rounding swallows the model): a point farther from the

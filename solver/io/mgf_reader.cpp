@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -67,6 +68,12 @@ double parseMgfNumber(const std::string& word, const std::string& what) {
   const char* end = word.data() + word.size();
   double value = 0.0;
   const auto [ptr, ec] = std::from_chars(begin, end, value);
+  // Out of range is too large or too small: a number too small for a double is as good as 0, as
+  // the reference parser's atof reads it.
+  if (ec == std::errc::result_out_of_range && ptr == end) {
+    const double tiny = std::strtod(std::string(begin, end).c_str(), nullptr);
+    if (std::isfinite(tiny)) return tiny;
+  }
   if (ec == std::errc::result_out_of_range || (ec == std::errc{} && ptr == end && !std::isfinite(value)))
     throw MgfError(what + " '" + word + "' is not a finite number",
                    "give " + what + " as a finite decimal number");

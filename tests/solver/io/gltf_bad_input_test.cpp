@@ -170,9 +170,9 @@ TEST(GltfBadInput, ANodeWithTwoParentsIsRefusedBeforeTraversal) {
   test::GltfBuilder chain;
   const int levels = 40;
   for (int i = 0; i < levels; ++i)
-    chain.add("nodes", {{"name", "L" + std::to_string(i)}, {"children", {i + 1, i + 1}}});
+    chain.add("nodes", {{"name", fmt::format("L{}", i)}, {"children", {i + 1, i + 1}}});
   chain.addTriangles("t", chain.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
-                     {{"name", "L" + std::to_string(levels)}});
+                     {{"name", fmt::format("L{}", levels)}});
   const GltfRefusal twice = gltfRefusalWithin(std::chrono::seconds(20), chain.write(dir / "chain.gltf").string());
   EXPECT_EQ(twice.element, "node 1 'L1'");
   EXPECT_NE(twice.what.find("is listed twice among the children of node 0 'L0'"), std::string::npos) << twice.what;

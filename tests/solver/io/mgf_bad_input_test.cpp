@@ -158,6 +158,27 @@ TEST(MgfBadInput, PointsBeyondAnyModelAreRefusedNotDropped) {
   }
 }
 
+// Messages say what is wrong in words a reader can use: a number too small for a double is 0 (as
+// atof reads it), not "not finite"; weights too large say so; a NUL byte does not cut the message.
+TEST(MgfBadInput, MessagesStayReadableForExtremeOrBinaryWords) {
+  const Scene tiny = test::importMgfText(test::kUnitSquare + "v e =\n  p 1e-400 0 0\nm light\nf a b c d\n");
+  EXPECT_EQ(tiny.polygons.size(), 1u);
+  const std::map<std::string, std::string> cases = {
+      {"c\n  cmix 1e308 r 1e308 r\n", "the cmix weights add up past the largest number"},
+      {"c\n  cct -1e300\n", "colour temperature -1e+300 K is not positive"},
+      {std::string("v e =\n  p 1 ") + '\0' + "2 0\n", "coordinate '\\02' is not a number"},
+  };
+  for (const auto& [text, problem] : cases) {
+    try {
+      test::importMgfText("c r =\n  cxy 0.6 0.3\n" + test::kUnitSquare + text);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("(fix: "), std::string::npos) << e.what();
+    }
+  }
+}
+
 // Includes are read anew each time: two of the next file at each of 22 levels would be four
 // million reads. Refused when the reads pass the limit, long before.
 TEST(MgfBadInput, IncludesThatFanOutAreRefusedWithoutHanging) {
