@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -45,6 +46,10 @@ double CsvTable::number(size_t row, const std::string& column) const {
 }
 
 CsvTable readCsv(const std::string& path, const std::string& writtenBy) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw std::runtime_error(fmt::format("{}: is a folder, not a CSV file{}", path,
+                                         writtenBy.empty() ? "" : "; " + writtenBy + " writes it"));
   std::ifstream in(path);
   if (!in)
     throw std::runtime_error(fmt::format("{}: cannot read ({}){}", path, std::strerror(errno),

@@ -728,6 +728,15 @@ TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
   run = radmesh("plot accuracy " + bad);
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.output.find("bad.csv, line 2: 2 fields under a header of 3"), std::string::npos) << run.output;
+  // A folder where the CSV belongs, or a file where the PNGs' folder belongs, is named as such.
+  const std::string folder = tempPath("folder.csv");
+  std::filesystem::create_directories(folder);
+  run = radmesh("plot paper test --csv " + folder + " --images " + tempPath("images"));
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find(folder + ": is a folder, not a CSV file"), std::string::npos) << run.output;
+  run = radmesh("plot paper test --csv " + bad + ".csv --images " + bad + ".csv");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--images '" + bad + ".csv': cannot make that folder"), std::string::npos) << run.output;
 }
 
 }  // namespace
