@@ -64,10 +64,16 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes) {
   if (isGlb(bytes)) {
     const uint32_t declared = bytes.size() >= 12 ? littleEndian32(bytes, 8) : 0;
     const uint32_t jsonBytes = bytes.size() >= kGlbHeaderBytes ? littleEndian32(bytes, 12) : 0;
-    if (bytes.size() < kGlbHeaderBytes || declared > bytes.size() || jsonBytes > bytes.size() - kGlbHeaderBytes)
+    const std::string damaged = "the file is truncated or damaged: export or copy it again";
+    if (bytes.size() < kGlbHeaderBytes || declared > bytes.size())
       return {"GLB container",
               "the file has " + std::to_string(bytes.size()) + " bytes, its header declares " + std::to_string(declared),
-              "the file is truncated or damaged: export or copy it again"};
+              damaged};
+    if (jsonBytes > bytes.size() - kGlbHeaderBytes)
+      return {"GLB container",
+              fmt::format("its JSON chunk declares {} bytes, but {} follow the chunk's header", jsonBytes,
+                          bytes.size() - kGlbHeaderBytes),
+              damaged};
     json = bytes.substr(kGlbHeaderBytes, jsonBytes);
   }
   const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);

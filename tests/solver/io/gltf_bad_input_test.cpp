@@ -54,6 +54,28 @@ TEST(GltfBadInput, TruncatedGlbNamesTheContainer) {
   EXPECT_NE(r.what.find("492 bytes, its header declares 512"), std::string::npos) << r.what;
 }
 
+// The header's total is right, its JSON chunk's length is not: the message names that length.
+TEST(GltfBadInput, AGlbJsonChunkLongerThanTheFileNamesTheChunk) {
+  test::TempDir dir;
+  const std::string json = R"({"asset":{"version":"2.0"}})";
+  std::string glb = "glTF";
+  const auto word = [&](uint32_t v) {
+    for (int k = 0; k < 4; ++k) glb += static_cast<char>(v >> (8 * k) & 0xFF);
+  };
+  word(2);
+  word(static_cast<uint32_t>(20 + json.size()));
+  word(0xFFFFFFF0u);  // the JSON chunk's length
+  word(0x4E4F534Au);  // "JSON"
+  glb += json;
+  const std::string path = (dir / "chunk.glb").string();
+  std::ofstream(path, std::ios::binary) << glb;
+  const GltfRefusal r = gltfRefusalAt(path);
+  EXPECT_EQ(r.element, "GLB container");
+  EXPECT_NE(r.what.find(fmt::format("its JSON chunk declares 4294967280 bytes, but {} follow the chunk's header", json.size())),
+            std::string::npos)
+      << r.what;
+}
+
 TEST(GltfBadInput, MissingExternalBufferNamesTheBuffer) {
   const GltfRefusal r = gltfRefusal("gltf_missing_buffer.gltf");
   EXPECT_EQ(r.element, "buffer 0");
