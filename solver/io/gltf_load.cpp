@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -57,6 +58,64 @@ struct Diagnosis {
   std::string fix;
 };
 
+// The document's KHR_lights_punctual lights (an empty array when it has none).
+nlohmann::json lightsOf(const nlohmann::json& doc) {
+  if (doc.is_object() && doc.contains("extensions") && doc["extensions"].is_object() &&
+      doc["extensions"].contains("KHR_lights_punctual") && doc["extensions"]["KHR_lights_punctual"].is_object())
+    return doc["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
+  return nlohmann::json::array();
+}
+
+std::string lightElement(const nlohmann::json& light, size_t index) {
+  return "KHR_lights_punctual light " + std::to_string(index) +
+         (light.contains("name") && light["name"].is_string() ? " '" + light["name"].get<std::string>() + "'" : "");
+}
+
+// tinygltf drops a light's property of the wrong type and keeps its default (an intensity of
+// "1000", a string, becomes 1 cd), and ignores a node's light that is no index: both are refused
+// here, naming the light or node. Read from the JSON only when the document has lights.
+void checkLightTypes(const std::string& path, const std::string& json) {
+  if (json.find("KHR_lights_punctual") == std::string::npos) return;
+  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+  const nlohmann::json lights = lightsOf(doc);
+  const auto refuse = [&](const std::string& element, const std::string& key, const nlohmann::json& value,
+                          const std::string& want) {
+    return SceneError(path, element, fmt::format("{} is {} ({}), not {}", key, value.dump(), value.type_name(), want),
+                      fmt::format("give {} as {}", key, want));
+  };
+  for (size_t i = 0; lights.is_array() && i < lights.size(); ++i) {
+    const nlohmann::json& light = lights[i];
+    if (!light.is_object()) continue;
+    for (const char* key : {"intensity", "range"})
+      if (light.contains(key) && !light[key].is_number()) throw refuse(lightElement(light, i), key, light[key], "a number");
+    if (light.contains("color") &&
+        !(light["color"].is_array() && std::all_of(light["color"].begin(), light["color"].end(),
+                                                    [](const nlohmann::json& c) { return c.is_number(); })))
+      throw refuse(lightElement(light, i), "color", light["color"], "3 numbers");
+    if (light.contains("spot") && light["spot"].is_object())
+      for (const char* key : {"innerConeAngle", "outerConeAngle"})
+        if (light["spot"].contains(key) && !light["spot"][key].is_number())
+          throw refuse(lightElement(light, i), std::string("spot.") + key, light["spot"][key], "a number of radians");
+  }
+  const auto nodes = doc.is_object() ? doc.find("nodes") : doc.end();
+  for (size_t n = 0; nodes != doc.end() && nodes->is_array() && n < nodes->size(); ++n) {
+    const nlohmann::json& node = (*nodes)[n];
+    if (!node.is_object() || !node.contains("extensions") || !node["extensions"].is_object() ||
+        !node["extensions"].contains("KHR_lights_punctual"))
+      continue;
+    const nlohmann::json& use = node["extensions"]["KHR_lights_punctual"];
+    if (!(use.is_object() && use.contains("light") && use["light"].is_number_unsigned()))
+      throw refuse("node " + std::to_string(n), "extensions.KHR_lights_punctual", use,
+                   "{\"light\": INDEX} with the index of one of the document's lights");
+  }
+}
+
+// The document's JSON: all of a .gltf, or the JSON chunk of a .glb that loaded.
+std::string jsonOf(const std::string& bytes) {
+  if (!isGlb(bytes) || bytes.size() < kGlbHeaderBytes) return bytes;
+  return bytes.substr(kGlbHeaderBytes, std::min<size_t>(littleEndian32(bytes, 12), bytes.size() - kGlbHeaderBytes));
+}
+
 // Why tinygltf refused the file, found by reading the file again ourselves: the GLB container,
 // the JSON syntax, or an external buffer that is missing or short.
 Diagnosis diagnose(const std::string& path, const std::string& bytes) {
@@ -80,16 +139,10 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes) {
   if (doc.is_discarded())
     return {"JSON", "", "repair the JSON text (a truncated file ends mid-object)"};
   // tinygltf refuses a light without a type (or a spot without its cone) without naming it.
-  nlohmann::json lights = nlohmann::json::array();
-  if (doc.is_object() && doc.contains("extensions") && doc["extensions"].is_object() &&
-      doc["extensions"].contains("KHR_lights_punctual") && doc["extensions"]["KHR_lights_punctual"].is_object())
-    lights = doc["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
+  const nlohmann::json lights = lightsOf(doc);
   for (size_t i = 0; lights.is_array() && i < lights.size(); ++i) {
     if (!lights[i].is_object()) continue;
-    const std::string element = "KHR_lights_punctual light " + std::to_string(i) +
-                                (lights[i].contains("name") && lights[i]["name"].is_string()
-                                     ? " '" + lights[i]["name"].get<std::string>() + "'"
-                                     : "");
+    const std::string element = lightElement(lights[i], i);
     if (!lights[i].contains("type") || !lights[i]["type"].is_string())
       return {element, "it has no type", "give it \"type\": \"point\", \"spot\" or \"directional\""};
     if (lights[i]["type"] == "spot" && !(lights[i].contains("spot") && lights[i]["spot"].is_object()))
@@ -176,7 +229,10 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
   }
   appendWarnings(path, warning, warnings);
   // tinygltf may report an error yet return true (a bad optional part); trust only a clean load.
-  if (loaded && error.empty()) return model;
+  if (loaded && error.empty()) {
+    checkLightTypes(path, jsonOf(bytes));
+    return model;
+  }
   const Diagnosis d = diagnose(path, bytes);
   throw SceneError(path, d.element,
                    "could not be loaded (tinygltf: " + oneLine(error) + ")" +

@@ -93,6 +93,31 @@ TEST(GltfLights, NegativeIntensityTimesNegativeColourIsRefused) {
   EXPECT_NE(colour.find("color -1 is negative"), std::string::npos) << colour;
 }
 
+// tinygltf would keep the default for a mistyped property (an intensity "1000" became 1 cd) and
+// drop a node's light that is no index: each is refused, naming the light or node.
+TEST(GltfLights, APropertyOfTheWrongTypeIsRefusedNotDefaulted) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  const int lamp = b.add("materials", {{"emissiveFactor", {1, 1, 1}}});
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, lamp);
+  b.doc()["extensions"]["KHR_lights_punctual"]["lights"] = {{{"name", "bulb"}, {"type", "point"}, {"intensity", "1000"}}};
+  b.add("nodes", {{"name", "bulb node"}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  std::string what = lightRefusalAt(b.write(dir / "string.gltf").string());
+  EXPECT_NE(what.find("KHR_lights_punctual light 0 'bulb': intensity is \"1000\" (string), not a number"),
+            std::string::npos)
+      << what;
+  b.doc()["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = 1000;
+  b.doc()["extensions"]["KHR_lights_punctual"]["lights"][0]["color"] = {1, "1", 1};
+  what = lightRefusalAt(b.write(dir / "colour.gltf").string());
+  EXPECT_NE(what.find("color is [1,\"1\",1] (array), not 3 numbers"), std::string::npos) << what;
+  b.doc()["extensions"]["KHR_lights_punctual"]["lights"][0].erase("color");
+  b.doc()["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = "0";
+  what = lightRefusalAt(b.write(dir / "node.gltf").string());
+  EXPECT_NE(what.find("node 1: extensions.KHR_lights_punctual is {\"light\":\"0\"}"), std::string::npos) << what;
+  b.doc()["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+  EXPECT_EQ(importGltf(b.write(dir / "fine.gltf").string()).lights.size(), 1u);
+}
+
 TEST(GltfLights, ValidationNamesALightWithNaNIntensityOrImpossibleCone) {
   Scene scene = importGltf(test::dataPath("lights/point_box.gltf").string());
   scene.lights[0].intensity.g = std::nan("");
