@@ -169,6 +169,9 @@ fs::path MgfInterpreter::includedPath(const std::string& name, const char* what)
   fs::path target = name;
   if (target.is_relative()) target = files_.back().path.parent_path() / target;
   std::error_code ec;
+  if (fs::exists(target, ec) && !fs::is_regular_file(target, ec))
+    throw MgfError(std::string(what) + " '" + name + "' is not a file (" + target.string() + " is a folder or device)",
+                   "name the file to read");
   if (!fs::is_regular_file(target, ec))
     throw MgfError(std::string(what) + " '" + name + "' not found (looked for " + target.string() + ")",
                    "check the name; include paths are relative to the including file's folder");

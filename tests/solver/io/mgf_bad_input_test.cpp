@@ -46,6 +46,18 @@ TEST(MgfBadInput, MissingIncludeNamesTheIncludeLine) {
   expectRefused("mgf_missing_include.mgf", "line 4: i", "include file 'mgf_no_such_file.mgf' not found");
 }
 
+// A folder (or a device such as /dev/zero) named by an include is there, just not a file.
+TEST(MgfBadInput, IncludeOfAFolderSaysItIsNoFile) {
+  TempDir dir;
+  std::filesystem::create_directories(dir / "sub");
+  try {
+    importMgf(test::writeMgf(dir, "scene.mgf", "i sub\n"));
+    ADD_FAILURE() << "an include of a folder was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("include file 'sub' is not a file"), std::string::npos) << e.what();
+  }
+}
+
 TEST(MgfBadInput, FileEndingInsideAContinuedLineIsTruncated) {
   expectRefused("mgf_truncated.mgf", "line 10", "ends inside an entity continued with a backslash");
 }
