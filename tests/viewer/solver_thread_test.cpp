@@ -15,6 +15,7 @@
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
 #include "solver/scene/scene_error.h"
+#include "tests/test_paths.h"
 #include "tests/viewer/solver_thread_wait.h"
 #include "viewer/viewer_app.h"
 
@@ -218,6 +219,28 @@ TEST(SolverThread, PauseHoldsTheIterationCount) {
   thread.step(1);
   const Snapshot after = waitFor(thread, [&](const SolverSnapshot& s) { return s.iteration() > before; });
   EXPECT_EQ(after->iteration(), before + 1);
+}
+
+// The panel's checkpoint path is typed by hand: the scene's own file there is refused, in the
+// panel's message, and the scene is left as it was.
+TEST(SolverThread, ACheckpointIsNotSavedOverTheScene) {
+  const auto dir = std::filesystem::temp_directory_path() / ("radmesh-viewer-scene-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string scenePath = (dir / "room.gltf").string();
+  std::filesystem::copy_file(test::sourceDir() / "assets" / "cornell.gltf", scenePath,
+                             std::filesystem::copy_options::overwrite_existing);
+  const auto size = std::filesystem::file_size(scenePath);
+  SolveSetup setup = cornellSetup();
+  setup.cellM = 0.2;
+  SolverThread thread(loadScene(scenePath), setup, false);
+  thread.step(1);
+  waitFor(thread, [](const SolverSnapshot& s) { return s.iteration() >= 1; });
+  thread.saveCheckpoint((dir / "." / "room.gltf").string());
+  const Snapshot refused = waitFor(thread, [](const SolverSnapshot& s) { return !s.checkpointMessage.empty(); });
+  EXPECT_NE(refused->checkpointMessage.find("is the scene itself: save the checkpoint to another path"), std::string::npos)
+      << refused->checkpointMessage;
+  EXPECT_EQ(std::filesystem::file_size(scenePath), size);
+  std::filesystem::remove_all(dir);
 }
 
 // The panel's Save checkpoint, then radmesh-view --resume: the reopened solve shows the saved one
