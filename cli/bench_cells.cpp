@@ -142,6 +142,9 @@ SolveOptions solveOptions(const BenchCellsArgs& args) {
   o.effects = EffectsMode::All;  // the same projection in every cell as in the whole building
   o.threads = 1;
   o.subdivide = parseSubdivide(args.subdivide);
+  if (o.subdivide == Subdivide::Off && args.minElementM != 0.0)
+    throw OptionError("--min-element shapes the elements, and --subdivide is off: add --subdivide uniform or adaptive, "
+                      "or leave --min-element out");
   o.minElementM = args.minElementM;
   defaultMinElement(o, args.cellM);
   o.formFactorCacheBytes = formFactorCacheBytes(o.backend, args.cacheMb);

@@ -16,7 +16,7 @@ inline CLI::Validator numberAbove(double least, bool inclusive = false) {
         double value = 0.0;
         const bool number = CLI::detail::lexical_cast(text, value);
         if (number && (inclusive ? value >= least : value > least)) return {};
-        return text + " is not " + bound + ": give a number " + bound;
+        return text + (number ? " is not " + bound : std::string(" is not a number")) + ": give a number " + bound;
       },
       inclusive ? "NONNEGATIVE" : "POSITIVE");
 }

@@ -60,7 +60,7 @@ CellChoice commandCell(const Scene& scene, double cellM, bool given) {
 }
 
 void addDaylightFlags(CLI::App* cmd, Daylight& daylight) {
-  cmd->add_option_function<double>(
+  CLI::Option* sky = cmd->add_option_function<double>(
       "--sky",
       [&daylight](double lux) {
         checkSkyLux(lux);
@@ -68,8 +68,9 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight) {
       },
       "Light the scene by a sky of this horizontal illuminance (lux) through its openings");
   cmd->add_option_function<std::string>(
-      "--sky-model", [&daylight](const std::string& name) { daylight.sky = parseSkyModel(name); },
-      "The sky's luminance: uniform (the default) or cie-overcast (three times brighter at the zenith)");
+         "--sky-model", [&daylight](const std::string& name) { daylight.sky = parseSkyModel(name); },
+         "The sky's luminance: uniform (the default) or cie-overcast (three times brighter at the zenith)")
+      ->needs(sky);  // without a sky it would shape nothing, without a word
   cmd->add_option_function<std::string>(
       "--sun", [&daylight](const std::string& text) { daylight.sun = {parseSun(text)}; },
       "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north and above the horizon (north +y when z is up); LUX "

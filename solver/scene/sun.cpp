@@ -23,7 +23,7 @@ Light sunLight(double azimuthDeg, double elevationDeg, double lux, const Compass
     throw OptionError(fmt::format("--sun illuminance {} lux must be above 0 and at most {}, the sun's above the "
                                   "atmosphere: e.g. {} for clear-sky direct sun",
                                   lux, kSunAboveTheAtmosphereLux, kClearSkySunLux));
-  const double azimuth = azimuthDeg * std::numbers::pi / 180.0;
+  const double azimuth = std::fmod(azimuthDeg, 360.0) * std::numbers::pi / 180.0;  // 1e308 degrees is a direction too
   const double elevation = elevationDeg * std::numbers::pi / 180.0;
   const Vec3 east = glm::cross(compass.north, compass.up);
   const Vec3 towardSun = std::cos(elevation) * (std::cos(azimuth) * compass.north + std::sin(azimuth) * east) +

@@ -206,6 +206,7 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench cells two-rooms --focus-cell 99", "--focus-cell 99 is not a cell of two-rooms: give 0 to 1"},
       {"bench cells two-rooms --focus-unshot nan", "--focus-unshot must be a fraction in [0, 1), e.g. 0.05; got nan"},
       {"bench cells two-rooms --portal-bins 99", "--portal-bins 99 is out of range"},
+      {"bench cells two-rooms --min-element 0.1", "--min-element shapes the elements, and --subdivide is off"},
       {"bench solve furnace --scaling-cells 0", "--scaling-cells 0: give cell sizes in metres greater than 0"},
       {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
   };
@@ -304,6 +305,9 @@ TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
     EXPECT_NE(run.output.find("is not above 0: give a number above 0"), std::string::npos) << run.output;
     EXPECT_LT(run.output.size(), 200u) << run.output;
   }
+  run = radmesh("solve two-rooms --cells auto --exchange-shots abc");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("abc is not a number: give a number above 0"), std::string::npos) << run.output;
   run = radmesh("solve furnace --threads -1");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("--threads: -1 is not a thread count: give 0 (every core) or a positive count"),

@@ -87,6 +87,13 @@ TEST(Cli, SkyNeedsAnOpeningAndASceneWithoutLightPointsToIt) {
   run = radmesh("info " + kRoom + " --sky 10000 --sky-model clear");
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--sky-model must be"), std::string::npos) << run.output;
+  // A sky model without a sky would shape nothing, without a word.
+  run = radmesh("info " + kRoom + " --sky-model cie-overcast");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--sky-model requires --sky"), std::string::npos) << run.output;
+  // Any azimuth is a direction: 1e308 degrees is taken modulo a turn, not refused as a zero scale.
+  run = radmesh("info " + kRoom + " --sun 1e308,45 --json");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
 }
 
 TEST(Cli, WithoutCellTheCellFollowsTheScenesSizeAndCellWins) {
