@@ -89,20 +89,15 @@ SolveOptions SolveFlags::resolved() const {
     o.projection = Projection::Plane;
   o.mapping = parseMapping(mapping);
   o.subdivide = parseSubdivide(subdivide);
-  // An element flag without the elements it shapes would be dropped without a word.
-  for (const std::string& flag : flags) {
-    const bool elements = flag == "--min-element" || flag == "--element-rows", splits = flag.starts_with("--split-");
-    if ((elements && o.subdivide == Subdivide::Off) || (splits && o.subdivide != Subdivide::Adaptive))
-      throw OptionError(fmt::format("{} shapes {} elements, and --subdivide is {}: add --subdivide {} "
-                                    "(docs/accuracy.md), or leave {} out",
-                                    flag, splits ? "adaptive" : "the", subdivide, splits ? "adaptive" : "uniform or adaptive",
-                                    flag));
-  }
-  // So would a flag that shapes what this solve does not run.
+  // A flag that shapes what this solve does not run would be dropped without a word.
   for (const std::string& flag : flags) {
     const auto unused = [&](const std::string& shapes, const std::string& setting, const std::string& add) {
       return OptionError(fmt::format("{} shapes {}, and {}: add {}, or leave {} out", flag, shapes, setting, add, flag));
     };
+    if ((flag == "--min-element" || flag == "--element-rows") && o.subdivide == Subdivide::Off)
+      throw unused("the elements", "--subdivide is " + subdivide, "--subdivide uniform or adaptive (docs/accuracy.md)");
+    if (flag.starts_with("--split-") && o.subdivide != Subdivide::Adaptive)
+      throw unused("adaptive elements", "--subdivide is " + subdivide, "--subdivide adaptive (docs/accuracy.md)");
     if (flag == "--ratio" && o.projection != Projection::Plane)
       throw unused("the single plane", "--projection is " + projection, "--projection plane");
     if ((flag == "--mapping" || flag == "--pe-grid" || flag == "--pe-memory") && o.backend != Backend::Mesh)

@@ -133,7 +133,7 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes) {
               fmt::format("its JSON chunk declares {} bytes, but {} follow the chunk's header", jsonBytes,
                           bytes.size() - kGlbHeaderBytes),
               damaged};
-    json = bytes.substr(kGlbHeaderBytes, jsonBytes);
+    json = jsonOf(bytes);
   }
   const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
   if (doc.is_discarded())
