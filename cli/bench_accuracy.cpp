@@ -11,6 +11,7 @@
 #include "cli/bench_accuracy_figures.h"
 #include "cli/bench_timing.h"
 #include "cli/csv.h"
+#include "cli/output_path.h"
 #include "cli/image_error.h"
 #include "solver/radiosity/accuracy.h"
 #include "solver/radiosity/effects_plan.h"
@@ -233,11 +234,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
     throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
   if (!(args.referenceUntil > 0.0 && args.referenceUntil <= 1.0))
     throw OptionError(fmt::format("--reference-until must be a convergence in (0, 1], e.g. 0.999; got {}", args.referenceUntil));
-  std::error_code error;
-  if (!args.outDir.empty() && std::filesystem::exists(args.outDir, error) &&
-      !std::filesystem::is_directory(args.outDir, error))
-    throw OptionError(fmt::format("--out-dir '{}' is a file, not a folder: give a folder (it is made if missing)",
-                                  args.outDir));
+  if (!args.outDir.empty()) makeOutputFolder("--out-dir", args.outDir);
   const double finest = *std::ranges::min_element(args.cells);
   if (!(args.referenceCellM == 0.0 || (args.referenceCellM > 0.0 && args.referenceCellM < finest)))
     throw OptionError(fmt::format(

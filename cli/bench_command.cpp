@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "cli/option_checks.h"
@@ -136,11 +137,22 @@ void addBenchAccuracy(CLI::App* bench) {
   addCacheOption(cmd, args->cacheMb);
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, json, cmd] {
-    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*folderMade=*/true);
+    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
     dropRepeats(a.cells), dropRepeats(a.resolutions), dropRepeats(a.projections), dropRepeats(a.subdivide);
     dropRepeats(a.minElements), dropRepeats(a.adaptiveMinElements), dropRepeats(a.subdivideCells);
     dropRepeats(a.elementRows);
+    // A flag that shapes receivers the sweep does not measure would be dropped without a word.
+    const auto measured = [&a](const char* mode) { return std::ranges::find(a.subdivide, mode) != a.subdivide.end(); };
+    for (const char* flag : {"--min-element", "--element-rows", "--subdivide-cells", "--adaptive-min-element",
+                             "--split-contrast"}) {
+      const bool adaptiveOnly = flag == std::string_view("--adaptive-min-element") || flag == std::string_view("--split-contrast");
+      const char* needed = adaptiveOnly ? "adaptive" : "uniform or adaptive";
+      if (cmd->count(flag) > 0 && !measured("adaptive") && (adaptiveOnly || !measured("uniform")))
+        throw OptionError(fmt::format("bench accuracy {} shapes {} elements, and --subdivide does not measure them: add "
+                                      "{} to --subdivide, or leave {} out",
+                                      flag, adaptiveOnly ? "adaptive" : "the", needed, flag));
+    }
     if (cmd->count("--name") == 0) a.name = std::filesystem::path(a.scene).stem().string();
     writeJsonIfAsked(*json, benchAccuracy(a));
   });

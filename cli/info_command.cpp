@@ -231,7 +231,12 @@ void addInfoCommand(CLI::App& app) {
   cmd->callback([args, cmd] {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
     checkMinElement(args->minElementM);
-    if (const std::optional<Bake> bake = readCommandBake(args->scene, args->up)) return printBake(args->scene, *bake, args->json);
+    std::vector<std::string> sceneFlags;  // what shapes a scene's figures: all but the positional and --json
+    for (const CLI::Option* option : cmd->get_options())
+      if (option->count() > 0 && option->nonpositional() && option->get_name() != "--json")
+        sceneFlags.push_back(option->get_name());
+    if (const std::optional<Bake> bake = readCommandBake(args->scene, args->up, sceneFlags))
+      return printBake(args->scene, *bake, args->json);
     std::vector<std::string> warnings, notes;
     const Scene scene =
         loadCommandScene(args->scene, args->strict, args->daylight, args->up, args->metresPerUnit, warnings, notes);

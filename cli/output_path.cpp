@@ -20,7 +20,7 @@ bool hasExtension(const std::string& path, const std::string& extension) {
 }
 
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
-                     const std::string& what, bool folderMade) {
+                     const std::string& what, bool makeFolder) {
   if (path.empty()) return;
   if (!hasExtension(path, extension))
     throw OptionError(fmt::format("{} '{}': {}: give a path ending in {}", option, path, what, extension));
@@ -28,11 +28,19 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
   if (std::filesystem::is_directory(path, error))
     throw OptionError(fmt::format("{} '{}' is a folder: give the path of a file in it", option, path));
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (folder.empty() || folderMade) return;  // the current folder, or one the command makes
+  if (folder.empty()) return;  // the current folder
+  if (makeFolder) return makeOutputFolder(option, folder.string());
   if (!std::filesystem::is_directory(folder, error))
     throw OptionError(fmt::format("{} '{}': the folder '{}' does not exist: create it (mkdir -p {}) or give "
                                   "another path",
                                   option, path, folder.string(), folder.string()));
+}
+
+void makeOutputFolder(const std::string& option, const std::string& folder) {
+  std::error_code error;
+  if (std::filesystem::create_directories(folder, error); !std::filesystem::is_directory(folder))
+    throw OptionError(fmt::format("{} '{}': cannot make that folder ({}): give a folder you can write", option, folder,
+                                  error ? error.message() : "a file is in its place"));
 }
 
 void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& outputs) {

@@ -12,9 +12,13 @@ bool hasExtension(const std::string& path, const std::string& extension);
 
 // Throws OptionError naming `option` and the fix when `path` does not end in `extension` (`what`
 // says what the file is, e.g. "a bake is glTF binary") or its folder does not exist. Empty: no file.
-// `folderMade`: the command makes a missing folder (bench accuracy's outputs), so only the rest is checked.
+// `makeFolder`: a missing folder is made now (bench accuracy's outputs) rather than refused.
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
-                     const std::string& what, bool folderMade = false);
+                     const std::string& what, bool makeFolder = false);
+
+// Makes `folder` (and its parents) if missing, or throws OptionError naming `option` and why it
+// cannot be made: before the work whose outputs it holds, not after.
+void makeOutputFolder(const std::string& option, const std::string& folder);
 
 // Throws OptionError when one of `outputs` (option, path; empty: no file) is the scene's own file
 // or the same file as another: the later write would replace the scene, or the earlier output,

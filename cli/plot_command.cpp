@@ -13,6 +13,7 @@
 #include "cli/bench_ranks.h"
 #include "cli/commands.h"
 #include "cli/csv.h"
+#include "cli/output_path.h"
 #include "solver/scene/scene_error.h"
 #include "cli/plot.h"
 
@@ -186,10 +187,7 @@ void addPlotCommand(CLI::App& app) {
   cmd->add_option("--csv", paper->csv, "The solves' figures, a row per iteration")->required();
   cmd->add_option("--images", paper->imagesDir, "Folder of the PNGs")->required();
   cmd->callback([paper] {
-    std::error_code error;  // the folder of the PNGs is made, or refused before any table
-    if (std::filesystem::create_directories(paper->imagesDir, error); !std::filesystem::is_directory(paper->imagesDir))
-      throw OptionError(fmt::format("--images '{}': cannot make that folder ({}): give a folder you can write",
-                                    paper->imagesDir, error ? error.message() : "a file is in its place"));
+    makeOutputFolder("--images", paper->imagesDir);  // before any table
     if (!paper->statsDir.empty()) writeCsv(paper->csv, gatherStats(*paper)), fmt::print("wrote {}\n", paper->csv);
     const CsvTable table = readCsv(paper->csv);
     printTables(table, paper->name);

@@ -134,13 +134,10 @@ Solved solveScene(const RenderArgs& args) {
 }
 
 std::optional<Solved> readBakeToRender(const RenderArgs& args) {
-  std::optional<Bake> bake = readCommandBake(args.flags.scene, args.flags.up);
+  std::optional<Bake> bake = readCommandBake(args.flags.scene, args.flags.up, args.flags.given());
   if (!bake) return std::nullopt;  // a scene to solve, not a bake
   if (args.iterations > 0)
     throw OptionError(fmt::format("{} is a bake, already solved: --iterations applies to scenes", args.flags.scene));
-  for (const std::string& flag : args.flags.given())
-    fmt::print(stderr, "radmesh: warning: {} does not apply: {} is a bake, already solved (it applies to scenes)\n",
-               flag, args.flags.scene);
   fmt::print("read bake {}: {} vertices, {} triangles\n", args.flags.scene, bake->mesh.positions.size(),
              bake->mesh.indices.size() / 3);
   const RenderView view = chooseView(args, sceneFrame(bakeScene(*bake, args.flags.scene)));

@@ -32,9 +32,13 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, const Dayligh
   return scene;
 }
 
-std::optional<Bake> readCommandBake(const std::string& path, UpChoice up) {
+std::optional<Bake> readCommandBake(const std::string& path, UpChoice up, const std::vector<std::string>& given) {
   std::optional<Bake> bake = readBake(path);
   if (!bake) return std::nullopt;
+  for (const std::string& flag : given)
+    if (flag != "--up")  // the one scene flag a bake takes
+      fmt::print(stderr, "radmesh: warning: {} does not apply: {} is a bake, already solved (it applies to scenes)\n",
+                 flag, path);
   Scene geometry = bakeScene(*bake, path);
   const std::string chosen = applyUpChoice(geometry, up);
   if (!chosen.empty()) fmt::print(stderr, "radmesh: {}\n", chosen);

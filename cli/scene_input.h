@@ -24,8 +24,8 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, const Dayligh
                        double metresPerUnit);
 
 // The bake at `path` with its up axis set by `up`, or empty when `path` is not a glTF bake
-// (solver/bake/bake_reader.h).
-std::optional<Bake> readCommandBake(const std::string& path, UpChoice up);
+// (solver/bake/bake_reader.h). Each of the `given` scene flags but --up is warned of as not applying.
+std::optional<Bake> readCommandBake(const std::string& path, UpChoice up, const std::vector<std::string>& given);
 
 // Adds --up to a subcommand.
 void addUpOption(CLI::App* cmd, UpChoice& up);

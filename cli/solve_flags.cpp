@@ -124,10 +124,10 @@ void addMachineFlags(CLI::App* cmd, PeMachine& machine) {
 void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
+  const size_t first = cmd->get_options().size();
   cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
   addUpOption(cmd, f.up);
   addUnitsOption(cmd, f.metresPerUnit);
-  const size_t first = cmd->get_options().size();
   addDaylightFlags(cmd, f.daylight);
   cmd->add_option_function<std::string>(
          "--preset", [&f](const std::string& name) { applyPresetFlags(parsePreset(name), f); },

@@ -520,7 +520,14 @@ TEST(Cli, BenchAccuracyRefusesAnImpossibleReference) {
       {"--resolutions 32,5", "--resolutions 5 is out of range"},
       {"--reference-until nan", "--reference-until must be a convergence in (0, 1], e.g. 0.999; got nan"},
       {"--reference-until 2", "--reference-until must be a convergence in (0, 1]"},
-      {"--out-dir " + file, "--out-dir '" + file + "' is a file, not a folder"},
+      {"--out-dir " + file, "--out-dir '" + file + "': cannot make that folder"},
+      {"--out-dir /proc/radmesh-nope", "--out-dir '/proc/radmesh-nope': cannot make that folder"},
+      {"--json /proc/radmesh-nope/a.json", "--json '/proc/radmesh-nope': cannot make that folder"},
+      {"--subdivide off --element-rows share",
+       "--element-rows shapes the elements, and --subdivide does not measure them: add uniform or adaptive"},
+      {"--min-element 0.2", "--min-element shapes the elements"},  // off alone is the default
+      {"--subdivide off,uniform --split-contrast 0.1",
+       "--split-contrast shapes adaptive elements, and --subdivide does not measure them: add adaptive"},
       {"--json " + tempPath("a.txt"), "give a path ending in .json"},
   };
   for (const auto& [arguments, message] : cases) {
@@ -617,11 +624,14 @@ TEST(Cli, RenderSolvesOrReadsABakeAndWritesThePictureOfTheAskedSize) {
 
   ASSERT_EQ(radmesh("solve cornell --cell 0.1 --resolution 64 --until 0.9 --quiet --out " + bake).exitCode, 0);
   // Solver options do not apply to a bake: each gets a warning, not silence.
-  const CommandRun read = radmesh("render " + bake + " --resolution 64 --preset paper --size 96x64 --out " + fromBake);
+  const CommandRun read =
+      radmesh("render " + bake + " --resolution 64 --preset paper --strict --up y --size 96x64 --out " + fromBake);
   ASSERT_EQ(read.exitCode, 0) << read.output;
   EXPECT_NE(read.output.find("read bake"), std::string::npos) << read.output;
   EXPECT_NE(read.output.find("warning: --resolution does not apply"), std::string::npos) << read.output;
   EXPECT_NE(read.output.find("warning: --preset does not apply"), std::string::npos) << read.output;
+  EXPECT_NE(read.output.find("warning: --strict does not apply"), std::string::npos) << read.output;
+  EXPECT_EQ(read.output.find("--up does not apply"), std::string::npos) << read.output;  // a bake turns too
   EXPECT_EQ(read.output.find("--cell does not apply"), std::string::npos) << read.output;
   EXPECT_EQ(pngSize(fromBake), std::make_pair(96, 64));
 }

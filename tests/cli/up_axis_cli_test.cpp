@@ -1,5 +1,6 @@
 // --up on the commands, and bakes: written y-up, described by `info` and walked by the viewer
 // with no solve.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -120,6 +121,13 @@ TEST(UpAxisCli, TheOfficesBakeIsYUpAndInfoDescribesItAsABake) {
   EXPECT_NE(text.output.find("bake            " + bake + " (by radmesh;"), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("up              y (the scene's z turned onto glTF's y)"), std::string::npos) << text.output;
   EXPECT_EQ(text.output.find("emitter"), std::string::npos) << text.output;
+  // The scene's flags shape nothing of a bake's figures: each is named, not dropped without a word.
+  const CommandRun flags = radmesh("info " + bake + " --cell 0.5 --min-element 0.1 --cells --up y");
+  ASSERT_EQ(flags.exitCode, 0) << flags.output;
+  for (const char* flag : {"--cell", "--min-element", "--cells"})
+    EXPECT_NE(flags.output.find(fmt::format("warning: {} does not apply: {} is a bake", flag, bake)), std::string::npos)
+        << flags.output;
+  EXPECT_EQ(flags.output.find("--up does not apply"), std::string::npos) << flags.output;
 
   const CommandRun again = radmesh("solve " + bake);
   EXPECT_EQ(again.exitCode, 2) << again.output;
