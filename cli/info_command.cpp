@@ -263,6 +263,7 @@ void addInfoCommand(CLI::App& app) {
       j["cell_why"] = cell.why;
       j["elements"] = elements;
       j["min_element"] = args->minElementM;
+      j["element_limit"] = elementLimit();
       j["effects"] = effectsJson(plan);
       j["warnings"] = warnings;
       if (cells) j.update(cellsJson(partition, figures, outside, seconds));
@@ -271,8 +272,11 @@ void addInfoCommand(CLI::App& app) {
       fmt::print("{}\n", j.dump(2));
     } else {
       printText(summary, scene, warnings, notes, cell);
-      fmt::print("elements        {:.0f} with --subdivide uniform --min-element {:g}{}\n", elements, args->minElementM,
-                 args->minElementM == 0.0 ? " (every patch cut into four)" : "");
+      fmt::print("elements        {:.0f} with --subdivide uniform --min-element {:g}{}{}\n", elements, args->minElementM,
+                 args->minElementM == 0.0 ? " (every patch cut into four)" : "",
+                 elements > static_cast<double>(elementLimit())
+                     ? fmt::format(", more than this machine's limit of {}: a solve refuses it", elementLimit())
+                     : "");
       printEffects(plan);
       if (cells) printCells(partition, figures, outside, seconds);
     }

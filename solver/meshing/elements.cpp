@@ -104,13 +104,21 @@ void checkElementCount(const std::vector<Patch>& patches, double minElementM, st
         ? fmt::format("use a larger --min-element (about {:.3g} m or more)",
                       minElementM * std::sqrt(count / static_cast<double>(maxElements)) * 1.1)
         : "give a larger --cell or --subdivide off";
+    const std::string why = maxElements < kMaxElements
+        ? fmt::format(" (half of this machine's {:.1f} GiB of memory, at about {} bytes an element at a solve's peak)",
+                      static_cast<double>(physicalMemoryBytes()) / (1u << 30), kPeakBytesPerElement)
+        : "";
     throw OptionError(fmt::format("--min-element {} m {} the {} patches into {:.3g} elements, more than the "
-                                  "limit of {}; {}", minElementM, what, patches.size(), count, maxElements, fix));
+                                  "limit of {}{}; {}", minElementM, what, patches.size(), count, maxElements, why, fix));
   }
 }
 
+std::size_t elementLimit(std::size_t memoryBytes) {
+  return memoryBytes == 0 ? kMaxElements : std::min(kMaxElements, memoryBytes / 2 / kPeakBytesPerElement);
+}
+
 void checkElementBudget(const std::vector<Patch>& patches, bool adaptive, double minElementM) {
-  checkElementCount(patches, minElementM, kMaxElements, adaptive ? "could let adaptive subdivision split" : "would cut");
+  checkElementCount(patches, minElementM, elementLimit(), adaptive ? "could let adaptive subdivision split" : "would cut");
 }
 
 Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements) {

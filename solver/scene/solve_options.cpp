@@ -169,11 +169,17 @@ void applyPreset(Preset preset, SolveOptions& o) {
   o.subdivide = elements ? Subdivide::Uniform : Subdivide::Off;
 }
 
+std::size_t physicalMemoryBytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), pageBytes = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || pageBytes <= 0) return 0;
+  return static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageBytes);
+}
+
 std::size_t defaultFormFactorCacheBytes() {
   constexpr std::size_t kBudget = std::size_t{1} << 30;
-  const long pages = sysconf(_SC_PHYS_PAGES), pageBytes = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || pageBytes <= 0) return kBudget;  // unknown: the machine is taken to have 4 GiB
-  return std::min(kBudget, static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageBytes) / 4);
+  const std::size_t memory = physicalMemoryBytes();
+  if (memory == 0) return kBudget;  // unknown: the machine is taken to have 4 GiB
+  return std::min(kBudget, memory / 4);
 }
 
 std::size_t formFactorCacheBytes(Backend backend, std::optional<double> givenMb) {

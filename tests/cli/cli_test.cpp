@@ -154,6 +154,13 @@ TEST(Cli, BenchCellsSolvesWithElementsWhenAsked) {
   const CommandRun info = radmesh("info two-rooms --cell 0.75 --min-element 0.375");
   ASSERT_EQ(info.exitCode, 0) << info.output;
   EXPECT_NE(info.output.find("elements        1460 with --subdivide uniform"), std::string::npos) << info.output;
+  EXPECT_EQ(info.output.find("more than this machine's limit"), std::string::npos) << info.output;
+  // A count no solve takes (over 20 M on any machine) is flagged where it is counted.
+  const CommandRun over = radmesh("info cornell --min-element 0.0003");
+  EXPECT_NE(over.output.find("elements        25690524 with --subdivide uniform --min-element 0.0003, more than "
+                             "this machine's limit of "),
+            std::string::npos)
+      << over.output;
   EXPECT_EQ(j["scenes"][0]["cells_elements"], 1460);
   EXPECT_NE(run.output.find("uniform elements, --min-element 0.375"), std::string::npos) << run.output;
 

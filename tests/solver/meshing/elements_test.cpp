@@ -69,6 +69,26 @@ TEST(Elements, RefusesAMinElementThatIsNegativeNaNOrMakesTooMany) {
   EXPECT_EQ(subdivideUniform(patches, 0.1, 100).elements.size(), 100u);
 }
 
+// Elements at their measured peak take at most half the machine's memory: 8 GiB holds 4 Mi of them;
+// a large or unknown memory keeps the fixed limit.
+TEST(Elements, TheLimitFollowsTheMachinesMemory) {
+  constexpr std::size_t kGiB = std::size_t{1} << 30;
+  EXPECT_EQ(elementLimit(8 * kGiB), 4u << 20);
+  EXPECT_EQ(elementLimit(64 * kGiB), kMaxElements);
+  EXPECT_EQ(elementLimit(0), kMaxElements);
+  EXPECT_LE(elementLimit(), kMaxElements);
+  if (physicalMemoryBytes() > 0) {
+    EXPECT_LE(elementLimit() * kPeakBytesPerElement, physicalMemoryBytes() / 2);
+  }
+  // A count over a limit the memory set says so, beside the fix.
+  try {
+    subdivideUniform({unitSquare()}, 0.1, 99);
+    FAIL() << "100 elements were not refused at a limit of 99";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("limit of 99 (half of this machine's"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Elements, SplitReplacesAnElementInPlaceByFourChildren) {
   const std::vector<Patch> patches = {unitSquare(), rightTriangle()};
   Elements e = patchesAsElements(patches);
