@@ -95,9 +95,12 @@ Xyz xyzFromTemperature(double kelvin) {
   if (!(kelvin > 0.0))
     throw MgfError(fmt::format("colour temperature {:g} K is not positive", kelvin),
                    "give cct a temperature in kelvin, e.g. cct 3000");
-  // Planck's law up to a constant factor; the second radiation constant c2 in nm K.
+  // Planck's law up to the constant factor kelvin / c2 (c2, the second radiation constant, in nm K):
+  // nm^-4 x / (e^x - 1) with x = c2 / (nm kelvin) stays finite however hot the body, tending to
+  // Rayleigh-Jeans' nm^-4 where x underflows.
   const auto planck = [kelvin](double nm) {
-    return std::pow(nm / 1000.0, -5.0) / std::expm1(1.438776877e7 / (nm * kelvin));
+    const double x = 1.438776877e7 / (nm * kelvin);
+    return std::pow(nm / 1000.0, -4.0) * (x > 0.0 ? x / std::expm1(x) : 1.0);
   };
   return unitLuminance(integrate(kVisibleMinNm, kVisibleMaxNm, planck),
                        fmt::format("a black body at {:g} K", kelvin));

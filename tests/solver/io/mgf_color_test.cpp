@@ -56,6 +56,13 @@ TEST(MgfColor, SpectraGoThroughTheStandardObserver) {
   EXPECT_NEAR(d.x, 0.3135, 2e-3);
   EXPECT_NEAR(d.y, 0.3236, 2e-3);
   EXPECT_DOUBLE_EQ(xyzFromTemperature(3000).y, 1.0);
+  // However hot, a black body has a colour: the locus ends at about (0.240, 0.234) (Rayleigh-Jeans),
+  // where a temperature past the largest double once overflowed into "no visible light".
+  const glm::dvec2 hottest = chromaticity(xyzFromTemperature(1e308));
+  EXPECT_NEAR(hottest.x, 0.2399, 3e-3);
+  EXPECT_NEAR(hottest.y, 0.2342, 3e-3);
+  EXPECT_NEAR(glm::distance(hottest, chromaticity(xyzFromTemperature(1e12))), 0.0, 1e-6);
+  EXPECT_THROW(xyzFromTemperature(1.0), MgfError);  // 1 K: nothing in 360-830 nm
   EXPECT_THROW(xyzFromSpectrum(900, 1000, {1, 1}), MgfError);  // infrared: no luminance
 }
 
