@@ -165,7 +165,7 @@ void run(const RenderArgs& args) {
   const double firstMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   const auto warm = Clock::now();
   for (int frame = 1; frame < args.frames; ++frame) image = renderer.render(solved->vertexB, view, shading);
-  writePng(image, args.outPath);
+  // Timed and said before the PNG is encoded, which takes seconds for the largest pictures.
   if (args.frames > 1)
     fmt::print("rendered {}x{}: first frame {:.1f} ms (context, upload, shader compile), then {:.2f} ms per frame "
                "(draw and read back) over {} frames\n",
@@ -175,6 +175,8 @@ void run(const RenderArgs& args) {
   else
     fmt::print("rendered {}x{} in {:.1f} ms (context, upload, shader compile and one frame)\n", size.x, size.y,
                firstMs);
+  std::fflush(stdout);
+  writePng(image, args.outPath);
   fmt::print("wrote {}\n", args.outPath);
 }
 
