@@ -11,7 +11,7 @@
 #include "cli/bench_accuracy_figures.h"
 #include "cli/bench_timing.h"
 #include "cli/csv.h"
-#include "cli/output_path.h"
+#include "solver/io/output_path.h"
 #include "cli/image_error.h"
 #include "solver/radiosity/accuracy.h"
 #include "solver/radiosity/effects_plan.h"

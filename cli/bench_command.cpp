@@ -13,7 +13,7 @@
 #include "cli/commands.h"
 #include "cli/distributed_command.h"
 #include "solver/scene/scene_error.h"
-#include "cli/output_path.h"
+#include "solver/io/output_path.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
 

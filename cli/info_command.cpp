@@ -7,7 +7,7 @@
 
 #include "cli/counted.h"
 #include "cli/commands.h"
-#include "cli/output_path.h"
+#include "solver/io/output_path.h"
 #include "cli/scene_input.h"
 #include "cli/stats_json.h"
 #include "cli/effects_text.h"

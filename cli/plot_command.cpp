@@ -13,7 +13,7 @@
 #include "cli/bench_ranks.h"
 #include "cli/commands.h"
 #include "cli/csv.h"
-#include "cli/output_path.h"
+#include "solver/io/output_path.h"
 #include "solver/scene/scene_error.h"
 #include "cli/plot.h"
 

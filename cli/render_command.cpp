@@ -17,7 +17,7 @@
 #if RADMESH_HAS_VIEWER
 #include "cli/cell_solve.h"
 #include "cli/effects_text.h"
-#include "cli/output_path.h"
+#include "solver/io/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "solver/bake/bake_reader.h"

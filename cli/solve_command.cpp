@@ -12,7 +12,7 @@
 #include "cli/distributed_command.h"
 #include "cli/scene_input.h"
 #include "cli/effects_text.h"
-#include "cli/output_path.h"
+#include "solver/io/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
@@ -125,7 +125,8 @@ void run(const SolveArgs& args, Processes* processes) {
   checkOutputPath("--stats", args.statsPath, ".json", "the stats are JSON");
   checkOutputPath("--out", args.outPath, ".glb", "a bake is glTF binary");
   checkOutputsDistinct(args.flags.scene,
-                       {{"--out", args.outPath}, {"--stats", args.statsPath}, {"--checkpoint", args.checkpointPath}});
+                       {{"--out", args.outPath}, {"--stats", args.statsPath}, {"--checkpoint", args.checkpointPath}},
+                       args.resumePath);
   SolveOptions options = args.flags.resolved();
   if (readBake(args.flags.scene))  // else refused as a scene with no emitter
     throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",

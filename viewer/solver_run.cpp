@@ -133,7 +133,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
 }
 
 void SolverThread::save(Run& run, const std::string& path) {
-  if (!isBuiltinScene(scene_.source) && sameFile(path, scene_.source)) {
+  if (!scene_.file.empty() && sameFile(path, scene_.file)) {
     run.checkpointMessage = path + " is the scene itself: save the checkpoint to another path";
     return;
   }
@@ -196,6 +196,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->exhausted = run.exhausted();
   std::lock_guard lock(mutex_);
   snapshot->playing = playing_;
+  snapshot->stepsLeft = pendingSteps_;
   latest_ = std::move(snapshot);
 }
 

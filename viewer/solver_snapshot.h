@@ -80,6 +80,7 @@ struct SolverSnapshot {
   std::shared_ptr<const ShotStats> lastShotStats;
   std::shared_ptr<const CellsProgress> cells;  // a cells solve's; null for the whole scene's
   bool playing = false;
+  int stepsLeft = 0;       // of the steps asked for, those not yet taken
   bool done = false;       // the stopping rule is met (steps may still go past it)
   bool exhausted = false;  // nothing is left to shoot
   // Why the last restart or iteration failed (nothing of that solve is shown), else empty.

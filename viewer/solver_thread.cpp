@@ -26,8 +26,12 @@ constexpr auto kItemBufferInterval = std::chrono::milliseconds(500);
 
 }  // namespace
 
-SolverThread::SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath)
-    : scene_(std::move(scene)), playing_(playing), pendingSetup_(setup), pendingResume_(std::move(resumePath)) {
+SolverThread::SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath, int steps)
+    : scene_(std::move(scene)),
+      playing_(playing),
+      pendingSteps_(std::max(0, steps)),
+      pendingSetup_(setup),
+      pendingResume_(std::move(resumePath)) {
   auto first = std::make_shared<SolverSnapshot>();
   first->setup = setup;
   first->playing = playing;

@@ -15,9 +15,10 @@ namespace radmesh {
 
 class SolverThread {
  public:
-  // Meshes and starts solving at once (playing) or waits for a command (paused); with a
-  // checkpoint (solver/radiosity/checkpoint.h), the first solve goes on from it.
-  SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath = {});
+  // Meshes and starts solving at once (playing) or waits for a command (paused), or takes `steps`
+  // iterations and pauses; with a checkpoint (solver/radiosity/checkpoint.h), the first solve goes
+  // on from it.
+  SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath = {}, int steps = 0);
   ~SolverThread();  // stops after the iteration under way and joins
   SolverThread(const SolverThread&) = delete;
   SolverThread& operator=(const SolverThread&) = delete;

@@ -10,6 +10,7 @@
 #include "cli/option_checks.h"
 #include "cli/scene_input.h"
 #include "cli/solve_flags.h"
+#include "solver/io/output_path.h"
 #include "solver/radiosity/cell_solver.h"
 #include "solver/scene/scene_error.h"
 #include "solver/scene/sun.h"
@@ -123,6 +124,10 @@ int main(int argc, char** argv) {
       throw radmesh::OptionError("--screenshot needs --steps N (the number of iterations to run first) or --frames N");
     if (args.steps > 0 && args.frames > 0)
       throw radmesh::OptionError("--steps and --frames are two different runs: give one");
+    // Before the window opens and the solve runs, not after.
+    radmesh::checkOutputPath("--screenshot", args.screenshot, ".png", "the screenshot is PNG");
+    radmesh::checkOutputsDistinct(args.scene, {{"--screenshot", args.screenshot}, {"--checkpoint", args.checkpoint}},
+                                  args.resume);
     args.setup.cells = radmesh::parseCells(cells);
     radmesh::checkPortalBins(args.setup.portalBins);
     // The cells solve runs on the host's CPU (docs/cells.md).

@@ -132,9 +132,7 @@ class Shown {
 class ShownSolve : public Shown {
  public:
   ShownSolve(Scene scene, const SolveSetup& setup, const ViewerArgs& args)
-      : smokeTest_(args.steps > 0), steps_(args.steps), solver_(std::move(scene), setup, !smokeTest_, args.resume) {
-    if (smokeTest_) solver_.step(args.steps);
-  }
+      : smokeTest_(args.steps > 0), solver_(std::move(scene), setup, !smokeTest_, args.resume, args.steps) {}
   void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) override {
     solver_.setEye(camera.view().eye);
     feed_.show(solver_.latest(), renderer, view);
@@ -161,10 +159,10 @@ class ShownSolve : public Shown {
   }
   void saveCheckpoint(const Panel& panel) override { panel.saveCheckpoint(solver_); }
   bool solving() const override { return smokeTest_ ? !ready() : feed_.shown().playing && !feed_.shown().done; }
+  // The steps are counted from where the solve starts: a resumed checkpoint's iteration, not 0.
   bool ready() const override {
     const SolverSnapshot& s = feed_.shown();
-    const int steps = s.cells ? s.cells->rounds : s.iteration();
-    return steps >= steps_ || s.done || !s.error.empty();
+    return (s.mesh && s.stepsLeft == 0) || s.done || s.exhausted || !s.error.empty();
   }
   std::string failure() const override {
     return feed_.shown().error.empty() ? "" : "the solve failed: " + feed_.shown().error;
@@ -183,7 +181,6 @@ class ShownSolve : public Shown {
  private:
   std::uint64_t placedGeneration_ = 0;  // the solve whose cells placed the camera
   bool smokeTest_;
-  int steps_;
   SolverThread solver_;
   SnapshotFeed feed_;
 };
@@ -337,7 +334,10 @@ int runViewer(const ViewerArgs& args) {
 
     // The panel lays itself out over a couple of frames: wait for them before the screenshot.
     const bool smokeTestDone = smokeTest && viewing->shown->ready() && ++framesSinceReady >= 3 && frames >= args.minFrames;
-    if (smokeTestDone || (args.frames > 0 && report.frames() >= args.frames)) {
+    // A solve that fails before its mesh shows would leave the frame report waiting for ever.
+    const bool reportDone =
+        args.frames > 0 && (report.frames() >= args.frames || !viewing->shown->failure().empty());
+    if (smokeTestDone || reportDone) {
       if (!viewing->shown->failure().empty()) {
         std::fprintf(stderr, "radmesh-view: %s\n", viewing->shown->failure().c_str());
         exitCode = 1;

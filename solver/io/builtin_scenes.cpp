@@ -62,6 +62,7 @@ Scene cornellScene() {
                      "reinstall radmesh, or run it from its build tree, so that assets/cornell.gltf exists");
   Scene scene = importGltf(path.string());
   scene.source = "cornell (" + path.string() + ")";
+  scene.file = path.string();
   return scene;
 }
 
@@ -81,6 +82,11 @@ std::string builtinSceneForms() {
 bool isBuiltinScene(const std::string& name) {
   const auto& names = builtinSceneNames();
   return std::find(names.begin(), names.end(), name) != names.end() || name.rfind(kBuildingPrefix, 0) == 0;
+}
+
+std::string sceneFile(const std::string& pathOrName) {
+  if (pathOrName == "cornell") return assetPath("cornell.gltf").string();
+  return isBuiltinScene(pathOrName) ? "" : pathOrName;
 }
 
 Scene builtinScene(const std::string& name) {

@@ -50,6 +50,7 @@ Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warning
                 std::vector<std::string>* notes, UpChoice up, std::vector<std::string>* readNotes,
                 double metresPerUnit) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
+  scene.file = sceneFile(pathOrName);
   if (metresPerUnit > 0.0)
     scaleScene(scene, metresPerUnit);
   else if (const std::string units = unitsNote(scene); readNotes && !units.empty())

@@ -59,6 +59,7 @@ struct Scene {
   // 0 x, 1 y, 2 z: glTF's y as it defines, the built-in rooms' z; MGF's, which it does not say, and
   // --up's are set by loadScene (solver/io/scene_loader.h, solver/scene/up_axis.h).
   int upAxis = 2;
+  std::string file{};  // the file it was read from (a built-in's asset too), never written over; empty: made in code
 };
 
 // The axis-aligned box around the polygons' vertices; low above high when there are none.

@@ -1,4 +1,4 @@
-#include "cli/output_path.h"
+#include "solver/io/output_path.h"
 
 #include <fmt/core.h>
 
@@ -10,7 +10,7 @@
 #include "solver/io/builtin_scenes.h"
 #include "solver/scene/scene_error.h"
 
-namespace radmesh::cli {
+namespace radmesh {
 
 bool hasExtension(const std::string& path, const std::string& extension) {
   if (path.size() < extension.size()) return false;
@@ -43,13 +43,18 @@ void makeOutputFolder(const std::string& option, const std::string& folder) {
                                   error ? error.message() : "a file is in its place"));
 }
 
-void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& outputs) {
+void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& outputs,
+                          const std::string& resume) {
+  const std::string file = sceneFile(scene);
   for (size_t i = 0; i < outputs.size(); ++i) {
     const auto& [option, path] = outputs[i];
     if (path.empty()) continue;
-    if (!isBuiltinScene(scene) && sameFile(path, scene))
+    if (!file.empty() && sameFile(path, file))
       throw OptionError(fmt::format("{} '{}' is the scene being solved: writing it would replace the scene; give "
                                     "another path", option, path));
+    if (option != "--checkpoint" && !resume.empty() && sameFile(path, resume))
+      throw OptionError(fmt::format("{} '{}' is the checkpoint --resume reads: writing it would replace the "
+                                    "checkpoint; give another path", option, path));
     for (size_t j = 0; j < i; ++j)
       if (!outputs[j].second.empty() && sameFile(path, outputs[j].second))
         throw OptionError(fmt::format("{} '{}' is the file {} writes too: one would replace the other; give each "
@@ -57,4 +62,4 @@ void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<
   }
 }
 
-}  // namespace radmesh::cli
+}  // namespace radmesh

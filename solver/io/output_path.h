@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-namespace radmesh::cli {
+namespace radmesh {
 
 // Whether `path` ends in `extension` (e.g. ".glb"), in any case.
 bool hasExtension(const std::string& path, const std::string& extension);
@@ -21,8 +21,9 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
 void makeOutputFolder(const std::string& option, const std::string& folder);
 
 // Throws OptionError when one of `outputs` (option, path; empty: no file) is the scene's own file
-// or the same file as another: the later write would replace the scene, or the earlier output,
-// without a word. A built-in scene name is no file.
-void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& outputs);
+// (a built-in's asset too), the checkpoint `resume` reads (which only --checkpoint may replace, to
+// go on saving there) or the same file as another: the later write would replace it without a word.
+void checkOutputsDistinct(const std::string& scene, const std::vector<std::pair<std::string, std::string>>& outputs,
+                          const std::string& resume = {});
 
-}  // namespace radmesh::cli
+}  // namespace radmesh

@@ -1,0 +1,94 @@
+// radmesh-view from its command line, as a user runs it: what it refuses before a window opens,
+// and how its smoke-test and frame-report runs end.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/cli/cli_run.h"
+
+namespace radmesh {
+namespace {
+
+std::string viewerPath() { return (test::binaryDir() / "viewer" / "radmesh-view").string(); }
+
+// The viewer in a virtual display, or empty where it cannot run.
+std::string windowed() {
+  if (!std::filesystem::exists(viewerPath()) || std::system("command -v xvfb-run > /dev/null") != 0) return {};
+  return "timeout 120 xvfb-run -a -s '-screen 0 1280x720x24' " + viewerPath() + " ";
+}
+
+// A file the viewer would write over is refused before the window opens: the scene itself (a
+// built-in's asset too, here through a link), or the checkpoint --resume reads; radmesh solve
+// refuses a built-in's asset and the checkpoint it resumes as outputs the same way.
+TEST(ViewerCli, OutputsThatWouldReplaceTheSceneOrTheCheckpointAreRefused) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  const std::string scene = tempPath("room.gltf");
+  std::filesystem::copy_file(test::dataPath("yup_room.gltf"), scene);
+  const std::string before = readBytes(scene);
+  CommandRun run = runCommand(viewerPath() + " " + scene + " --steps 1 --screenshot " + scene);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--screenshot '" + scene + "': the screenshot is PNG"), std::string::npos) << run.output;
+  const std::string png = tempPath("room.png");
+  std::filesystem::create_symlink(scene, png);
+  run = runCommand(viewerPath() + " " + scene + " --steps 1 --screenshot " + png);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--screenshot '" + png + "' is the scene being solved"), std::string::npos) << run.output;
+  EXPECT_EQ(readBytes(scene), before);
+
+  const std::string asset = tempPath("cornell-asset.ckpt");
+  std::filesystem::create_symlink(test::sourceDir() / "assets" / "cornell.gltf", asset);
+  run = runCommand(viewerPath() + " cornell --checkpoint " + asset);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--checkpoint '" + asset + "' is the scene being solved"), std::string::npos) << run.output;
+  run = radmesh("solve cornell --max-iterations 1 --checkpoint " + asset);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--checkpoint '" + asset + "' is the scene being solved"), std::string::npos) << run.output;
+
+  const std::string checkpoint = tempPath("c.glb");
+  ASSERT_EQ(radmesh("solve cornell --cell 0.1 --resolution 32 --max-iterations 2 --quiet --checkpoint " + checkpoint)
+                .exitCode,
+            0);
+  const std::string saved = readBytes(checkpoint);
+  run = radmesh("solve cornell --cell 0.1 --resolution 32 --max-iterations 3 --resume " + checkpoint + " --out " +
+                checkpoint);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--out '" + checkpoint + "' is the checkpoint --resume reads"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(readBytes(checkpoint), saved);
+  // Going on saving where it resumed from stays allowed.
+  EXPECT_EQ(radmesh("solve cornell --cell 0.1 --resolution 32 --max-iterations 3 --quiet --resume " + checkpoint +
+                    " --checkpoint " + checkpoint)
+                .exitCode,
+            0);
+}
+
+// --steps N after --resume takes N more iterations, then the screenshot: the run ends at the
+// checkpoint's iteration plus N (it ended wherever the count from 0 was first passed).
+TEST(ViewerCli, StepsCountFromTheResumedIteration) {
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string checkpoint = tempPath("c20.ckpt"), png = tempPath("c25.png");
+  const std::string options = " --cell 0.1 --resolution 64";
+  ASSERT_EQ(radmesh("solve cornell" + options + " --max-iterations 20 --quiet --checkpoint " + checkpoint).exitCode, 0);
+  const CommandRun run =
+      runCommand(viewer + "cornell --preset bake" + options + " --resume " + checkpoint + " --steps 5 --screenshot " + png);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("solver at iteration 25,"), std::string::npos) << run.output;
+  EXPECT_TRUE(std::filesystem::exists(png));
+}
+
+// A solve that fails before its mesh shows ends the frame report with the reason and exit 1; it
+// waited for frames with a mesh for ever.
+TEST(ViewerCli, TheFrameReportEndsWhenTheSolveFails) {
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const CommandRun run = runCommand(viewer + "cornell --resume " + tempPath("missing.ckpt") + " --frames 3");
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find("radmesh-view: the solve failed: "), std::string::npos) << run.output;
+}
+
+}  // namespace
+}  // namespace radmesh
