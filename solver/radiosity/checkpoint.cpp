@@ -221,31 +221,45 @@ template <class T> T readFile(const std::string& path, const std::string& kind) 
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw refuse("is a folder, not a checkpoint", "give --resume a checkpoint written by --checkpoint");
+  // A device would be read for ever and a pipe blocks the open: only a file has a size to check.
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+    throw refuse("is not a regular file (a device, a pipe or a socket)", "give --resume a checkpoint written by --checkpoint");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw refuse("cannot be read: " + errnoText(), "give --resume a checkpoint written by --checkpoint");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+  const std::uintmax_t fileBytes = std::filesystem::file_size(path, error);
+  std::string head(kHeaderBytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.size() < sizeof kMagic || std::memcmp(head.data(), kMagic, sizeof kMagic) != 0)
     throw refuse("is not a radmesh checkpoint (it does not start with RADMESHC)",
                  "give --resume a checkpoint written by --checkpoint");
-  Reader header(std::string_view(bytes).substr(sizeof kMagic, kHeaderBytes - sizeof kMagic));
+  Reader header(std::string_view(head).substr(sizeof kMagic));
   std::uint32_t version = 0;
   std::uint64_t size = 0, checksum = 0;
   try {
     header.scalar(version);
-    if (version != kCheckpointVersion)
-      throw refuse(fmt::format("is a version {} checkpoint; this radmesh reads version {}", version, kCheckpointVersion),
-                   "resume with the radmesh that wrote it, or solve from scratch without --resume");
     header.scalar(size);
     header.scalar(checksum);
   } catch (const Malformed&) {
-    throw refuse(fmt::format("is truncated: {} bytes, shorter than its {}-byte header", bytes.size(), kHeaderBytes),
+    throw refuse(fmt::format("is truncated: {} bytes, shorter than its {}-byte header", head.size(), kHeaderBytes),
                  kStartOver);
   }
-  if (bytes.size() - kHeaderBytes != size)
-    throw refuse(fmt::format("is truncated or has bytes appended: {} bytes, its header says {}", bytes.size(),
+  if (version != kCheckpointVersion)
+    throw refuse(fmt::format("is a version {} checkpoint (or its header is damaged); this radmesh reads version {}",
+                             version, kCheckpointVersion),
+                 "resume with the radmesh that wrote it, or solve from scratch without --resume");
+  // The size before the payload is read: a damaged header must not ask for terabytes.
+  if (fileBytes - kHeaderBytes != size)
+    throw refuse(fmt::format("is truncated or has bytes appended: {} bytes, its header says {}", fileBytes,
                              kHeaderBytes + size),
                  kStartOver);
-  const std::string_view payload = std::string_view(bytes).substr(kHeaderBytes);
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  if (static_cast<std::uint64_t>(in.gcount()) != size)
+    throw refuse(fmt::format("is truncated: {} of its {} bytes could be read", kHeaderBytes + in.gcount(),
+                             kHeaderBytes + size),
+                 kStartOver);
+  const std::string_view payload = bytes;
   if (fnv1a(payload.data(), payload.size()) != checksum)
     throw refuse("is corrupted: its checksum does not match its contents", kStartOver);
   std::string savedKind;

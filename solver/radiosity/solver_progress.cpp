@@ -1,6 +1,8 @@
 // A solve's progress taken out and put back (checkpoints: solver/radiosity/checkpoint.h), checked
 // against the solve it is put into.
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <fmt/format.h>
 #include <optional>
 #include <stdexcept>
@@ -35,6 +37,35 @@ bool fitsPatches(const SolverProgress& p, size_t n, size_t elements) {
          std::all_of(p.history.begin(), p.history.end(), recordFits);
 }
 
+bool physical(double v) { return std::isfinite(v) && v >= 0.0; }
+bool physical(const Rgb& v) { return physical(v.r) && physical(v.g) && physical(v.b); }
+
+// Throws std::invalid_argument naming the first of a progress's figures no solve makes: a power or
+// radiosity that is negative or not finite, a negative shot count, a ledger that does not balance
+// (a checkpoint whose checksum was mended after an edit).
+void checkFigures(const SolverProgress& p) {
+  auto all = [](const auto& values) { return std::all_of(values.begin(), values.end(), [](const auto& v) { return physical(v); }); };
+  auto allBins = [&](const std::vector<std::vector<Rgb>>& bins) { return std::all_of(bins.begin(), bins.end(), all); };
+  const std::pair<const char*, bool> figures[] = {
+      {"radiosity", all(p.radiosity) && all(p.elementRadiosity)},
+      {"unshot radiosity", all(p.unshotRadiosity)},
+      {"unshot power", all(p.unshotPowerW) && physical(p.firstShotPowerW)},
+      {"shot totals", all(p.shotTotal)},
+      {"portal power", allBins(p.portalPower) && allBins(p.portalUnshot)},
+      {"shot counts", std::all_of(p.timesShot.begin(), p.timesShot.end(), [](int t) { return t >= 0; })},
+      {"convergence", p.convergence >= 0.0 && p.convergence <= 1.0},
+  };
+  for (const auto& [name, ok] : figures)
+    if (!ok) throw std::invalid_argument(fmt::format("its {} holds a value no solve makes (negative or not finite)", name));
+  const Ledger& l = p.ledger;
+  for (double term : {l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, l.portalOut,
+                      l.portalIn, l.lightOutside})
+    if (!physical(term)) throw std::invalid_argument(fmt::format("its energy ledger holds {} W", term));
+  if (!(l.imbalance() <= kLedgerTolerance))
+    throw std::invalid_argument(fmt::format("its energy ledger does not balance (imbalance {:.3g} of the power)",
+                                            l.imbalance()));
+}
+
 }  // namespace
 
 SolverProgress ProgressiveSolver::progress() const {
@@ -64,6 +95,7 @@ void ProgressiveSolver::restoreProgress(SolverProgress p) {
     throw std::invalid_argument(fmt::format(
         "solver progress of another solve: not {} patches, shooters of other patches, other portal patches, or "
         "another back end", n));
+  checkFigures(p);
   if (split) {  // as refine() leaves them after a split
     s.backend.reset();
     s.elements = std::move(*split);

@@ -123,7 +123,7 @@ TEST(CliCheckpoint, RefusesACheckpointThatDoesNotFit) {
   std::string older = good;  // before elements, portals and cells were kept
   older[8] = 2;
   std::ofstream(checkpoint, std::ios::binary) << older;
-  expectRefused(kSolve, checkpoint, "is a version 2 checkpoint; this radmesh reads version 3");
+  expectRefused(kSolve, checkpoint, "is a version 2 checkpoint (or its header is damaged); this radmesh reads version 3");
 }
 
 // Two rooms, each a cell, the light through the door kept by direction bin; about 30 rounds.

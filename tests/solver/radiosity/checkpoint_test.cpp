@@ -1,7 +1,9 @@
 #include "solver/radiosity/checkpoint.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -219,6 +221,11 @@ TEST_F(CheckpointRefusal, Truncated) {
   expectRefused(path, m, options(Backend::Native, 10), "is truncated");
   writeBytes(path, "");
   expectRefused(path, m, options(Backend::Native, 10), "is not a radmesh checkpoint");
+  // Neither read for ever (it ran out of memory) nor waited on (a pipe with no writer).
+  expectRefused("/dev/zero", m, options(Backend::Native, 10), "is not a regular file");
+  const std::string fifo = (dir / "pipe.ckpt").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expectRefused(fifo, m, options(Backend::Native, 10), "is not a regular file");
 }
 
 TEST_F(CheckpointRefusal, OneFlippedByte) {
@@ -246,6 +253,34 @@ TEST(Checkpoint, RestoreRefusesAProgressOfOtherPatchesAndLeavesTheSolverAsItWas)
   EXPECT_THROW(solver->restoreProgress(other), std::invalid_argument);
   EXPECT_EQ(solver->history().size(), 3u);
   EXPECT_EQ(solver->history().back().shooters.size(), 2u);
+}
+
+// A progress whose checksum holds but whose figures no solve makes (a checkpoint edited, its
+// checksum mended) is refused before anything is restored: it resumed, printed a NaN ledger and
+// wrote the bake.
+TEST(Checkpoint, RestoreRefusesFiguresNoSolveMakes) {
+  const ScenePatches m = cornell();
+  auto solver = solvedToDone(m, options(Backend::Native, 3));
+  const std::vector<std::pair<const char*, void (*)(SolverProgress&)>> edits = {
+      {"radiosity", [](SolverProgress& p) { p.radiosity[0].g = std::nan(""); }},
+      {"radiosity", [](SolverProgress& p) { p.radiosity[1].r = -1.0; }},
+      {"unshot power", [](SolverProgress& p) { p.unshotPowerW[0] = -0.5; }},
+      {"shot counts", [](SolverProgress& p) { p.timesShot[0] = -3; }},
+      {"energy ledger holds nan W", [](SolverProgress& p) { p.ledger.emitted = std::nan(""); }},
+      {"energy ledger does not balance", [](SolverProgress& p) { p.ledger.unshot *= 2.0; }},
+  };
+  for (const auto& [says, edit] : edits) {
+    SolverProgress edited = solver->progress();
+    edit(edited);
+    try {
+      solver->restoreProgress(edited);
+      ADD_FAILURE() << "accepted; expected: " << says;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(solver->history().size(), 3u);
+  EXPECT_TRUE(std::isfinite(solver->ledger().emitted));
 }
 
 // A cells solve stopped after some rounds, saved and resumed in a new solver: bitwise the solve that
