@@ -121,6 +121,11 @@ double solveWithProgress(ProgressiveSolver& solver, bool quiet, const std::funct
   return elapsed();
 }
 
+void warnIfLightLost(const Ledger& ledger, bool sceneClosed) {
+  for (const std::string& warning : lostLightWarnings(ledger, sceneClosed))
+    fmt::print(stderr, "radmesh: warning: {}\n", warning);
+}
+
 void warnIfFarFromConverged(const Ledger& ledger) {
   const double unshot = ledger.unshotFraction();
   if (unshot <= kFarFromConvergedUnshot) return;

@@ -50,5 +50,7 @@ double solveWithProgress(ProgressiveSolver& solver, bool quiet,
 
 // On stderr, when the solve stopped with more than kFarFromConvergedUnshot of the power unshot.
 void warnIfFarFromConverged(const Ledger& ledger);
+// On stderr, each of lostLightWarnings (`sceneClosed`: isClosed of the scene).
+void warnIfLightLost(const Ledger& ledger, bool sceneClosed);
 
 }  // namespace radmesh::cli

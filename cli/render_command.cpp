@@ -12,6 +12,7 @@
 #include "cli/option_checks.h"
 #include "cli/commands.h"
 #include "cli/scene_input.h"
+#include "solver/radiosity/effects_plan.h"
 #include "solver/scene/scene_error.h"
 
 #if RADMESH_HAS_VIEWER
@@ -121,6 +122,7 @@ Solved solveScene(const RenderArgs& args) {
         makeCellSolver(scene, meshScene(scene, cell.cellM), options, {cell.cellM, args.flags.exchangeShots, args.flags.portalBins});
     printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
     if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
+    warnIfLightLost(solver->ledger(), isClosed(scene));
     return solvedFrom(solver->elements().elements, solver->displayElementRadiosity());
   }
   ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
@@ -130,6 +132,7 @@ Solved solveScene(const RenderArgs& args) {
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
   if (args.iterations == 0) warnIfFarFromConverged(solver.ledger());
+  warnIfLightLost(solver.ledger(), isClosed(scene));
   return solvedFrom(solver.elements(), solver.displayElementRadiosity());
 }
 

@@ -12,6 +12,7 @@
 #include "cli/distributed_command.h"
 #include "cli/scene_input.h"
 #include "cli/effects_text.h"
+#include "solver/radiosity/effects_plan.h"
 #include "solver/io/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
@@ -108,7 +109,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
   printCellsSummary(*solver, seconds);
-  if (writes) warnIfFarFromConverged(solver->ledger());
+  if (writes) warnIfFarFromConverged(solver->ledger()), warnIfLightLost(solver->ledger(), isClosed(scene));
   if (!args.statsPath.empty()) {
     nlohmann::json stats = cellsStats(*solver, scene.source, seconds);
     if (ranks) stats["distributed"] = distributedStats(*solver, ranks->traffic());
@@ -179,7 +180,7 @@ void run(const SolveArgs& args, Processes* processes) {
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
   printSummary(solver, seconds, resumedAt);
-  if (writes) warnIfFarFromConverged(solver.ledger());
+  if (writes) warnIfFarFromConverged(solver.ledger()), warnIfLightLost(solver.ledger(), isClosed(scene));
 
   if (!args.statsPath.empty()) {
     nlohmann::json stats = solveStats(solver, scene.source, seconds);

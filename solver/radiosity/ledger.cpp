@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -14,6 +15,28 @@ double Ledger::input() const { return emitted + portalIn; }
 double Ledger::imbalance() const {
   const double accounted = absorbed + unshot + notCaptured + escaped + portalOut;
   return input() > 0.0 ? std::abs(input() - accounted) / input() : std::abs(accounted);
+}
+
+std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
+  std::vector<std::string> warnings;
+  if (!(l.input() > 0.0)) return warnings;
+  // The lights' power that fell outside the model (the sun on a building's outside) is no loss in
+  // an open scene: only what entered is weighed there.
+  const double neverEntered = l.lightOutside / l.input();
+  const double entered = l.input() - l.lightOutside;
+  const double leftAfterEntering = entered > 0.0 ? std::max(0.0, l.escaped - l.lightOutside) / entered : 0.0;
+  const double lost = sceneClosed ? std::max(neverEntered, leftAfterEntering) : leftAfterEntering;
+  if (lost > (sceneClosed ? kLostInClosedScene : kLostInOpenScene))
+    warnings.push_back(fmt::format(
+        "{:.1f}% of the power {}: is a light outside the model or facing away from it, or an emitter nearer a surface "
+        "than the projection resolves (move it off by a millimetre)?",
+        100.0 * lost, sceneClosed ? "left a closed scene or never entered it" : "that entered the scene left it"));
+  if (l.notCaptured / l.input() > kPlaneMissed)
+    warnings.push_back(fmt::format(
+        "the single plane missed {:.1f}% of the power (each shot's grazing light, compounded by interreflection), so "
+        "the scene is darker than it should be: --projection hemicube catches all of it",
+        100.0 * l.notCaptured / l.input()));
+  return warnings;
 }
 
 double Ledger::unshotFraction() const {

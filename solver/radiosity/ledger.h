@@ -1,5 +1,8 @@
 #pragma once
 // The energy ledger: where every watt a solve was given went, checked after every iteration.
+#include <string>
+#include <vector>
+
 namespace radmesh {
 
 // Where the emitted power went, in watts summed over RGB. Balances:
@@ -32,5 +35,15 @@ void checkLedger(const Ledger& ledger, int iteration);
 // What the ledger vouches for, as a fraction of the emitted power: rounding over millions of
 // updates stays far below; checkLedger refuses an imbalance above it.
 inline constexpr double kLedgerTolerance = 1e-9;
+
+// Light a balanced ledger lost where a solve should not lose it, each a sentence for a warning:
+// more than kLostInClosedScene of the power left a closed scene or never entered it (a light outside
+// the model), more than kLostInOpenScene of what entered an open one left it (an emitter nearer a
+// surface than the projection resolves sends all its light past it), or the single plane missed
+// more than kPlaneMissed of it (its 8.3 % a shot, compounded by interreflection). Empty: none.
+std::vector<std::string> lostLightWarnings(const Ledger& ledger, bool sceneClosed);
+inline constexpr double kLostInClosedScene = 0.01;
+inline constexpr double kLostInOpenScene = 0.9;
+inline constexpr double kPlaneMissed = 0.10;
 
 }  // namespace radmesh

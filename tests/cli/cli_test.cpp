@@ -793,6 +793,27 @@ namespace {
 // at 256², until at most 1 % of the emitted power is unshot, and the unshot power at every
 // iteration. The Cornell box on a 10 cm grid (--cell is not the preset's) takes 793 iterations,
 // the office 7929 (two minutes under ASan).
+// Light a balanced ledger lost where no solve should lose it is warned of: all of a lamp a
+// nanometre from a wall went past it, and the paper's plane, solved on, misses a seventh of the box's
+// light. A bake of the box loses nothing it should not.
+TEST(Cli, LightLostWhereNoSolveLosesItIsWarnedOf) {
+  const std::string scene = tempPath("near-wall.mgf");
+  std::ofstream(scene) << "m wall =\n c\n rd 0.5\nv r1 =\n p 0 0 0\nv r2 =\n p 4 0 0\nv r3 =\n p 4 4 0\n"
+                          "v r4 =\n p 0 4 0\nm wall\nprism r1 r2 r3 r4 -2.7\nm lamp =\n c\n ed 1790\n"
+                          "v l1 =\n p 1e-9 1.8 1.0\nv l2 =\n p 1e-9 1.8 1.4\nv l3 =\n p 1e-9 2.2 1.4\n"
+                          "v l4 =\n p 1e-9 2.2 1.0\nm lamp\nf l1 l2 l3 l4\n";
+  CommandRun run = radmesh("solve " + scene + " --cell 0.5 --quiet");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: 100.0% of the power that entered the scene left it"), std::string::npos)
+      << run.output;
+  run = radmesh("solve cornell --preset paper --until 1 --until-unshot 0.01 --quiet");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: the single plane missed 14."), std::string::npos) << run.output;
+  run = radmesh("solve cornell --cell 0.1 --quiet");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
+}
+
 TEST(Cli, SolveByDefaultBakesToAtMostOnePercentUnshot) {
   const std::string stats = tempPath("stats.json");
   const CommandRun run = radmesh("solve cornell --cell 0.1 --quiet --stats " + stats);

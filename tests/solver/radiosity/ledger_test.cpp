@@ -1,0 +1,46 @@
+#include "solver/radiosity/ledger.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace radmesh {
+namespace {
+
+// A balanced ledger of 100 W: `escaped` W left, `outside` W of a light never entered, `missed` W
+// the single plane did not catch, the rest absorbed.
+Ledger ledgerOf(double escaped, double outside, double missed) {
+  Ledger l;
+  l.emitted = 100.0;
+  l.escaped = escaped;
+  l.lightOutside = outside;
+  l.notCaptured = missed;
+  l.absorbed = 100.0 - escaped - missed;
+  return l;
+}
+
+bool says(const std::vector<std::string>& warnings, const std::string& text) {
+  for (const std::string& w : warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// A closed scene loses nothing but seams' rounding: 2 % gone (an emitter on a wall, a light outside
+// the model) is named. An open scene loses what its openings let out, and even 80 % of it is no
+// fault; all of it is (an emitter a nanometre from a wall sent everything past it). The sun on a
+// building's outside never entered, and is no loss in an open scene.
+TEST(Ledger, LightLostWhereNoSolveLosesItIsNamed) {
+  EXPECT_TRUE(lostLightWarnings(ledgerOf(0.5, 0.0, 0.0), true).empty());
+  EXPECT_TRUE(says(lostLightWarnings(ledgerOf(2.0, 0.0, 0.0), true), "2.0% of the power left a closed scene"));
+  EXPECT_TRUE(says(lostLightWarnings(ledgerOf(60.0, 60.0, 0.0), true), "60.0% of the power left a closed scene or never entered"));
+  EXPECT_TRUE(lostLightWarnings(ledgerOf(80.0, 0.0, 0.0), false).empty());
+  EXPECT_TRUE(lostLightWarnings(ledgerOf(95.0, 90.0, 0.0), false).empty());  // 5 of the 10 W that entered
+  EXPECT_TRUE(says(lostLightWarnings(ledgerOf(100.0, 0.0, 0.0), false), "100.0% of the power that entered the scene left"));
+  EXPECT_TRUE(lostLightWarnings(ledgerOf(0.0, 0.0, 9.0), true).empty());  // a shot's 8.3 %
+  EXPECT_TRUE(says(lostLightWarnings(ledgerOf(0.0, 0.0, 80.0), false), "the single plane missed 80.0% of the power"));
+  EXPECT_TRUE(lostLightWarnings(Ledger{}, true).empty());  // nothing emitted: nothing lost
+}
+
+}  // namespace
+}  // namespace radmesh
