@@ -110,6 +110,7 @@ Solved solveScene(const RenderArgs& args) {
   }
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up,
                                        args.flags.metresPerUnit);
+  checkAnalyticSeesNoShadows(scene, options.projection);
   const RenderView view = chooseView(args, sceneFrame(scene));
   const CellChoice cell = args.flags.announceCell(scene, options);
   auto solvedFrom = [&](const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity) {

@@ -134,6 +134,7 @@ void run(const SolveArgs& args, Processes* processes) {
                      "walk it with radmesh-view, describe it with radmesh info, or draw it with radmesh render");
   const Scene scene = loadCommandScene(args.flags.scene, args.flags.strict, args.flags.daylight, args.flags.up,
                                        args.flags.metresPerUnit);
+  checkAnalyticSeesNoShadows(scene, options.projection);
   const CellChoice cell = args.flags.announceCell(scene, options);
   if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, processes ? &processes->ranks : nullptr);
   if (processes) options.meshTransport = processes->meshMachine;

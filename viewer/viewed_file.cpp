@@ -2,6 +2,7 @@
 
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
+#include "solver/radiosity/effects_plan.h"
 
 namespace radmesh {
 
@@ -21,6 +22,7 @@ ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args) {
   }
   file.notes.insert(file.notes.end(), readNotes.begin(), readNotes.end());
   if (file.bake) return file;
+  checkAnalyticSeesNoShadows(file.scene, file.setup.options.projection);
   if (!args.cellGiven) {
     const CellChoice cell = args.elementsPreset ? elementsPresetChoice(chooseCell(file.scene)) : chooseCell(file.scene);
     file.setup.cellM = cell.cellM;

@@ -7,6 +7,7 @@
 
 #include "solver/formfactors/near_field.h"
 #include "solver/geometry/openings.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh {
 
@@ -26,6 +27,14 @@ bool isConvexEnclosure(const Scene& scene) {
         if (glm::dot(v - origin, n) < -tolerance) return false;
   }
   return true;
+}
+
+void checkAnalyticSeesNoShadows(const Scene& scene, Projection projection) {
+  if (projection != Projection::Analytic || isConvexEnclosure(scene)) return;
+  throw OptionError(fmt::format("--projection analytic has no visibility, and {} is not a convex enclosure: its "
+                                "patches can hide one another, and their shadows would be lit; use --projection "
+                                "hemicube (or plane), which resolve occlusion",
+                                scene.source));
 }
 
 bool isClosed(const Scene& scene) {

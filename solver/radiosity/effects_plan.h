@@ -39,4 +39,10 @@ bool isConvexEnclosure(const Scene& scene);
 // True when every polygon edge is covered by edges of other polygons (a watertight surface).
 bool isClosed(const Scene& scene);
 
+// Throws OptionError for --projection analytic on a scene that is not a convex enclosure: its form
+// factors see through everything, so the shadows would be lit (a floor under a plate 290 times too
+// bright), without a word where no row sums past 1. The commands check what a user asks for; the
+// solver itself takes analytic anywhere, as the tests' oracle.
+void checkAnalyticSeesNoShadows(const Scene& scene, Projection projection);
+
 }  // namespace radmesh

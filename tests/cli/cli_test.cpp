@@ -362,6 +362,27 @@ TEST(Cli, AnAnalyticSolveSaysNoResolution) {
   EXPECT_EQ(run.output.find("analytic 256x256"), std::string::npos) << run.output;
 }
 
+// Analytic form factors see through everything: asked for where patches can hide one another, they
+// are refused before the solve (a desk's shadow was lit without a word), by solve, render and the viewer.
+TEST(Cli, AnalyticFormFactorsAreRefusedWherePatchesHideOneAnother) {
+  const std::string viewer = (test::binaryDir() / "viewer" / "radmesh-view").string();
+  std::vector<std::string> commands = {"solve office --cell 1 --projection analytic",
+                                       "render office --cell 1 --projection analytic --out " + tempPath("a.png")};
+  for (const std::string& command : commands) {
+    const CommandRun run = radmesh(command);
+    EXPECT_EQ(run.exitCode, 2) << command << ": " << run.output;
+    EXPECT_NE(run.output.find("--projection analytic has no visibility, and office is not a convex enclosure"),
+              std::string::npos)
+        << command << ": " << run.output;
+    EXPECT_EQ(run.output.find("iteration"), std::string::npos) << command << ": refused before the solve";
+  }
+  if (!std::filesystem::exists(viewer)) return;
+  const CommandRun run = runCommand(viewer + " office --backend native --projection analytic");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("radmesh-view: error: --projection analytic has no visibility"), std::string::npos)
+      << run.output;
+}
+
 TEST(Cli, EveryBadFileIsRefusedWithItsNameAndNoCrash) {
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::dataPath("bad"))) {
