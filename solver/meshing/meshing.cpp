@@ -292,11 +292,14 @@ CellChoice chooseCell(const Scene& scene) {
   double smallest = largest;
   for (int a = 0; a < 3; ++a)
     if (extent[a] > 1e-9 * largest) smallest = std::min(smallest, extent[a]);
-  if (smallest < kRoomSizedM)
+  double budgetCell = std::sqrt(area / kCellPatchBudget);
+  // A model narrower than a room is cut finer, but a long one (a 1000 m corridor 1 m wide) within
+  // the budget all the same.
+  const bool narrow = smallest < kRoomSizedM;
+  if (narrow && smallest / 16.0 >= budgetCell)
     return {smallest / 16.0, fmt::format("cell {:.4g} m, a sixteenth of the model's smallest extent ({:.3g} m, "
                                          "smaller than a room)", smallest / 16.0, smallest)};
-  double budgetCell = std::sqrt(area / kCellPatchBudget);
-  if (budgetCell > kDefaultCellM) {
+  if (narrow || budgetCell > kDefaultCellM) {
     // Polygons narrower than the cell make partial patches, many more than area / cell^2 (a
     // building's walls: three times as many): grow the cell until the count itself fits.
     // The estimate is from above: "about" allows it a quarter over. Where the polygons alone are

@@ -116,6 +116,11 @@ TEST(Meshing, TheDefaultCellFollowsTheModelsSize) {
   EXPECT_LE(count, 1.25 * kCellPatchBudget) << stripsCell.why;
   EXPECT_GE(count, 0.5 * kCellPatchBudget) << stripsCell.why;
   EXPECT_NE(stripsCell.why.find("at most about 200000 patches"), std::string::npos) << stripsCell.why;
+  // Narrower than a room but 1000 m long: a sixteenth of its 1 m would be 1 M patches; the budget
+  // holds for it too.
+  const CellChoice corridor = chooseCell(box({1000.0, 1.0, 1.0}));
+  EXPECT_DOUBLE_EQ(corridor.cellM, std::sqrt(2000.0 / kCellPatchBudget)) << corridor.why;
+  EXPECT_LE(static_cast<double>(meshScene(box({1000.0, 1.0, 1.0}), corridor.cellM).size()), 1.25 * kCellPatchBudget);
 }
 
 TEST(Meshing, UnitSquareAtOriginIsSixteenQuads) {
