@@ -106,6 +106,10 @@ SolveOptions SolveFlags::resolved() const {
       throw unused("a cells solve", "--cells is " + cells, "--cells auto");
   }
   o.formFactorCacheBytes = formFactorCacheBytes(o.backend, cacheMb);
+  // A bake and a render show what was solved. The display ambient term, which spreads the unshot
+  // power evenly over every surface, lit a room sealed off from the only lamp (the viewer keeps it,
+  // to show a solve under way).
+  o.ambient = false;
   validateOptions(o);
   return o;
 }

@@ -34,7 +34,8 @@ struct SolveFlags {
   std::vector<const CLI::Option*> solverOptions;  // every flag below but SCENE, to tell which were given
 
   // Parses the text flags into options and validates them (throws OptionError). With --backend mesh
-  // and no --projection, the projection is the single plane, the only one the mesh runs.
+  // and no --projection, the projection is the single plane, the only one the mesh runs. No display
+  // ambient term: solve and render output what was solved.
   SolveOptions resolved() const;
   bool cellsOn() const;  // --cells auto: parseCells(cells)
   // The solver flags given on the command line, e.g. {"--resolution", "--preset"}.

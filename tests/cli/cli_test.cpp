@@ -701,6 +701,30 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
 #endif
 }
 
+#ifdef RADMESH_HAS_VIEWER
+// The bake shows what was solved: a room sealed off from the only lamp (inside a closed box) stays
+// black. The display ambient term, which spreads the unshot power over every surface, drew it grey.
+TEST(Cli, ABakeLightsNothingNoLightReaches) {
+  const std::string scene = tempPath("sealed.mgf"), bake = tempPath("sealed.glb"), png = tempPath("sealed.png");
+  std::ofstream(scene) << "m wall =\n c\n rd 0.5\nm lamp =\n c\n ed 1790\n"
+                          "v r1 =\n p 0 0 0\nv r2 =\n p 4 0 0\nv r3 =\n p 4 4 0\nv r4 =\n p 0 4 0\n"
+                          "v b1 =\n p 1 1 0.5\nv b2 =\n p 2 1 0.5\nv b3 =\n p 2 2 0.5\nv b4 =\n p 1 2 0.5\n"
+                          "v c1 =\n p 1.001 1.001 0.501\nv c2 =\n p 1.999 1.001 0.501\n"
+                          "v c3 =\n p 1.999 1.999 0.501\nv c4 =\n p 1.001 1.999 0.501\n"
+                          "v l1 =\n p 1.4 1.4 1.49\nv l2 =\n p 1.4 1.6 1.49\nv l3 =\n p 1.6 1.6 1.49\n"
+                          "v l4 =\n p 1.6 1.4 1.49\nm wall\nprism r1 r2 r3 r4 -2.7\nprism b4 b3 b2 b1 1\n"
+                          "prism c1 c2 c3 c4 -0.998\nm lamp\nf l1 l2 l3 l4\n";
+  ASSERT_EQ(radmesh("solve " + scene + " --cell 0.5 --quiet --out " + bake).exitCode, 0);
+  const CommandRun run = radmesh("render " + bake + " --size 160x120 --out " + png);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Image picture = readPng(png);
+  int lit = 0;
+  for (size_t i = 0; i < picture.rgba.size(); i += 4)
+    lit += picture.rgba[i] + picture.rgba[i + 1] + picture.rgba[i + 2] > 0;
+  EXPECT_EQ(lit, 0) << png;
+}
+#endif
+
 // render simulates what solve does: only the effects the scene calls for, unless --effects all.
 TEST(Cli, RenderSimulatesTheEffectsSolveDoes) {
   const CommandRun probe = radmesh("render --help");
