@@ -2,7 +2,9 @@
 // Option checks whose refusals say what to give: CLI11's PositiveNumber names its range as "0.000000
 // to 17976931348623157...", the largest double written out in full.
 #include <CLI/CLI.hpp>
+#include <array>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -19,6 +21,22 @@ inline CLI::Validator numberAbove(double least, bool inclusive = false) {
         return text + (number ? " is not " + bound : std::string(" is not a number")) + ": give a number " + bound;
       },
       inclusive ? "NONNEGATIVE" : "POSITIVE");
+}
+
+// WxH (--size) with each side in [least, most], or nullopt: every character read (640x480junk is no
+// size), no overflow (99999999999 is no side).
+inline std::optional<std::array<int, 2>> parseSize(const std::string& text, int least, int most) {
+  std::array<int, 2> size{};
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) return std::nullopt;
+  const std::string sides[2] = {text.substr(0, x), text.substr(x + 1)};
+  for (int i = 0; i < 2; ++i) {
+    if (sides[i].empty() || sides[i].size() > 9 || sides[i].find_first_not_of("0123456789") != std::string::npos)
+      return std::nullopt;
+    size[i] = std::stoi(sides[i]);
+    if (size[i] < least || size[i] > most) return std::nullopt;
+  }
+  return size;
 }
 
 inline const CLI::Validator kPositive = numberAbove(0.0);

@@ -58,13 +58,10 @@ glm::dvec3 parsePoint(const std::string& text, const char* option) {
   return p;
 }
 
-glm::ivec2 parseSize(const std::string& text) {
-  glm::ivec2 s;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%c", &s.x, &s.y, &tail) != 2 || s.x < 1 || s.y < 1 || s.x > 16384 ||
-      s.y > 16384)
-    throw OptionError(fmt::format("--size '{}' is not WxH with each side in 1..16384 (e.g. 1024x768)", text));
-  return s;
+glm::ivec2 pictureSize(const std::string& text) {
+  const auto size = parseSize(text, 1, 16384);
+  if (!size) throw OptionError(fmt::format("--size '{}' is not WxH with each side in 1..16384 (e.g. 1024x768)", text));
+  return {(*size)[0], (*size)[1]};
 }
 
 constexpr double kMinFovDeg = 0.01;
@@ -149,7 +146,7 @@ std::optional<Solved> readBakeToRender(const RenderArgs& args) {
 }
 
 void run(const RenderArgs& args) {
-  const glm::ivec2 size = parseSize(args.size);
+  const glm::ivec2 size = pictureSize(args.size);
   if (!(args.fovDeg >= kMinFovDeg && args.fovDeg < 180.0))
     throw OptionError(fmt::format("--fov must lie between {} and 180 degrees (narrower, the picture's single-precision "
                                   "projection has no pixels left), got {}", kMinFovDeg, args.fovDeg));

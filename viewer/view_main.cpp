@@ -15,6 +15,7 @@
 #include "solver/scene/scene_error.h"
 #include "solver/scene/sun.h"
 #include "solver/scene/units.h"
+#include "viewer/panel.h"
 #include "viewer/viewer_app.h"
 
 int main(int argc, char** argv) {
@@ -114,7 +115,12 @@ int main(int argc, char** argv) {
       ->check(radmesh::cli::kPositive);
   app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps or --frames)");
   try {
-    CLI11_PARSE(app, argc, argv);  // inside: an option's own check throws OptionError while parsing
+    try {
+      app.parse(argc, argv);  // an option's own check throws OptionError while parsing
+    } catch (const CLI::ParseError& e) {
+      // CLI11 prints the message (or the help); every usage error exits 2, as radmesh's do.
+      return app.exit(e) == 0 ? 0 : 2;
+    }
     args.cellGiven = cell->count() > 0;
     args.elementsPreset = presetGiven->count() > 0 && preset == radmesh::Preset::Elements && minElement->count() == 0;
     if (sky->count() > 0) radmesh::checkSkyLux(args.daylight.skyLux);
@@ -132,9 +138,14 @@ int main(int argc, char** argv) {
     radmesh::checkPortalBins(args.setup.portalBins);
     // The cells solve runs on the host's CPU (docs/cells.md).
     if (args.setup.cells && backendGiven->count() == 0) backend = "native";
-    if (std::sscanf(size.c_str(), "%dx%d", &args.windowSize.x, &args.windowSize.y) != 2 || args.windowSize.x < 64 ||
-        args.windowSize.y < 64)
-      throw radmesh::OptionError("--size must be WxH with both at least 64, e.g. 1280x720");
+    // The panel takes its own width beside the 3D view; X refuses windows past 16384.
+    const int narrowest = static_cast<int>(radmesh::Panel::kWidthPx) + 64;
+    const auto window = radmesh::cli::parseSize(size, 64, 16384);
+    if (!window || (*window)[0] < narrowest)
+      throw radmesh::OptionError("--size '" + size + "' is not WxH with a width of " + std::to_string(narrowest) +
+                                 " to 16384 (the panel's " + std::to_string(int(radmesh::Panel::kWidthPx)) +
+                                 " beside the view) and a height of 64 to 16384, e.g. 1280x720");
+    args.windowSize = {(*window)[0], (*window)[1]};
     args.firstTab = radmesh::parsePanelTab(panel);
     if (!up.empty()) args.up = radmesh::parseUpChoice(up);
     if (!units.empty()) args.metresPerUnit = radmesh::parseUnits(units);

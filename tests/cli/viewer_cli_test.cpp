@@ -65,6 +65,26 @@ TEST(ViewerCli, OutputsThatWouldReplaceTheSceneOrTheCheckpointAreRefused) {
             0);
 }
 
+// A window size is read whole, within what X and the panel allow, and every usage error exits 2
+// as radmesh's do (CLI11's own codes were 104 to 109).
+TEST(ViewerCli, SizesAndUsageErrorsAreRefusedBeforeAWindowOpens) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  for (const std::string size : {"640x480junk", "99999999999x720", "100000x100000", "64x64", "1280"}) {
+    const CommandRun run = runCommand(viewerPath() + " cornell --size " + size);
+    EXPECT_EQ(run.exitCode, 2) << size << ": " << run.output;
+    EXPECT_NE(run.output.find("--size '" + size + "' is not WxH with a width of 444 to 16384"), std::string::npos)
+        << run.output;
+  }
+  for (const std::string flags : {"--cell abc", "--steps 0", "--bogus"}) {
+    const CommandRun run = runCommand(viewerPath() + " cornell " + flags);
+    EXPECT_EQ(run.exitCode, 2) << flags << ": " << run.output;
+  }
+  EXPECT_EQ(runCommand(viewerPath() + " --help").exitCode, 0);
+  const CommandRun render = radmesh("render cornell --size 640x480junk --out " + tempPath("a.png"));
+  EXPECT_EQ(render.exitCode, 2) << render.output;
+  EXPECT_NE(render.output.find("--size '640x480junk' is not WxH"), std::string::npos) << render.output;
+}
+
 // --steps N after --resume takes N more iterations, then the screenshot: the run ends at the
 // checkpoint's iteration plus N (it ended wherever the count from 0 was first passed).
 TEST(ViewerCli, StepsCountFromTheResumedIteration) {
