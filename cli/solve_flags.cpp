@@ -89,22 +89,7 @@ SolveOptions SolveFlags::resolved() const {
     o.projection = Projection::Plane;
   o.mapping = parseMapping(mapping);
   o.subdivide = parseSubdivide(subdivide);
-  // A flag that shapes what this solve does not run would be dropped without a word.
-  for (const std::string& flag : flags) {
-    const auto unused = [&](const std::string& shapes, const std::string& setting, const std::string& add) {
-      return OptionError(fmt::format("{} shapes {}, and {}: add {}, or leave {} out", flag, shapes, setting, add, flag));
-    };
-    if ((flag == "--min-element" || flag == "--element-rows") && o.subdivide == Subdivide::Off)
-      throw unused("the elements", "--subdivide is " + subdivide, "--subdivide uniform or adaptive (docs/accuracy.md)");
-    if (flag.starts_with("--split-") && o.subdivide != Subdivide::Adaptive)
-      throw unused("adaptive elements", "--subdivide is " + subdivide, "--subdivide adaptive (docs/accuracy.md)");
-    if (flag == "--ratio" && o.projection != Projection::Plane)
-      throw unused("the single plane", "--projection is " + projection, "--projection plane");
-    if ((flag == "--mapping" || flag == "--pe-grid" || flag == "--pe-memory") && o.backend != Backend::Mesh)
-      throw unused("the emulated MP-1", "--backend is " + backend, "--backend mesh");
-    if ((flag == "--exchange-shots" || flag == "--portal-bins") && !cellsOn())
-      throw unused("a cells solve", "--cells is " + cells, "--cells auto");
-  }
+  refuseFlagsThatShapeNothing(flags, o, cellsOn());
   o.formFactorCacheBytes = formFactorCacheBytes(o.backend, cacheMb);
   // A bake and a render show what was solved. The display ambient term, which spreads the unshot
   // power evenly over every surface, lit a room sealed off from the only lamp (the viewer keeps it,

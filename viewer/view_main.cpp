@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <exception>
 #include <optional>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "cli/option_checks.h"
 #include "cli/scene_input.h"
@@ -77,7 +79,9 @@ int main(int argc, char** argv) {
   CLI::Option* sky = app.add_option("--sky", args.daylight.skyLux,
                                     "Light the scene by a sky of this horizontal illuminance (lux) through its openings");
   std::string skyModel = "uniform";
-  app.add_option("--sky-model", skyModel, "The sky's luminance: uniform or cie-overcast")->capture_default_str();
+  app.add_option("--sky-model", skyModel, "The sky's luminance: uniform or cie-overcast")
+      ->capture_default_str()
+      ->needs(sky);  // without a sky it would shape nothing, without a word
   std::string sun;
   app.add_option("--sun", sun, "Sunlight: AZIMUTH,ELEVATION[,LUX], degrees clockwise from north and above the horizon");
   app.add_option("--until", o.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")
@@ -158,6 +162,16 @@ int main(int argc, char** argv) {
     if (cacheMb) args.setup.cacheMb = radmesh::checkedCacheMb(*cacheMb);
     // Drawing needs a core too (llvmpipe renders on the CPU).
     if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+    std::vector<std::string> given;
+    for (const CLI::Option* option : app.get_options())
+      if (option->count() > 0) given.push_back(option->get_name());
+    radmesh::refuseFlagsThatShapeNothing(given, o, args.setup.cells);
+    for (const std::string& flag : given)  // what walking a bake takes; the rest shapes a solve
+      if (flag != "--up" && flag != "--size" && flag != "--panel" && flag != "--steps" && flag != "--frames" &&
+          flag != "--min-frames" && flag != "--screenshot")
+        args.solveFlags.push_back(flag);
+    if (args.minFrames > 0 && args.steps <= 0)
+      throw radmesh::OptionError("--min-frames times a --steps run: add --steps N, or leave --min-frames out");
     radmesh::validateOptions(o);
     return radmesh::runViewer(args);
   } catch (const std::exception& e) {

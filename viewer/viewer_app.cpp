@@ -259,6 +259,10 @@ void keepDroppedPath(GLFWwindow* window, int count, const char** paths) {
 int runViewer(const ViewerArgs& args) {
   ViewedFile file = readViewedFile(args.scene, args);
   printMessages(file);
+  if (file.bake)
+    for (const std::string& flag : args.solveFlags)
+      std::fprintf(stderr, "radmesh-view: warning: %s does not apply: %s is a bake, already solved (it applies to scenes)\n",
+                   flag.c_str(), args.scene.c_str());
   WindowContext window("radmesh-view: " + file.scene.source, args.windowSize);
   ImGuiLayer imgui(window.window());
   std::optional<std::string> dropped;

@@ -3,6 +3,7 @@
 #include <glm/vec2.hpp>
 
 #include <string>
+#include <vector>
 
 #include "solver/io/daylight.h"
 #include "solver/scene/up_axis.h"
@@ -38,6 +39,8 @@ struct ViewerArgs {
   // Frame-time report when frames > 0: solve (playing) while drawing this many frames from the
   // first that shows the mesh, print their frame rates (lowest, median), save --screenshot, exit.
   long frames = 0;
+  // The solve's flags given (--cell, --resume...): each is warned of as not applying to a bake.
+  std::vector<std::string> solveFlags;
 };
 
 // Returns the process exit code; throws SceneError, OptionError or std::runtime_error (no

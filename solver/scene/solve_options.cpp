@@ -46,6 +46,25 @@ void checkResolution(int resolution, const std::string& option) {
                       " is out of range: give N from 16 to 2048 (the projection surface is N x N)");
 }
 
+void refuseFlagsThatShapeNothing(const std::vector<std::string>& given, const SolveOptions& o, bool cellsOn) {
+  for (const std::string& flag : given) {
+    const auto unused = [&](const std::string& shapes, const std::string& setting, const std::string& add) {
+      return OptionError(fmt::format("{} shapes {}, and {}: add {}, or leave {} out", flag, shapes, setting, add, flag));
+    };
+    const std::string subdivide = std::string("--subdivide is ") + toString(o.subdivide);
+    if ((flag == "--min-element" || flag == "--element-rows") && o.subdivide == Subdivide::Off)
+      throw unused("the elements", subdivide, "--subdivide uniform or adaptive (docs/accuracy.md)");
+    if (flag.starts_with("--split-") && o.subdivide != Subdivide::Adaptive)
+      throw unused("adaptive elements", subdivide, "--subdivide adaptive (docs/accuracy.md)");
+    if (flag == "--ratio" && o.projection != Projection::Plane)
+      throw unused("the single plane", std::string("--projection is ") + toString(o.projection), "--projection plane");
+    if ((flag == "--mapping" || flag == "--pe-grid" || flag == "--pe-memory") && o.backend != Backend::Mesh)
+      throw unused("the emulated MP-1", std::string("--backend is ") + toString(o.backend), "--backend mesh");
+    if ((flag == "--exchange-shots" || flag == "--portal-bins") && !cellsOn)
+      throw unused("a cells solve", "--cells is off", "--cells auto");
+  }
+}
+
 void validateOptions(const SolveOptions& o) {
   checkResolution(o.resolution, "--resolution");
   if (!std::isfinite(o.ratio) || o.ratio <= 0.0)

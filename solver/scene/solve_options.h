@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace radmesh::emu {
 class Transport;  // emulator/transport.h: only the mesh back end sees it (tests/solver/layering_test.cpp)
@@ -111,6 +112,9 @@ Preset parsePreset(const std::string& text);  // throws OptionError
 
 // Throws OptionError naming the option and the accepted range.
 void validateOptions(const SolveOptions& options);
+// Throws OptionError for a flag among `given` (e.g. "--ratio") that shapes what the solve `o` (with
+// `cellsOn`: --cells auto) does not run, naming the flag to add: it would be dropped without a word.
+void refuseFlagsThatShapeNothing(const std::vector<std::string>& given, const SolveOptions& o, bool cellsOn);
 // Throws OptionError, naming `option`, for an N x N projection outside 16..2048.
 void checkResolution(int resolution, const std::string& option);
 // Throws OptionError unless --min-element is a finite length of at least 0.

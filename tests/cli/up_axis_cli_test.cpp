@@ -142,8 +142,10 @@ TEST(UpAxisCli, TheViewerWalksABakeWithNoSolve) {
   const std::string bake = tempPath("two-rooms.glb"), png = tempPath("walk.png");
   ASSERT_EQ(radmesh("solve two-rooms --cell 1 --resolution 32 --max-iterations 5 --quiet --out " + bake).exitCode, 0);
   const CommandRun run = runCommand("xvfb-run -a -s '-screen 0 800x600x24' " + viewer + " " + bake +
-                                     " --size 800x600 --steps 1 --screenshot " + png);
+                                     " --cell 0.5 --up y --size 800x600 --steps 1 --screenshot " + png);
   ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: --cell does not apply: " + bake + " is a bake"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("--up does not apply"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("wrote " + png), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("a bake, nothing to solve"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("no emitter"), std::string::npos) << run.output;
