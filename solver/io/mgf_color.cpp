@@ -138,7 +138,10 @@ Rgb fitRgb(const Xyz& xyz, double y, double ceiling, bool* desaturated) {
     if (d > kRounding) t = std::min(t, (ceiling / y - 1.0) / d);
   }
   t = std::max(t, 0.0);
-  if (desaturated) *desaturated = t < 1.0;
+  // A repair worth a warning changes a channel by more than a thousandth: white written to six
+  // digits (cxy 0.333333 0.333333) at rd 0.99 is not out of gamut, only rounded.
+  const Rgb change = (1.0 - t) * glm::abs(unit - Rgb(1.0));
+  if (desaturated) *desaturated = std::max({change.r, change.g, change.b}) > 1e-3;
   return y * (Rgb(1.0) + t * (unit - Rgb(1.0)));
 }
 

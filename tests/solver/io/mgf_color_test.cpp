@@ -105,6 +105,9 @@ TEST(MgfColor, NeutralAtTheHighestReflectanceIsNotDesaturated) {
   std::vector<std::string> warnings;
   test::importMgfText("m white =\n  c\n  rd 0.99\n" + face + "f a b c\n", &warnings);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
+  // White to six digits is white: rounding is no repair to warn of (--strict refused it).
+  test::importMgfText("m white =\n  c\n    cxy 0.333333 0.333333\n  rd 0.99\n" + face + "f a b c\n", &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
   // A colour truly outside the gamut still warns at the same reflectance.
   test::importMgfText("m red =\n  c\n    cxy 0.75 0.10\n  rd 0.99\n" + face + "f a b c\n", &warnings);
   ASSERT_EQ(warnings.size(), 1u);
