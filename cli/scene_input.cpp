@@ -11,7 +11,14 @@ namespace radmesh::cli {
 Scene loadCommandScene(const std::string& pathOrName, bool strict, const Daylight& daylight, UpChoice up,
                        double metresPerUnit, std::vector<std::string>& warnings, std::vector<std::string>& notes) {
   std::vector<std::string> readNotes;
-  Scene scene = loadScene(pathOrName, &warnings, daylight, &notes, up, &readNotes, metresPerUnit);
+  Scene scene;
+  try {
+    scene = loadScene(pathOrName, &warnings, daylight, &notes, up, &readNotes, metresPerUnit);
+  } catch (const SceneError&) {
+    // What was repaired while reading may be why nothing is left (every face skipped).
+    for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
+    throw;
+  }
   for (const std::string& n : readNotes) fmt::print(stderr, "radmesh: {}\n", n);
   if (strict && !warnings.empty()) {
     std::string list;

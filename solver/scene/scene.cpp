@@ -27,6 +27,15 @@ double polygonArea(const std::vector<Vec3>& vertices) {
   return 0.5 * glm::length(newellNormal(vertices));
 }
 
+bool hasZeroArea(const std::vector<Vec3>& vertices) {
+  if (vertices.empty()) return true;
+  const double area = polygonArea(vertices);
+  double extent = 0.0;
+  for (const Vec3& v : vertices) extent = std::max(extent, glm::length(v - vertices[0]));
+  // Zero area relative to the polygon's own size: a scale-free test for collinear vertices.
+  return !(area > 1e-12 * extent * extent) || area == 0.0;
+}
+
 std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n) {
   int axis = 0;
   for (int k = 1; k < 3; ++k)
@@ -119,14 +128,13 @@ void validatePolygon(const Scene& scene, size_t index) {
     if (!finite(v))
       throw SceneError(scene.source, element, "has a NaN or infinite coordinate",
                        "give every vertex finite coordinates in metres");
+  if (hasZeroArea(p.vertices))
+    throw SceneError(scene.source, element, "has zero area (its vertices are collinear or repeated)",
+                     "remove the polygon or fix its vertices");
   const Vec3 n = newellNormal(p.vertices);
   const double area = 0.5 * glm::length(n);
   double extent = 0.0;
   for (const Vec3& v : p.vertices) extent = std::max(extent, glm::length(v - p.vertices[0]));
-  // Zero area relative to the polygon's own size: a scale-free test for collinear vertices.
-  if (!(area > 1e-12 * extent * extent) || area == 0.0)
-    throw SceneError(scene.source, element, "has zero area (its vertices are collinear or repeated)",
-                     "remove the polygon or fix its vertices");
   const Vec3 unit = n / (2.0 * area);
   double worst = 0.0;
   for (const Vec3& v : p.vertices) worst = std::max(worst, std::abs(glm::dot(v - p.vertices[0], unit)));

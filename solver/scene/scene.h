@@ -71,6 +71,8 @@ BoundingBox boundingBox(const std::vector<Polygon>& polygons);
 // Newell's normal: its length is twice the polygon's area, robust for non-convex polygons.
 Vec3 newellNormal(const std::vector<Vec3>& vertices);
 double polygonArea(const std::vector<Vec3>& vertices);
+// No area for the polygon's own size (its vertices collinear or repeated): validateScene refuses it.
+bool hasZeroArea(const std::vector<Vec3>& vertices);
 
 // Unit axes u, v such that (u, v, n) is right-handed and orthonormal, for a unit n: u is the world
 // axis least aligned with n, projected into the plane normal to n (deterministic).

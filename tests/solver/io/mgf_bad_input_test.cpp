@@ -248,9 +248,11 @@ std::string loadRefusal(const std::string& name) {
   return {};
 }
 
+// A face on a line is skipped as the reference parser skips faces it cannot build (with a
+// warning: MgfRepair.FacesThatCannotBeBuiltAreSkippedByName); a file of nothing else has no polygons.
 TEST(MgfBadInput, FaceWithCollinearVerticesHasZeroArea) {
   const std::string what = loadRefusal("mgf_zero_area.mgf");
-  EXPECT_NE(what.find("polygon 0 (line 10: f): has zero area"), std::string::npos) << what;
+  EXPECT_NE(what.find("contains no polygons"), std::string::npos) << what;
 }
 
 TEST(MgfBadInput, SceneWithoutEmitterIsRefused) {
