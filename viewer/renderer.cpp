@@ -137,8 +137,13 @@ void Renderer::setMesh(const DisplayMesh& mesh) {
   vertexCount_ = mesh.positions.size();
   indexCount_ = mesh.indices.size();
   indices_ = mesh.indices;
+  Vec3 low(mesh.positions.empty() ? Vec3(0.0) : mesh.positions[0]), high = low;
+  for (const Vec3& p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
+  origin_ = 0.5 * (low + high);
+  std::vector<Vec3> local(mesh.positions);
+  for (Vec3& p : local) p -= origin_;
   glBindVertexArray(vertexArray_);
-  fillAttribute(positionBuffer_, 0, toFloats(mesh.positions), GL_STATIC_DRAW);
+  fillAttribute(positionBuffer_, 0, toFloats(local), GL_STATIC_DRAW);
   fillAttribute(normalBuffer_, 1, toFloats(mesh.normals), GL_STATIC_DRAW);
   fillAttribute(radiosityBuffer_, 2, std::vector<float>(vertexCount_ * 3, 0.0f), GL_DYNAMIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
@@ -257,10 +262,13 @@ void Renderer::draw(const RenderView& view, glm::ivec2 framebufferSize, const Sh
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glUseProgram(program_);
+  RenderView local = view;  // in the frame the positions were uploaded in
+  local.eye -= origin_;
+  local.look -= origin_;
   const glm::mat4 viewProjection =
-      viewProjectionMatrix(view, double(framebufferSize.x) / double(framebufferSize.y));
+      viewProjectionMatrix(local, double(framebufferSize.x) / double(framebufferSize.y));
   glUniformMatrix4fv(viewProjectionLocation_, 1, GL_FALSE, glm::value_ptr(viewProjection));
-  glUniform3f(eyeLocation_, float(view.eye.x), float(view.eye.y), float(view.eye.z));
+  glUniform3f(eyeLocation_, float(local.eye.x), float(local.eye.y), float(local.eye.z));
   glUniform1f(exposureLocation_, float(shading.exposure * radiosityScale_));
   glUniform3f(tintLocation_, 1.0f, 0.25f, 0.9f);
   glUniform1f(tintAmountLocation_, 0.0f);

@@ -51,6 +51,9 @@ class Renderer {
   int viewProjectionLocation_ = -1, eyeLocation_ = -1, exposureLocation_ = -1;
   int tintLocation_ = -1, tintAmountLocation_ = -1;
   size_t vertexCount_ = 0;
+  // The mesh's centre, taken off every position before it becomes a float (and off the view): a
+  // model 1e7 m from the origin would otherwise be drawn at whole metres.
+  Vec3 origin_{0.0};
   double radiosityScale_ = 1.0;  // the uploaded radiosity is B / radiosityScale_
   size_t indexCount_ = 0;
   size_t highlightIndexCount_ = 0;

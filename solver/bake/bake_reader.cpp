@@ -70,6 +70,10 @@ std::optional<Bake> readBake(const std::string& path) {
   }
 
   bake.mesh.positions = readFloatVec3(model, attribute("POSITION"), path, "POSITION of the bake");
+  // A model far from the origin is written about its centre, its node translated back (gltf_export.h).
+  for (const tinygltf::Node& node : model.nodes)
+    if (node.mesh == 0 && node.translation.size() == 3)
+      for (Vec3& p : bake.mesh.positions) p += Vec3(node.translation[0], node.translation[1], node.translation[2]);
   bake.mesh.normals = readFloatVec3(model, attribute("NORMAL"), path, "NORMAL of the bake");
   const std::vector<Vec3> colours = readFloatVec3(model, attribute("COLOR_0"), path, "COLOR_0 of the bake");
   const std::vector<uint32_t> indices = readIndices(model, primitive.indices, path, "indices of the bake");

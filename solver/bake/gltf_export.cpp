@@ -106,6 +106,14 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
     normals[i] = length > 0.0 ? rotateToYUp(mesh.normals[i] / length, sceneUpAxis) : Vec3(0, 1, 0);  // glTF wants unit normals
     colors[i] = glm::min(vertexRadiosity[i] / perUnit, Rgb(1.0));
   }
+  // Positions are floats: a model far from the origin (1e7 m) would snap to whole metres. Such a
+  // model is written about its centre, the offset kept in double as its node's translation.
+  Vec3 low(positions.empty() ? Vec3(0.0) : positions[0]), high = low;
+  for (const Vec3& p : positions) low = glm::min(low, p), high = glm::max(high, p);
+  const Vec3 centre = 0.5 * (low + high);
+  const bool offset = glm::length(centre) > 8.0 * glm::length(high - low);
+  if (offset)
+    for (Vec3& p : positions) p -= centre;
   const std::vector<float> positionData = flatten(positions);
 
   tinygltf::Model model;
@@ -152,6 +160,7 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
   model.extensionsUsed.push_back("KHR_materials_unlit");
   tinygltf::Node node;
   node.mesh = 0;
+  if (offset) node.translation = {centre.x, centre.y, centre.z};
   model.nodes.push_back(node);
   tinygltf::Scene scene;
   scene.nodes = {0};

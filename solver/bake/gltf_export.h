@@ -18,7 +18,9 @@ double bakeRadiosityPerColorUnit(const std::vector<Rgb>& vertexRadiosity);
 // with KHR_materials_unlit, so viewers show COLOR_0 as it is. The mesh is turned from its scene's
 // up axis onto glTF's +y (rotateToYUp, solver/scene/up_axis.h), so that glTF viewers show it
 // upright and radmesh's start view is kept. The mesh's extras hold "radiosityPerColorUnit"
-// (W/m^2) so that B can be recovered, and "sourceUp", the scene's up axis ("x", "y" or "z").
+// (W/m^2) so that B can be recovered, and "sourceUp", the scene's up axis ("x", "y" or "z"). A
+// model farther from the origin than 8 times its size is written about its centre, the node
+// translated by it (in double), so that its float positions keep their precision.
 // Throws std::invalid_argument for radiosity that does not match the mesh or is negative or not
 // finite (never written), and OptionError naming the path when the file cannot be written.
 void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::vector<Rgb>& vertexRadiosity,

@@ -4,8 +4,11 @@
 #include <tiny_gltf.h>
 
 #include <cstring>
+#include <optional>
 
+#include "solver/bake/bake_reader.h"
 #include "solver/scene/scene_error.h"
+#include "solver/scene/up_axis.h"
 #include "tests/solver/io/gltf_test_file.h"
 
 namespace radmesh {
@@ -114,6 +117,35 @@ TEST(GltfExport, AYUpSceneIsWrittenAsItIsAndAnXUpOneTurnedWithoutAMirror) {
     EXPECT_GT(glm::dot(winding, normals[6]), 0.0) << "up " << up;
     EXPECT_EQ(model.meshes[0].extras.Get("sourceUp").Get<std::string>(), up == 1 ? "y" : "x");
   }
+}
+
+// A model 1e7 m from the origin keeps its shape: written about its centre with the node translated
+// (float positions there snap to whole metres, and half the triangles lost their area), read back
+// to within the metres' doubles. Near the origin no translation is written.
+TEST(GltfExport, AModelFarFromTheOriginKeepsItsPrecision) {
+  TempDir dir;
+  DisplayMesh far = sampleMesh();
+  const Vec3 away(1e7, -3e6, 250.0);
+  for (Vec3& p : far.positions) p += away;
+  const std::vector<Rgb> b(far.positions.size(), Rgb(1.0));
+  const std::string path = (dir / "far.glb").string();
+  writeBakeGlb(path, far, b, /*sceneUpAxis=*/2);
+  const std::optional<Bake> read = readBake(path);
+  ASSERT_TRUE(read.has_value());
+  ASSERT_EQ(read->mesh.positions.size(), far.positions.size());
+  for (size_t i = 0; i < far.positions.size(); ++i)
+    EXPECT_LT(glm::distance(read->mesh.positions[i], rotateToYUp(far.positions[i], 2)), 1e-6) << i;
+
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string error, warning;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, path)) << error;
+  ASSERT_EQ(model.nodes.size(), 1u);
+  EXPECT_EQ(model.nodes[0].translation.size(), 3u);  // what a stock viewer applies too
+  const std::string near = (dir / "near.glb").string();
+  writeBakeGlb(near, sampleMesh(), b, 2);
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, near)) << error;
+  EXPECT_TRUE(model.nodes[0].translation.empty());
 }
 
 TEST(GltfExport, ColourScaleFallsBackToTheMaximumThenToOne) {
