@@ -36,9 +36,10 @@ std::vector<std::vector<Vec3>> planarFace(std::vector<Vec3> face, bool* split) {
   if (face.size() < 3)
     throw MgfError("the face has fewer than 3 distinct vertices",
                    "remove the face or give it at least 3 vertices at different places");
+  if (hasZeroArea(face))  // glTF's reader drops such triangles too
+    throw MgfError("it has no area (its vertices are collinear)", "remove the face or move a vertex off the line");
   const Vec3 normal = newellNormal(face);
   const double size = sizeOf(face);
-  if (!(glm::length(normal) > 0.0)) return {face};  // zero area: validateScene names it
   const Vec3 n = glm::normalize(normal);
   double offPlane = 0.0;
   for (const Vec3& v : face) offPlane = std::max(offPlane, std::abs(glm::dot(v - face.front(), n)));

@@ -19,7 +19,7 @@ void dropRepeatedVertices(std::vector<Vec3>& vertices);
 // The face itself when it is flat, else its triangles (ear-clipped in its Newell plane, each
 // using the face's own vertices and its orientation), however far it is bent, as MGF's reference
 // parser does. Throws MgfError for a face that cannot be built: fewer than three distinct
-// vertices, or a bent face folded or crossing itself. Sets *split when it split.
+// vertices, no area, or a bent face folded or crossing itself. Sets *split when it split.
 std::vector<std::vector<Vec3>> planarFace(std::vector<Vec3> face, bool* split);
 
 }  // namespace radmesh

@@ -301,11 +301,6 @@ bool MgfInterpreter::geometry(const MgfEntity& e) {
       note(e, std::string("f skipped: ") + error.what() + " (fix: " + error.fix() + ")");
       return true;
     }
-    std::erase_if(polygons, [](const std::vector<Vec3>& p) { return hasZeroArea(p); });
-    if (polygons.empty()) {
-      note(e, "f skipped: it has no area (its vertices are collinear)");
-      return true;
-    }
     emit(polygons, e);
     if (split) note(e, "f split into triangles: its vertices are not in one plane");
   } else if (k == "sph") {
