@@ -50,7 +50,9 @@ inline CLI::Validator threadCount(const char* program) {
     [program](std::string& text) -> std::string {
       int value = 0;
       if (!CLI::detail::lexical_cast(text, value) || value < 0)
-        return text + " is not a thread count: give 0 (every core) or a positive count";
+        return text + " is not a thread count: give 0 (" +
+               (std::string(program) == "radmesh-view" ? "every core but one, left to drawing" : "every core") +
+               ") or a positive count";
       const int hardware = static_cast<int>(std::thread::hardware_concurrency());
       if (hardware > 0 && value > hardware) {
         std::fprintf(stderr, "%s: warning: --threads %d is more than the %d this machine runs at once: using %d\n",

@@ -133,6 +133,10 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
 }
 
 void SolverThread::save(Run& run, const std::string& path) {
+  if (path.empty()) {  // an empty box in the panel: said, not ignored
+    run.checkpointMessage = "no checkpoint saved: give it a path in the box above Save";
+    return;
+  }
   if (!scene_.file.empty() && sameFile(path, scene_.file)) {
     run.checkpointMessage = path + " is the scene itself: save the checkpoint to another path";
     return;

@@ -144,7 +144,7 @@ void SolverThread::loop() {
         return run && ((playing_ && !run->done()) || (pendingSteps_ > 0 && !run->exhausted()));
       };
       wake_.wait(lock, [&] {
-        return stop_ || restartPending_ || (run && stoppingRulePending_) || (run && !pendingCheckpoint_.empty()) ||
+        return stop_ || restartPending_ || (run && stoppingRulePending_) || (run && pendingCheckpoint_) ||
                canStep() || itemBufferMissing();
       });
       if (stop_) return;
@@ -160,9 +160,9 @@ void SolverThread::loop() {
         work = Work::StoppingRule;
         stoppingRulePending_ = false;
         setup = pendingSetup_;
-      } else if (run && !pendingCheckpoint_.empty()) {
+      } else if (run && pendingCheckpoint_) {
         work = Work::Checkpoint;
-        checkpointPath = std::exchange(pendingCheckpoint_, {});
+        checkpointPath = *std::exchange(pendingCheckpoint_, std::nullopt);
       } else if (canStep()) {
         if (pendingSteps_ > 0) --pendingSteps_;
       } else {

@@ -67,7 +67,7 @@ class SolverThread {
   std::optional<Vec3> eye_;
   SolveSetup pendingSetup_;
   std::string pendingResume_;      // for the first run only: a restart solves from scratch
-  std::string pendingCheckpoint_;  // where to save, once the iteration under way is done
+  std::optional<std::string> pendingCheckpoint_;  // where to save, once the iteration under way is done
   std::uint64_t generation_ = 0;
   std::shared_ptr<const SolverSnapshot> latest_;
   std::thread thread_;  // last: starts once everything above exists

@@ -284,8 +284,8 @@ void checkSameSolve(const std::string& path, const Identity& was, const Identity
                   fmt::format("was written for another meshed scene ({}, {} patches; here {}, {} patches): the "
                               "patches' vertices, materials or emission differ",
                               was.sceneSource, was.patches, now.sceneSource, now.patches),
-                  "resume with the scene, --cell and --units it was written with, or solve from scratch without "
-                  "--resume");
+                  "resume with the scene, --cell, --units, --up and daylight (--sky, --sun) it was written with, or "
+                  "solve from scratch without --resume");
   if (const std::string differences = optionDifferences(was.options, now.options); !differences.empty())
     throw refusal(path, "was written with other options: " + differences,
                   "resume with the options it was written with, or solve from scratch without --resume");

@@ -80,6 +80,9 @@ TEST(ViewerCli, SizesAndUsageErrorsAreRefusedBeforeAWindowOpens) {
     EXPECT_EQ(run.exitCode, 2) << flags << ": " << run.output;
   }
   EXPECT_EQ(runCommand(viewerPath() + " --help").exitCode, 0);
+  // The viewer's 0 threads leaves a core to drawing, and says so.
+  const CommandRun threads = runCommand(viewerPath() + " cornell --threads -1");
+  EXPECT_NE(threads.output.find("give 0 (every core but one, left to drawing)"), std::string::npos) << threads.output;
   const CommandRun render = radmesh("render cornell --size 640x480junk --out " + tempPath("a.png"));
   EXPECT_EQ(render.exitCode, 2) << render.output;
   EXPECT_NE(render.output.find("--size '640x480junk' is not WxH"), std::string::npos) << render.output;

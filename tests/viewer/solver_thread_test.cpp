@@ -240,6 +240,10 @@ TEST(SolverThread, ACheckpointIsNotSavedOverTheScene) {
   EXPECT_NE(refused->checkpointMessage.find("is the scene itself: save the checkpoint to another path"), std::string::npos)
       << refused->checkpointMessage;
   EXPECT_EQ(std::filesystem::file_size(scenePath), size);
+  // An empty path (the panel's box cleared) is said, where Save did nothing without a word.
+  thread.saveCheckpoint("");
+  const Snapshot empty = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.starts_with("no checkpoint"); });
+  EXPECT_EQ(empty->checkpointMessage, "no checkpoint saved: give it a path in the box above Save");
   std::filesystem::remove_all(dir);
 }
 
