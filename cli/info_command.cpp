@@ -168,9 +168,9 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
 // A bake has no materials, emitters or patches to tell of: its triangles, bounds, area and up axis.
 void printBake(const std::string& path, const Bake& bake, bool json) {
   const std::vector<Polygon> triangles = bakeScene(bake, path).polygons;
-  Vec3 low(0.0), high(0.0);
-  if (!bake.mesh.positions.empty()) low = high = bake.mesh.positions[0];
-  for (const Vec3& p : bake.mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
+  BoundingBox box = boundingBox(bake.mesh.positions);
+  if (bake.mesh.positions.empty()) box = {Vec3(0.0), Vec3(0.0)};
+  const Vec3 low = box.low, high = box.high;
   double area = 0.0;
   for (const Polygon& t : triangles) area += polygonArea(t.vertices);
   const std::string up = upAxisName(bake.upAxis);

@@ -137,9 +137,8 @@ void Renderer::setMesh(const DisplayMesh& mesh) {
   vertexCount_ = mesh.positions.size();
   indexCount_ = mesh.indices.size();
   indices_ = mesh.indices;
-  Vec3 low(mesh.positions.empty() ? Vec3(0.0) : mesh.positions[0]), high = low;
-  for (const Vec3& p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
-  origin_ = 0.5 * (low + high);
+  const BoundingBox box = boundingBox(mesh.positions);
+  origin_ = mesh.positions.empty() ? Vec3(0.0) : 0.5 * (box.low + box.high);
   std::vector<Vec3> local(mesh.positions);
   for (Vec3& p : local) p -= origin_;
   glBindVertexArray(vertexArray_);

@@ -108,10 +108,9 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
   }
   // Positions are floats: a model far from the origin (1e7 m) would snap to whole metres. Such a
   // model is written about its centre, the offset kept in double as its node's translation.
-  Vec3 low(positions.empty() ? Vec3(0.0) : positions[0]), high = low;
-  for (const Vec3& p : positions) low = glm::min(low, p), high = glm::max(high, p);
-  const Vec3 centre = 0.5 * (low + high);
-  const bool offset = glm::length(centre) > 8.0 * glm::length(high - low);
+  const BoundingBox box = boundingBox(positions);
+  const Vec3 centre = positions.empty() ? Vec3(0.0) : 0.5 * (box.low + box.high);
+  const bool offset = glm::length(centre) > 8.0 * glm::length(box.high - box.low);
   if (offset)
     for (Vec3& p : positions) p -= centre;
   const std::vector<float> positionData = flatten(positions);

@@ -53,13 +53,21 @@ double spotFalloff(const Light& spot, double cosTheta) {
   return t * t;
 }
 
-BoundingBox boundingBox(const std::vector<Polygon>& polygons) {
+BoundingBox boundingBox(const std::vector<Vec3>& points) {
   BoundingBox box{Vec3(std::numeric_limits<double>::max()), Vec3(-std::numeric_limits<double>::max())};
-  for (const Polygon& p : polygons)
-    for (const Vec3& v : p.vertices) {
-      box.low = glm::min(box.low, v);
-      box.high = glm::max(box.high, v);
-    }
+  for (const Vec3& v : points) {
+    box.low = glm::min(box.low, v);
+    box.high = glm::max(box.high, v);
+  }
+  return box;
+}
+
+BoundingBox boundingBox(const std::vector<Polygon>& polygons) {
+  BoundingBox box = boundingBox(std::vector<Vec3>{});
+  for (const Polygon& p : polygons) {
+    const BoundingBox b = boundingBox(p.vertices);
+    box = {glm::min(box.low, b.low), glm::max(box.high, b.high)};
+  }
   return box;
 }
 

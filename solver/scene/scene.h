@@ -67,6 +67,7 @@ struct BoundingBox {
   Vec3 low, high;
 };
 BoundingBox boundingBox(const std::vector<Polygon>& polygons);
+BoundingBox boundingBox(const std::vector<Vec3>& points);
 
 // Newell's normal: its length is twice the polygon's area, robust for non-convex polygons.
 Vec3 newellNormal(const std::vector<Vec3>& vertices);
