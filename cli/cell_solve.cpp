@@ -68,7 +68,7 @@ void printCellsSummary(const CellSolver& solver, double seconds) {
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance(), portalTransfers);
 }
 
-nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds) {
+nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds, int resumedAt) {
   const SolveOptions& o = solver.options();
   nlohmann::json perCell = nlohmann::json::array();
   int elements = 0;
@@ -95,6 +95,7 @@ nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, do
           {"iterations", solver.iterations()},
           {"unshot_fraction", solver.ledger().unshotFraction()},
           {"seconds", seconds},
+          {"resumed_after_iterations", resumedAt},
           {"ledger", ledgerJson(solver.ledger())},
           {"per_cell", std::move(perCell)}});
   return j;

@@ -23,8 +23,9 @@ double solveCellsWithProgress(CellSolver& solver, bool quiet,
                               const std::function<void(double seconds)>& afterRound = {});
 // The summary lines of a cells solve: patches, cells, portals, iterations, the building's ledger.
 void printCellsSummary(const CellSolver& solver, double seconds);
-// The `--stats` document of a cells solve: "cells", "portals", the building's ledger and "per_cell".
-nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds);
+// The `--stats` document of a cells solve: "cells", "portals", the building's ledger and "per_cell";
+// `seconds` are this run's, after the `resumedAt` iterations a checkpoint brought (0: none).
+nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds, int resumedAt);
 // One process of a distributed solve.
 struct RankFigures {
   int cells = 0;

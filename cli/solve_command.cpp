@@ -94,6 +94,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
     fmt::print("resumed from {} after round {} ({} iterations)\n", args.resumePath, solver->rounds(),
                solver->iterations());
   }
+  const int resumedAt = solver->iterations();
   fmt::print("solving {} cell by cell: {} patches, {}, k={}, until {:g}% unshot\n", scene.source,
              solver->patches().size(), projectionText(options.projection, options.resolution), options.shooters,
              100.0 * options.untilUnshot);
@@ -111,7 +112,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
   printCellsSummary(*solver, seconds);
   if (writes) warnIfFarFromConverged(solver->ledger()), warnIfLightLost(solver->ledger(), isClosed(scene));
   if (!args.statsPath.empty()) {
-    nlohmann::json stats = cellsStats(*solver, scene.source, seconds);
+    nlohmann::json stats = cellsStats(*solver, scene.source, seconds, resumedAt);
     if (ranks) stats["distributed"] = distributedStats(*solver, ranks->traffic());
     if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }
@@ -184,7 +185,7 @@ void run(const SolveArgs& args, Processes* processes) {
   if (writes) warnIfFarFromConverged(solver.ledger()), warnIfLightLost(solver.ledger(), isClosed(scene));
 
   if (!args.statsPath.empty()) {
-    nlohmann::json stats = solveStats(solver, scene.source, seconds);
+    nlohmann::json stats = solveStats(solver, scene.source, seconds, resumedAt);
     if (processes) stats["distributed"] = processes->meshStats(solver);
     if (writes) writeJson(args.statsPath, stats), fmt::print("wrote {}\n", args.statsPath);
   }

@@ -47,7 +47,7 @@ nlohmann::json optionsJson(const SolveOptions& o) {
   return j;
 }
 
-nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds) {
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds, size_t resumedAt) {
   const SolveOptions& o = solver.options();
   const ProjectionSummary capture = solver.projectionSummary();
   nlohmann::json perIteration = nlohmann::json::array();
@@ -62,6 +62,7 @@ nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& sc
           {"convergence", solver.convergence()},
           {"unshot_fraction", solver.ledger().unshotFraction()},
           {"seconds", seconds},
+          {"resumed_after_iterations", resumedAt},
           {"per_iteration", std::move(perIteration)},
           {"ledger", ledgerJson(solver.ledger())},
           {"effects", effectsJson(solver.effectsPlan())}});

@@ -9,7 +9,9 @@
 namespace radmesh::cli {
 
 // With "effects": the solver's plan.
-nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds);
+// `seconds`: this run's; `resumedAt`: the iterations a checkpoint brought (0: none), whose
+// seconds per_iteration keeps from the run that solved them.
+nlohmann::json solveStats(const ProgressiveSolver& solver, const std::string& scene, double seconds, size_t resumedAt);
 // {"emitted": W, "absorbed": W, ..., "imbalance": x}, with "portal_in" and "portal_out" for a cell.
 nlohmann::json ledgerJson(const Ledger& ledger);
 

@@ -153,18 +153,27 @@ std::vector<CellEntry> cellsOf(const CellSolver& solver) {
   return cells;
 }
 
+// An option answerOptions leaves out: the MP-1's PE grid, or one the solve does not use.
+std::string absentValue(const std::string& flag) {
+  return flag == "--pe-grid" ? peGridText(PeMachine{}) : "not used";
+}
+
 // "--resolution 128 there, 256 here; ..." for the options that differ; empty if none.
 std::string optionDifferences(const OptionList& saved, const OptionList& now) {
+  auto valueIn = [](const OptionList& list, const std::string& flag) {
+    for (const auto& [listed, value] : list)
+      if (listed == flag) return value;
+    return absentValue(flag);
+  };
   std::string text;
-  for (const auto& [flag, value] : now) {
-    std::string there = "not set";
-    for (const auto& [savedFlag, savedValue] : saved)
-      if (savedFlag == flag) there = savedValue;
-    if (there != value) text += fmt::format("{}{} {} there, {} here", text.empty() ? "" : "; ", flag, there, value);
-  }
-  for (const auto& [flag, value] : saved)  // set there, absent here
-    if (std::none_of(now.begin(), now.end(), [&](const auto& option) { return option.first == flag; }))
-      text += fmt::format("{}{} {} there, not set here", text.empty() ? "" : "; ", flag, value);
+  auto compare = [&](const std::string& flag) {
+    const std::string there = valueIn(saved, flag), here = valueIn(now, flag);
+    if (there != here) text += fmt::format("{}{} {} there, {} here", text.empty() ? "" : "; ", flag, there, here);
+  };
+  for (const auto& option : now) compare(option.first);
+  for (const auto& option : saved)  // set there, absent here
+    if (std::none_of(now.begin(), now.end(), [&](const auto& listed) { return listed.first == option.first; }))
+      compare(option.first);
   return text;
 }
 
@@ -279,13 +288,19 @@ template <class T> T readFile(const std::string& path, const std::string& kind) 
 
 // Refuses a checkpoint of another meshed scene or of other options that change the answer.
 void checkSameSolve(const std::string& path, const Identity& was, const Identity& now) {
-  if (was.sceneHash != now.sceneHash || was.patches != now.patches)
+  if (was.sceneHash != now.sceneHash || was.patches != now.patches) {
+    // The same name and count: the scene was placed, scaled or lit otherwise (--up, --units, daylight).
+    const std::string scenes = was.sceneSource == now.sceneSource && was.patches == now.patches
+                                   ? fmt::format("{}, {} patches, placed, scaled or lit otherwise", was.sceneSource, was.patches)
+                                   : fmt::format("{}, {} patches; here {}, {} patches", was.sceneSource, was.patches,
+                                                 now.sceneSource, now.patches);
     throw refusal(path,
-                  fmt::format("was written for another meshed scene ({}, {} patches; here {}, {} patches): the "
-                              "patches' vertices, materials or emission differ",
-                              was.sceneSource, was.patches, now.sceneSource, now.patches),
+                  fmt::format("was written for another meshed scene ({}): the patches' vertices, materials or "
+                              "emission, or the lights, differ",
+                              scenes),
                   "resume with the scene, --cell, --units, --up and daylight (--sky, --sun) it was written with, or "
                   "solve from scratch without --resume");
+  }
   if (const std::string differences = optionDifferences(was.options, now.options); !differences.empty())
     throw refusal(path, "was written with other options: " + differences,
                   "resume with the options it was written with, or solve from scratch without --resume");

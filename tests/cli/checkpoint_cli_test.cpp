@@ -49,9 +49,18 @@ std::string expectResumedRunIsTheStraightOne(const std::string& solve, int first
   const std::string expected = readBytes(straight);
   EXPECT_GT(expected.size(), 1000u);
   EXPECT_TRUE(readBytes(resumed) == expected) << "the resumed bake differs from the straight one";
-  const nlohmann::json a = nlohmann::json::parse(readBytes(straightStats), nullptr, false);
-  const nlohmann::json b = nlohmann::json::parse(readBytes(resumedStats), nullptr, false);
+  nlohmann::json a = nlohmann::json::parse(readBytes(straightStats), nullptr, false);
+  nlohmann::json b = nlohmann::json::parse(readBytes(resumedStats), nullptr, false);
   EXPECT_FALSE(a.is_discarded());
+  // The resumed run's "seconds" are its own, after the iterations the checkpoint brought.
+  EXPECT_EQ(a.value("resumed_after_iterations", -1), 0);
+  const int resumedAfter = b.value("resumed_after_iterations", -1);
+  EXPECT_GE(resumedAfter, first);  // a cells solve stops at the end of a round
+  EXPECT_LT(resumedAfter, total);
+  EXPECT_TRUE(run.output.find("after iteration " + std::to_string(resumedAfter) + "\n") != std::string::npos ||
+              run.output.find("(" + std::to_string(resumedAfter) + " iterations)") != std::string::npos)
+      << run.output;
+  a.erase("resumed_after_iterations"), b.erase("resumed_after_iterations");
   EXPECT_EQ(withoutSeconds(b).dump(), withoutSeconds(a).dump());
   return run.output;
 }

@@ -192,7 +192,10 @@ TEST_F(CheckpointRefusal, OfAnotherScene) {
   expectRefused(path, finer, options(Backend::Native, 10), "another meshed scene");
   ScenePatches brighter = m;  // the same patches, another emission
   for (Material& material : brighter.scene.materials) material.emittance *= 2.0;
-  expectRefused(path, brighter, options(Backend::Native, 10), "another meshed scene");
+  // The same name and count on both sides: the message says what else can differ, not "here the same".
+  expectRefused(path, brighter, options(Backend::Native, 10),
+                "another meshed scene (" + m.scene.source + ", " + std::to_string(m.patches.size()) +
+                    " patches, placed, scaled or lit otherwise)");
 }
 
 TEST_F(CheckpointRefusal, OfOtherOptionsNamingThem) {
@@ -200,9 +203,11 @@ TEST_F(CheckpointRefusal, OfOtherOptionsNamingThem) {
   other.resolution = 128;
   expectRefused(path, m, other, "--resolution 64 there, 128 here");
   other = test::subdivided(options(Backend::Native, 10), Subdivide::Uniform, 0.1);
-  expectRefused(path, m, other, "--subdivide off there, uniform here; --min-element not set there, 0.1 here");
+  expectRefused(path, m, other, "--subdivide off there, uniform here; --min-element not used there, 0.1 here");
   other = options(Backend::Mesh, 10);
-  expectRefused(path, m, other, "--backend native there, mesh here");
+  expectRefused(path, m, other, "--backend native there, mesh here; --mapping not used there");
+  other.machine.cols = other.machine.rows = 32;  // the MP-1's grid goes unlisted, so it is named
+  expectRefused(path, m, other, "--pe-grid 64x64 there, 32x32 here");
   // Options that do not change the answer are free to change.
   other = options(Backend::Native, 10);
   other.threads = 1;
