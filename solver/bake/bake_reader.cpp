@@ -45,6 +45,7 @@ std::optional<Bake> readOtherToolsBake(const tinygltf::Model& model, const std::
 std::optional<Bake> readBake(const std::string& path) {
   const std::string extension = lowerCaseExtension(path);
   if (extension != ".gltf" && extension != ".glb") return std::nullopt;
+  checkSceneFile(path);
   std::vector<std::string> warnings;
   const tinygltf::Model model = loadGltfModel(path, &warnings);
   const bool radmesh = model.meshes.size() == 1 && model.meshes[0].primitives.size() == 1 &&

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "solver/io/builtin_scenes.h"
+#include "solver/io/file_signature.h"
 #include "solver/io/gltf_import.h"
 #include "solver/io/mgf_import.h"
 #include "solver/scene/scene_error.h"
@@ -20,15 +21,7 @@ std::string acceptedForms() {
 }
 
 Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
-  std::error_code error;
-  const std::filesystem::path p(path);
-  if (!std::filesystem::exists(p, error))
-    throw SceneError(path, "", "no such file, and not a built-in scene name", acceptedForms());
-  if (std::filesystem::is_directory(p, error))
-    throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
-  // A FIFO, socket or device would block the reader, or never end.
-  if (!std::filesystem::is_regular_file(p, error))
-    throw SceneError(path, "", "is not a regular file (a FIFO, socket or device), not a scene file", acceptedForms());
+  checkSceneFile(path);
   const std::string extension = lowerCaseExtension(path);
   if (extension == ".gltf" || extension == ".glb") return importGltf(path, warnings);
   if (extension == ".mgf") return importMgf(path, warnings);
@@ -38,6 +31,23 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
 }
 
 }  // namespace
+
+void checkSceneFile(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path p(path);
+  if (!std::filesystem::exists(p, error))
+    throw SceneError(path, "", "no such file, and not a built-in scene name", acceptedForms());
+  if (std::filesystem::is_directory(p, error))
+    throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
+  // A FIFO, socket or device would block the reader, or never end.
+  if (!std::filesystem::is_regular_file(p, error))
+    throw SceneError(path, "", "is not a regular file (a FIFO, socket or device), not a scene file", acceptedForms());
+  // Whatever it is named: read as a scene, it would fail for reasons that do not apply.
+  if (fileStartsWith(path, kCheckpointSignature))
+    throw SceneError(path, "", "is a radmesh checkpoint, not a scene",
+                     "give it to --resume beside the scene it was written for (radmesh solve SCENE --resume " + path +
+                         ")");
+}
 
 std::string lowerCaseExtension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();

@@ -14,6 +14,10 @@ inline constexpr const char* kDefaultScene = "office";
 // ".glb" for "Office.GLB": the extension, with its dot, in lower case ("" for none).
 std::string lowerCaseExtension(const std::string& path);
 
+// Throws SceneError unless `path` is a regular file that may hold a scene: not missing, a folder,
+// a pipe or a device, nor a radmesh checkpoint whatever its name.
+void checkSceneFile(const std::string& path);
+
 // Loads, scales to metres (`metresPerUnit`, --units: solver/scene/units.h; 0, not given, reads
 // metres), turns by `up` (by default the format's axis, and for MGF, which does not say, --up
 // auto's guess: solver/scene/up_axis.h), lights by `daylight` (its sky at the openings, what that

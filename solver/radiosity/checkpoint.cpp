@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "solver/io/atomic_file.h"
+#include "solver/io/file_signature.h"
 #include "solver/radiosity/checkpoint_io.h"
 #include "solver/scene/scene_error.h"
 
@@ -27,8 +28,8 @@ static_assert(std::endian::native == std::endian::little, "checkpoints are writt
 
 namespace {
 
-constexpr char kMagic[8] = {'R', 'A', 'D', 'M', 'E', 'S', 'H', 'C'};
-constexpr std::size_t kHeaderBytes = sizeof kMagic + sizeof(std::uint32_t) + 2 * sizeof(std::uint64_t);
+constexpr std::string_view kMagic = kCheckpointSignature;
+constexpr std::size_t kHeaderBytes = kMagic.size() + sizeof(std::uint32_t) + 2 * sizeof(std::uint64_t);
 constexpr const char* kStartOver = "resume from an earlier checkpoint, or solve from scratch without --resume";
 
 std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t hash = 0xcbf29ce484222325ull) {
@@ -209,7 +210,7 @@ void writeFile(const std::string& path, std::string kind, const std::string& con
   transfer(payload, kind);
   payload.bytes += contents;
   Writer file;
-  file.bytes.append(kMagic, sizeof kMagic);
+  file.bytes += kMagic;
   std::uint32_t version = kCheckpointVersion;
   std::uint64_t size = payload.bytes.size();
   std::uint64_t checksum = fnv1a(payload.bytes.data(), payload.bytes.size());
@@ -239,10 +240,10 @@ template <class T> T readFile(const std::string& path, const std::string& kind) 
   std::string head(kHeaderBytes, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
-  if (head.size() < sizeof kMagic || std::memcmp(head.data(), kMagic, sizeof kMagic) != 0)
+  if (!std::string_view(head).starts_with(kMagic))
     throw refuse("is not a radmesh checkpoint (it does not start with RADMESHC)",
                  "give --resume a checkpoint written by --checkpoint");
-  Reader header(std::string_view(head).substr(sizeof kMagic));
+  Reader header(std::string_view(head).substr(kMagic.size()));
   std::uint32_t version = 0;
   std::uint64_t size = 0, checksum = 0;
   try {

@@ -9,11 +9,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <future>
 #include <map>
 #include <string>
 
+#include "solver/bake/bake_reader.h"
 #include "solver/io/builtin_building.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_builder.h"
@@ -274,6 +276,27 @@ TEST(SceneLoader, RefusesAFifoWithoutBlocking) {
     ::close(::open(path.c_str(), O_WRONLY));  // a writer that ends at once: the reader sees the end
   }
   expectRefused([&] { load.get(); }, path, "is not a regular file");
+}
+
+// A checkpoint renamed .glb used to be read as glTF, and refused as JSON to repair.
+TEST(SceneLoader, NamesACheckpointGivenAsAScene) {
+  const test::TempDir dir;
+  for (const char* name : {"solve.glb", "solve.gltf", "solve.mgf"}) {
+    const std::string path = (dir / name).string();
+    std::ofstream(path, std::ios::binary) << "RADMESHC\x03\0\0\0 and the rest of a checkpoint";
+    std::vector<std::function<void()>> reads = {[&] { loadScene(path); }};
+    if (std::string(name) != "solve.mgf") reads.push_back([&] { readBake(path); });  // a bake is glTF only
+    for (const auto& read : reads) {
+      try {
+        read();
+        ADD_FAILURE() << "accepted " << path;
+      } catch (const SceneError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(path + ": is a radmesh checkpoint, not a scene"), std::string::npos) << message;
+        EXPECT_NE(message.find("--resume"), std::string::npos) << message;
+      }
+    }
+  }
 }
 
 TEST(SceneLoader, LoadsSharedMgfByExtension) {

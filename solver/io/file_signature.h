@@ -1,0 +1,14 @@
+#pragma once
+// The first bytes that say what a file is, whatever its name says.
+#include <string>
+#include <string_view>
+
+namespace radmesh {
+
+// A radmesh checkpoint (solver/radiosity/checkpoint.h) starts with these eight bytes.
+inline constexpr std::string_view kCheckpointSignature{"RADMESHC", 8};
+
+// Does the file at `path` start with `signature`? False when it is shorter or cannot be read.
+bool fileStartsWith(const std::string& path, std::string_view signature);
+
+}  // namespace radmesh
