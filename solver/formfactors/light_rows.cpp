@@ -68,9 +68,21 @@ Patch lightViewpoint(const Scene& scene, const Light& light, const std::vector<P
 
 FormFactorRow lightRow(const Scene& scene, const Light& light, const std::vector<Patch>& patches, int resolution,
                        double nearDepth, ThreadPool& pool) {
-  EnvironmentProjection projection(patches, lightSurface(scene, light, resolution), nearDepth, pool);
+  // The sky in a window is no surface to a light: it shines through onto what lies behind.
+  std::vector<int> solid;
+  for (size_t j = 0; j < patches.size(); ++j)
+    if (!scene.materials.at(patches[j].material).skyOpening) solid.push_back(static_cast<int>(j));
+  const bool all = solid.size() == patches.size();
+  std::vector<Patch> solidPatches;
+  if (!all)
+    for (int j : solid) solidPatches.push_back(patches[j]);
+  const std::vector<Patch>& projected = all ? patches : solidPatches;
+  EnvironmentProjection projection(projected, lightSurface(scene, light, resolution), nearDepth, pool);
   projection.projectFrom(lightViewpoint(scene, light, patches), -1);
-  return assembleRow(-1, 1.0, projection.pixelFormFactors(), projection.seenFromFront());
+  FormFactorRow row = assembleRow(-1, 1.0, projection.pixelFormFactors(), projection.seenFromFront());
+  if (!all)
+    for (int& receiver : row.receivers) receiver = solid[receiver];  // ascending still
+  return row;
 }
 
 }  // namespace radmesh

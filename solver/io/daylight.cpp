@@ -63,7 +63,7 @@ std::vector<std::string> addSkyEmitters(Scene& scene, const Daylight& daylight) 
       continue;
     }
     const Rgb exitance(lux / kWhiteEfficacyLmPerW);  // white light, as MGF's `ed` (scene-formats.md)
-    scene.materials.push_back({fmt::format("sky (opening {})", emitters.size() + 1), Rgb(0.0), exitance});
+    scene.materials.push_back({fmt::format("sky (opening {})", emitters.size() + 1), Rgb(0.0), exitance, true});
     emitters.push_back({opening.vertices, static_cast<int>(scene.materials.size() - 1),
                         fmt::format("sky opening {}", emitters.size() + 1)});
     areaM2 += polygonArea(opening.vertices);

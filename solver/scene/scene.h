@@ -26,6 +26,9 @@ struct Material {
   std::string name;
   Rgb rho{0.0};        // diffuse reflectance per channel, each in [0, 1)
   Rgb emittance{0.0};  // radiant exitance, W/m^2 per channel
+  // The sky in a window (--sky): it emits and reflects nothing, and the lights (the sun) shine
+  // through it as through the opening it fills.
+  bool skyOpening = false;
   bool emits() const { return emittance.r > 0.0 || emittance.g > 0.0 || emittance.b > 0.0; }
 };
 

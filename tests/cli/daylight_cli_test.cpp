@@ -70,6 +70,26 @@ TEST(Cli, SkyLightsARoomThroughOneWindow) {
 #endif
 }
 
+// The sky in the window used to stop the sun: with both, all the sunlight was booked as never
+// entering. The sun's light that enters must be the same with the sky as without it, and the two
+// emit their sum, in one solve and cell by cell.
+TEST(Cli, TheSunShinesThroughTheSkysWindow) {
+  for (const std::string cells : {"off", "auto"}) {
+    auto ledger = [&](const std::string& daylight) {
+      const std::string stats = tempPath("sun-sky.json");
+      const CommandRun run = radmesh("solve " + kRoom + " --up z " + daylight + " --cells " + cells +
+                                     " --resolution 64 --max-iterations 1 --quiet --stats " + stats);
+      EXPECT_EQ(run.exitCode, 0) << run.output;
+      return nlohmann::json::parse(std::ifstream(stats))["ledger"];
+    };
+    const auto sun = ledger("--sun 180,30"), sky = ledger("--sky 10000"), both = ledger("--sun 180,30 --sky 10000");
+    const double sunW = sun["emitted"].get<double>(), outside = sun["light_outside"].get<double>();
+    ASSERT_LT(outside, 0.99 * sunW) << "the sun does not reach the window: " << sun.dump();
+    EXPECT_NEAR(both["light_outside"].get<double>(), outside, 1e-9 * sunW) << cells;
+    EXPECT_NEAR(both["emitted"].get<double>(), sunW + sky["emitted"].get<double>(), 1e-9 * sunW) << cells;
+  }
+}
+
 TEST(Cli, SkyNeedsAnOpeningAndASceneWithoutLightPointsToIt) {
   CommandRun run = radmesh("solve " + kClosedRoom + " --sky 10000 --quiet");
   EXPECT_EQ(run.exitCode, 2) << run.output;
