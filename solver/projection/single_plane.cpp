@@ -34,7 +34,7 @@ ProjectionSurface makeSinglePlane(int resolution, double ratio) {
   scaleToCapturedFraction(surface, closedForm);
   // Pixels wide against the plane's height sample the form factor at their centres too coarsely:
   // scaling the table to the closed form would keep the total and put the light in the wrong places.
-  if (std::abs(surface.tableSum - closedForm) > kPlaneSamplingTolerance * closedForm)
+  if (!(std::abs(surface.tableSum - closedForm) <= kPlaneSamplingTolerance * closedForm))  // NaN too
     throw OptionError(fmt::format(
         "--ratio {} at --resolution {}: the plane's pixels, {:.3g} wide at height 1, are too coarse to sample the "
         "form factor (their delta form factors sum to {:.4f}, the closed form is {:.4f}); use --ratio {:.3g} or "
