@@ -339,8 +339,8 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
     const std::string stem = (std::filesystem::path(args.outDir) / args.name).string();
     writeCsv(stem + ".csv", pointsTable(points, pictureCell));
     writeCsv(stem + "-traces.csv", tracesTable(traces));
-    drawAccuracyFigures(stem, args.name);
-    fmt::print("wrote {0}.csv, {0}-traces.csv and the plots {0}-*.png\n", stem);
+    const std::vector<std::string> drawn = drawAccuracyFigures(stem, args.name);  // none without gnuplot
+    fmt::print("wrote {0}.csv, {0}-traces.csv{1}\n", stem, drawn.empty() ? "" : fmt::format(" and the plots {}-*.png", stem));
   }
   return result;
 }

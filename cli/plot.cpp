@@ -19,8 +19,15 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
+bool gnuplotInstalled() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
+void requireGnuplot() {
+  if (!gnuplotInstalled())
+    throw std::runtime_error("gnuplot is not installed, so there is nothing to draw with (fix: apt-get install gnuplot-nox)");
+}
+
 bool drawPlot(const Plot& plot, const std::string& png) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+  if (!gnuplotInstalled()) {
     fmt::print(stderr, "radmesh: gnuplot is not installed, so {} was not drawn (apt-get install gnuplot-nox)\n", png);
     return false;
   }
@@ -42,7 +49,8 @@ bool drawPlot(const Plot& plot, const std::string& png) {
   // The script goes down a pipe: nothing is left beside the PNG. A gnuplot that stops early fails the
   // write below instead of killing radmesh with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
-  FILE* gnuplot = popen("gnuplot", "w");
+  // Its standard output is not ours: a PNG it could not write to a file would come out there.
+  FILE* gnuplot = popen("gnuplot > /dev/null", "w");
   if (!gnuplot) throw std::runtime_error("cannot start gnuplot to draw " + png);
   const bool written = std::fputs(script.c_str(), gnuplot) >= 0;
   if (pclose(gnuplot) != 0 || !written) throw std::runtime_error("gnuplot failed to draw " + png + " (its message is above)");

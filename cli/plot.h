@@ -22,6 +22,10 @@ struct Plot {
   std::vector<std::string> settings{};  // more gnuplot commands after the defaults, e.g. "set xrange [50:100]"
 };
 
+// Throws std::runtime_error, naming the package, when gnuplot is not installed: for commands whose
+// only work is drawing.
+void requireGnuplot();
+
 // Writes `png` (1000x700, the key below the plot). Throws std::runtime_error naming gnuplot's failure; returns false,
 // saying why on stderr, when gnuplot is not installed.
 bool drawPlot(const Plot& plot, const std::string& png);

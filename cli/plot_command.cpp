@@ -44,13 +44,23 @@ struct PaperArgs {
 CsvTable gatherStats(const PaperArgs& args) {
   CsvTable t{.columns = {"run", "resolution", "iteration", "convergence", "seconds", "emulated_seconds", "depth_a_max",
               "depth_b_max", "reused_rows_total"}};
-  auto add = [&](const std::string& run, const std::string& file) {
+  // `backend`, `mapping` and `resolution` (0: any): what the file's name says its solve was.
+  auto add = [&](const std::string& run, const std::string& file, const std::string& backend,
+                 const std::string& mapping, int resolution) {
     const std::string path = fmt::format("{}/paper-{}-{}.json", args.statsDir, args.name, file);
     std::ifstream in(path);
     if (!in) throw std::runtime_error(path + ": cannot read (docs/reproduce-paper.sh writes it)");
     try {
       const nlohmann::json stats = nlohmann::json::parse(in);
       const std::string n = std::to_string(stats.at("resolution").get<int>());
+      const std::string wasBackend = stats.at("backend"), wasMapping = stats.at("mapping");
+      if (wasBackend != backend || (backend == "mesh" && wasMapping != mapping) ||
+          (resolution > 0 && n != std::to_string(resolution)))
+        throw std::runtime_error(fmt::format(
+            "{}: the stats of a {} solve{} at {}, where its name says {}{}{} (fix: write it again with "
+            "docs/reproduce-paper.sh)",
+            path, wasBackend, wasBackend == "mesh" ? ", mapping " + wasMapping + "," : "", n, backend,
+            backend == "mesh" ? ", mapping " + mapping : "", resolution > 0 ? " at " + std::to_string(resolution) : ""));
       for (const nlohmann::json& i : stats.at("per_iteration")) {
         // The native solve has no emulated machine: its fields stay empty.
         auto mesh = [&](const char* key) { return i.contains(key) ? fmt::format("{:.6g}", i[key].get<double>()) : ""; };
@@ -65,8 +75,8 @@ CsvTable gatherStats(const PaperArgs& args) {
     }
   };
   for (const std::string& m : kMappings)
-    for (int n : kResolutions) add(m, fmt::format("{}-{}", m, n));
-  add("reuse", "reuse");
+    for (int n : kResolutions) add(m, fmt::format("{}-{}", m, n), "mesh", m, n);
+  add("reuse", "reuse", "native", "", 0);
   return t;
 }
 
@@ -106,11 +116,19 @@ void printTables(const CsvTable& t, const std::string& name) {
   fmt::print("Table 1.1 / 1.2 ({}, 4096 PEs, to C = 0.95), every mapping; s/iteration are averages\n", name);
   fmt::print("| mapping | resolution | iterations | emulated MP-1 s/iteration | host s/iteration | avg max depth (a) | "
              "avg max depth (b) |\n|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> short95;  // runs that stopped before C = 0.95
   for (const std::string& m : kMappings)
-    for (int n : kResolutions)
-      fmt::print("| {} | {}x{} | {} | {:.3f} | {:.4f} | {:.1f} | {:.1f} |\n", m, n, n, to95(t, rowsOf(t, m, n)).size(),
-                 meanTo95(t, m, n, "emulated_seconds"), meanTo95(t, m, n, "seconds"), meanTo95(t, m, n, "depth_a_max"),
-                 meanTo95(t, m, n, "depth_b_max"));
+    for (int n : kResolutions) {
+      const std::vector<size_t> rows = to95(t, rowsOf(t, m, n));
+      const double reached = t.number(rows.back(), "convergence");
+      if (reached < 0.95) short95.push_back(fmt::format("{} at {}x{} stopped at C = {:.3f}", m, n, n, reached));
+      fmt::print("| {} | {}x{} | {}{} | {:.3f} | {:.4f} | {:.1f} | {:.1f} |\n", m, n, n, rows.size(),
+                 reached < 0.95 ? "+" : "", meanTo95(t, m, n, "emulated_seconds"), meanTo95(t, m, n, "seconds"),
+                 meanTo95(t, m, n, "depth_a_max"), meanTo95(t, m, n, "depth_b_max"));
+    }
+  for (const std::string& run : short95)
+    fmt::print(stderr, "radmesh: warning: {}: its row (+) averages every iteration it ran, not those to C = 0.95 "
+               "(solve it again to --until 0.95)\n", run);
   fmt::print("\nTable 1.3: form-factor rows reused (shooters shot before), cumulative\n"
              "| iteration | rows reused so far | convergence % |\n|---|---|---|\n");
   const std::vector<size_t> reuse = rowsOf(t, "reuse");
@@ -187,8 +205,12 @@ void addPlotCommand(CLI::App& app) {
   cmd->add_option("--csv", paper->csv, "The solves' figures, a row per iteration")->required();
   cmd->add_option("--images", paper->imagesDir, "Folder of the PNGs")->required();
   cmd->callback([paper] {
+    requireGnuplot();
     makeOutputFolder("--images", paper->imagesDir);  // before any table
-    if (!paper->statsDir.empty()) writeCsv(paper->csv, gatherStats(*paper)), fmt::print("wrote {}\n", paper->csv);
+    if (!paper->statsDir.empty()) {  // --csv is written, not read: never over a stats file
+      checkOutputPath("--csv", paper->csv, ".csv", "the gathered figures are CSV", true);
+      writeCsv(paper->csv, gatherStats(*paper)), fmt::print("wrote {}\n", paper->csv);
+    }
     const CsvTable table = readCsv(paper->csv);
     printTables(table, paper->name);
     drawFigures(table, *paper);
@@ -199,6 +221,7 @@ void addPlotCommand(CLI::App& app) {
   accuracy->add_option("stem", *stem, "DIR/NAME of `radmesh bench accuracy --out-dir DIR --name NAME` (or DIR/NAME.csv)")
       ->required();
   accuracy->callback([stem] {
+    requireGnuplot();
     // The table's own path is what a user has at hand: its stem is meant.
     const std::filesystem::path given(*stem);
     const std::string s = given.extension() == ".csv" ? (given.parent_path() / given.stem()).string() : *stem;
@@ -214,7 +237,11 @@ void addPlotCommand(CLI::App& app) {
       ->required();
   auto png = std::make_shared<std::string>();
   scalingCmd->add_option("--png", *png, "Stem of the PNGs: STEM-speedup.png, STEM-bytes.png")->required();
-  scalingCmd->callback([model, scaling, png] { drawScalingFigures(*model, *scaling, *png); });
+  scalingCmd->callback([model, scaling, png] {
+    requireGnuplot();
+    makeOutputFolder("--png", std::filesystem::path(*png).parent_path().string());
+    drawScalingFigures(*model, *scaling, *png);
+  });
 }
 
 }  // namespace radmesh::cli

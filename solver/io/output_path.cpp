@@ -37,6 +37,7 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
 }
 
 void makeOutputFolder(const std::string& option, const std::string& folder) {
+  if (folder.empty()) return;  // the working folder
   std::error_code error;
   if (std::filesystem::create_directories(folder, error); !std::filesystem::is_directory(folder))
     throw OptionError(fmt::format("{} '{}': cannot make that folder ({}): give a folder you can write", option, folder,

@@ -768,25 +768,38 @@ TEST(Cli, RenderSimulatesTheEffectsSolveDoes) {
 }
 
 // Stats as `radmesh solve --stats` writes them, with the figures `plot paper` reads: C 0.5, 0.96, 0.99, the
-// last past the 0.95 the tables average to.
-void writePaperStats(const std::string& path, int resolution, bool mesh) {
-  nlohmann::json iterations = nlohmann::json::array();
+// last past the 0.95 the tables average to (`iterations` fewer: stopped short of it). `mapping` empty:
+// the native solve of Table 1.3.
+void writePaperStats(const std::string& path, int resolution, const std::string& mapping, int iterations = 3) {
+  const bool mesh = !mapping.empty();
+  nlohmann::json perIteration = nlohmann::json::array();
   const double convergence[] = {0.5, 0.96, 0.99}, emulated[] = {1.0, 3.0, 100.0}, depthA[] = {10, 20, 900};
-  for (int i = 0; i < (mesh ? 3 : 13); ++i) {
+  for (int i = 0; i < (mesh ? iterations : 13); ++i) {
     nlohmann::json it = {{"iteration", i + 1}, {"convergence", mesh ? convergence[i] : 0.5 + 0.01 * i},
                          {"seconds", 0.01}, {"reused_rows_total", i / 4}};
     if (mesh) it.update({{"emulated_seconds", emulated[i]}, {"depth_a_max", depthA[i]}, {"depth_b_max", 2 * depthA[i]}});
-    iterations.push_back(it);
+    perIteration.push_back(it);
   }
-  std::ofstream(path) << nlohmann::json{{"resolution", resolution}, {"per_iteration", iterations}}.dump();
+  std::ofstream(path) << nlohmann::json{{"backend", mesh ? "mesh" : "native"}, {"mapping", mesh ? mapping : "hierarchical"},
+                                        {"resolution", resolution}, {"per_iteration", perIteration}}
+                             .dump();
 }
 
-TEST(Cli, PlotPaperGathersTheStatsIntoOneCsvAndDrawsFromIt) {
-  const std::string stats = tempPath("stats"), csv = tempPath("paper-test.csv"), images = tempPath("images");
-  std::filesystem::create_directories(stats);
+void writeAllPaperStats(const std::string& folder) {
+  std::filesystem::create_directories(folder);
   for (const std::string mapping : {"hierarchical", "cut-and-stack", "adaptive"})
-    for (int n : {64, 128, 256}) writePaperStats(stats + "/paper-test-" + mapping + "-" + std::to_string(n) + ".json", n, true);
-  writePaperStats(stats + "/paper-test-reuse.json", 128, false);
+    for (int n : {64, 128, 256})
+      writePaperStats(folder + "/paper-test-" + mapping + "-" + std::to_string(n) + ".json", n, mapping);
+  writePaperStats(folder + "/paper-test-reuse.json", 128, "");
+}
+
+#define SKIP_WITHOUT_GNUPLOT() \
+  if (!gnuplotInstalled()) GTEST_SKIP() << "gnuplot is not installed (scripts/install-deps.sh installs it)"
+
+TEST(Cli, PlotPaperGathersTheStatsIntoOneCsvAndDrawsFromIt) {
+  SKIP_WITHOUT_GNUPLOT();
+  const std::string stats = tempPath("stats"), csv = tempPath("paper-test.csv"), images = tempPath("images");
+  writeAllPaperStats(stats);
   const CommandRun gathered = radmesh("plot paper test --stats " + stats + " --csv " + csv + " --images " + images);
   ASSERT_EQ(gathered.exitCode, 0) << gathered.output;
   EXPECT_EQ(readCsv(csv).size(), 1u + 9u * 3u + 13u);
@@ -805,6 +818,7 @@ TEST(Cli, PlotPaperGathersTheStatsIntoOneCsvAndDrawsFromIt) {
 }
 
 TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
+  SKIP_WITHOUT_GNUPLOT();
   CommandRun run = radmesh("plot paper test --stats " + tempPath("none") + " --csv " + tempPath("p.csv") + " --images " +
                            tempPath("images"));
   EXPECT_EQ(run.exitCode, 1);
@@ -829,6 +843,60 @@ TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
   run = radmesh("plot paper test --csv " + bad + ".csv --images " + bad + ".csv");
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--images '" + bad + ".csv': cannot make that folder"), std::string::npos) << run.output;
+}
+
+// Stats that are not what their names say, a run short of C = 0.95, and a --csv that would replace a
+// stats file: each used to give a table (or a lost file) without a word.
+TEST(Cli, PlotPaperChecksTheStatsAgainstTheirNames) {
+  SKIP_WITHOUT_GNUPLOT();
+  const std::string stats = tempPath("stats"), csv = tempPath("paper.csv"), images = tempPath("images");
+  writeAllPaperStats(stats);
+  const std::string plot = "plot paper test --stats " + stats + " --images " + images + " --csv ";
+  const std::string reuse = stats + "/paper-test-reuse.json";
+  CommandRun run = radmesh(plot + reuse);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--csv"), std::string::npos) << run.output;
+  EXPECT_NE(readBytes(reuse).find("per_iteration"), std::string::npos) << "the stats were replaced";
+
+  const std::string cut = stats + "/paper-test-cut-and-stack-128.json";
+  writePaperStats(cut, 128, "adaptive");
+  run = radmesh(plot + csv);
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find(cut + ": the stats of a mesh solve, mapping adaptive, at 128, where its name says mesh, "
+                                  "mapping cut-and-stack at 128"),
+            std::string::npos)
+      << run.output;
+
+  writePaperStats(cut, 128, "cut-and-stack", 1);  // C = 0.5 when it stopped
+  run = radmesh(plot + csv);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("| cut-and-stack | 128x128 | 1+ | 1.000 |"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("warning: cut-and-stack at 128x128 stopped at C = 0.500"), std::string::npos) << run.output;
+}
+
+// Drawing is all `plot` does: without gnuplot it fails, and a bench says it drew no plots; a PNG
+// stem in a missing folder gets the folder (gnuplot used to write the PNG to standard output).
+TEST(Cli, PlotFailsWithoutGnuplotAndMakesTheFolderOfItsPngs) {
+  const std::string binary = (test::binaryDir() / "cli" / "radmesh").string();
+  CommandRun run = runCommand("PATH=/nonexistent " + binary + " plot accuracy " + tempPath("any"));
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find("gnuplot is not installed"), std::string::npos) << run.output;
+  const std::string dir = tempPath("bench");
+  run = runCommand("PATH=/nonexistent " + binary +
+                   " bench accuracy furnace --cells 1 --resolutions 16 --projections hemicube --reference-resolution 32 "
+                   "--threads 1 --out-dir " + dir);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("wrote " + dir + "/furnace.csv, " + dir + "/furnace-traces.csv\n"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("and the plots"), std::string::npos) << run.output;
+
+  SKIP_WITHOUT_GNUPLOT();
+  const std::string data = (test::sourceDir() / "docs" / "data" / "scaling").string();
+  const std::string stem = tempPath("missing/folder/scaling");
+  run = radmesh("plot scaling " + data + "/np1-model.csv " + data + "/np1-ranks.csv " + data + "/np2-ranks.csv --png " + stem);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(std::filesystem::exists(stem + "-speedup.png")) << run.output;
+  EXPECT_EQ(run.output.find("PNG"), std::string::npos) << "PNG bytes on standard output";
 }
 
 }  // namespace

@@ -227,7 +227,7 @@ TEST(CliSubdivide, BenchAccuracyOfElementsAloneDrawsTheSubdividePlot) {
   // `plot accuracy` draws it again from the table, named by its stem or by the CSV itself.
   std::filesystem::remove(dir + "/furnace-subdivide.png");
   const CommandRun redrawn = radmesh("plot accuracy " + dir + "/furnace.csv");
-  ASSERT_EQ(redrawn.exitCode, 0) << redrawn.output;
+  ASSERT_EQ(redrawn.exitCode, gnuplotInstalled() ? 0 : 1) << redrawn.output;  // drawing is all it does
   EXPECT_EQ(std::filesystem::exists(dir + "/furnace-subdivide.png"), gnuplotInstalled()) << redrawn.output;
   EXPECT_EQ(redrawn.output.find("drew " + dir + "/furnace-subdivide.png\n") != std::string::npos, gnuplotInstalled())
       << redrawn.output;  // it used to say nothing
