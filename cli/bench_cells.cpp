@@ -1,6 +1,7 @@
 // `radmesh bench cells`: the cells solve beside the whole building's, side by side in one run.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -62,6 +63,7 @@ struct FocusRun {
   double arrivedW = 0.0;      // the focus cell's light: emitted in it and come in through its portals
   int cell = 0;
   std::string name;
+  bool reached = false;       // false: the solve ended first (--max-iterations, or nothing left)
 };
 
 // The camera's cell first: the time until its unshot power is at most focusUnshot of the light it
@@ -71,7 +73,10 @@ FocusRun focusRun(const Scene& scene, const std::vector<Patch>& patches, const C
                   const SolveOptions& o, const BenchCellsArgs& args) {
   FocusRun run;
   const double start = benchSeconds(o.threads);
-  CellSolver solver(scene, patches, partition, o, {args.cellM, args.exchangeShots, args.portalBins});
+  // The building's own stop must not come first: it would end the run short of the focus target.
+  SolveOptions focused = o;
+  focused.untilUnshot = std::min(o.untilUnshot, args.focusUnshot);
+  CellSolver solver(scene, patches, partition, focused, {args.cellM, args.exchangeShots, args.portalBins});
   solver.focus(args.focusCell);  // a cell of the partition: benchScene checked it
   run.setupSeconds = benchSeconds(o.threads) - start;
   auto reached = [&] {
@@ -80,6 +85,7 @@ FocusRun focusRun(const Scene& scene, const std::vector<Patch>& patches, const C
   };
   while (!solver.done() && !(solver.rounds() > 0 && reached())) solver.round();
   run.seconds = benchSeconds(o.threads) - start - run.setupSeconds;
+  run.reached = solver.rounds() > 0 && reached();
   run.iterations = solver.cellFigures()[args.focusCell].iterations;
   run.buildingIterations = solver.iterations();
   run.arrivedW = solver.cellSolver(args.focusCell).ledger().input();
@@ -88,11 +94,20 @@ FocusRun focusRun(const Scene& scene, const std::vector<Patch>& patches, const C
   return run;
 }
 
+// "+" after a count where the solve stopped short of its target (--max-iterations), as bench solve marks it.
+std::string iterationsText(int iterations, bool reached) { return fmt::format("{}{}", iterations, reached ? "" : "+"); }
+
+// "2.0x faster", or "2.5x slower" for a ratio below 1.
+std::string speedText(double ratio) {
+  return ratio >= 1.0 ? fmt::format("{:.1f}x faster", ratio) : fmt::format("{:.1f}x slower", 1.0 / ratio);
+}
+
 const FocusRun& printFocus(const FocusRun& focus, const BenchCellsArgs& args) {
-  fmt::print("{:<28} {:>10.3f} {:>10} {:>11}   cell {} ({}) to {:g}% of its arriving light unshot, after {:.3f} s "
+  fmt::print("{:<28} {:>10.3f} {:>10} {:>11}   cell {} ({}) {} {:g}% of its arriving light unshot, after {:.3f} s "
              "of setup; {} iterations in all cells\n",
-             "focus cell first, 1 thread", focus.seconds, "", focus.iterations, args.focusCell, focus.name,
-             100.0 * args.focusUnshot, focus.setupSeconds, focus.buildingIterations);
+             "focus cell first, 1 thread", focus.seconds, "", iterationsText(focus.iterations, focus.reached),
+             args.focusCell, focus.name, focus.reached ? "to" : "stopped short of", 100.0 * args.focusUnshot,
+             focus.setupSeconds, focus.buildingIterations);
   return focus;
 }
 
@@ -102,7 +117,8 @@ nlohmann::json focusJson(const FocusRun& focus) {
           {"focus_setup_seconds", focus.setupSeconds},
           {"focus_iterations", focus.iterations},
           {"focus_building_iterations", focus.buildingIterations},
-          {"focus_arrived_w", focus.arrivedW}};
+          {"focus_arrived_w", focus.arrivedW},
+          {"focus_reached", focus.reached}};
 }
 
 // Per lit room, the cells solve's reflected light against the whole building's: the rooms, the
@@ -182,20 +198,28 @@ nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const 
   }
   std::vector<Rgb> wholeRadiosity;
   double wholeSeconds = 0.0;
+  bool wholeReached = true;
   if (!args.skipWhole) {
     const double start = benchSeconds(1), wallStart = wallSeconds();
     ProgressiveSolver whole(scene, patches, o);
     while (!whole.done()) whole.step();
     wholeSeconds = benchSeconds(1) - start;
     wholeRadiosity = whole.radiosity();
+    wholeReached = whole.ledger().unshotFraction() <= o.untilUnshot;
     fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%\n", "whole building, 1 thread", wholeSeconds,
-               wallSeconds() - wallStart, whole.history().size(), 100.0 * whole.ledger().unshotFraction());
-    result.update({{"whole_seconds", wholeSeconds}, {"whole_iterations", whole.history().size()}});
+               wallSeconds() - wallStart, iterationsText(static_cast<int>(whole.history().size()), wholeReached),
+               100.0 * whole.ledger().unshotFraction());
+    result.update({{"whole_seconds", wholeSeconds}, {"whole_iterations", whole.history().size()},
+                   {"whole_reached", wholeReached}});
   }
   const CellsRun one = runCells(scene, patches, partition, o, args);
+  const bool cellsReached = one.unshotFraction <= o.untilUnshot;
   fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%{}\n", "cells, 1 thread", one.seconds, one.wallSeconds,
-             one.iterations, 100.0 * one.unshotFraction,
-             args.skipWhole ? "" : fmt::format("   {:.1f}x faster", wholeSeconds / one.seconds));
+             iterationsText(one.iterations, cellsReached), 100.0 * one.unshotFraction,
+             args.skipWhole ? "" : "   " + speedText(wholeSeconds / one.seconds));
+  if (!cellsReached || !wholeReached)
+    fmt::print(stderr, "radmesh: warning: --max-iterations stopped a solve short of {:g}% unshot (+): its times "
+               "and errors are not of the same light\n", 100.0 * o.untilUnshot);
   SolveOptions two = o;
   two.threads = 2;
   const CellsRun parallel = runCells(scene, patches, partition, two, args);
@@ -210,6 +234,7 @@ nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const 
                  {"cells_iterations", one.iterations},
                  {"cells_rounds", one.rounds},
                  {"cells_elements", one.elements},
+                 {"cells_reached", cellsReached},
                  {"cells_two_threads_seconds", parallel.seconds},
                  {"two_threads_speedup", one.wallSeconds / parallel.wallSeconds},
                  {"two_threads_identical", identical}});

@@ -143,6 +143,27 @@ TEST(Cli, BenchCellsSkipsTheWholeBuildingWhenAsked) {
   EXPECT_EQ(only["focus_arrived_w"], scene["focus_arrived_w"]);
 }
 
+// The focus cell is solved to --focus-unshot even past the building's --until-unshot (which used to
+// end the run first, the same iterations for any target, labelled as reached), and a solve that
+// --max-iterations stops short is marked "+", its ratio a slowdown where it is one.
+TEST(Cli, BenchCellsSolvesTheFocusToItsTargetAndMarksWhatStoppedShort) {
+  const std::string bench = "cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --focus-only --focus-unshot ";
+  const auto loose = runBench(bench + "0.05").json["scenes"][0], tight = runBench(bench + "0.001").json["scenes"][0];
+  EXPECT_TRUE(loose["focus_reached"].get<bool>());
+  EXPECT_TRUE(tight["focus_reached"].get<bool>());
+  EXPECT_GT(tight["focus_iterations"].get<int>(), loose["focus_iterations"].get<int>());
+
+  const BenchRun capped = runBench("cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --max-iterations 10");
+  const auto& scene = capped.json["scenes"][0];
+  EXPECT_FALSE(scene["whole_reached"].get<bool>());
+  EXPECT_FALSE(scene["cells_reached"].get<bool>());
+  EXPECT_FALSE(scene["focus_reached"].get<bool>());
+  EXPECT_NE(capped.output.find(" 10+ "), std::string::npos) << capped.output;
+  EXPECT_NE(capped.output.find("stopped short of 5% of its arriving light unshot"), std::string::npos) << capped.output;
+  EXPECT_NE(capped.output.find("warning: --max-iterations stopped a solve short of 10% unshot"), std::string::npos)
+      << capped.output;
+}
+
 // --subdivide and --min-element reach both solves: the cells cut their patches into the elements
 // `radmesh info` counts for the building; an unknown mode is refused naming the fix.
 TEST(Cli, BenchCellsSolvesWithElementsWhenAsked) {
