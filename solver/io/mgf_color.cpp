@@ -126,7 +126,11 @@ double luminance(const Rgb& rgb) { return (toXyz() * rgb).y; }
 Rgb fitRgb(const Xyz& xyz, double y, double ceiling, bool* desaturated) {
   if (desaturated) *desaturated = false;
   if (!(y > 0.0)) return Rgb(0.0);
-  const Rgb unit = linearRgb(xyz / xyz.y);
+  Rgb unit = linearRgb(xyz / xyz.y);
+  // Neutral to within what the matrices' rounding and white written to six digits (cxy 0.333333
+  // 0.333333: 3e-6) leave: exactly grey, so that a grey scene is solved in one channel, not three.
+  constexpr double kNeutral = 1e-5;
+  if (glm::all(glm::lessThanEqual(glm::abs(unit - Rgb(1.0)), Rgb(kNeutral)))) unit = Rgb(1.0);
   // Along unit(t) = 1 + t (unit - 1) luminance stays 1; take the largest t <= 1 that fits.
   // A neutral colour's channels come out of the colour matrices 1 +- rounding: at a ceiling of y
   // (rd 0.99) such a channel is not out of gamut, so excesses of rounding size are let through.

@@ -6,7 +6,8 @@
 //   A colour is held as CIE XYZ scaled to luminance Y = 1.
 // - RGB is linear, with Rec. 709 / sRGB primaries and the equal-energy white E (x = y = 1/3) as
 //   white point: MGF's neutral colour (its default, and the `cxy .333 .333` of every white wall)
-//   maps to R = G = B = 1, so a white `rd 0.6` becomes rho (0.6, 0.6, 0.6).
+//   maps to R = G = B = 1, so a white `rd 0.6` becomes rho (0.6, 0.6, 0.6), exactly: a colour within
+//   1e-5 of white in every channel (white written to six digits) is taken as white.
 // - Luminance is preserved: a colour of luminance Y has RGB whose Rec. 709/E luminance is Y.
 // - Emittance: MGF's ed is luminous emittance in lm/m^2; it becomes radiant exitance in W/m^2 at
 //   179 lm/W, the luminous efficacy of equal-energy white that Radiance (MGF's origin) uses.
