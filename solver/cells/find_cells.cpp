@@ -311,6 +311,28 @@ void joinByGroup(CellPartition& p, const std::vector<std::string>& group) {
   p.portals = std::move(portals);
 }
 
+// The inside of a solid object (a closed box of outward faces) is enclosed space that no patch
+// faces: no room, and a cell of no patches that no solve could take. Dropped with any portal to it.
+void dropCellsNoPatchFaces(CellPartition& p, std::vector<std::string>& group) {
+  std::vector<int> faced(p.cells.size(), 0);
+  for (int c : p.cellOfPatch)
+    if (c >= 0) faced[c] = 1;
+  if (std::find(faced.begin(), faced.end(), 1) == faced.end()) return;  // nothing to keep them apart
+  std::vector<int> to(p.cells.size(), -1);
+  std::vector<Cell> cells;
+  std::vector<std::string> groups;
+  for (size_t c = 0; c < p.cells.size(); ++c)
+    if (faced[c]) to[c] = int(cells.size()), cells.push_back(p.cells[c]), groups.push_back(group[c]);
+  for (int& c : p.cellOfPatch)
+    if (c >= 0) c = to[c];
+  std::vector<Portal> portals;
+  for (Portal q : p.portals)
+    if (to[q.cellA] >= 0 && to[q.cellB] >= 0) q.cellA = to[q.cellA], q.cellB = to[q.cellB], portals.push_back(std::move(q));
+  p.cells = std::move(cells);
+  p.portals = std::move(portals);
+  group = std::move(groups);
+}
+
 }  // namespace
 
 std::string groupOfOrigin(const std::string& origin) {
@@ -355,12 +377,15 @@ CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches, C
         hi[l] = glm::max(hi[l], corner + g.voxel);
       }
   if (labels.cells == 0) std::tie(lo[0], hi[0]) = boundsOf(patches);  // the scene's bounds
-  const std::vector<std::string> group = mainGroups(scene, patches, out.cellOfPatch, cells);
+  std::vector<std::string> group = mainGroups(scene, patches, out.cellOfPatch, cells);
   std::map<std::string, int> used;
   for (int c = 0; c < cells; ++c) {
     const bool named = !group[c].empty() && used[group[c]]++ == 0;
-    out.cells[c] = {named ? group[c] : "cell " + std::to_string(c), lo[c], hi[c]};
+    out.cells[c] = {named ? group[c] : "", lo[c], hi[c]};
   }
+  dropCellsNoPatchFaces(out, group);
+  for (size_t c = 0; c < out.cells.size(); ++c)
+    if (out.cells[c].name.empty()) out.cells[c].name = "cell " + std::to_string(c);
   if (groups == CellGroups::Join) joinByGroup(out, group);
   return out;
 }

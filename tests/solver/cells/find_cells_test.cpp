@@ -185,6 +185,23 @@ TEST(FindCells, AFaceTowardsTheOutsideHasNoCell) {
   }
 }
 
+// A closed crate in a room encloses space no patch faces: it used to be a cell of no patches, which
+// refused the whole solve ("meshed into no patches"); the shared scenes' cube.mgf has two.
+TEST(FindCells, TheInsideOfASolidObjectIsNoCell) {
+  SceneBuilder b("test");
+  const int grey = b.addMaterial("grey", Rgb(0.5)), light = b.addMaterial("light", Rgb(0.5), Rgb(1.0));
+  b.addRoom({0, 0, 0}, {6, 6, 3}, {grey, grey, grey}, {{kZMax, {1, 1, 0}, {2, 2, 0}, 0.0, -1, light, "light"}},
+            "room");
+  b.addBox({2, 2, 0.5}, {4, 4, 2}, grey, "crate");  // all six faces, looking out
+  const Scene scene = b.take();
+  const std::vector<Patch> patches = meshScene(scene);
+  const CellPartition cells = findCells(scene, patches);
+  ASSERT_EQ(cells.cells.size(), 1u);
+  EXPECT_EQ(cells.cells[0].name, "room");
+  EXPECT_TRUE(cells.portals.empty());
+  EXPECT_EQ(std::count(cells.cellOfPatch.begin(), cells.cellOfPatch.end(), 0), long(patches.size()));
+}
+
 // Two rooms sharing a wall of no thickness (each room's own face, back to back, as files often
 // have them), joined by an opening `width` m wide and 2.1 m high.
 Scene abuttingRooms(double width, const std::string& west = "west", const std::string& east = "east") {
