@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -169,7 +170,8 @@ namespace {
 std::vector<Setting> chosenSettings(const AccuracyArgs& args) {
   std::vector<Setting> settings;
   for (const std::string& name : args.projections) {
-    const Projection p = parseProjection(name);
+    // The bench's own list: the solve's message would offer analytic, which it does not sweep.
+    const Projection p = name == "plane" ? Projection::Plane : name == "hemicube" ? Projection::Hemicube : Projection::Analytic;
     if (p == Projection::Plane) {
       settings.push_back({p, 3.0});
       settings.push_back({p, 5.0});
@@ -211,6 +213,10 @@ std::vector<double> checkedSubdividedCells(const AccuracyArgs& args, const std::
   if (args.subdivide.empty()) throw OptionError("bench accuracy needs at least one --subdivide value: off, uniform or adaptive");
   if (!(args.untilUnshot >= 0.0 && args.untilUnshot < 1.0))
     throw OptionError("bench accuracy --until-unshot must be a fraction in [0, 1), e.g. 0.01 (0: C = 0.99 only)");
+  for (double cell : args.cells)  // one message naming the list's own flag, before any is compared
+    if (!(cell > 0.0 && std::isfinite(cell)))
+      throw OptionError(fmt::format("bench accuracy --cells {}: give cell sizes in metres greater than 0, e.g. --cells "
+                                    "0.5,0.381", cell));
   std::vector<double> subdivided = args.subdivideCells;
   if (subdivided.empty()) subdivided.push_back(*std::ranges::max_element(args.cells));
   for (double cell : subdivided)

@@ -138,6 +138,13 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, json, cmd] {
     checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);
+    // What --quick sets would replace what was given without a word.
+    for (const char* flag : {"--resolutions", "--reference-resolution", "--reference-until", "--reference-unshot"})
+      if (*quick && cmd->count(flag) > 0)
+        throw OptionError(fmt::format("bench accuracy --quick sets {} itself (docs/accuracy.md): leave {} out, or "
+                                      "drop --quick", flag, flag));
+    if (*quick && args->cells.size() > 2 && cmd->count("--cells") > 0)
+      throw OptionError("bench accuracy --quick sweeps at most two --cells: give two, or drop --quick");
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
     dropRepeats(a.cells), dropRepeats(a.resolutions), dropRepeats(a.projections), dropRepeats(a.subdivide);
     dropRepeats(a.minElements), dropRepeats(a.adaptiveMinElements), dropRepeats(a.subdivideCells);

@@ -237,6 +237,14 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench cells two-rooms --min-element 0.1", "--min-element shapes the elements, and --subdivide is off"},
       {"bench solve furnace --scaling-cells 0", "--scaling-cells 0: give cell sizes in metres greater than 0"},
       {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
+      // bench accuracy names its own lists (it named --cell, --subdivide-cells and an analytic it refuses)
+      // and refuses what --quick would replace without a word.
+      {"bench accuracy furnace --cells 1,0", "bench accuracy --cells 0: give cell sizes in metres greater than 0"},
+      {"bench accuracy furnace --cells nan", "bench accuracy --cells nan: give cell sizes in metres greater than 0"},
+      {"bench accuracy furnace --projections foo", "--projections 'foo': give plane (ratios 3 and 5) or hemicube"},
+      {"bench accuracy furnace --quick --resolutions 48", "--quick sets --resolutions itself"},
+      {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-unshot itself"},
+      {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cells"},
   };
   for (const auto& [arguments, message] : cases) {
     const CommandRun run = radmesh(arguments);
