@@ -15,8 +15,9 @@ Compass sceneCompass() { return {}; }
 
 Light sunLight(double azimuthDeg, double elevationDeg, double lux, const Compass& compass) {
   if (!(elevationDeg > 0.0 && elevationDeg <= 90.0))
-    throw OptionError(fmt::format("--sun elevation {} is not above the horizon: give an elevation in degrees from just "
-                                  "above 0 to 90 (90: overhead)", elevationDeg));
+    throw OptionError(fmt::format("--sun elevation {} is {}: give an elevation in degrees from just above 0 to 90 (90: "
+                                  "overhead; past it, turn the azimuth by 180 instead)",
+                                  elevationDeg, elevationDeg > 90.0 ? "past overhead" : "not above the horizon"));
   if (!std::isfinite(azimuthDeg))
     throw OptionError("--sun azimuth must be a number of degrees clockwise from north (0 north, 90 east)");
   if (!(lux > 0.0 && lux <= kSunAboveTheAtmosphereLux))

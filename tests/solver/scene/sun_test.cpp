@@ -1,6 +1,8 @@
 // --sun AZIMUTH,ELEVATION[,LUX]: the sun's direction and irradiance, and what is refused.
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include <cmath>
 
 #include "solver/scene/scene_error.h"
@@ -32,6 +34,15 @@ TEST(Sun, ImpossibleValuesAreRefusedNamingTheOption) {
     }
   }
   EXPECT_DOUBLE_EQ(parseSun("10,45,133000").intensity.g, 133000 / 179.0);  // the sun above the atmosphere
+  // Past overhead is said as such (it read "not above the horizon").
+  for (const auto& [sun, says] : {std::pair{"10,91", "--sun elevation 91 is past overhead"},
+                                  std::pair{"10,-5", "--sun elevation -5 is not above the horizon"}})
+    try {
+      parseSun(sun);
+      ADD_FAILURE() << sun;
+    } catch (const OptionError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
