@@ -25,6 +25,12 @@ std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
   const double neverEntered = l.lightOutside / l.input();
   const double entered = l.input() - l.lightOutside;
   const double leftAfterEntering = entered > 0.0 ? std::max(0.0, l.escaped - l.lightOutside) / entered : 0.0;
+  // Nothing at all came in: every radiosity is zero, whatever the scene.
+  if (!sceneClosed && neverEntered > 1.0 - 1e-9) {
+    warnings.push_back("none of the lights' power entered the model, so every radiosity is zero: is the sun along a "
+                       "flat model, or a light outside it facing away?");
+    return warnings;
+  }
   const double lost = sceneClosed ? std::max(neverEntered, leftAfterEntering) : leftAfterEntering;
   if (lost > (sceneClosed ? kLostInClosedScene : kLostInOpenScene))
     warnings.push_back(fmt::format(

@@ -1,5 +1,7 @@
 #include "solver/scene/scene.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -189,10 +191,18 @@ void validateGeometry(const Scene& scene) {
 
 void validateScene(const Scene& scene) {
   validateGeometry(scene);
-  if (!(emittedPowerW(scene) > 0.0))
-    throw SceneError(scene.source, "", "has no emitter, so every radiosity would be zero",
-                     "give at least one material a positive emittance, or light it by daylight through its "
-                     "openings: --sky LUX, --sun AZIMUTH,ELEVATION[,LUX]");
+  if (emittedPowerW(scene) > 0.0) return;
+  // Lights that send nothing in: a beam along a flat model (it meets no area), a light of no power.
+  if (!scene.lights.empty())
+    throw SceneError(scene.source, scene.lights.front().name,
+                     fmt::format("{} light(s) but no emitter, and they send no light into the model (a sun or "
+                                 "directional light along a flat model meets none of its area)",
+                                 scene.lights.size()),
+                     "turn the light (--sun's elevation or azimuth) so that it shines onto the surfaces, or give "
+                     "a material a positive emittance");
+  throw SceneError(scene.source, "", "has no emitter, so every radiosity would be zero",
+                   "give at least one material a positive emittance, or light it by daylight through its "
+                   "openings: --sky LUX, --sun AZIMUTH,ELEVATION[,LUX]");
 }
 
 void validateLights(const Scene& scene) {

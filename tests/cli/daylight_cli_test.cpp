@@ -90,6 +90,22 @@ TEST(Cli, TheSunShinesThroughTheSkysWindow) {
   }
 }
 
+// A sun along a flat wall sends nothing in: the refusal names the sun and how to turn it (it said
+// the scene had no emitter and to add --sun, which was given); one grazing it lights nothing, with a word.
+TEST(Cli, ASunThatMissesTheModelIsNamed) {
+  const std::string wall = tempPath("wall.mgf");
+  std::ofstream(wall) << "m g =\n\trd 0.5\nv a =\n\tp 0 0 0\nv b =\n\tp 4 0 0\nv c =\n\tp 4 0 2\nv d =\n\tp 0 0 2\n"
+                         "f a b c d\n";
+  CommandRun run = radmesh("solve " + wall + " --up x --sun 0,90 --quiet");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find(wall + ": --sun 0,90,100000: 1 light(s) but no emitter, and they send no light into the model"),
+            std::string::npos)
+      << run.output;
+  run = radmesh("solve " + wall + " --up z --sun 0,90 --quiet");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: none of the lights' power entered the model"), std::string::npos) << run.output;
+}
+
 TEST(Cli, SkyNeedsAnOpeningAndASceneWithoutLightPointsToIt) {
   CommandRun run = radmesh("solve " + kClosedRoom + " --sky 10000 --quiet");
   EXPECT_EQ(run.exitCode, 2) << run.output;

@@ -40,6 +40,8 @@ TEST(Ledger, LightLostWhereNoSolveLosesItIsNamed) {
   EXPECT_TRUE(lostLightWarnings(ledgerOf(0.0, 0.0, 9.0), true).empty());  // a shot's 8.3 %
   EXPECT_TRUE(says(lostLightWarnings(ledgerOf(0.0, 0.0, 80.0), false), "the single plane missed 80.0% of the power"));
   EXPECT_TRUE(lostLightWarnings(Ledger{}, true).empty());  // nothing emitted: nothing lost
+  // An open scene that none of the light entered (a sun along a flat model) is all dark, "100 %" converged.
+  EXPECT_TRUE(says(lostLightWarnings(ledgerOf(100.0, 100.0, 0.0), false), "none of the lights' power entered the model"));
 }
 
 }  // namespace
