@@ -13,6 +13,7 @@
 #include <iterator>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -42,13 +43,33 @@ inline CommandRun radmesh(const std::string& arguments) {
   return runCommand((test::binaryDir() / "cli" / "radmesh").string() + " " + arguments);
 }
 
+// The folders tempPath made in this process: emptied when first used (a folder left by an earlier
+// run whose process had the same id would hold its files) and removed when the process ends.
+class TempFolders {
+ public:
+  ~TempFolders() {
+    std::error_code ignored;
+    for (const std::filesystem::path& dir : made_) std::filesystem::remove_all(dir, ignored);
+  }
+  const std::filesystem::path& fresh(const std::filesystem::path& dir) {
+    for (const std::filesystem::path& made : made_)
+      if (made == dir) return made;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return made_.emplace_back(dir);
+  }
+
+ private:
+  std::vector<std::filesystem::path> made_;
+};
+
 // A folder per test and process: other checkouts may run the same tests at the same time.
 inline std::string tempPath(const std::string& name) {
+  static TempFolders folders;
   const auto dir = std::filesystem::temp_directory_path() /
                    ("radmesh-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
                     "-" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
+  return (folders.fresh(dir) / name).string();
 }
 
 // The plots are drawn by gnuplot where it is installed (scripts/install-deps.sh installs it).
