@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -18,12 +19,18 @@ namespace radmesh::cli {
 
 namespace {
 
+// A spreadsheet's save is read as ours: spaces around fields and a Windows line end are dropped.
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  return first == std::string::npos ? "" : text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
 std::vector<std::string> fields(const std::string& line) {
   std::vector<std::string> out;
   std::stringstream in(line);
   std::string field;
-  while (std::getline(in, field, ',')) out.push_back(field);
-  if (!line.empty() && line.back() == ',') out.emplace_back();  // a trailing empty field
+  while (std::getline(in, field, ',')) out.push_back(trimmed(field));
+  if (!line.empty() && trimmed(line).back() == ',') out.emplace_back();  // a trailing empty field
   return out;
 }
 
@@ -37,11 +44,15 @@ const std::string& CsvTable::text(size_t row, const std::string& column) const {
 
 double CsvTable::number(size_t row, const std::string& column) const {
   const std::string& field = text(row, column);
+  const size_t line = row < lineOfRow.size() ? lineOfRow[row] : row + 2;
   char* end = nullptr;
   const double value = std::strtod(field.c_str(), &end);
   if (field.empty() || *end != '\0')
     throw std::runtime_error(
-        fmt::format("{}, line {}: '{}' in column '{}' is not a number", path, row + 2, field, column));
+        fmt::format("{}, line {}: '{}' in column '{}' is not a number", path, line, field, column));
+  if (!std::isfinite(value))  // a figure no measurement gives: drawn, it would vanish without a word
+    throw std::runtime_error(fmt::format("{}, line {}: '{}' in column '{}' is not a finite number", path, line,
+                                         field, column));
   return value;
 }
 
@@ -58,11 +69,19 @@ CsvTable readCsv(const std::string& path, const std::string& writtenBy) {
   table.path = path;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(path + ": empty, expected a header line");
+  if (line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // the byte-order mark some editors write
   table.columns = fields(line);
+  for (size_t c = 0; c < table.columns.size(); ++c)
+    if (std::count(table.columns.begin(), table.columns.begin() + c, table.columns[c]))
+      throw std::runtime_error(fmt::format("{}: column '{}' appears twice in the header", path, table.columns[c]));
+  size_t lineNumber = 1;
   while (std::getline(in, line)) {
+    ++lineNumber;
+    if (trimmed(line).empty()) continue;  // blank lines (an editor's last one) hold no row
     table.rows.push_back(fields(line));
+    table.lineOfRow.push_back(lineNumber);
     if (table.rows.back().size() != table.columns.size())
-      throw std::runtime_error(fmt::format("{}, line {}: {} fields under a header of {}", path, table.rows.size() + 1,
+      throw std::runtime_error(fmt::format("{}, line {}: {} fields under a header of {}", path, lineNumber,
                                            table.rows.back().size(), table.columns.size()));
   }
   return table;

@@ -844,6 +844,30 @@ TEST(Cli, PlotPaperGathersTheStatsIntoOneCsvAndDrawsFromIt) {
   const CommandRun redrawn = radmesh("plot paper test --csv " + csv + " --images " + images);
   ASSERT_EQ(redrawn.exitCode, 0) << redrawn.output;
   EXPECT_EQ(redrawn.output.substr(redrawn.output.find("Table 1.1")), gathered.output.substr(gathered.output.find("Table 1.1")));
+
+  // The same table saved by a spreadsheet (a byte-order mark, Windows line ends, spaces after the
+  // commas, a blank last line) gives the same tables; it used to have "no column".
+  std::string text = readBytes(csv), saved = "\xEF\xBB\xBF";
+  for (char c : text) saved += c == '\n' ? std::string("\r\n") : c == ',' ? std::string(", ") : std::string(1, c);
+  const std::string spreadsheet = tempPath("spreadsheet.csv");
+  std::ofstream(spreadsheet, std::ios::binary) << saved << "\r\n";
+  const CommandRun reread = radmesh("plot paper test --csv " + spreadsheet + " --images " + images);
+  ASSERT_EQ(reread.exitCode, 0) << reread.output;
+  EXPECT_EQ(reread.output.substr(reread.output.find("Table 1.1")), gathered.output.substr(gathered.output.find("Table 1.1")));
+  // A figure no measurement gives, and a column named twice, are refused naming the line and column.
+  const size_t row = text.find("\nhierarchical,64,1,");
+  ASSERT_NE(row, std::string::npos) << text;
+  std::string nan = text;
+  nan.replace(row + 1, std::string("hierarchical,64,1,0.5,").size(), "hierarchical,64,1,nan,");
+  std::ofstream(csv) << nan;
+  CommandRun run = radmesh("plot paper test --csv " + csv + " --images " + images);
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find(csv + ", line 2: 'nan' in column 'convergence' is not a finite number"), std::string::npos)
+      << run.output;
+  std::ofstream(csv) << "run,run" + text.substr(text.find(','));
+  run = radmesh("plot paper test --csv " + csv + " --images " + images);
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find(csv + ": column 'run' appears twice in the header"), std::string::npos) << run.output;
 }
 
 TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
