@@ -86,7 +86,6 @@ void writeBake(const std::string& path, const std::vector<Patch>& patches, const
 void runCells(const SolveArgs& args, const Scene& scene, double cellM, const SolveOptions& options,
               CellRanks* ranks) {
   const bool writes = !ranks || ranks->rank() == 0;
-  if (!args.checkpointPath.empty() && writes) checkCheckpointWritable(args.checkpointPath);
   std::unique_ptr<CellSolver> solver = makeCellSolver(
       scene, meshScene(scene, cellM), options, {cellM, args.flags.exchangeShots, args.flags.portalBins}, ranks);
   if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
@@ -129,6 +128,9 @@ void run(const SolveArgs& args, Processes* processes) {
   checkOutputsDistinct(args.flags.scene,
                        {{"--out", args.outPath}, {"--stats", args.statsPath}, {"--checkpoint", args.checkpointPath}},
                        args.resumePath);
+  // Process 0 writes the checkpoints (the others may run where the folder is not theirs).
+  if (!args.checkpointPath.empty() && (!processes || processes->ranks.rank() == 0))
+    checkCheckpointWritable(args.checkpointPath);
   SolveOptions options = args.flags.resolved();
   if (readBake(args.flags.scene))  // else refused as a scene with no emitter
     throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",
@@ -140,7 +142,6 @@ void run(const SolveArgs& args, Processes* processes) {
   if (args.flags.cellsOn()) return runCells(args, scene, cell.cellM, options, processes ? &processes->ranks : nullptr);
   if (processes) options.meshTransport = processes->meshMachine;
   const bool writes = !processes || processes->ranks.rank() == 0;
-  if (!args.checkpointPath.empty()) checkCheckpointWritable(args.checkpointPath);
   ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   if (!args.resumePath.empty()) {  // refused, if it must be, before anything is written
     resumeFromCheckpoint(args.resumePath, solver);

@@ -15,6 +15,7 @@
 
 #include "solver/io/atomic_file.h"
 #include "solver/io/file_signature.h"
+#include "solver/io/output_path.h"
 #include "solver/radiosity/checkpoint_io.h"
 #include "solver/scene/scene_error.h"
 
@@ -334,7 +335,13 @@ void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
 }
 
 void checkCheckpointWritable(const std::string& path) {
-  writeOrRefuse(path, [&] { checkWritableBeside(path); });
+  checkOutputPath("--checkpoint", path, "", "");  // a missing folder or a folder in its place, as for --out
+  try {
+    checkWritableBeside(path);
+  } catch (const std::runtime_error& e) {
+    throw OptionError(fmt::format("--checkpoint '{}': cannot write there ({}): give a path in a writable folder with "
+                                  "room", path, e.what()));
+  }
 }
 
 void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {

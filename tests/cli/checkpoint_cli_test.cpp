@@ -7,6 +7,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "tests/cli/cli_run.h"
 
@@ -82,6 +83,22 @@ TEST(CliCheckpoint, ResumedBakeIsBitwiseTheStraightOneWithAdaptiveElements) {
   const std::string output = expectResumedRunIsTheStraightOne(
       kSolve + "--subdivide adaptive --min-element 0.05 --split-contrast 0.2", 8, 16, "adaptive");
   EXPECT_NE(output.find("after iteration 8"), std::string::npos) << output;
+}
+
+// A --checkpoint no file can be written to is an option error (exit 2), named as --out's are, before
+// the scene is read (it exited 1 naming a temporary file beside it).
+TEST(CliCheckpoint, ACheckpointPathThatCannotBeWrittenIsRefusedFirst) {
+  const std::string folder = tempPath("folder");
+  std::filesystem::create_directories(folder);
+  for (const auto& [path, says] :
+       {std::pair{tempPath("missing/x.ckpt"), "the folder '" + tempPath("missing") + "' does not exist"},
+        std::pair{folder, "--checkpoint '" + folder + "' is a folder"}})
+    for (const std::string cells : {"off", "auto"}) {
+      const CommandRun run = radmesh("solve two-rooms --cells " + cells + " --checkpoint " + path);
+      EXPECT_EQ(run.exitCode, 2) << run.output;
+      EXPECT_EQ(run.output.find("radmesh: error: --checkpoint '" + path + "'"), 0u) << run.output;
+      EXPECT_NE(run.output.find(says), std::string::npos) << run.output;
+    }
 }
 
 TEST(CliCheckpoint, PeriodicCheckpointsLeaveOneGoodFile) {

@@ -1202,8 +1202,8 @@ TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--stats '" + folder + "' is a folder"), std::string::npos) << run.output;
   run = radmesh("solve furnace --checkpoint " + folder);
-  EXPECT_NE(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find(folder + " is a folder"), std::string::npos) << run.output;
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--checkpoint '" + folder + "' is a folder"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("solving"), std::string::npos) << run.output;
   run = radmesh("solve furnace --resume " + folder);
   EXPECT_NE(run.exitCode, 0) << run.output;
