@@ -1,6 +1,8 @@
 #include "cli/distributed_command.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <utility>
 
 #include "solver/radiosity/progressive_solver.h"
 #include "solver/scene/scene_error.h"
@@ -41,6 +43,17 @@ nlohmann::json meshDistributedStats(const emu::Transport& processes, const Progr
 #endif
 
 }  // namespace
+
+Launch mpiLaunch() {
+  auto number = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value ? std::atoi(value) : -1;
+  };
+  for (const auto& [size, rank] : {std::pair{"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK"},
+                                   std::pair{"PMI_SIZE", "PMI_RANK"}})
+    if (number(size) > 0) return {number(size), std::max(number(rank), 0)};
+  return {};
+}
 
 void runDistributed(bool cellsOn, bool meshBackend, const std::function<void(Processes&)>& body) {
   if (!cellsOn && !meshBackend)

@@ -25,6 +25,14 @@ struct Processes {
   std::function<nlohmann::json(const ProgressiveSolver&)> meshStats;
 };
 
+// Under an MPI launcher (mpirun -np N, Open MPI's or MPICH's), how many processes run this command
+// and which one this is, from the environment the launcher sets; {1, 0} outside one.
+struct Launch {
+  int processes = 1;
+  int rank = 0;
+};
+Launch mpiLaunch();
+
 // With cellsOn each process solves some cells; else, with meshBackend, each holds a block of the
 // PE machine. Refused, naming the fix, with neither or in a build without MPI.
 void runDistributed(bool cellsOn, bool meshBackend, const std::function<void(Processes&)>& body);

@@ -2,16 +2,30 @@
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <exception>
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/distributed_command.h"
 #include "cli/option_checks.h"
 #include "solver/scene/scene_error.h"
 
 int main(int argc, char** argv) {
   if (const std::string option = radmesh::cli::optionWithEmptyValue(argc, argv); !option.empty()) {
     fmt::print(stderr, "radmesh: error: {} is given an empty value: give it a value, or leave it out\n", option);
+    return 2;
+  }
+  // Under mpirun every process runs the command: without --distributed each would do all of it and
+  // write the same files, racing.
+  if (const radmesh::cli::Launch launch = radmesh::cli::mpiLaunch();
+      launch.processes > 1 && std::none_of(argv, argv + argc, [](const char* a) { return std::string(a) == "--distributed"; })) {
+    if (launch.rank == 0)
+      fmt::print(stderr,
+                 "radmesh: error: this is one of {} processes of an MPI launch, without --distributed: each would run "
+                 "the whole command and write the same files; add --distributed (solve and bench solve, with "
+                 "--cells auto or --backend mesh), or run radmesh without mpirun\n",
+                 launch.processes);
     return 2;
   }
   CLI::App app{"radmesh: view-independent diffuse global illumination (Varshney & Prins)"};

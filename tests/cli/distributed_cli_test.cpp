@@ -34,6 +34,24 @@ TEST(DistributedCli, NeedsCellsAutoOrBackendMesh) {
       << bench.output;
 }
 
+// One of several processes of an MPI launch (the environment mpirun sets, Open MPI's or MPICH's)
+// without --distributed would run the whole command and write the same files: refused, said once.
+TEST(DistributedCli, AnMpiLaunchWithoutDistributedIsRefused) {
+  const std::string out = tempPath("raced.glb");
+  for (const std::string launcher : {"OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=", "PMI_SIZE=3 PMI_RANK="})
+    for (const char* rank : {"0", "1"}) {
+      const CommandRun run = runCommand(launcher + rank + " " + (test::binaryDir() / "cli" / "radmesh").string() +
+                                        " solve two-rooms --cells auto --resolution 16 --out " + out);
+      EXPECT_EQ(run.exitCode, 2) << run.output;
+      EXPECT_EQ(run.output.find("of an MPI launch, without --distributed") != std::string::npos, rank == std::string("0"))
+          << run.output;
+      EXPECT_FALSE(std::filesystem::exists(out));
+    }
+  const CommandRun one = runCommand("OMPI_COMM_WORLD_SIZE=1 " + (test::binaryDir() / "cli" / "radmesh").string() +
+                                    " info cornell");
+  EXPECT_EQ(one.exitCode, 0) << one.output;  // mpirun -np 1 is one process
+}
+
 TEST(DistributedCli, BenchCsvNeedsDistributed) {
   const CommandRun run = radmesh(std::string(kBench) + " --csv " + tempPath("stem"));
   EXPECT_EQ(run.exitCode, 2) << run.output;
