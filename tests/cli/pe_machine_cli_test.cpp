@@ -77,7 +77,10 @@ TEST(PeMachineCli, BadMachinesExit2NamingTheOptionAndTheFix) {
       {"bench solve cornell --backend mesh --pe-grid 100x100", "--pe-grid 100x100 is not a mesh"},
       // Too little memory for the patches themselves: the machine's error, with the flags that fix it.
       {"solve office --backend mesh --preset paper --pe-grid 2x2 --pe-memory 1 --max-iterations 1",
-       "budget is 1024 bytes. Fix: give each PE more memory (a larger --pe-memory KB) or spread the work over more PEs (a larger --pe-grid)"},
+       "budget is 1024 bytes. Fix: give each PE more memory (a larger --pe-memory KB), spread the work over more PEs (a "
+       "larger --pe-grid), or give it less to hold (a smaller --resolution or fewer --shooters)"},
+      // Too many shooters at once for the PEs: the fix names the flag the user raised.
+      {"solve cornell --backend mesh --shooters 1910 --max-iterations 3 --quiet", "fewer --shooters"},
   };
   for (const Case& c : cases) {
     const CommandRun run = radmesh(c.arguments);

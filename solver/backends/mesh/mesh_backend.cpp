@@ -48,8 +48,8 @@ emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendO
 [[noreturn]] void refuseMachine(const emu::MemoryBudgetError& e) {
   const std::string what = e.what();
   throw OptionError(what.substr(0, what.find(" Fix:")) +
-                    " Fix: give each PE more memory (a larger --pe-memory KB) or spread the work over more PEs (a "
-                    "larger --pe-grid)");
+                    " Fix: give each PE more memory (a larger --pe-memory KB), spread the work over more PEs (a "
+                    "larger --pe-grid), or give it less to hold (a smaller --resolution or fewer --shooters)");
 }
 
 // A patch's claim to shoot next, ordered as the solver orders shooters: more unshot power first,
