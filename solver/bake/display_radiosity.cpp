@@ -83,6 +83,23 @@ Sources alongEdge(const Sources& from, const Sources& to, double t) {
   return out;
 }
 
+// Whether a patch standing at the point (its corner or edge there, in another plane, on the side a
+// and b face) has a and b on opposite sides: a wall of no thickness on the seam of two floors, or a
+// cabinet's side, which must not be averaged across (the dark side would take the lit one's light).
+// A window's reveal, behind the wall it cuts, stands on nothing.
+bool separatedAt(const std::vector<int>& touching, const Patch& a, const Patch& b, const std::vector<Patch>& patches,
+                 double toleranceM) {
+  for (int w : touching) {
+    const Patch& wall = patches[w];
+    if (std::abs(glm::dot(wall.normal, a.normal)) > 1.0 - 1e-9) continue;  // coplanar or parallel: no wall between
+    if (!(glm::dot(a.normal, wall.centroid - a.centroid) > toleranceM)) continue;  // not standing in front
+    const double sideA = glm::dot(wall.normal, a.centroid - wall.vertices[0]);
+    const double sideB = glm::dot(wall.normal, b.centroid - wall.vertices[0]);
+    if ((sideA > toleranceM && sideB < -toleranceM) || (sideA < -toleranceM && sideB > toleranceM)) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 DisplayMesh buildDisplayMesh(const std::vector<Patch>& patches) {
@@ -90,37 +107,52 @@ DisplayMesh buildDisplayMesh(const std::vector<Patch>& patches) {
   if (patches.empty()) return mesh;
   const double tolerance = weldTolerance(patches);
   Points points(tolerance);
-  // A point has a vertex per smoothing group (material and normal) of the patches around it.
-  std::vector<std::vector<unsigned>> vertexOfPoint;
-  std::vector<int> materialOf;  // per vertex
-  auto vertexAt = [&](int point, const Patch& patch) {
-    vertexOfPoint.resize(points.positions().size());
-    for (unsigned vertex : vertexOfPoint[point])
-      if (materialOf[vertex] == patch.material && glm::dot(mesh.normals[vertex], patch.normal) > 1.0 - 1e-9)
+  std::vector<std::array<int, 4>> pointOf(patches.size());
+  std::vector<std::span<const Vec3>> outlines;
+  outlines.reserve(patches.size());
+  for (size_t p = 0; p < patches.size(); ++p) {
+    for (int i = 0; i < patches[p].vertexCount; ++i) pointOf[p][i] = points.indexOf(patches[p].vertices[i]);
+    outlines.emplace_back(patches[p].vertices.data(), patches[p].vertexCount);
+  }
+  // The corners of other patches inside a patch's edges join its outline (T-vertices).
+  const std::vector<std::vector<EdgePoint>> edgePoints = findEdgePoints(outlines, points.positions(), tolerance);
+  // Per point, the patches with a corner or an edge there.
+  std::vector<std::vector<int>> touching(points.positions().size());
+  for (size_t p = 0; p < patches.size(); ++p) {
+    for (int i = 0; i < patches[p].vertexCount; ++i) touching[pointOf[p][i]].push_back(static_cast<int>(p));
+    for (const EdgePoint& e : edgePoints[p]) touching[e.point].push_back(static_cast<int>(p));
+  }
+
+  // A point has a vertex per smoothing group of the patches around it: the same material and
+  // normal, on the same side of any patch standing there.
+  std::vector<std::vector<unsigned>> vertexOfPoint(points.positions().size());
+  std::vector<int> firstPatchOf;  // per vertex
+  auto vertexAt = [&](int point, int p) {
+    const Patch& patch = patches[p];
+    for (unsigned vertex : vertexOfPoint[point]) {
+      const Patch& first = patches[firstPatchOf[vertex]];
+      if (first.material == patch.material && glm::dot(mesh.normals[vertex], patch.normal) > 1.0 - 1e-9 &&
+          !separatedAt(touching[point], patch, first, patches, tolerance))
         return vertex;
+    }
     const auto vertex = static_cast<unsigned>(mesh.positions.size());
     mesh.positions.push_back(points.positions()[point]);
     mesh.normals.push_back(patch.normal);
     mesh.vertexSources.emplace_back();
-    materialOf.push_back(patch.material);
+    firstPatchOf.push_back(p);
     vertexOfPoint[point].push_back(vertex);
     return vertex;
   };
   std::vector<std::array<unsigned, 4>> corners(patches.size());
-  std::vector<std::span<const Vec3>> outlines;
-  outlines.reserve(patches.size());
   for (size_t p = 0; p < patches.size(); ++p) {
     const Patch& patch = patches[p];
     for (int i = 0; i < patch.vertexCount; ++i) {
-      corners[p][i] = vertexAt(points.indexOf(patch.vertices[i]), patch);
+      corners[p][i] = vertexAt(pointOf[p][i], static_cast<int>(p));
       // Area weight: a large patch speaks for more of the surface around the vertex.
       mesh.vertexSources[corners[p][i]].emplace_back(static_cast<int>(p), patch.areaM2);
     }
-    outlines.emplace_back(patch.vertices.data(), patch.vertexCount);
   }
 
-  // The corners of other patches inside a patch's edges join its outline (T-vertices).
-  const std::vector<std::vector<EdgePoint>> edgePoints = findEdgePoints(outlines, points.positions(), tolerance);
   std::vector<std::vector<unsigned>> edgeVertices(patches.size());  // per edge point, in the patch's group
   struct Interpolated {
     double edgeM;
@@ -130,7 +162,7 @@ DisplayMesh buildDisplayMesh(const std::vector<Patch>& patches) {
   for (size_t p = 0; p < patches.size(); ++p)
     for (size_t k = 0; k < edgePoints[p].size(); ++k) {
       const EdgePoint& e = edgePoints[p][k];
-      edgeVertices[p].push_back(vertexAt(e.point, patches[p]));
+      edgeVertices[p].push_back(vertexAt(e.point, static_cast<int>(p)));
       const Vec3 d = outlines[p][(e.edge + 1) % outlines[p].size()] - outlines[p][e.edge];
       interpolated.push_back({glm::length(d), static_cast<int>(p), static_cast<int>(k)});
     }

@@ -1,6 +1,7 @@
 #pragma once
 // Per-vertex radiosity for Gouraud display: patch radiosity averaged (area-weighted) onto shared
-// vertices, never across creases or material boundaries. One mesh serves the viewer, the
+// vertices, never across creases, material boundaries or a surface standing on the seam (a wall
+// of no thickness between two rooms' floors). One mesh serves the viewer, the
 // offscreen render and the glTF bake.
 #include <vector>
 

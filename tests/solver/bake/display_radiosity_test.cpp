@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "solver/meshing/meshing.h"
 
@@ -75,6 +76,29 @@ TEST(DisplayRadiosity, CreasesAndMaterialBoundariesAreNotAveraged) {
   const Scene twoMaterials = greyRedScene(
       {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}}}, {0, 1});
   EXPECT_EQ(buildDisplayMesh(meshScene(twoMaterials, 1.0)).positions.size(), 8u);
+}
+
+// Two rooms' floors meeting under a wall of no thickness: the wall stands on the seam, so the dark
+// room's floor is not averaged with the lit one's (it glowed along the wall in bakes and renders).
+// A wall behind the floor (a window's reveal behind its wall) stands on nothing; without a wall, the
+// seam averages as any.
+TEST(DisplayRadiosity, AWallStandingOnASeamIsNotAveragedAcross) {
+  const std::vector<Vec3> lit = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, dark = {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}};
+  const std::vector<Vec3> above = {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}};     // facing -x, standing on the seam
+  const std::vector<Vec3> below = {{1, 0, -1}, {1, 1, -1}, {1, 1, 0}, {1, 0, 0}};   // the same plane, behind the floor
+  for (const auto& [wall, apart] : {std::pair{above, true}, std::pair{below, false}}) {
+    const Scene s = greyRedScene({lit, dark, wall});
+    const auto patches = meshScene(s, 1.0);
+    ASSERT_EQ(patches.size(), 3u);
+    std::vector<Rgb> b(3);
+    for (size_t p = 0; p < 3; ++p) b[p] = Rgb(patches[p].polygon == 0 ? 2.0 : 0.0);  // the wall dark too
+    const DisplayMesh mesh = buildDisplayMesh(patches);
+    const auto v = vertexRadiosity(mesh, b);
+    // At the seam's ends: the wall's vertex, and the floors' one each or one averaged.
+    const std::vector<double> expected = apart ? std::vector<double>{0.0, 0.0, 2.0} : std::vector<double>{0.0, 1.0};
+    EXPECT_EQ(valuesAt(mesh, v, {1, 0, 0}), expected) << (apart ? "standing" : "behind");
+    EXPECT_EQ(valuesAt(mesh, v, {1, 1, 0}), expected) << (apart ? "standing" : "behind");
+  }
 }
 
 // A 4 x 4 grid of patches: 25 shared vertices, 32 triangles, counter-clockwise around the normal;
