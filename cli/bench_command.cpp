@@ -77,6 +77,14 @@ void addBenchSolve(CLI::App* bench) {
     checkOutputPath("--json", *json, ".json", "the figures are JSON");
     args->cellGiven = cmd->count("--cell") > 0;
     args->projectionsGiven = cmd->count("--projections") > 0;
+    // Flags for what this run does not time would be dropped without a word.
+    for (const char* flag : {"--pe-grid", "--pe-memory"})
+      if (cmd->count(flag) > 0 && parseBackend(args->backend) != Backend::Mesh)
+        throw OptionError(fmt::format("bench solve {} shapes the emulated machine: add --backend mesh, or leave {} out",
+                                      flag, flag));
+    if (cmd->count("--scaling-resolution") > 0 && args->cells.empty())
+      throw OptionError("bench solve --scaling-resolution is the resolution of the --scaling-cells sweep: give "
+                        "--scaling-cells too, or leave it out");
     dropRepeats(args->projections), dropRepeats(args->resolutions), dropRepeats(args->shooters), dropRepeats(args->cells);
     if (!args->distributed) return writeJsonIfAsked(*json, benchSolve(*args));
     if (!parseCells(args->cellsMode))

@@ -132,20 +132,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   const std::vector<Patch> patches = meshScene(scene, cell.cellM);
   const bool cells = parseCells(args.cellsMode);
   const CellPartition partition = cells ? findCells(scene, patches) : CellPartition{};
-  nlohmann::json rows = nlohmann::json::array();
-  CsvTable ranksCsv = ranksCsvTable(), modelCsv = modelCsvTable();
-  fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}, {}; times are {}\n", scene.source, patches.size(),
-             args.threads, args.until,
-             args.untilUnshot > 0.0 ? fmt::format(" or {:g}% unshot", 100.0 * args.untilUnshot) : "",
-             benchCacheText(args.cacheMb), args.threads == 1 ? "the solving thread's CPU time" : "wall time");
-  if (cells)
-    fmt::print("cells solve: {}, {}, {} shots a cell a round on average; ms/iteration: a round's time "
-               "over its iterations, the median over the rounds\n",
-               counted(std::ssize(partition.cells), "cell"), counted(std::ssize(partition.portals), "portal"),
-               args.exchangeShots);
   const Backend backend = parseBackend(args.backend);
-  if (backend == Backend::Mesh)
-    fmt::print("PE grid {}, {} KB a PE\n", peGridText(args.machine), args.machine.memoryKb);
   const std::vector<std::string> projections =
       backend == Backend::Mesh && !args.projectionsGiven ? std::vector<std::string>{"plane"} : args.projections;
   auto optionsOf = [&](const std::string& projection, int n, int k) {
@@ -160,8 +147,8 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
     o.untilUnshot = args.untilUnshot;
     o.threads = args.threads;
     o.formFactorCacheBytes = formFactorCacheBytes(backend, args.cacheMb);
+    if (cells) requireCellsOptions(o);  // first: its fix (the native back end) may settle the rest
     validateOptions(o);
-    if (cells) requireCellsOptions(o);
     return o;
   };
   // Every setting is checked before any is timed: a refusal comes first, not after minutes of rows.
@@ -172,8 +159,21 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   for (double cell : args.cells)
     if (!(std::isfinite(cell) && cell > 0.0))
       throw OptionError(fmt::format("--scaling-cells {}: give cell sizes in metres greater than 0, e.g. 0.75,0.381", cell));
+  nlohmann::json rows = nlohmann::json::array();
+  CsvTable ranksCsv = ranksCsvTable(), modelCsv = modelCsvTable();
+  fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}, {}; times are {}\n", scene.source, patches.size(),
+             args.threads, args.until,
+             args.untilUnshot > 0.0 ? fmt::format(" or {:g}% unshot", 100.0 * args.untilUnshot) : "",
+             benchCacheText(args.cacheMb), args.threads == 1 ? "the solving thread's CPU time" : "wall time");
+  if (cells)
+    fmt::print("cells solve: {}, {}, {} shots a cell a round on average; ms/iteration: a round's time "
+               "over its iterations, the median over the rounds\n",
+               counted(std::ssize(partition.cells), "cell"), counted(std::ssize(partition.portals), "portal"),
+               args.exchangeShots);
+  if (backend == Backend::Mesh)
+    fmt::print("PE grid {}, {} KB a PE\n", peGridText(args.machine), args.machine.memoryKb);
   fmt::print("{:<10} {:>6} {:>4} {:>14} {:>12} {:>12} {:>10} {:>8} {:>12}\n", "projection", "N", "k", "ms/iteration",
-             "iterations", "s to C", "it/s", "unshot", "MP-1 s/it");
+             "iterations", "s to stop", "it/s", "unshot", "MP-1 s/it");
   for (const std::string& projection : projections) {
     for (int n : args.resolutions) {
       for (int k : args.shooters) {
@@ -181,10 +181,10 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
         const Timing t = cells ? timeCells(scene, patches, partition, o, args.maxIterations,
                                            {cell.cellM, args.exchangeShots, args.portalBins}, ranks)
                                : timeSolve(scene, patches, o, args.maxIterations);
-        fmt::print("{:<10} {:>6} {:>4} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f} {:>7.2f}% {:>12.4f}\n", projection, n, k,
+        fmt::print("{:<10} {:>6} {:>4} {:>14.3f} {:>12}{} {:>12.3f} {:>10.1f} {:>7.2f}% {:>12}\n", projection, n, k,
                    t.msPerIteration, t.iterationsToUntil, t.reached ? " " : "+", t.secondsToUntil,
                    t.msPerIteration > 0 ? 1e3 / t.msPerIteration : 0.0, 100.0 * t.unshotFraction,
-                   t.emulatedSecondsPerIteration);
+                   backend == Backend::Mesh ? fmt::format("{:.4f}", t.emulatedSecondsPerIteration) : "-");
         rows.push_back({{"projection", projection},
                         {"resolution", n},
                         {"shooters", k},

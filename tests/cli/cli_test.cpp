@@ -245,6 +245,11 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench accuracy furnace --quick --resolutions 48", "--quick sets --resolutions itself"},
       {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-unshot itself"},
       {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cells"},
+      // Flags for what the run does not time were dropped without a word; the cells' own refusal comes first.
+      {"bench solve furnace --pe-grid 32x32", "bench solve --pe-grid shapes the emulated machine: add --backend mesh"},
+      {"bench solve furnace --scaling-resolution 17", "--scaling-resolution is the resolution of the --scaling-cells sweep"},
+      {"bench solve two-rooms --cells auto --backend mesh --projections hemicube --until 1 --until-unshot 0.1",
+       "--cells auto runs on the native back end only"},
   };
   for (const auto& [arguments, message] : cases) {
     const CommandRun run = radmesh(arguments);
