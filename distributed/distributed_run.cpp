@@ -25,7 +25,11 @@ void runDistributed(const std::function<void(CellRanks&)>& body) {
   } catch (const OptionError& e) {
     mpi::abortRun(std::string("error: ") + e.what(), 2);
   } catch (const std::exception& e) {
-    mpi::abortRun(std::string("error: ") + e.what(), 1);
+    // abortRun names the rank: an MPI error's own "rank N: " would say it twice.
+    std::string what = e.what();
+    if (const std::string rank = "rank " + std::to_string(session.rank()) + ": "; what.starts_with(rank))
+      what.erase(0, rank.size());
+    mpi::abortRun("error: " + what, 1);
   }
 }
 

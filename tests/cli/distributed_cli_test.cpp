@@ -279,7 +279,7 @@ TEST(DistributedCli, ARankThatDiesOrAFailedMessageStopsTheRunAndItResumes) {
                                            " --checkpoint-every 0.000001 --out " + bake,
                                     "RADMESH_TEST_FAULT=1:3:" + how);
     EXPECT_NE(run.exitCode, 0) << run.output;
-    const std::string names = how == "kill" ? "process rank 1" : "radmesh: rank 1: error: rank 1: MPI_Isend failed";
+    const std::string names = how == "kill" ? "process rank 1" : "radmesh: rank 1: error: MPI_Isend failed";
     EXPECT_NE(run.output.find(names), std::string::npos) << run.output;
     EXPECT_FALSE(std::filesystem::exists(bake));
     run = radmeshOnRanks(2, std::string(kCellsSolve) + " --distributed --resume " + checkpoint + " --stats " + stats +
