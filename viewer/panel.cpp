@@ -12,6 +12,7 @@
 
 #include "solver/scene/scene_error.h"
 #include "viewer/panel_widgets.h"
+#include "viewer/solve_warnings.h"
 
 namespace radmesh {
 
@@ -194,11 +195,9 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
     ImGui::Text("C = %.4f (until %.3f)", snapshot.convergence(), o.until);
   else
     ImGui::Text("C = %.4f", snapshot.convergence());
-  if (snapshot.done && farFromConverged) {
+  for (const std::string& warning : solveWarnings(snapshot)) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
-    ImGui::TextWrapped("stopped with %.0f%% of the power unshot: the light is far from converged. Step on, or "
-                       "stop on the unshot power (Parameters)",
-                       100.0 * unshot);
+    ImGui::TextWrapped("%s", warning.c_str());
     ImGui::PopStyleColor();
   }
   const std::string elements =

@@ -12,6 +12,7 @@
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/checkpoint.h"
+#include "solver/radiosity/effects_plan.h"
 #include "solver/scene/scene_error.h"
 #include "viewer/exposure.h"
 
@@ -106,6 +107,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
     run->generation = generation;
     std::vector<Patch> patches = meshScene(scene_, setup.cellM);
     run->summary = summarizeScene(scene_, patches, setup.cellM);
+    run->sceneClosed = isClosed(scene_);
     if (setup.cells) {
       if (setup.options.backend != Backend::Native)
         throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
@@ -174,6 +176,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->setup = run.setup;
   snapshot->mesh = run.mesh;
   snapshot->summary = run.summary;
+  snapshot->sceneClosed = run.sceneClosed;
   snapshot->receivers = run.receiverCount();
   if (run.cells) {
     snapshot->vertexB = vertexRadiosity(*run.mesh, run.cells->displayElementRadiosity());

@@ -26,6 +26,7 @@ struct SolverThread::Run {
   std::size_t meshedReceivers = 0;  // the receivers the mesh was built from
   std::shared_ptr<const std::vector<int>> cellOfReceiver;  // with cells: each of them, the cell it faces
   SceneSummary summary;
+  bool sceneClosed = false;  // isClosed, once a start
   std::vector<ConvergencePoint> curve;
   std::shared_ptr<const ShotStats> lastShotStats;  // the last there was (cache hits have none)
   std::shared_ptr<const ItemBuffer> itemBuffer;

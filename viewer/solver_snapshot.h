@@ -70,6 +70,7 @@ struct SolverSnapshot {
   std::vector<int> lastShooterElements;      // their elements (the mesh's), to highlight
   std::vector<ConvergencePoint> curve;       // one point per iteration so far
   Ledger ledger;
+  bool sceneClosed = false;                  // no open edges: light may not leave (lostLightWarnings)
   double lastCapturedFraction = 0.0;         // of the last iteration's shooters
   // The single plane's item buffer of the last iteration's first shooter, when the UI asked for
   // it (SolverThread::setItemBufferWanted); may lag a few iterations behind while playing.
