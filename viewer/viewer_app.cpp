@@ -132,10 +132,16 @@ class Shown {
 class ShownSolve : public Shown {
  public:
   ShownSolve(Scene scene, const SolveSetup& setup, const ViewerArgs& args)
-      : smokeTest_(args.steps > 0), solver_(std::move(scene), setup, !smokeTest_, args.resume, args.steps) {}
+      : smokeTest_(args.steps > 0), reportsAtExit_(args.steps > 0 || args.frames > 0), solver_(std::move(scene), setup, !smokeTest_, args.resume, args.steps) {}
   void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) override {
     solver_.setEye(camera.view().eye);
     feed_.show(solver_.latest(), renderer, view);
+    // Said in the terminal too, once each: a bad --cell or --resume is found on the solver thread,
+    // after the window opened (--steps and --frames say it as they exit).
+    if (const std::string& error = feed_.shown().error; !reportsAtExit_ && !error.empty() && error != printedError_) {
+      std::fprintf(stderr, "radmesh-view: the solve failed: %s\n", error.c_str());
+      printedError_ = error;
+    }
     // A camera outside every room (the scene's corner is outside a building) goes into the room
     // solved first, once a solve.
     const SolverSnapshot& s = feed_.shown();
@@ -180,7 +186,9 @@ class ShownSolve : public Shown {
 
  private:
   std::uint64_t placedGeneration_ = 0;  // the solve whose cells placed the camera
+  std::string printedError_;            // the last failure said in the terminal
   bool smokeTest_;
+  bool reportsAtExit_;
   SolverThread solver_;
   SnapshotFeed feed_;
 };

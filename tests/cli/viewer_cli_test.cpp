@@ -134,5 +134,18 @@ TEST(ViewerCli, TheFrameReportEndsWhenTheSolveFails) {
   EXPECT_NE(run.output.find("radmesh-view: the solve failed: "), std::string::npos) << run.output;
 }
 
+// Walking interactively, a solve that fails on its thread is said in the terminal as well as the
+// panel, once (it was in the panel alone); the window stays open until closed, here by timeout.
+TEST(ViewerCli, AFailedSolveIsSaidInTheTerminal) {
+  if (windowed().empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string missing = tempPath("missing.ckpt");
+  const CommandRun run = runCommand("timeout -s INT 10 xvfb-run -a -s '-screen 0 1280x720x24' " + viewerPath() +
+                                    " cornell --resume " + missing);
+  const std::string said = "radmesh-view: the solve failed: " + missing + ": cannot be read";
+  const size_t first = run.output.find(said);
+  EXPECT_NE(first, std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find(said, first + 1), std::string::npos) << "said more than once: " << run.output;
+}
+
 }  // namespace
 }  // namespace radmesh
