@@ -230,6 +230,7 @@ void addInfoCommand(CLI::App& app) {
       ->check(CLI::IsMember({"name", "join"}));
   cmd->callback([args, cmd] {
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
+    checkOutputsDistinct(args->scene, {{"--plan", args->planPath}});
     checkMinElement(args->minElementM);
     std::vector<std::string> sceneFlags;  // what shapes a scene's figures: all but the positional and --json
     for (const CLI::Option* option : cmd->get_options())

@@ -151,6 +151,8 @@ void run(const RenderArgs& args) {
     throw OptionError(fmt::format("--fov must lie between {} and 180 degrees (narrower, the picture's single-precision "
                                   "projection has no pixels left), got {}", kMinFovDeg, args.fovDeg));
   checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
+  checkOutputsDistinct(args.flags.scene, {{"--out", args.outPath}});  // a link named .png may lead to the scene
+  checkWritable("--out", args.outPath);  // before the solve, not after it
   std::optional<Solved> solved = readBakeToRender(args);
   if (!solved) solved = solveScene(args);
   const RenderView& view = solved->view;

@@ -36,6 +36,16 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
                                   option, path, folder.string(), folder.string()));
 }
 
+void checkWritable(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  try {
+    checkWritableBeside(path);
+  } catch (const std::runtime_error& e) {
+    throw OptionError(fmt::format("{} '{}': cannot write there ({}): give a path in a writable folder with room",
+                                  option, path, e.what()));
+  }
+}
+
 void makeOutputFolder(const std::string& option, const std::string& folder) {
   if (folder.empty()) return;  // the working folder
   std::error_code error;

@@ -16,6 +16,11 @@ bool hasExtension(const std::string& path, const std::string& extension);
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
                      const std::string& what, bool makeFolder = false);
 
+// Throws OptionError naming `option` when no file can be written at `path` (a folder without
+// write permission, a file system that takes none), found by making and removing a file beside it:
+// before the work whose output it is, not after.
+void checkWritable(const std::string& option, const std::string& path);
+
 // Makes `folder` (and its parents) if missing, or throws OptionError naming `option` and why it
 // cannot be made: before the work whose outputs it holds, not after.
 void makeOutputFolder(const std::string& option, const std::string& folder);

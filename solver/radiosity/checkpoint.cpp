@@ -336,12 +336,7 @@ void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
 
 void checkCheckpointWritable(const std::string& path) {
   checkOutputPath("--checkpoint", path, "", "");  // a missing folder or a folder in its place, as for --out
-  try {
-    checkWritableBeside(path);
-  } catch (const std::runtime_error& e) {
-    throw OptionError(fmt::format("--checkpoint '{}': cannot write there ({}): give a path in a writable folder with "
-                                  "room", path, e.what()));
-  }
+  checkWritable("--checkpoint", path);
 }
 
 void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {

@@ -1214,7 +1214,8 @@ TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
   EXPECT_NE(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("is a folder, not a checkpoint"), std::string::npos) << run.output;
   if (radmesh("render --help").output.find("not built") != std::string::npos) return;
-  for (const std::string& out : {missing + ".png", tempPath("x.jpg")}) {
+  // /proc takes no new file: found before the solve (it failed after it, the work lost).
+  for (const std::string& out : {missing + ".png", tempPath("x.jpg"), std::string("/proc/radmesh.png")}) {
     const CommandRun run = radmesh("render office --out " + out);
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_NE(run.output.find("--out '" + out + "'"), std::string::npos) << run.output;
@@ -1245,6 +1246,15 @@ TEST(Cli, OutputsThatWouldReplaceTheSceneOrEachOtherAreRefused) {
   }
   EXPECT_NE(radmesh("solve " + scene + " --checkpoint " + scene).output.find("is the scene being solved"),
             std::string::npos);
+  // A link named as a picture that leads to the scene: render and info --plan wrote through it.
+  const std::string link = tempPath("link.png");
+  std::filesystem::create_symlink(scene, link);
+  for (const std::string arguments : {"render " + scene + " --cell 0.2 --iterations 2 --out " + link,
+                                      "info " + scene + " --plan " + link}) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find("'" + link + "' is the scene being solved"), std::string::npos) << run.output;
+  }
   EXPECT_EQ(readBytes(scene), before);
   // Going on from a checkpoint and saving it again in place stays allowed.
   const std::string checkpoint = tempPath("c.ckpt");
