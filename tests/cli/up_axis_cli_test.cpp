@@ -141,7 +141,7 @@ TEST(UpAxisCli, TheViewerWalksABakeWithNoSolve) {
   if (std::system("command -v xvfb-run > /dev/null") != 0) GTEST_SKIP() << "xvfb-run is not installed";
   const std::string bake = tempPath("two-rooms.glb"), png = tempPath("walk.png");
   ASSERT_EQ(radmesh("solve two-rooms --cell 1 --resolution 32 --max-iterations 5 --quiet --out " + bake).exitCode, 0);
-  const CommandRun run = runCommand("xvfb-run -a -s '-screen 0 800x600x24' " + viewer + " " + bake +
+  const CommandRun run = runCommand(virtualDisplay("800x600x24") + viewer + " " + bake +
                                      " --cell 0.5 --up y --size 800x600 --steps 1 --screenshot " + png);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("warning: --cell does not apply: " + bake + " is a bake"), std::string::npos) << run.output;

@@ -14,10 +14,13 @@ namespace {
 
 std::string viewerPath() { return (test::binaryDir() / "viewer" / "radmesh-view").string(); }
 
+// The viewer's virtual display, or empty where it cannot run.
+std::string xvfb() { return std::filesystem::exists(viewerPath()) ? virtualDisplay() : ""; }
+
 // The viewer in a virtual display, or empty where it cannot run.
 std::string windowed() {
-  if (!std::filesystem::exists(viewerPath()) || std::system("command -v xvfb-run > /dev/null") != 0) return {};
-  return "timeout 120 xvfb-run -a -s '-screen 0 1280x720x24' " + viewerPath() + " ";
+  const std::string display = xvfb();
+  return display.empty() ? "" : "timeout 120 " + display + viewerPath() + " ";
 }
 
 // A file the viewer would write over is refused before the window opens: the scene itself (a
@@ -139,8 +142,7 @@ TEST(ViewerCli, TheFrameReportEndsWhenTheSolveFails) {
 TEST(ViewerCli, AFailedSolveIsSaidInTheTerminal) {
   if (windowed().empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
   const std::string missing = tempPath("missing.ckpt");
-  const CommandRun run = runCommand("timeout -s INT 10 xvfb-run -a -s '-screen 0 1280x720x24' " + viewerPath() +
-                                    " cornell --resume " + missing);
+  const CommandRun run = runCommand("timeout -s INT 10 " + xvfb() + viewerPath() + " cornell --resume " + missing);
   const std::string said = "radmesh-view: the solve failed: " + missing + ": cannot be read";
   const size_t first = run.output.find(said);
   EXPECT_NE(first, std::string::npos) << run.output;
