@@ -74,7 +74,7 @@ void addBenchSolve(CLI::App* bench) {
                 "messages, bytes and MPI wait and the model on more ranks (docs/scaling.md); rank 0 prints and writes");
   cmd->add_option("--csv", args->csvStem, "With --distributed: write STEM-ranks.csv and STEM-model.csv");
   cmd->callback([args, json, cmd] {
-    checkOutputPath("--json", *json, ".json", "the figures are JSON");
+    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);  // as bench accuracy
     args->cellGiven = cmd->count("--cell") > 0;
     args->projectionsGiven = cmd->count("--projections") > 0;
     // Flags for what this run does not time would be dropped without a word.
@@ -198,7 +198,7 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_flag("--focus-only", args->focusOnly, "Only the focus cell's time to --focus-unshot (no solve to --until-unshot)");
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->callback([args, json] {
-    checkOutputPath("--json", *json, ".json", "the figures are JSON");
+    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);  // as bench accuracy
     writeJsonIfAsked(*json, benchCells(*args));
   });
 }

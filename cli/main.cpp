@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <string>
 
@@ -12,6 +13,8 @@
 #include "solver/scene/scene_error.h"
 
 int main(int argc, char** argv) {
+  // A line at a time into a pipe or a file too (tee, nohup): progress is not held until exit.
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   if (const std::string option = radmesh::cli::optionWithEmptyValue(argc, argv); !option.empty()) {
     fmt::print(stderr, "radmesh: error: {} is given an empty value: give it a value, or leave it out\n", option);
     return 2;

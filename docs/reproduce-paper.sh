@@ -9,6 +9,7 @@ scene=${1:-office}
 name=${2:-$(basename "${scene%.*}")}
 figure_until=${3:-0.95}
 out=out/data  # the solves' stats JSON, not committed; the figures' CSV and PNGs go to docs/
+mkdir -p "$out"
 # Tables 1.1, 1.2 and the mapping comparison average the iterations to C = 0.95; Figures 1.3 and
 # 1.4 follow the hierarchical runs to FIGURE_UNTIL (the same shots first: the solve is deterministic).
 for mapping in hierarchical cut-and-stack adaptive; do

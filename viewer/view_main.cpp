@@ -21,6 +21,7 @@
 #include "viewer/viewer_app.h"
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);  // a line at a time into a pipe or a file too
   if (const std::string option = radmesh::cli::optionWithEmptyValue(argc, argv); !option.empty()) {
     std::fprintf(stderr, "radmesh-view: error: %s is given an empty value: give it a value, or leave it out\n",
                  option.c_str());
