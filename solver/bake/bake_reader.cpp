@@ -2,6 +2,8 @@
 
 #include <tiny_gltf.h>
 
+#include <cmath>
+
 #include "solver/io/gltf_accessor.h"
 #include "solver/io/gltf_import.h"
 #include "solver/io/gltf_load.h"
@@ -89,8 +91,18 @@ std::optional<Bake> readBake(const std::string& path) {
   bake.mesh.indices.assign(indices.begin(), indices.end());
   bake.mesh.patchOfTriangle.resize(indices.size() / 3);
   for (size_t t = 0; t < bake.mesh.patchOfTriangle.size(); ++t) bake.mesh.patchOfTriangle[t] = static_cast<int>(t);
-  bake.vertexB.reserve(n);
-  for (const Vec3& c : colours) bake.vertexB.push_back(c * bake.radiosityPerColorUnit);
+  if (attribute("_RADIOSITY") >= 0) {  // B unclipped; a bake written before it has COLOR_0 alone
+    bake.vertexB = readFloatVec3(model, attribute("_RADIOSITY"), path, "_RADIOSITY of the bake");
+    if (bake.vertexB.size() != n)
+      throw SceneError(path, "mesh 0 primitive 0", "has attributes of different lengths", kWriteAgain);
+    for (const Rgb& b : bake.vertexB)
+      if (!(b.r >= 0.0 && b.g >= 0.0 && b.b >= 0.0 && std::isfinite(b.r + b.g + b.b)))
+        throw SceneError(path, "_RADIOSITY of the bake", "holds a radiosity that is negative or not finite",
+                         kWriteAgain);
+  } else {
+    bake.vertexB.reserve(n);
+    for (const Vec3& c : colours) bake.vertexB.push_back(c * bake.radiosityPerColorUnit);
+  }
   if (bake.sourceUp < 0) bake.upAxis = guessUpAxis(bakeScene(bake, path));  // written before bakes were turned y-up
   return bake;
 }

@@ -99,12 +99,13 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
   checkInput(mesh, vertexRadiosity);
   const size_t n = mesh.positions.size();
   const double perUnit = bakeRadiosityPerColorUnit(vertexRadiosity);
-  std::vector<Vec3> positions(n), normals(n), colors(n);
+  std::vector<Vec3> positions(n), normals(n), colors(n), radiosity(n);
   for (size_t i = 0; i < n; ++i) {
     positions[i] = rotateToYUp(mesh.positions[i], sceneUpAxis);
     const double length = glm::length(mesh.normals[i]);
     normals[i] = length > 0.0 ? rotateToYUp(mesh.normals[i] / length, sceneUpAxis) : Vec3(0, 1, 0);  // glTF wants unit normals
     colors[i] = glm::min(vertexRadiosity[i] / perUnit, Rgb(1.0));
+    radiosity[i] = vertexRadiosity[i];
   }
   // Positions are floats: a model far from the origin (1e7 m) would snap to whole metres. Such a
   // model is written about its centre, the offset kept in double as its node's translation.
@@ -122,6 +123,7 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
   const size_t positionAt = append(buffer.data, positionData);
   const size_t normalAt = append(buffer.data, flatten(normals));
   const size_t colorAt = append(buffer.data, flatten(colors));
+  const size_t radiosityAt = append(buffer.data, flatten(radiosity));
   const size_t indexAt = append(buffer.data, std::vector<uint32_t>(mesh.indices.begin(), mesh.indices.end()));
   const size_t vec3Bytes = 3 * sizeof(float) * n;
   model.buffers.push_back(std::move(buffer));
@@ -142,6 +144,10 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
                                           TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
   prim.attributes["COLOR_0"] = addAccessor(model, colorAt, vec3Bytes, TINYGLTF_TARGET_ARRAY_BUFFER,
                                            TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+  // B itself, unclipped: COLOR_0 saturates the lights and whatever is brighter than its unit, and
+  // radmesh reads a bake back as the scene it drew (an application's attribute starts with _).
+  prim.attributes["_RADIOSITY"] = addAccessor(model, radiosityAt, vec3Bytes, TINYGLTF_TARGET_ARRAY_BUFFER,
+                                              TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
   prim.indices = addAccessor(model, indexAt, sizeof(uint32_t) * mesh.indices.size(),
                              TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
                              TINYGLTF_TYPE_SCALAR, mesh.indices.size());
@@ -152,8 +158,8 @@ void writeBakeGlb(const std::string& path, const DisplayMesh& mesh, const std::v
   bake.extras = tinygltf::Value(tinygltf::Value::Object{
       {"radiosityPerColorUnit", tinygltf::Value(perUnit)},
       {"sourceUp", tinygltf::Value(std::string(upAxisName(sceneUpAxis)))},
-      {"note", tinygltf::Value(std::string("COLOR_0 = min(1, B / radiosityPerColorUnit), B in W/m^2; the scene's "
-                                           "sourceUp axis turned onto glTF's +y (docs/scene-formats.md)"))}});
+      {"note", tinygltf::Value(std::string("COLOR_0 = min(1, B / radiosityPerColorUnit), B in W/m^2, _RADIOSITY = B; "
+                                           "the scene's sourceUp axis turned onto glTF's +y (docs/scene-formats.md)"))}});
   model.meshes.push_back(bake);
   model.materials.push_back(unlitMaterial());
   model.extensionsUsed.push_back("KHR_materials_unlit");

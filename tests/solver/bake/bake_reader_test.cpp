@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iterator>
+
 #include <tiny_gltf.h>
 #include <unistd.h>
 
@@ -49,9 +51,32 @@ TEST(BakeReader, ReadsBackTheMeshAndTheRadiosityBelowSaturationYUp) {
   EXPECT_EQ(bake->mesh.patchOfTriangle.size(), 2u);
   for (size_t v = 0; v < 4; ++v) {
     EXPECT_EQ(bake->mesh.positions[v], mesh.positions[v]);
-    for (int c = 0; c < 3; ++c)  // COLOR_0 is float: B comes back to float precision, clipped at unit
-      EXPECT_NEAR(bake->vertexB[v][c], std::min(b[v][c], unit), 1e-6 * unit) << "vertex " << v << " channel " << c;
+    for (int c = 0; c < 3; ++c)  // _RADIOSITY is float: B comes back to float precision, not clipped at unit
+      EXPECT_NEAR(bake->vertexB[v][c], b[v][c], 1e-6 * b[v][c]) << "vertex " << v << " channel " << c;
   }
+}
+
+// A bake written before _RADIOSITY (COLOR_0 alone) is read as it was: B clipped at the unit.
+TEST(BakeReader, ABakeWithoutRadiosityReadsColourTimesItsUnit) {
+  const std::vector<Rgb> b = {{1.0, 2.0, 3.0}, {0.5, 0.5, 0.5}, {0.25, 0.0, 1.0}, {2.0, 2.0, 2.0}};
+  const std::string path = tempPath("bake-reader-old.glb");
+  writeBakeGlb(path, twoTriangles(), b, /*sceneUpAxis=*/1);
+  const std::optional<Bake> written = readBake(path);
+  ASSERT_TRUE(written.has_value());
+  // The same bake as a .gltf without the attribute: rewritten through tinygltf's JSON.
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = bytes.find("\"_RADIOSITY\"");
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at, std::string("\"_RADIOSITY\"").size(), "\"_IGNORED__\"");  // same length: the GLB stays whole
+  std::ofstream(path, std::ios::binary) << bytes;
+  const std::optional<Bake> old = readBake(path);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(old.has_value());
+  const double unit = bakeRadiosityPerColorUnit(b);
+  for (size_t v = 0; v < 4; ++v)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(old->vertexB[v][c], std::min(b[v][c], unit), 1e-6 * unit) << "vertex " << v << " channel " << c;
 }
 
 TEST(BakeReader, AGltfSceneIsNotABake) {
