@@ -178,6 +178,9 @@ void run(const RenderArgs& args) {
   else
     fmt::print("rendered {}x{} in {:.1f} ms (context, upload, shader compile and one frame)\n", size.x, size.y,
                firstMs);
+  if (backgroundPixels(image) == static_cast<long long>(size.x) * size.y)
+    fmt::print(stderr, "radmesh: warning: the picture shows nothing of the model: is the camera outside it looking "
+                       "away, or too far off (--camera, --look)?\n");
   std::fflush(stdout);
   writePng(image, args.outPath);
   fmt::print("wrote {}\n", args.outPath);

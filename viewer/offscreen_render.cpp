@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include <cmath>
+
 #include "viewer/exposure.h"
 #include "viewer/osmesa_context.h"
 #include "viewer/renderer.h"
@@ -16,6 +18,17 @@ OffscreenRenderer::OffscreenRenderer(const DisplayMesh& mesh, glm::ivec2 size)
 OffscreenRenderer::~OffscreenRenderer() {
   context_->makeCurrent();  // the renderer's GL objects belong to this context
   renderer_.reset();
+}
+
+long long backgroundPixels(const Image& image) {
+  long long count = 0;
+  for (size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+    bool background = true;
+    for (int c = 0; c < 3; ++c)
+      background = background && std::abs(image.rgba[i + c] - std::lround(255.0 * kBackgroundRgb[c])) <= 1;
+    count += background;
+  }
+  return count;
 }
 
 Image OffscreenRenderer::render(const std::vector<Rgb>& vertexB, const RenderView& view,

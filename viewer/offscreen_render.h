@@ -39,6 +39,9 @@ class OffscreenRenderer {
   std::unique_ptr<Renderer> renderer_;
 };
 
+// Pixels of the clear colour (within a level of it, as OSMesa rounds): where no surface was drawn.
+long long backgroundPixels(const Image& image);
+
 // Renders one frame and writes it as PNG; throws std::runtime_error or std::invalid_argument
 // with a message naming what is wrong.
 void renderToPng(const DisplayMesh& mesh, const std::vector<Rgb>& vertexB, const RenderView& view,

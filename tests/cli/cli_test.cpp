@@ -732,6 +732,12 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
   for (size_t i = 0; i < picture.rgba.size(); i += 4)
     drawn += !std::equal(picture.rgba.begin() + i, picture.rgba.begin() + i + 3, picture.rgba.begin());  // not as the corner
   EXPECT_GT(drawn, 4) << far;
+  EXPECT_EQ(run.output.find("shows nothing of the model"), std::string::npos) << run.output;
+  // Looking away from the box: a picture of the background alone, which used to come without a word.
+  const CommandRun away = radmesh("render cornell --cell 0.2 --iterations 1 --camera 0.278,0.27,-0.8 --look "
+                                  "0.278,0.27,-5 --size 80x60 --out " + far);
+  ASSERT_EQ(away.exitCode, 0) << away.output;
+  EXPECT_NE(away.output.find("warning: the picture shows nothing of the model"), std::string::npos) << away.output;
 #endif
 }
 

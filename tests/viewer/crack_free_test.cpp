@@ -19,18 +19,6 @@
 namespace radmesh {
 namespace {
 
-// Pixels of the clear colour (within a level of it, as OSMesa rounds).
-int backgroundPixels(const Image& image) {
-  int count = 0;
-  for (size_t i = 0; i < image.rgba.size(); i += 4) {
-    bool background = true;
-    for (int c = 0; c < 3; ++c)
-      background = background && std::abs(image.rgba[i + c] - std::lround(255.0 * kBackgroundRgb[c])) <= 1;
-    count += background;
-  }
-  return count;
-}
-
 TEST(CrackFree, NoBackgroundShowsInsideTheClosedOfficeCutIntoElements) {
   const Scene scene = loadScene("office");  // closed: door and windows are recesses with leaves and glass
   const Elements elements = subdivideUniform(meshScene(scene, kDefaultCellM), 0.05);
