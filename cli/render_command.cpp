@@ -87,7 +87,12 @@ RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
   try {
     validateView(view);
   } catch (const std::invalid_argument& e) {
-    throw OptionError(fmt::format("--camera/--look/--fov: {}", e.what()));
+    // Without --look the camera looks at the scene's centre: say where that is.
+    const std::string centreText = args.camera && !args.look
+                                       ? fmt::format(" (without --look, the scene's centre {:.4g},{:.4g},{:.4g})",
+                                                     view.look.x, view.look.y, view.look.z)
+                                       : "";
+    throw OptionError(fmt::format("--camera/--look/--fov: {}{}", e.what(), centreText));
   }
   return view;
 }

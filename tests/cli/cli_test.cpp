@@ -708,6 +708,7 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--fov 180", "--fov"},
       {"--camera 1,2", "--camera"},
       {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2", "--camera/--look/--fov"},
+      {"--camera 0.27799999713897705,0.274399995803833,0.27959999442100525", "(without --look, the scene's centre 0.278,0.2744,0.2796)"},
       {"--look nan,0,0", "--look"},
       {"--exposure nan", "--exposure nan is out of range"},
       {"--exposure 1e308", "--exposure 1e+308 is out of range"},
