@@ -153,7 +153,7 @@ std::optional<Solved> readBakeToRender(const RenderArgs& args) {
 void run(const RenderArgs& args) {
   const glm::ivec2 size = pictureSize(args.size);
   if (!(args.fovDeg >= kMinFovDeg && args.fovDeg < 180.0))
-    throw OptionError(fmt::format("--fov must lie between {} and 180 degrees (narrower, the picture's single-precision "
+    throw OptionError(fmt::format("--fov must be at least {} and below 180 degrees (narrower, the picture's single-precision "
                                   "projection has no pixels left), got {}", kMinFovDeg, args.fovDeg));
   checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
   checkOutputsDistinct(args.flags.scene, {{"--out", args.outPath}});  // a link named .png may lead to the scene

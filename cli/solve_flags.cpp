@@ -155,7 +155,8 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
          "--element-rows", [&f](const std::string& text) { f.options.elementRows = parseElementRows(text); },
          "With --subdivide: share (native default: patches on the item buffer, each one's form factor shared "
          "among its elements by their analytic form factors and visible pixels) or rasterise (every element "
-         "on the item buffer: the mesh back end's way)");
+         "on the item buffer: the mesh back end's way), or auto (the back end's own: share on the host, "
+         "rasterise on the mesh)");
   cmd->add_option("--split-contrast", f.options.splitContrast,
                   "With --subdivide adaptive: split neighbouring elements whose reflected radiosities differ by "
                   "more than this fraction of the brightest element's")

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS), a .gltf/.glb/.mgf file, or a bake to walk")
       ->capture_default_str();
   app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
-                 "(MGF and the built-in rooms z, glTF y)");
+                 "(glTF y, the built-in rooms z; MGF, which does not say, auto)");
   app.add_option("--units", units, radmesh::cli::kUnitsHelp);
   CLI::Option* backendGiven =
       app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here; native with --cells auto) or "
@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
                backend = preset == radmesh::Preset::Paper ? "mesh" : "native";
              },
              "bake (hemicube 256 on the host), paper (single plane 128 on the emulated MP-1, to C = 0.95) or "
-             "elements (the bake, but 1 m patches shoot and 0.25 m elements receive), as radmesh solve's; "
+             "elements (the bake, but patches 2.625 x the cell shoot and elements a quarter of theirs receive), as radmesh solve's; "
              "flags given beside it win")
           ->trigger_on_parse();
   CLI::Option* cell =

@@ -37,7 +37,8 @@ void validateMachine(const PeMachine& m) {
 void checkMinElement(double minElementM) {
   if (!(std::isfinite(minElementM) && minElementM >= 0.0))
     throw OptionError("--min-element " + number(minElementM) +
-                      " is out of range: give the longest element edge in metres, e.g. 0.1 (0: every patch cut into four)");
+                      " is out of range: give the longest element edge in metres, e.g. 0.1 (0: every patch cut into four, or with "
+                      "--subdivide adaptive, a quarter of the cell)");
 }
 
 void checkResolution(int resolution, const std::string& option) {

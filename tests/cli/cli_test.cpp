@@ -713,7 +713,7 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--exposure nan", "--exposure nan is out of range"},
       {"--exposure 1e308", "--exposure 1e+308 is out of range"},
       {"--effects some", "--effects"},
-      {"--fov 1e-308", "--fov must lie between 0.01 and 180 degrees"},
+      {"--fov 1e-308", "--fov must be at least 0.01 and below 180 degrees"},
       {"--camera 1e308,0,0", "--camera/--look: too far apart to aim the camera"},
   };
   for (const auto& [options, named] : cases) {
