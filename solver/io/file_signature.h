@@ -8,7 +8,13 @@ namespace radmesh {
 // A radmesh checkpoint (solver/radiosity/checkpoint.h) starts with these eight bytes.
 inline constexpr std::string_view kCheckpointSignature{"RADMESHC", 8};
 
+// A glTF binary (.glb) starts with these four bytes.
+inline constexpr std::string_view kGlbSignature{"glTF", 4};
+
 // Does the file at `path` start with `signature`? False when it is shorter or cannot be read.
 bool fileStartsWith(const std::string& path, std::string_view signature);
+
+// Does its first 4 KB hold a NUL byte, which no text file has?
+bool looksBinary(const std::string& path);
 
 }  // namespace radmesh

@@ -47,6 +47,13 @@ void checkSceneFile(const std::string& path) {
     throw SceneError(path, "", "is a radmesh checkpoint, not a scene",
                      "give it to --resume beside the scene it was written for (radmesh solve SCENE --resume " + path +
                          ")");
+  // MGF and .gltf are text: read as text, a binary file is a stream of unknown entities.
+  const std::string extension = lowerCaseExtension(path);
+  if ((extension == ".mgf" || extension == ".gltf") && looksBinary(path))
+    throw SceneError(path, "",
+                     fileStartsWith(path, kGlbSignature) ? "is glTF binary (.glb), not " + extension.substr(1) + " text"
+                                                         : "is a binary file, not " + extension.substr(1) + " text",
+                     fileStartsWith(path, kGlbSignature) ? "name it .glb" : acceptedForms());
 }
 
 std::string lowerCaseExtension(const std::string& path) {

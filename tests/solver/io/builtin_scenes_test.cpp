@@ -14,6 +14,7 @@
 #include <future>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "solver/bake/bake_reader.h"
 #include "solver/io/builtin_building.h"
@@ -297,6 +298,23 @@ TEST(SceneLoader, NamesACheckpointGivenAsAScene) {
       }
     }
   }
+}
+
+// A glTF binary named .mgf was read as MGF text: ninety warnings of unknown entities in raw bytes,
+// then "contains no polygons".
+TEST(SceneLoader, NamesABinaryFileGivenAsText) {
+  const test::TempDir dir;
+  const std::string glb = (dir / "bake.mgf").string(), noise = (dir / "noise.gltf").string();
+  std::ofstream(glb, std::ios::binary) << std::string("glTF\x02\0\0\0", 8) << "the rest of a binary glTF";
+  std::ofstream(noise, std::ios::binary) << std::string("\x01\0\x02\x03", 4);
+  for (const auto& [path, says] : {std::pair{glb, "is glTF binary (.glb), not mgf text (fix: name it .glb)"},
+                                   std::pair{noise, "is a binary file, not gltf text"}})
+    try {
+      loadScene(path);
+      ADD_FAILURE() << "accepted " << path;
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + ": " + says), std::string::npos) << e.what();
+    }
 }
 
 TEST(SceneLoader, LoadsSharedMgfByExtension) {
