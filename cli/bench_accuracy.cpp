@@ -236,6 +236,12 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   checkResolution(args.referenceResolution, "--reference-resolution");
   for (int n : args.resolutions) checkResolution(n, "--resolutions");
+  // A reference coarser than what it judges scores its own error as theirs (an analytic one has none).
+  if (const int finestN = *std::ranges::max_element(args.resolutions);
+      args.referenceResolution < finestN && !isConvexEnclosure(scene))
+    throw OptionError(fmt::format("bench accuracy --reference-resolution {} is coarser than --resolutions' {}: give "
+                                  "a reference at least as fine, e.g. {}",
+                                  args.referenceResolution, finestN, 2 * finestN));
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
     throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
   if (!(args.referenceUntil > 0.0 && args.referenceUntil <= 1.0))

@@ -572,6 +572,12 @@ TEST(Cli, BenchAccuracyRefusesAnImpossibleReference) {
         << run.output;
     EXPECT_EQ(run.output.find("reference analytic"), std::string::npos) << "refused before any solve";
   }
+  // A hemicube reference coarser than the sweep it judges (cornell is not convex: its reference projects).
+  const CommandRun coarse = radmesh("bench accuracy cornell --cells 0.2 --resolutions 32 --projections hemicube "
+                                    "--reference-resolution 16");
+  EXPECT_EQ(coarse.exitCode, 2) << coarse.output;
+  EXPECT_NE(coarse.output.find("--reference-resolution 16 is coarser than --resolutions' 32"), std::string::npos)
+      << coarse.output;
   const CommandRun run = radmesh("bench accuracy furnace --cells 1,0.5 --reference-resolution 8");
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--reference-resolution 8 is out of range"), std::string::npos) << run.output;
