@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <set>
 
 #include "cli/plot.h"
@@ -159,16 +160,37 @@ void drawScalingFigures(const std::string& modelCsv, const std::vector<std::stri
     double maxWork = 0, work = 0, maxWall = 0, maxBytes = 0, allBytes = 0;
   };
   std::map<int, Run> runs;
+  std::map<int, std::vector<int>> ranksOfRun;  // each run's rank rows: 0 to N - 1, once each
+  // Every run of one setting (projection, resolution, shooters), the model's.
+  auto setting = [](const CsvTable& t, size_t row) {
+    return t.text(row, "projection") + "," + t.text(row, "resolution") + "," + t.text(row, "shooters");
+  };
+  const std::string modelled = model.rows.empty() ? "" : setting(model, 0);
   for (const std::string& path : ranksCsvs) {
     const CsvTable t = readCsv(path);
     for (size_t row = 0; row < t.rows.size(); ++row) {
-      Run& run = runs[static_cast<int>(t.number(row, "ranks"))];
+      if (setting(t, row) != modelled)
+        throw std::runtime_error(fmt::format("{}, line {}: a run of {}, where the model ({}) is of {}: give runs of "
+                                             "one setting",
+                                             path, t.lineOfRow[row], setting(t, row), modelCsv, modelled));
+      const int ranks = static_cast<int>(t.number(row, "ranks"));
+      ranksOfRun[ranks].push_back(static_cast<int>(t.number(row, "rank")));
+      Run& run = runs[ranks];
       run.maxWork = std::max(run.maxWork, t.number(row, "work"));
       run.work += t.number(row, "work");
       run.maxWall = std::max(run.maxWall, t.number(row, "wall_seconds"));
       run.maxBytes = std::max(run.maxBytes, t.number(row, "bytes_per_round"));
       run.allBytes += t.number(row, "bytes_per_round");
     }
+  }
+  for (auto& [ranks, seen] : ranksOfRun) {
+    std::sort(seen.begin(), seen.end());
+    std::vector<int> whole(static_cast<size_t>(ranks));
+    std::iota(whole.begin(), whole.end(), 0);
+    if (seen != whole)
+      throw std::runtime_error(fmt::format("the {}-rank run has rows for {} rank(s) where it needs one for each of "
+                                           "0 to {}: give each run's whole -ranks.csv, once",
+                                           ranks, seen.size(), ranks - 1));
   }
   if (!runs.count(1)) throw std::runtime_error("the measured runs hold no 1-rank run: the speed-ups are against it");
   Points measuredWork, measuredWall, measuredMax, measuredAll;

@@ -968,6 +968,24 @@ TEST(Cli, PlotFailsWithoutGnuplotAndMakesTheFolderOfItsPngs) {
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_TRUE(std::filesystem::exists(stem + "-speedup.png")) << run.output;
   EXPECT_EQ(run.output.find("PNG"), std::string::npos) << "PNG bytes on standard output";
+
+  // A run missing a rank's row, or of another setting than the model's, was drawn as measured.
+  const std::string two = readBytes(data + "/np2-ranks.csv");
+  const std::string half = tempPath("half-ranks.csv"), other = tempPath("other-ranks.csv");
+  std::ofstream(half) << two.substr(0, two.find('\n', two.find('\n') + 1) + 1);  // the header and rank 0
+  std::string relabelled = two;
+  for (size_t at = relabelled.find("hemicube,32,"); at != std::string::npos; at = relabelled.find("hemicube,32,", at))
+    relabelled.replace(at, 12, "plane,64,");
+  std::ofstream(other) << relabelled;
+  const std::string plot = "plot scaling " + data + "/np1-model.csv " + data + "/np1-ranks.csv ";
+  run = radmesh(plot + half + " --png " + stem);
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find("the 2-rank run has rows for 1 rank(s) where it needs one for each of 0 to 1"),
+            std::string::npos)
+      << run.output;
+  run = radmesh(plot + other + " --png " + stem);
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find(other + ", line 2: a run of plane,64,1, where the model"), std::string::npos) << run.output;
 }
 
 }  // namespace
