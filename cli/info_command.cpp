@@ -262,7 +262,8 @@ void addInfoCommand(CLI::App& app) {
       nlohmann::json j = toJson(summary, scene);
       j["cell_m"] = cell.cellM;
       j["cell_why"] = cell.why;
-      j["elements"] = elements;
+      // A count, as "patches" is; a double only past what a count holds exactly (a --min-element of nothing).
+      j["elements"] = elements < 9e15 ? nlohmann::json(static_cast<long long>(elements)) : nlohmann::json(elements);
       j["min_element"] = args->minElementM;
       j["element_limit"] = elementLimit();
       j["effects"] = effectsJson(plan);
