@@ -59,10 +59,15 @@ void printCellsSummary(const CellSolver& solver, double seconds) {
   for (const CellFigures& cell : solver.cellFigures()) elements += cell.elements;
   const std::string elementsText =
       solver.options().subdivide == Subdivide::Off ? "" : fmt::format(" ({} elements)", elements);
-  fmt::print("solved: {} patches{} in {} ({}), {} iterations in {} rounds, unshot {:.2f}%, {:.3f} s\n",
+  // A round is not cut short (a resumed solve must meet the straight one at its rounds' ends).
+  const int cap = solver.options().maxIterations;
+  const std::string past = solver.iterations() > cap
+                               ? fmt::format(" (past --max-iterations {}, which is checked between rounds)", cap)
+                               : "";
+  fmt::print("solved: {} patches{} in {} ({}), {} iterations in {} rounds{}, unshot {:.2f}%, {:.3f} s\n",
              solver.patches().size(), elementsText, counted(solver.cellCount(), "cell"),
-             counted(solver.portalCount(), "portal"), solver.iterations(),
-             solver.rounds(), 100.0 * l.unshotFraction(), seconds);
+             counted(solver.portalCount(), "portal"), solver.iterations(), solver.rounds(), past,
+             100.0 * l.unshotFraction(), seconds);
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} (with what waits on portals) + not captured "
              "{:.6g} + escaped {:.6g}  (imbalance {:.1e}); {:.6g} W crossed portals\n",
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance(), portalTransfers);

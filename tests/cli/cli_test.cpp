@@ -213,6 +213,15 @@ TEST(Cli, BenchSolveTimesTheCellsSolve) {
   EXPECT_NE(bad.output.find("--until-unshot"), std::string::npos) << bad.output;
 }
 
+// A round is not cut short, so a cells solve may run past --max-iterations: the summary says so
+// (166 149 iterations for 2000 came without a word).
+TEST(Cli, ACellsSolvePastItsIterationCapSaysWhy) {
+  const CommandRun run = radmesh("solve two-rooms --cells auto --cell 0.75 --resolution 16 --max-iterations 10 --quiet");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("rounds (past --max-iterations 10, which is checked between rounds)"), std::string::npos)
+      << run.output;
+}
+
 TEST(Cli, CellsOptionsAreRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve two-rooms --cells some");
   EXPECT_NE(run.exitCode, 0);
