@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -262,6 +264,9 @@ std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std:
   std::vector<std::string> drawn;
   const std::string writer = "bench accuracy --out-dir DIR --name NAME";
   const CsvTable points = readCsv(stem + ".csv", writer), traces = readCsv(stem + "-traces.csv", writer);
+  // A header alone drew one plot and skipped the rest (the traces may be empty: a sweep of elements alone).
+  if (points.rows.empty())
+    throw std::runtime_error(points.path + ": a header and no rows: nothing to draw (" + writer + " writes rows)");
   drawUnlessEmpty(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName,
                                   "relative RMS error of B - E", points, "error_at_99"),
                   stem + "-error-vs-time.png", drawn);

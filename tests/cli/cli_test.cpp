@@ -914,6 +914,11 @@ TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
   run = radmesh("plot accuracy " + bad);
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.output.find("bad.csv, line 2: 2 fields under a header of 3"), std::string::npos) << run.output;
+  std::ofstream(bad + ".csv") << "projection,ratio,seconds_to_99\n";
+  std::ofstream(bad + "-traces.csv") << "projection,ratio,resolution,cell_m,iteration\n";
+  run = radmesh("plot accuracy " + bad);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("bad.csv: a header and no rows: nothing to draw"), std::string::npos) << run.output;
   // A folder where the CSV belongs, or a file where the PNGs' folder belongs, is named as such.
   const std::string folder = tempPath("folder.csv");
   std::filesystem::create_directories(folder);
