@@ -30,7 +30,7 @@ std::vector<std::string> fields(const std::string& line) {
   std::stringstream in(line);
   std::string field;
   while (std::getline(in, field, ',')) out.push_back(trimmed(field));
-  if (!line.empty() && trimmed(line).back() == ',') out.emplace_back();  // a trailing empty field
+  if (const std::string whole = trimmed(line); !whole.empty() && whole.back() == ',') out.emplace_back();  // a trailing empty field
   return out;
 }
 
