@@ -38,21 +38,25 @@ int main(int argc, char** argv) {
   radmesh::cli::addRenderCommand(app);
   radmesh::cli::addBenchCommand(app);
   radmesh::cli::addPlotCommand(app);
+  // Under mpirun every process meets the same usage error before the run splits: rank 0 says it.
+  const bool says = radmesh::cli::mpiLaunch().rank == 0;
+  auto fail = [says](const char* what, int code) {
+    if (says) fmt::print(stderr, "radmesh: error: {}\n", what);
+    return code;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // CLI11 prints the message (or the help) and gives each kind of usage error its own code;
     // every usage error exits 2, as radmesh's own option and scene errors do.
-    return app.exit(e) == 0 ? 0 : 2;
+    const int code = says ? app.exit(e) : e.get_exit_code();
+    return code == 0 ? 0 : 2;
   } catch (const radmesh::SceneError& e) {
-    fmt::print(stderr, "radmesh: error: {}\n", e.what());
-    return 2;
+    return fail(e.what(), 2);
   } catch (const radmesh::OptionError& e) {
-    fmt::print(stderr, "radmesh: error: {}\n", e.what());
-    return 2;
+    return fail(e.what(), 2);
   } catch (const std::exception& e) {
-    fmt::print(stderr, "radmesh: error: {}\n", e.what());
-    return 1;
+    return fail(e.what(), 1);
   }
   return 0;
 }

@@ -1,14 +1,28 @@
 #include "distributed/distributed_run.h"
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <thread>
 
 #include "distributed/mpi_cell_ranks.h"
 #include "parallel/mpi/mpi_session.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh::distributed {
+
+namespace {
+
+// A scene or option error is every process's alike: rank 0 says it and its abort ends the others,
+// which wait a moment first (sixteen copies of one message, mixed with the launcher's, said it
+// before). One that only another rank meets is still said, a moment late.
+[[noreturn]] void abortOnUsageError(int rank, const std::string& what) {
+  if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
+  mpi::abortRun("error: " + what, 2);
+}
+
+}  // namespace
 
 void runDistributed(const std::function<void(CellRanks&)>& body) {
   int argc = 0;
@@ -21,9 +35,9 @@ void runDistributed(const std::function<void(CellRanks&)>& body) {
     body(ranks);
     std::fflush(stdout);
   } catch (const SceneError& e) {
-    mpi::abortRun(std::string("error: ") + e.what(), 2);
+    abortOnUsageError(session.rank(), e.what());
   } catch (const OptionError& e) {
-    mpi::abortRun(std::string("error: ") + e.what(), 2);
+    abortOnUsageError(session.rank(), e.what());
   } catch (const std::exception& e) {
     // abortRun names the rank: an MPI error's own "rank N: " would say it twice.
     std::string what = e.what();

@@ -52,6 +52,20 @@ TEST(DistributedCli, AnMpiLaunchWithoutDistributedIsRefused) {
   EXPECT_EQ(one.exitCode, 0) << one.output;  // mpirun -np 1 is one process
 }
 
+// A usage error every process of a launch meets alike is said by rank 0 alone (sixteen ranks said
+// it sixteen times); each exits 2.
+TEST(DistributedCli, AUsageErrorIsSaidOnceAcrossALaunch) {
+  const std::string radmeshPath = (test::binaryDir() / "cli" / "radmesh").string();
+  for (const std::string bad : {"--portal-bins x", "--exchange-shots 0"})
+    for (const char* rank : {"0", "1"}) {
+      const CommandRun run = runCommand(std::string("OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=") + rank + " " +
+                                        radmeshPath + " solve two-rooms --cells auto --distributed " + bad);
+      EXPECT_EQ(run.exitCode, 2) << bad << ", rank " << rank << ": " << run.output;
+      EXPECT_EQ(run.output.find("--") != std::string::npos, rank == std::string("0")) << bad << ", rank " << rank
+                                                                                      << ": " << run.output;
+    }
+}
+
 TEST(DistributedCli, BenchCsvNeedsDistributed) {
   const CommandRun run = radmesh(std::string(kBench) + " --csv " + tempPath("stem"));
   EXPECT_EQ(run.exitCode, 2) << run.output;
