@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "cli/distributed_command.h"
 #include "cli/option_checks.h"
+#include "cli/usage_failure.h"
 #include "solver/scene/scene_error.h"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   }
   CLI::App app{"radmesh: view-independent diffuse global illumination (Varshney & Prins)"};
   app.require_subcommand(1);
+  app.failure_message(radmesh::cli::usageFailure("radmesh"));
   radmesh::cli::addInfoCommand(app);
   radmesh::cli::addSolveCommand(app);
   radmesh::cli::addRenderCommand(app);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/option_checks.h"
+#include "cli/usage_failure.h"
 #include "cli/scene_input.h"
 #include "cli/solve_flags.h"
 #include "solver/io/output_path.h"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
               subdivide = "off";
   radmesh::SolveOptions& o = args.setup.options;
   CLI::App app{"radmesh-view: walk through a scene while its radiosity converges"};
+  app.failure_message(radmesh::cli::usageFailure("radmesh-view"));
   app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS), a .gltf/.glb/.mgf file, or a bake to walk")
       ->capture_default_str();
   app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "

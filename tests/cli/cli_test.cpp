@@ -331,6 +331,31 @@ TEST(Cli, EveryUsageErrorExits2) {
   }
 }
 
+// CLI11's own refusals ("Could not convert: --resolution = x", "A subcommand is required") in words
+// that name what was wrong and what to give.
+TEST(Cli, UsageErrorsNameTheWordAndWhatToGive) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"", "radmesh: error: radmesh needs a command: give one of info, solve, render, bench, plot"},
+      {"slove furnace", "radmesh: error: 'slove' is not a command of radmesh: give one of info, solve"},
+      {"bench", "radmesh: error: radmesh bench needs a command: give one of solve, accuracy, cells"},
+      {"solve furnace --resolution x", "radmesh: error: --resolution: x is not a whole number: give a whole number"},
+      {"solve furnace --until-unshot x", "radmesh: error: --until-unshot: x is not a number: give a number"},
+      {"bench solve furnace --resolutions 1.5,2",
+       "--resolutions: 1.5,2 is not a list of whole numbers: give whole numbers separated by commas"},
+      {"solve furnace --resolution", "radmesh: error: --resolution is given no value: give it a whole number"},
+      {"solve furnace --thread 2", "--thread is not an option of radmesh solve (did you mean --threads?)"},
+      {"solve furnace --projection hemicube --projections plane",
+       "--projections is not an option of radmesh solve (did you mean --projection?)"},
+      {"solve furnace --zzzzzzzz", "--zzzzzzzz is not an option of radmesh solve: radmesh solve --help lists them"},
+      {"solve furnace cornell", "'cornell' is one argument too many for radmesh solve"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
+  }
+}
+
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve furnace --resolution 8");
   EXPECT_EQ(run.exitCode, 2);

@@ -23,6 +23,20 @@ std::string windowed() {
   return display.empty() ? "" : "timeout 120 " + display + viewerPath() + " ";
 }
 
+// The viewer's usage errors are worded as radmesh's (Cli.UsageErrorsNameTheWordAndWhatToGive).
+TEST(ViewerCli, UsageErrorsNameTheWordAndWhatToGive) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  CommandRun run = runCommand(viewerPath() + " --sizes 3");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("radmesh-view: error: --sizes is not an option of radmesh-view (did you mean --size?)"),
+            std::string::npos)
+      << run.output;
+  run = runCommand(viewerPath() + " --resolution x");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("radmesh-view: error: --resolution: x is not a whole number"), std::string::npos)
+      << run.output;
+}
+
 // A file the viewer would write over is refused before the window opens: the scene itself (a
 // built-in's asset too, here through a link), or the checkpoint --resume reads; radmesh solve
 // refuses a built-in's asset and the checkpoint it resumes as outputs the same way.
