@@ -58,9 +58,21 @@ glm::dvec3 parsePoint(const std::string& text, const char* option) {
   return p;
 }
 
-glm::ivec2 pictureSize(const std::string& text) {
+// Drawing takes about this much a pixel at its peak (OSMesa's colour and depth, the captured
+// picture, the PNG's rows; measured with /usr/bin/time at 4096x4096: 20.3 bytes).
+constexpr double kRenderBytesPerPixel = 21.0;
+
+glm::ivec2 pictureSize(const std::string& text, std::size_t memoryBytes) {
   const auto size = parseSize(text, 1, 16384);
   if (!size) throw OptionError(fmt::format("--size '{}' is not WxH with each side in 1..16384 (e.g. 1024x768)", text));
+  // A picture the machine cannot hold would be killed or thrown out part way, after the solve.
+  const double needed = kRenderBytesPerPixel * (*size)[0] * (*size)[1];
+  if (memoryBytes > 0 && needed > 0.5 * static_cast<double>(memoryBytes)) {
+    const int side = static_cast<int>(std::sqrt(0.5 * static_cast<double>(memoryBytes) / kRenderBytesPerPixel));
+    throw OptionError(fmt::format("--size {}: drawing it needs about {:.1f} GB, more than half of the {:.1f} GB of "
+                                  "memory this process may use: give a smaller size (at most about {}x{})",
+                                  text, needed / 1e9, static_cast<double>(memoryBytes) / 1e9, side, side));
+  }
   return {(*size)[0], (*size)[1]};
 }
 
@@ -151,7 +163,7 @@ std::optional<Solved> readBakeToRender(const RenderArgs& args) {
 }
 
 void run(const RenderArgs& args) {
-  const glm::ivec2 size = pictureSize(args.size);
+  const glm::ivec2 size = pictureSize(args.size, usableMemoryBytes());
   if (!(args.fovDeg >= kMinFovDeg && args.fovDeg < 180.0))
     throw OptionError(fmt::format("--fov must be at least {} and below 180 degrees (narrower, the picture's single-precision "
                                   "projection has no pixels left), got {}", kMinFovDeg, args.fovDeg));

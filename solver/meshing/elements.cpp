@@ -105,8 +105,8 @@ void checkElementCount(const std::vector<Patch>& patches, double minElementM, st
                       minElementM * std::sqrt(count / static_cast<double>(maxElements)) * 1.1)
         : "give a larger --cell or --subdivide off";
     const std::string why = maxElements < kMaxElements
-        ? fmt::format(" (half of this machine's {:.1f} GiB of memory, at about {} bytes an element at a solve's peak)",
-                      static_cast<double>(physicalMemoryBytes()) / (1u << 30), kPeakBytesPerElement)
+        ? fmt::format(" (half of the {:.1f} GiB of memory this process may use, at about {} bytes an element at a solve's peak)",
+                      static_cast<double>(usableMemoryBytes()) / (1u << 30), kPeakBytesPerElement)
         : "";
     throw OptionError(fmt::format("--min-element {} m {} the {} patches into {:.3g} elements, more than the "
                                   "limit of {}{}; {}", minElementM, what, patches.size(), count, maxElements, why, fix));

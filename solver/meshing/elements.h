@@ -42,10 +42,10 @@ inline constexpr std::size_t kMaxElements = 20'000'000;
 // What an element takes at a solve's peak, writing its bake (measured: 2.37 M uniform elements of
 // the Cornell box peaked at 2.3 GB with --out).
 inline constexpr std::size_t kPeakBytesPerElement = 1024;
-// kMaxElements, or fewer where they would take more than half of the memory (this machine's
-// physical memory; 0: unknown) at their peak: a solve is refused up front rather than killed by the
+// kMaxElements, or fewer where they would take more than half of the memory (usableMemoryBytes;
+// 0: unknown) at their peak: a solve is refused up front rather than killed by the
 // system midway.
-std::size_t elementLimit(std::size_t memoryBytes = physicalMemoryBytes());
+std::size_t elementLimit(std::size_t memoryBytes = usableMemoryBytes());
 
 // Throws OptionError for a minElementM that is not finite and at least 0, or for which
 // countElements exceeds maxElements; `what` says what the elements come from in the message ("would

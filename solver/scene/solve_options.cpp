@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
-#include <unistd.h>  // sysconf: the machine's memory
+#include <sys/resource.h>  // getrlimit: ulimit -v
+#include <unistd.h>        // sysconf: the machine's memory
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <string_view>
 
@@ -189,15 +191,23 @@ void applyPreset(Preset preset, SolveOptions& o) {
   o.subdivide = elements ? Subdivide::Uniform : Subdivide::Off;
 }
 
-std::size_t physicalMemoryBytes() {
+std::size_t usableMemoryBytes() {
   const long pages = sysconf(_SC_PHYS_PAGES), pageBytes = sysconf(_SC_PAGE_SIZE);
   if (pages <= 0 || pageBytes <= 0) return 0;
-  return static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageBytes);
+  std::size_t usable = static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageBytes);
+  // A cgroup's cap (v2, then v1): "max", or a figure past the machine's, when there is none.
+  for (const char* path : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
+    std::size_t cap = 0;
+    if (std::ifstream in(path); in >> cap && cap > 0) usable = std::min(usable, cap);
+  }
+  if (rlimit limit{}; getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    usable = std::min(usable, static_cast<std::size_t>(limit.rlim_cur));
+  return usable;
 }
 
 std::size_t defaultFormFactorCacheBytes() {
   constexpr std::size_t kBudget = std::size_t{1} << 30;
-  const std::size_t memory = physicalMemoryBytes();
+  const std::size_t memory = usableMemoryBytes();
   if (memory == 0) return kBudget;  // unknown: the machine is taken to have 4 GiB
   return std::min(kBudget, memory / 4);
 }

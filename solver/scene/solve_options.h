@@ -95,8 +95,9 @@ inline constexpr double kElementsCellScale = 2.625;
 // measures, and a cell off them by a hair would cut a sliver along every edge on a grid line.
 double elementsPresetCell(double sceneCellM);
 void applyPreset(Preset preset, SolveOptions& options);
-// This machine's physical memory in bytes, or 0 where it cannot be told.
-std::size_t physicalMemoryBytes();
+// The memory this process may use, in bytes: the machine's, or less where a container or batch
+// scheduler's cgroup or `ulimit -v` caps it; 0 where it cannot be told.
+std::size_t usableMemoryBytes();
 // The form-factor cache a solve on the host gets unless told: 1 GiB, or a quarter of this
 // machine's memory where that is less (docs/accuracy.md, Defaults).
 std::size_t defaultFormFactorCacheBytes();

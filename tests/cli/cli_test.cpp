@@ -763,6 +763,18 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
     EXPECT_EQ(run.output.find("solved"), std::string::npos) << options << ": refused after the solve";
   }
   EXPECT_FALSE(std::filesystem::exists(out));
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)  // their shadow memory needs no ulimit -v
+  // A picture beyond the memory the process may use (here capped by ulimit -v at 3 GB; 16384x16384
+  // needs 5.6 GB) is refused before the solve, naming what fits.
+  const CommandRun big = runCommand("ulimit -v 3000000 && " + (test::binaryDir() / "cli" / "radmesh").string() +
+                                    " render cornell --cell 0.2 --iterations 1 --size 16384x16384 --out " + out);
+  EXPECT_EQ(big.exitCode, 2) << big.output;
+  EXPECT_NE(big.output.find("--size 16384x16384: drawing it needs about 5.6 GB, more than half of the 3.1 GB of memory "
+                            "this process may use: give a smaller size (at most about 85"),
+            std::string::npos)
+      << big.output;
+  EXPECT_EQ(big.output.find("solved"), std::string::npos) << big.output;
+#endif
 #ifdef RADMESH_HAS_VIEWER
   // A camera 12 m from the 0.55 m box, beyond the walk's far plane (10 m): the box is still drawn.
   const std::string far = tempPath("far.png");
