@@ -12,12 +12,16 @@ namespace radmesh {
 namespace {
 
 // The analytic form factor of patch j times the fraction of its covered pixel centres showing
-// it; covering none, the whole of it if nothing in the item buffer is in front of its centroid,
-// else 0.
+// it. Covering none, the pixel its centroid falls in decides: nothing there, or j's own polygon,
+// or a surface behind j, and j is seen; a surface strictly in front of it, and j is hidden. Where
+// the pixel shows another polygon in j's very plane (the room next door's wall in line with this
+// room's), the wall that hides j may stand beside it, unseen: the segment from the shooter to j's
+// centroid decides, tested exactly against every patch.
 double visibleFormFactor(const ProjectedShot& shot, int j) {
   const Patch& shooter = shot.shooter;
-  const LocalPolygon local = toShooterFrame(shooter, shot.patches[j]);
-  const double unhidden = smallPolygonFormFactor(local.corners(), local.centroid, local.normal, shot.patches[j].areaM2);
+  const Patch& patch = shot.patches[j];
+  const LocalPolygon local = toShooterFrame(shooter, patch);
+  const double unhidden = smallPolygonFormFactor(local.corners(), local.centroid, local.normal, patch.areaM2);
   if (shot.coveredPixels[j] > 0)
     return unhidden * static_cast<double>(shot.shownPixels[j]) / static_cast<double>(shot.coveredPixels[j]);
   for (size_t f = 0; f < shot.surface.faces.size(); ++f) {
@@ -29,16 +33,13 @@ double visibleFormFactor(const ProjectedShot& shot, int j) {
     const int column = std::min(face.width - 1, static_cast<int>((ab.x - face.a0) / face.pixelWidth()));
     const int row = std::min(face.height - 1, static_cast<int>((ab.y - face.b0) / face.pixelHeight()));
     const int owner = shot.itemBuffers[f].item(column, row);
-    if (owner != ItemBuffer::kNone && owner != j) {
-      const LocalPolygon front = toShooterFrame(shooter, shot.patches[owner]);
-      const double ownerInverseDepth = inverseDepthAlong(front, face, ab);
-      const double inverseDepth = 1.0 / c.z;
-      // Strictly in front only: a coplanar neighbour does not hide the patch.
-      if (ownerInverseDepth - inverseDepth >
-          kDepthTieTolerance * std::max(std::abs(ownerInverseDepth), inverseDepth))
-        return 0.0;
-    }
-    return unhidden;
+    if (owner == ItemBuffer::kNone || owner == j) return unhidden;
+    const double ownerInverseDepth = inverseDepthAlong(toShooterFrame(shooter, shot.patches[owner]), face, ab);
+    const double inverseDepth = 1.0 / c.z;
+    if (ownerInverseDepth - inverseDepth > kDepthTieTolerance * std::max(std::abs(ownerInverseDepth), inverseDepth))
+      return 0.0;  // strictly in front
+    return shot.occluders.segmentBlocked(shooter.centroid, patch.centroid, patch.polygon, shooter.polygon) ? 0.0
+                                                                                                          : unhidden;
   }
   return 0.0;  // its centroid is outside the projection surface
 }

@@ -6,12 +6,14 @@
 // with the resolution alike along the whole strip: a fifth dark at 96², an eighth bright at 128². Such a
 // patch gets instead the analytic point-to-polygon form factor (Baum, Rushmeier & Winget 1989:
 // analytic form factors, visibility from the projection), times the fraction of the pixel centres
-// it covers that show it; one covering none is seen where the item buffer shows nothing in front
-// of its centroid. The row is then rescaled to the total the pixels caught, so no power is created
+// it covers that show it; one covering none is seen where no patch crosses the segment from the
+// shooter to its centroid (an exact test: the pixel its centroid falls in may show a surface
+// beside the one that hides it). The row is then rescaled to the total the pixels caught, so no power is created
 // or lost; the rescale is close to 1 since such patches carry little of it.
 #include <span>
 #include <vector>
 
+#include "solver/formfactors/occluders.h"
 #include "solver/projection/item_buffer.h"
 #include "solver/meshing/patch.h"
 #include "solver/projection/projection_surface.h"
@@ -36,6 +38,7 @@ struct ProjectedShot {  // what one environment projection left behind
   std::span<const double> projectedWidthPixels;   // per patch, the widest face's; 0: not projected
   std::span<const long long> coveredPixels;       // per patch: pixel centres its projection covers
   std::span<const long long> shownPixels;         // per patch: those of them showing it
+  const Occluders& occluders;                     // the scene's patches, for those covering no pixel centre
 };
 
 // formFactors: per patch, the pixel sums on entry, refined on return.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solver/formfactors/form_factor_row.h"
+#include "solver/formfactors/occluders.h"
 #include "solver/meshing/elements.h"
 
 namespace radmesh {
@@ -13,10 +14,6 @@ namespace radmesh {
 // Only shots carrying at least this fraction of the first shot's power are checked for shadow
 // edges: weaker shooters cast soft shadows the gradient criterion sees, and the check costs rays.
 inline constexpr double kShadowShotFraction = 0.05;
-
-struct AxisBox {
-  Vec3 lo{0.0}, hi{0.0};
-};
 
 // Each element's neighbours, ascending: the elements of the same scene polygon whose bounding
 // boxes touch its own (sharing an edge or a corner, or, between triangles, lying close), and the
@@ -48,34 +45,6 @@ bool splittable(const Patch& element, double minElementM);
 void markContrast(const Elements& elements, const std::vector<std::vector<int>>& neighbours,
                   const std::vector<double>& reflected, double contrast, double minElementM,
                   std::vector<char>& split);
-
-// Whether the segment from a to b crosses the plane of patch p strictly, at a point inside it.
-bool segmentCrosses(const Vec3& a, const Vec3& b, const Patch& p);
-
-// The patches as occluders of the shadow criterion's rays: a bounding volume hierarchy over their
-// boxes, built once per solve, so that a ray tests the few patches near it rather than every one.
-class Occluders {
- public:
-  explicit Occluders(const std::vector<Patch>& patches);
-  // Whether the segment from a to b passes through a patch other than those of the scene polygons
-  // `skipA` and `skipB` (the surfaces it starts and ends on). The same answer as testing every
-  // patch: a node is passed over only where the segment misses its box by more than rounding.
-  bool segmentBlocked(const Vec3& a, const Vec3& b, int skipA, int skipB) const;
-
-  using Box = AxisBox;
-
- private:
-  struct Node {
-    Box box;
-    int first = 0, count = 0;  // a leaf: patches order_[first, first + count)
-    int right = -1;            // an inner node: its children are the next node and `right`
-  };
-  int build(int first, int count);
-  const std::vector<Patch>* patches_;
-  std::vector<Box> boxes_;  // per patch
-  std::vector<int> order_;
-  std::vector<Node> nodes_;
-};
 
 // The shadow criterion for receiver r of a row of `shooter`: when the row shows the element
 // partly hidden (form factor below 95 % of the unoccluded point-to-polygon one), marks it if it

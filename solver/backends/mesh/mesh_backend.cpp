@@ -242,8 +242,10 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
   if (options_.subPixelReceivers) {
     const ItemBuffer buffer = scan_->gatherItemBuffer(shot, plane);
     for (int id : buffer.items) if (id != ItemBuffer::kNone) ++shownPixels[id];
-    const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1}, scan_->depthTieRank(),
-                                  projectedAreaPixels, projectedWidthPixels, coveredPixels, shownPixels};
+    if (!occluders_) occluders_.emplace(patches_);
+    const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1},
+                                  scan_->depthTieRank(), projectedAreaPixels, projectedWidthPixels, coveredPixels,
+                                  shownPixels, *occluders_};
     refineSubPixelReceivers(projected, hostPool_, formFactors);
   }
   return radmesh::assembleRow(shot.shooters[plane], surface_.capturedFraction, formFactors, seenFromFront);

@@ -5,6 +5,7 @@
 // factors equal up to the order of summation.
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "emulator/mesh_machine.h"
@@ -12,6 +13,7 @@
 #include "solver/backends/mesh/mesh_form_factors.h"
 #include "solver/backends/mesh/mesh_scan_conversion.h"
 #include "solver/backends/mesh/mesh_shot_stats.h"
+#include "solver/formfactors/occluders.h"
 #include "solver/projection/plane_mapping.h"
 #include "solver/projection/projection_surface.h"
 #include "parallel/thread_pool.h"
@@ -107,6 +109,7 @@ class MeshBackend final : public FormFactorBackend {
   PatchLayout shooterLayout_;
   std::unique_ptr<MeshScanConversion> scan_;
   ThreadPool hostPool_;  // the sub-pixel refinement (solver/formfactors/sub_pixel_receivers.h) runs on the host
+  std::optional<Occluders> occluders_;  // patches_, for it; made when a shot first needs them
   MeshShotStats lastShot_;
   emu::CostCounts iterationStart_;  // the machine's counts when lastShot_ began
   std::chrono::steady_clock::time_point iterationHostStart_;

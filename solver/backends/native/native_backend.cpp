@@ -138,15 +138,18 @@ FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int
   projection.projectFrom(patches_[shooter], skipOf(shooter));
   formFactors_ = projection.pixelFormFactors();
   seenFromFront_ = projection.seenFromFront();
-  if (refinesRow(shooter)) {
-    const ProjectedShot shot{receivers_, patches_[shooter], projection.surface(), projection.itemBuffers(),
-                             projection.depthTieRank(), projection.projectedAreaPixels(),
-                             projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels()};
-    refineSubPixelReceivers(shot, pool_, formFactors_);
-  }
+  if (refinesRow(shooter)) refineSubPixelReceivers(shotOf(projection, shooter, receivers_), pool_, formFactors_);
   FormFactorRow row = assembleRow(shooter, projection.surface().capturedFraction, formFactors_, seenFromFront_);
   if (!directional_.empty() && directional_[shooter]) addPixelBins(projection, row);
   return row;
+}
+
+ProjectedShot NativeBackend::shotOf(const EnvironmentProjection& projection, int shooter,
+                                    const std::vector<Patch>& receivers) {
+  if (!occluders_) occluders_.emplace(patches_);
+  return {receivers, patches_[shooter], projection.surface(), projection.itemBuffers(), projection.depthTieRank(),
+          projection.projectedAreaPixels(), projection.projectedWidthPixels(), projection.coveredPixels(),
+          projection.shownPixels(), *occluders_};
 }
 
 bool NativeBackend::refinesRow(int shooter) const {
@@ -159,9 +162,7 @@ void NativeBackend::shareShot(EnvironmentProjection& projection, int shooter) {
   projection.projectFrom(patches_[shooter], shooter);
   patchFormFactors_ = projection.pixelFormFactors();
   patchSeenFromFront_ = projection.seenFromFront();
-  const ProjectedShot shot{patches_, patches_[shooter], projection.surface(), projection.itemBuffers(),
-                           projection.depthTieRank(), projection.projectedAreaPixels(),
-                           projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels()};
+  const ProjectedShot shot = shotOf(projection, shooter, patches_);
   if (refinesRow(shooter)) refineSubPixelReceivers(shot, pool_, patchFormFactors_);
   const PatchShot patchShot{patchFormFactors_, patchSeenFromFront_, projection.coveredPixels(),
                             projection.shownPixels(), projection.facesReached()};

@@ -2,7 +2,9 @@
 // Form factors on the host CPU: the single plane or the hemicube with item buffers, or analytic
 // point-to-polygon form factors for convex enclosures. The oracle the mesh back end must match.
 #include <memory>
+#include <optional>
 
+#include "solver/formfactors/sub_pixel_receivers.h"
 #include "solver/projection/environment_projection.h"
 #include "solver/backends/form_factor_backend.h"
 #include "parallel/thread_pool.h"
@@ -46,6 +48,8 @@ class NativeBackend final : public FormFactorBackend {
   // A directional shooter's split by bin: from the item buffers of its projection, or analytic.
   void addPixelBins(const EnvironmentProjection& projection, FormFactorRow& row) const;
   void addAnalyticBins(int shooter, FormFactorRow& row) const;
+  // The shot's projection as the sub-pixel receivers see it.
+  ProjectedShot shotOf(const EnvironmentProjection& projection, int shooter, const std::vector<Patch>& receivers);
   // The receiver a shot from `shooter` skips: itself when patches receive, none when elements do.
   int skipOf(int shooter) const { return &receivers_ == &patches_ ? shooter : -1; }
   // The direction bins of the pixels where each patch is seen, before shares_ hands them to elements.
@@ -66,6 +70,7 @@ class NativeBackend final : public FormFactorBackend {
   std::vector<double> patchFormFactors_;                // shares_: per patch, this shot
   std::vector<char> patchSeenFromFront_;                // shares_: per patch, this shot
   std::vector<char> seenFromFront_;                     // per receiver, this shot
+  std::optional<Occluders> occluders_;                   // patches_, made when a shot first needs them
   int binsN_ = 0;                                       // binDirections' n
   std::vector<char> directional_;                       // per patch: its rows split by bin
   std::vector<std::vector<int>> pixelBin_;              // per face, per pixel: the bin of its centre

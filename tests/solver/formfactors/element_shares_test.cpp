@@ -198,9 +198,11 @@ TEST(ElementShares, AWholePatchSharesInProportionToItsElementsClosedForms) {
   const double nearDepth = sceneNearDepth(t.patches);
   EnvironmentProjection projection(t.patches, makeHemicube(64), nearDepth, pool);
   projection.project(0);
+  const Occluders occluders(t.patches);
   const ProjectedShot shot{t.patches, t.patches[0], projection.surface(), projection.itemBuffers(),
                            projection.depthTieRank(), projection.projectedAreaPixels(),
-                           projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels()};
+                           projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels(),
+                           occluders};
   const PatchShot patchShot{projection.pixelFormFactors(), projection.seenFromFront(), projection.coveredPixels(),
                             projection.shownPixels(), projection.facesReached()};
   std::vector<double> formFactors;

@@ -188,6 +188,37 @@ TEST(HardCases, SceneOffset1e5MetresGivesTheSameRadiosity) {
   }
 }
 
+// Two closed rooms side by side, one lit, parted by a wall of no thickness, their outer walls in
+// line. A patch in the dark room too small to cover a pixel centre was seen past the dividing wall
+// where its centroid's pixel showed the lit room's wall in the same plane, which hid nothing:
+// 3.5 % of the lit room's light in the dark one at 16², less at higher resolutions.
+TEST(HardCases, NoLightReachesARoomSealedBehindAWallOfNoThickness) {
+  const std::vector<Material> materials = {test::grey(0.7), test::grey(0.0, 30.0, "light")};
+  TestScene rooms = test::closedBox({4, 3, 2.5}, 8, materials);
+  const TestScene dark = test::closedBox({4, 3, 2.5}, 8, materials, {0, 0, 0, 0, 0, 0}, Vec3(4, 0, 0));
+  const int polygons = static_cast<int>(rooms.scene.polygons.size());
+  const size_t litPatches = rooms.patches.size();
+  rooms.scene.polygons.insert(rooms.scene.polygons.end(), dark.scene.polygons.begin(), dark.scene.polygons.end());
+  for (Patch p : dark.patches) {
+    p.polygon += polygons;
+    rooms.patches.push_back(p);
+  }
+  rooms.patches[64 + 27].material = 1;  // a lamp in the lit room's ceiling
+  for (const auto& [projection, n] : {std::pair{Projection::Hemicube, 16}, {Projection::Hemicube, 32}, {Projection::Plane, 32}}) {
+    SolveOptions o = optionsFor(projection, n);
+    o.until = 1.0;
+    o.untilUnshot = 0.05;
+    ProgressiveSolver solver(rooms.scene, rooms.patches, o);
+    ASSERT_TRUE(solveChecked(solver));
+    double lit = 0.0;
+    for (size_t j = 0; j < rooms.patches.size(); ++j) {
+      if (j < litPatches) lit = std::max(lit, solver.radiosity()[j].r);
+      else EXPECT_EQ(solver.radiosity()[j].r, 0.0) << toString(projection) << " " << n << "², dark patch " << j;
+    }
+    EXPECT_GT(lit, 0.1);
+  }
+}
+
 TEST(HardCases, CoplanarOverlappingPatchesGiveAnOrderIndependentAnswer) {
   // Two posters on the wall x = 0, in its very plane, overlapping the wall and each other.
   TestScene t = room(Vec3(0.0));
