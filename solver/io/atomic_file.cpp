@@ -35,9 +35,19 @@ TempFile createTempBeside(const std::string& path) {
   return temp;
 }
 
+// The file a link at `path` leads to (through every link), so that the rename replaces it and not
+// the link; `path` itself where it is no link.
+std::string throughLinks(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_symlink(path, error)) return path;
+  const std::filesystem::path target = std::filesystem::weakly_canonical(path, error);
+  return error ? path : target.string();
+}
+
 }  // namespace
 
-void writeAtomically(const std::string& path, const std::string& bytes) {
+void writeAtomically(const std::string& linkOrPath, const std::string& bytes) {
+  const std::string path = throughLinks(linkOrPath);
   const TempFile temp = createTempBeside(path);
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -74,7 +84,7 @@ void checkWritableBeside(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw std::runtime_error(fmt::format("{} is a folder: a file cannot replace it", path));
-  const TempFile temp = createTempBeside(path);
+  const TempFile temp = createTempBeside(throughLinks(path));
   ::close(temp.fd);
   ::unlink(temp.path.c_str());
 }

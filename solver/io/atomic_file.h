@@ -5,7 +5,8 @@
 
 namespace radmesh {
 
-// Writes bytes to a new temporary file beside path, flushes it to disk and renames it over path.
+// Writes bytes to a new temporary file beside path, flushes it to disk and renames it over path
+// (over the file a link at path leads to, which stays a link).
 // Throws std::runtime_error saying which step failed and why (e.g. "cannot create F.tmp-1-0:
 // Permission denied"), leaving no temporary file behind.
 void writeAtomically(const std::string& path, const std::string& bytes);

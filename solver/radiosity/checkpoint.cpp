@@ -336,6 +336,14 @@ void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
 
 void checkCheckpointWritable(const std::string& path) {
   checkOutputPath("--checkpoint", path, "", "");  // a missing folder or a folder in its place, as for --out
+  // A checkpoint has no extension of its own to check, so what is already there is: a scene's
+  // included file, a buffer or a document would be lost without a word.
+  std::error_code error;
+  if (std::filesystem::is_regular_file(path, error) && std::filesystem::file_size(path, error) > 0 &&
+      !fileStartsWith(path, kCheckpointSignature))
+    throw OptionError(fmt::format("--checkpoint '{}' is a file that is not a radmesh checkpoint: writing the "
+                                  "checkpoint would replace it; give a new path, or a checkpoint's",
+                                  path));
   checkWritable("--checkpoint", path);
 }
 

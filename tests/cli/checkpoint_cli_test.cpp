@@ -101,6 +101,32 @@ TEST(CliCheckpoint, ACheckpointPathThatCannotBeWrittenIsRefusedFirst) {
     }
 }
 
+
+// A checkpoint has no extension to check, so the file already at its path is: a scene's included
+// file (or any file not a checkpoint) is refused, not replaced. A link to a checkpoint stays a link,
+// its checkpoint replaced.
+TEST(CliCheckpoint, AFileThatIsNotACheckpointIsNotReplacedAndALinkStaysALink) {
+  const std::string part = tempPath("part.mgf"), main = tempPath("main.mgf");
+  std::filesystem::copy_file(test::dataPath("daylight/room_one_window.mgf"), part);
+  { std::ofstream(main) << "i part.mgf\n"; }
+  const std::string before = readBytes(part);
+  CommandRun run = radmesh("solve " + main + " --sky 10000 --max-iterations 2 --checkpoint " + part);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("radmesh: error: --checkpoint '" + part + "' is a file that is not a radmesh checkpoint: "
+                            "writing the checkpoint would replace it; give a new path, or a checkpoint's"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(readBytes(part), before);
+
+  const std::string saved = tempPath("saved.ckpt"), link = tempPath("link.ckpt");
+  ASSERT_EQ(radmesh("solve cornell --cell 0.1 --resolution 16 --max-iterations 2 --checkpoint " + saved).exitCode, 0);
+  const std::string two = readBytes(saved);
+  std::filesystem::create_symlink(saved, link);
+  run = radmesh("solve cornell --cell 0.1 --resolution 16 --max-iterations 3 --checkpoint " + link);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_NE(readBytes(saved), two);  // the checkpoint it leads to is the new one
+}
 TEST(CliCheckpoint, PeriodicCheckpointsLeaveOneGoodFile) {
   const std::string checkpoint = tempPath("every.ckpt");
   const CommandRun run = radmesh(kSolve + "--max-iterations 20 --checkpoint " + checkpoint + " --checkpoint-every 0.001");
