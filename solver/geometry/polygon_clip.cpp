@@ -1,5 +1,6 @@
 #include "solver/geometry/polygon_clip.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace radmesh {
@@ -21,6 +22,10 @@ Vec2 crossing(Vec2 p, Vec2 q, int axis, double value) {
   return r;
 }
 
+// A polygon ending this close to a grid line (a fraction of the cell) is not cut there: a model
+// moved by a nanometre off the grid would gain a strip of patches a nanometre wide along it.
+constexpr double kGridSnap = 1e-6;
+
 // Splits at every grid line along `axis` strictly inside the polygon, appending the pieces.
 void sliceAlong(const std::vector<Vec2>& convex, int axis, double cellM, double noiseM,
                 std::vector<std::vector<Vec2>>& out) {
@@ -29,8 +34,9 @@ void sliceAlong(const std::vector<Vec2>& convex, int axis, double cellM, double 
     lo = std::min(lo, p[axis]);
     hi = std::max(hi, p[axis]);
   }
-  const double first = std::floor((lo + noiseM) / cellM) + 1.0;
-  const double last = std::ceil((hi - noiseM) / cellM) - 1.0;
+  const double snap = std::max(noiseM, kGridSnap * cellM);
+  const double first = std::floor((lo + snap) / cellM) + 1.0;
+  const double last = std::ceil((hi - snap) / cellM) - 1.0;
   std::vector<Vec2> rest = convex, below, above;
   for (double line = first; line <= last; line += 1.0) {
     splitConvex(rest, axis, line * cellM, noiseM, below, above);

@@ -239,6 +239,20 @@ TEST(Meshing, NoSliverFromAVertexThatRoundsOffAGridLine) {
   expectAreaKept(s, patches, 1e-9, "rounded square");
 }
 
+// A model moved a nanometre off the grid meshes as on it: no strip of nanometre-wide patches along
+// every polygon that ends on a grid line (256 patches became 366), the edge pieces a nanometre
+// larger instead. A micrometre off the grid at a 0.25 m cell is geometry, cut as before.
+TEST(Meshing, AModelANanometreOffTheGridGetsNoSliverPatches) {
+  for (const double offset : {1e-9, -1e-9, 3e-8}) {
+    const Scene s = sceneOf({rectangleXY(offset, offset, 1 + offset, 0.5 + offset)});
+    const auto patches = meshScene(s, 0.25);
+    EXPECT_EQ(patches.size(), 8u) << offset;
+    for (const Patch& p : patches) EXPECT_NEAR(p.areaM2, 0.0625, 1e-7) << offset;
+    expectAreaKept(s, patches, 1e-12, "shifted rectangle");
+  }
+  EXPECT_EQ(meshScene(sceneOf({rectangleXY(1e-6, 0, 1 + 1e-6, 0.5)}), 0.25).size(), 10u);
+}
+
 TEST(Meshing, RandomConvexPolygonsKeepAreaAndShape) {
   Random r(20240501);
   for (int trial = 0; trial < 200; ++trial) {
