@@ -1,5 +1,6 @@
 #include "solver/bake/gltf_export.h"
 
+#include <fmt/format.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 #include "solver/scene/scene_error.h"
@@ -34,6 +36,11 @@ void checkInput(const DisplayMesh& mesh, const std::vector<Rgb>& radiosity) {
     for (int c = 0; c < 3; ++c)
       if (!std::isfinite(b[c]) || b[c] < 0.0)
         throw std::invalid_argument("writeBakeGlb: a vertex radiosity is negative or not finite; not written");
+      else if (b[c] > std::numeric_limits<float>::max())  // the bake would hold inf, which no reader takes
+        throw std::runtime_error(fmt::format("a vertex radiosity of {:.3g} W/m^2 is beyond what a bake's 32-bit "
+                                             "floats hold ({:.3g}): the bake is not written; give the lights "
+                                             "their physical power",
+                                             b[c], std::numeric_limits<float>::max()));
 }
 
 template <class T>

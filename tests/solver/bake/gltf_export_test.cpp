@@ -177,6 +177,18 @@ TEST(GltfExport, RadiosityThatCannotBeTrustedIsNotWritten) {
   std::vector<Rgb> negative(7, Rgb(1.0));
   negative[0].b = -1e-3;
   EXPECT_THROW(writeBakeGlb(path, sampleMesh(), negative, 2), std::invalid_argument);
+  // Finite, but inf as a float: the bake would not read back.
+  std::vector<Rgb> huge(7, Rgb(1.0));
+  huge[4].r = 1e39;
+  try {
+    writeBakeGlb(path, sampleMesh(), huge, 2);
+    ADD_FAILURE() << "a radiosity beyond a float was written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a vertex radiosity of 1e+39 W/m^2 is beyond what a bake's 32-bit floats "
+                                         "hold (3.4e+38): the bake is not written"),
+              std::string::npos)
+        << e.what();
+  }
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 
