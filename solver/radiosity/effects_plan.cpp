@@ -47,7 +47,7 @@ EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, E
   const bool convex = isConvexEnclosure(scene);
   plan.occlusion = !convex;
   const std::string occlusionWhy =
-      convex ? "the scene is a convex enclosure: no patch can hide another, analytic form factors are exact"
+      convex ? "the scene is a convex enclosure: no patch can hide another, so analytic form factors need no visibility"
              : "some polygon has scene geometry behind its plane, so patches can hide one another";
 
   const bool allGrey = std::all_of(scene.materials.begin(), scene.materials.end(),
