@@ -56,6 +56,11 @@ void printSummary(const ProgressiveSolver& solver, double seconds, size_t resume
   fmt::print("solved: {}, {} iterations{}, convergence {:.2f}%, unshot {:.2f}%, {:.3f} s ({:.1f} it/s)\n",
              patchesText(solver), n, resumed, 100.0 * solver.convergence(), 100.0 * l.unshotFraction(), seconds,
              seconds > 0 ? solved / seconds : 0.0);
+  if (const int cap = solver.options().maxIterations; resumedAt > 0 && resumedAt >= static_cast<size_t>(cap))
+    fmt::print(stderr,
+               "radmesh: warning: the checkpoint already holds {} iterations, at or past --max-iterations {} (which counts "
+               "from the start of the solve): nothing more was solved; give --max-iterations above {} to go on\n",
+               resumedAt, cap, resumedAt);
   double machineSeconds = 0.0;
   std::string machine;
   for (const IterationRecord& r : solver.history())

@@ -102,6 +102,22 @@ TEST(CliCheckpoint, ACheckpointPathThatCannotBeWrittenIsRefusedFirst) {
 }
 
 
+// --max-iterations counts from the start: a resume already past it solves nothing, and says so.
+TEST(CliCheckpoint, AResumePastMaxIterationsSaysNothingMoreWasSolved) {
+  const std::string saved = tempPath("c15.ckpt");
+  ASSERT_EQ(radmesh("solve cornell --cell 0.1 --resolution 16 --max-iterations 15 --checkpoint " + saved).exitCode, 0);
+  CommandRun run = radmesh("solve cornell --cell 0.1 --resolution 16 --max-iterations 10 --resume " + saved);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("15 iterations (0 after the checkpoint's 15)"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("radmesh: warning: the checkpoint already holds 15 iterations, at or past "
+                            "--max-iterations 10 (which counts from the start of the solve): nothing more was solved; "
+                            "give --max-iterations above 15 to go on"),
+            std::string::npos)
+      << run.output;
+  run = radmesh("solve cornell --cell 0.1 --resolution 16 --max-iterations 16 --resume " + saved);
+  EXPECT_EQ(run.output.find("already holds"), std::string::npos) << run.output;
+}
+
 // A checkpoint has no extension to check, so the file already at its path is: a scene's included
 // file (or any file not a checkpoint) is refused, not replaced. A link to a checkpoint stays a link,
 // its checkpoint replaced.
