@@ -81,6 +81,9 @@ Xyz xyzFromSpectrum(double minNm, double maxNm, const std::vector<double>& sampl
   if (samples.size() < 2 || !(maxNm > minNm))
     throw MgfError("a spectrum needs l_min < l_max and at least two values",
                    "write cspec l_min l_max v1 v2 ... with wavelengths in nm");
+  for (const double v : samples)
+    if (v < 0.0)
+      throw MgfError(fmt::format("spectrum value {:g} is negative", v), "give cspec values >= 0 (relative power)");
   const double step = (maxNm - minNm) / static_cast<double>(samples.size() - 1);
   const auto interpolated = [&](double nm) {
     const double at = (nm - minNm) / step;

@@ -156,7 +156,10 @@ void MgfInterpreter::entity(const MgfEntity& e) {
     requireMgfArguments(e, ignored.arguments, ignored.arguments, ignored.usage);
     if (k == "sides" && e.words[1] != "1" && e.words[1] != "2")
       throw MgfError("sides must be 1 or 2", "write sides 1 or sides 2");
-    for (size_t i = 1; i < e.words.size(); ++i) parseMgfNumber(e.words[i], k + " value");
+    for (size_t i = 1; i < e.words.size(); ++i)
+      // A fraction of light or a roughness below 0 is a broken file, as a negative rd is.
+      if (const double value = parseMgfNumber(e.words[i], k + " value"); value < 0.0 && k != "ir")
+        throw MgfError(fmt::format("{} value {} is negative", k, e.words[i]), fmt::format("give {} values >= 0", k));
     return note(e, k + " ignored: " + ignored.why);
   }
   // As MGF's reference parser does: counted and passed over, so files of newer or private

@@ -33,6 +33,7 @@ std::vector<MgfEntity> readMgfEntities(const std::string& path) {
   for (std::string line; std::getline(in, line);) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();  // files written on Windows
+    if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // the byte-order mark some editors write
     if (pending.empty()) start = number;
     const bool continues = !line.empty() && line.back() == '\\';
     if (continues) line.back() = ' ';  // the escaped newline counts as a space

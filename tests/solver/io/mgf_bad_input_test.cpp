@@ -89,6 +89,24 @@ TEST(MgfBadInput, WrongArgumentCountShowsTheRightForm) {
   EXPECT_NE(r.what.find("cyl v1 radius v2"), std::string::npos) << r.what;
 }
 
+// Fractions of light and roughness below 0 are broken files, as a negative rd is, though radmesh
+// reads no transmittance or specular term.
+TEST(MgfBadInput, NegativeTransmittanceSpecularOrSpectrumIsRefused) {
+  TempDir dir;
+  for (const auto& [entity, says] : {std::pair{"td -0.6", "td value -0.6 is negative (fix: give td values >= 0)"},
+                                     std::pair{"rs -0.5 0.1", "rs value -0.5 is negative"},
+                                     std::pair{"ts 0.2 -0.1", "ts value -0.1 is negative"},
+                                     std::pair{"c\n cspec 400 700 -1 1 -1", "spectrum value -1 is negative"}}) {
+    const std::string path = test::writeMgf(dir, "scene.mgf", std::string("m grey =\n ") + entity + "\n rd 0.5\n");
+    try {
+      importMgf(path);
+      ADD_FAILURE() << entity << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(MgfBadInput, IncludeCycleIsRefusedWithoutHanging) {
   // The cycle closes in the second file, at its include of the first.
   const MgfRefusal r = mgfRefusal("mgf_include_cycle.mgf");

@@ -232,6 +232,15 @@ TEST(MgfImport, IgnoredTermsAreWarnedAboutOnceWithTheirCount) {
   EXPECT_NE(warnings[1].find("line 12: sides ignored"), std::string::npos) << warnings[1];
 }
 
+// A byte-order mark (some Windows editors write one) is not part of the first entity: it read as
+// "unknown entity '\xEF\xBB\xBFm'", and the material it defined was then "not defined".
+TEST(MgfImport, AByteOrderMarkIsSkipped) {
+  std::vector<std::string> warnings;
+  const Scene s = importMgfText("\xEF\xBB\xBF" + kUnitSquare + "f a b c d\n", &warnings);
+  EXPECT_EQ(s.polygons.size(), 1u);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+}
+
 TEST(MgfImport, OriginsNameLineEntityAndObject) {
   const Scene s = importMgfText(kUnitSquare + "o desk\no top\nf a b c\no\no\n");
   ASSERT_EQ(s.polygons.size(), 1u);
