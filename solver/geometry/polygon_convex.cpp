@@ -1,5 +1,7 @@
 #include "solver/geometry/polygon_convex.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -110,6 +112,41 @@ std::vector<std::vector<Vec2>> convexPieces(const std::vector<Vec2>& ccw, double
     std::vector<Vec2>& piece = pieces.emplace_back();
     for (int index : cycle) piece.push_back(ccw[index]);
   }
+  return pieces;
+}
+
+namespace {
+
+bool hasRepeatedVertex(std::vector<Vec2> points) {
+  std::sort(points.begin(), points.end(), [](const Vec2& a, const Vec2& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  return std::adjacent_find(points.begin(), points.end()) != points.end();
+}
+
+}  // namespace
+
+std::vector<std::vector<Vec2>> convexCover(const std::vector<Vec2>& ccw, double noiseM, std::string& crossing) {
+  crossing.clear();
+  std::vector<std::vector<Vec2>> pieces = isConvex(ccw, noiseM) ? std::vector<std::vector<Vec2>>{ccw}
+                                                                 : convexPieces(ccw, noiseM);
+  const double area = signedArea(ccw);
+  double total = 0.0;
+  for (const auto& piece : pieces) total += signedArea(piece);
+  if (!(std::abs(total - area) <= 1e-6 * area)) {
+    crossing = fmt::format("its convex parts cover {:.6g} of its {:.6g} projected square metres", total, area);
+    return pieces;
+  }
+  // An outline that goes round twice over the same vertices has parts covered twice, which the
+  // areas above count twice on both sides. Only a repeated vertex lets it (a hole's seam does too,
+  // but leaves every part covered once): there, each part must lie inside exactly once.
+  if (hasRepeatedVertex(ccw))
+    for (const auto& piece : pieces) {
+      Vec2 inside{0.0};
+      for (const Vec2& q : piece) inside += q;
+      if (const int times = windingNumber(ccw, inside / static_cast<double>(piece.size())); times != 1) {
+        crossing = fmt::format("its outline goes round part of it {} times", times);
+        return pieces;
+      }
+    }
   return pieces;
 }
 

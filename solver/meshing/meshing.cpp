@@ -60,11 +60,6 @@ Frame frameFor(const Vec3& normal) {
   return {u, v, normal};
 }
 
-bool hasRepeatedVertex(std::vector<Vec2> points) {
-  std::sort(points.begin(), points.end(), [](const Vec2& a, const Vec2& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
-  return std::adjacent_find(points.begin(), points.end()) != points.end();
-}
-
 PreparedPolygon prepare(const Scene& scene, size_t index, double cellM) {
   const std::vector<Vec3>& vertices = scene.polygons[index].vertices;
   const Vec3 newell = newellNormal(vertices);
@@ -104,28 +99,11 @@ PreparedPolygon prepare(const Scene& scene, size_t index, double cellM) {
   out.noiseM = 1e-12 * extentOf(points) + 4.0 * DBL_EPSILON * maxAbs;
   const double area = signedArea(points);
   out.sliverAreaM2 = 1e-12 * area;
-  const auto overlaps = [&](const std::string& how) {
-    return SceneError(scene.source, describe(scene, index), "crosses or overlaps itself (" + how + ")",
-                      "split it into simple polygons");
-  };
-  if (isConvex(points, out.noiseM))
-    out.pieces.push_back(points);
-  else
-    out.pieces = convexPieces(points, out.noiseM);
-  double total = 0.0;
-  for (const auto& piece : out.pieces) total += signedArea(piece);
-  if (!(std::abs(total - area) <= 1e-6 * area))
-    throw overlaps(fmt::format("its convex parts cover {:.6g} of its {:.6g} projected square metres", total, area));
-  // An outline that goes round twice over the same vertices has parts covered twice, which the
-  // areas above count twice on both sides. Only a repeated vertex lets it (a hole's seam does too,
-  // but leaves every part covered once): there, each part must lie inside exactly once.
-  if (hasRepeatedVertex(points))
-    for (const auto& piece : out.pieces) {
-      Vec2 inside{0.0};
-      for (const Vec2& q : piece) inside += q;
-      if (const int times = windingNumber(points, inside / static_cast<double>(piece.size())); times != 1)
-        throw overlaps(fmt::format("its outline goes round part of it {} times", times));
-    }
+  std::string crossing;
+  out.pieces = convexCover(points, out.noiseM, crossing);
+  if (!crossing.empty())
+    throw SceneError(scene.source, describe(scene, index), "crosses or overlaps itself (" + crossing + ")",
+                     "split it into simple polygons");
   return out;
 }
 

@@ -86,7 +86,20 @@ TEST(MgfRepair, FacesThatCannotBeBuiltAreSkippedByName) {
   EXPECT_TRUE(contains(warningWith(r, "f skipped: v 'c' is not defined"), "line 14:"));
   EXPECT_TRUE(contains(warningWith(r, "f skipped: the face has fewer than 3 distinct vertices"), "line 15:"));
   // On a line: glTF's reader drops such a triangle, and the whole file was refused here.
-  EXPECT_TRUE(contains(warningWith(r, "f skipped: it has no area (its vertices are collinear)"), "line 16:"));
+  EXPECT_TRUE(contains(warningWith(r, "f skipped: it has no area (its vertices are collinear, or its outline crosses itself into parts that cancel)"), "line 16:"));
+}
+
+// A flat face whose outline crosses itself was refused with the whole scene (by the mesher); it is
+// skipped by name, as one that is bent and crosses itself was.
+TEST(MgfRepair, FlatFacesThatCrossThemselvesAreSkippedByName) {
+  const Repaired r = repaired("mgf_crossing_faces.mgf");
+  ASSERT_EQ(r.scene.polygons.size(), 1u);
+  EXPECT_NEAR(test::totalArea(r.scene), 1.6 * 1.6, 1e-12);
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_TRUE(contains(warningWith(r, "f skipped: its outline crosses itself (its convex parts cover"), "line 15:"));
+  EXPECT_TRUE(contains(warningWith(r, "f skipped: it has no area (its vertices are collinear, or its outline "
+                                      "crosses itself into parts that cancel)"),
+                       "line 16:"));
 }
 
 TEST(MgfRepair, AChromaticityOutsideTheDiagramIsClipped) {
