@@ -24,6 +24,7 @@ glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& axis, double angle) {
 
 WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
   up_[frame.upAxis] = 1.0;
+  speedMps = std::min(speedMps, 0.5 * sizeM());  // a model 4 mm across is crossed in seconds, not a frame
   const glm::dvec3 extent = frame.boundsMax - frame.boundsMin;
   const glm::dvec3 centre = frame.boundsMin + 0.5 * horizontal(extent, up_);  // on the floor
   if (frame.openSide >= 0) {
@@ -125,7 +126,7 @@ void WalkCamera::update(const WalkInput& input, double dtSeconds) {
   const glm::dvec3 walkRight = glm::cross(walkForward, up_);
   const double step = speedMps * dtSeconds;
   ground_ += step * (input.forward * walkForward + input.right * walkRight);
-  eyeHeightM = std::max(0.01, eyeHeightM + step * input.rise);
+  eyeHeightM = std::max(2.0 * nearM(), eyeHeightM + step * input.rise);  // the floor stays in front of the near plane
 }
 
 RenderView WalkCamera::view() const {
@@ -134,10 +135,18 @@ RenderView WalkCamera::view() const {
   view.look = view.eye + forward_;
   view.up = up_;
   view.fovYDeg = fovYDeg;
-  const double diagonalM = glm::length(frame_.boundsMax - frame_.boundsMin);
-  view.nearM = std::clamp(0.002 * diagonalM, 0.005, 0.05);
-  view.farM = std::max(10.0, 4.0 * diagonalM);
+  view.nearM = nearM();
+  view.farM = 4.0 * sizeM();
   return view;
 }
+
+double WalkCamera::sizeM() const {
+  const double diagonalM = glm::length(frame_.boundsMax - frame_.boundsMin);
+  return diagonalM > 0.0 ? diagonalM : 2.5;  // a point-sized scene: a small room's
+}
+
+// Within a model of any size (a room exported in mm is 3 mm tall, and a near plane of 5 mm showed
+// nothing of it), but no deeper than 5 cm in a large one: the eye walks up to walls.
+double WalkCamera::nearM() const { return std::min(0.002 * sizeM(), 0.05); }
 
 }  // namespace radmesh

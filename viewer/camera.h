@@ -40,12 +40,14 @@ class WalkCamera {
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
 
-  double speedMps = 1.4;  // a walking pace
+  double speedMps = 1.4;  // a walking pace; in a model under 2.8 m across, half its size a second
   double eyeHeightM = 1.6;
   double fovYDeg = 60.0;
 
  private:
   void lookAt(const glm::dvec3& target);  // level, from where it stands
+  double sizeM() const;  // the bounds' diagonal
+  double nearM() const;  // the near plane's distance, scaled to the model
   // Where the start stands in no room (in a wall between a building's rooms, in its courtyard): to
   // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m, looking the longest
   // way clear to a face.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "tests/cli/cli_run.h"
+#include "viewer/image.h"
 
 namespace radmesh {
 namespace {
@@ -74,6 +75,23 @@ TEST(UpAxisCli, UnitsScaleTheSceneOnEveryCommandAndABadOneIsRefused) {
         << command << ": " << run.output;
   }
 }
+
+#ifdef RADMESH_HAS_VIEWER
+// A room read in millimetres, 2.7 mm tall, is drawn lit: the walk's near plane (5 mm at the least)
+// lay past its far wall and the picture was black.
+TEST(UpAxisCli, ARoomReadInMillimetresIsDrawn) {
+  const std::string png = tempPath("mm.png");
+  const CommandRun run = radmesh("render " + test::dataPath("daylight/room_one_window.mgf").string() +
+                                 " --units mm --sky 10000 --iterations 5 --size 160x120 --quiet --out " + png);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("shows nothing of the model"), std::string::npos) << run.output;
+  const Image picture = readPng(png);
+  int lit = 0;
+  for (size_t i = 0; i < picture.rgba.size(); i += 4)
+    lit += picture.rgba[i] + picture.rgba[i + 1] + picture.rgba[i + 2] > 0;
+  EXPECT_EQ(lit, 160 * 120) << png;
+}
+#endif
 
 // A model read in metres that is 2 km across is noted, as the axis MGF does not give is: on stderr,
 // one line each, so `info --json` stays JSON and its "daylight" lines are daylight's.

@@ -112,6 +112,31 @@ TEST(WalkCamera, LowersTheEyeInALowRoom) {
   EXPECT_DOUBLE_EQ(view.eye.z, 0.3);  // 60% of the height, under 1.6 m
 }
 
+// The near plane, the far plane and the walking pace follow the model's size: a room exported in
+// millimetres (2.7 mm tall) was drawn black behind a near plane of 5 mm.
+TEST(WalkCamera, NearFarAndPaceFollowTheModelsSize) {
+  const SceneFrame millimetres = room({0.004, 0.003, 0.0027});
+  const double diagonal = glm::length(millimetres.boundsMax);
+  WalkCamera small(millimetres);
+  RenderView view = small.view();
+  EXPECT_DOUBLE_EQ(view.nearM, 0.002 * diagonal);
+  EXPECT_DOUBLE_EQ(view.farM, 4.0 * diagonal);
+  EXPECT_DOUBLE_EQ(view.eye.z, 0.6 * 0.0027);
+  EXPECT_LT(view.nearM, 0.01 * view.eye.z);
+  EXPECT_DOUBLE_EQ(small.speedMps, 0.5 * diagonal);
+  EXPECT_NO_THROW(validateView(view));
+  small.update(WalkInput{.rise = -1.0}, 100.0);  // lowered, the floor stays beyond the near plane
+  EXPECT_DOUBLE_EQ(small.view().eye.z, 2.0 * view.nearM);
+
+  // The same room in kilometres: near and the pace stay a walker's, the far plane reaches past it.
+  WalkCamera large(room({4000.0, 3000.0, 2700.0}));
+  view = large.view();
+  EXPECT_DOUBLE_EQ(view.nearM, 0.05);
+  EXPECT_DOUBLE_EQ(view.farM, 4.0 * glm::length(Vec3(4000.0, 3000.0, 2700.0)));
+  EXPECT_DOUBLE_EQ(view.eye.z, 1.6);
+  EXPECT_DOUBLE_EQ(large.speedMps, 1.4);
+}
+
 TEST(WalkCamera, LooksIntoAnOpenSideFromOutsideSeeingAllOfIt) {
   // A y-up unit box open at z = 0 (side 2 * 2 + 0), like the Cornell box.
   WalkCamera camera(room({1.0, 1.0, 1.0}, 1, 4));
