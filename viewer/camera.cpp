@@ -56,26 +56,34 @@ void WalkCamera::stepIntoFreeSpace() {
   auto eyeAt = [&](const glm::dvec3& ground) {
     return ground + up_ * (frame_.floorLevel() - glm::dot(ground, up_) + eyeHeightM);
   };
-  if (freeSpaceAt(frame_, eyeAt(ground_), clearM)) return;
   const glm::dvec3 start = ground_;
-  for (int ring = 1; ring * kStepM <= kReachM; ++ring)  // the square rings of a grid round the start
-    for (int i = -ring; i <= ring; ++i)
-      for (int j = -ring; j <= ring; ++j) {
+  bool free = freeSpaceAt(frame_, eyeAt(start), clearM);
+  for (int ring = 1; !free && ring * kStepM <= kReachM; ++ring)  // the square rings of a grid round the start
+    for (int i = -ring; i <= ring && !free; ++i)
+      for (int j = -ring; j <= ring && !free; ++j) {
         if (std::max(std::abs(i), std::abs(j)) != ring) continue;
         const glm::dvec3 ground = start + kStepM * (double(i) * axes.across + double(j) * axes.along);
-        if (!freeSpaceAt(frame_, eyeAt(ground), clearM)) continue;
-        // Looking the longest way clear from there to a face, every 45 degrees: down a corridor,
-        // across a room, not out through a window.
-        ground_ = ground;
-        double longest = -1.0;
-        for (int k = 0; k < 8; ++k) {
-          const double a = k * 0.25 * std::numbers::pi;
-          const glm::dvec3 direction = std::cos(a) * axes.across + std::sin(a) * axes.along;
-          const double clear = clearDistance(frame_, eyeAt(ground), direction);
-          if (std::isfinite(clear) && clear > longest) longest = clear, forward_ = direction;
-        }
-        return;
+        if ((free = freeSpaceAt(frame_, eyeAt(ground), clearM))) ground_ = ground;
       }
+  if (!free) return;
+  // Looking the longest way clear to a face: towards the centre (standIn's), or every 45 degrees;
+  // down a corridor, across a room, not out through a window. Towards the centre a corner of
+  // building:1x1 stood a metre from the spine's wall.
+  const glm::dvec3 eye = eyeAt(ground_);
+  // The nearer of two rays a hair either side: a ray through the very edge of a door (two-rooms')
+  // passed it or not depending on which way the scene was turned (its bake is turned y-up).
+  auto clearAlong = [&](const glm::dvec3& direction) {
+    return std::min(clearDistance(frame_, eye, rotate(direction, up_, 1e-6)),
+                    clearDistance(frame_, eye, rotate(direction, up_, -1e-6)));
+  };
+  double longest = clearAlong(forward_);
+  if (!std::isfinite(longest)) longest = -1.0;
+  for (int k = 0; k < 8; ++k) {
+    const double a = k * 0.25 * std::numbers::pi;
+    const glm::dvec3 direction = std::cos(a) * axes.across + std::sin(a) * axes.along;
+    const double clear = clearAlong(direction);
+    if (std::isfinite(clear) && clear > longest) longest = clear, forward_ = direction;
+  }
 }
 
 glm::dvec2 WalkCamera::cornerFacingFurniture(const SceneFrame& frame) {

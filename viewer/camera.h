@@ -20,9 +20,10 @@ struct WalkInput {
 class WalkCamera {
  public:
   // Starts inside the scene, near a corner of the bounds, the eye 1.6 m above the lowest floor
-  // (lower in a room under 2.7 m), looking level at the centre: the corner of least across and
-  // along (upFrame's), unless the furniture stands on that side (cornerFacingFurniture). A scene
-  // open on one side (a Cornell box) is looked into through that side from outside instead.
+  // (lower in a room under 2.7 m), looking level the longest way clear (stepIntoFreeSpace): the
+  // corner of least across and along (upFrame's), unless the furniture stands on that side
+  // (cornerFacingFurniture). A scene open on one side (a Cornell box) is looked into through that
+  // side from outside instead.
   explicit WalkCamera(const SceneFrame& frame);
 
   // The corner to start in, as the signs of across and along (-1 least, 1 greatest): the least,
@@ -37,6 +38,8 @@ class WalkCamera {
   // A cell's bounds are its free space's voxels', up to a voxel past its walls on every side: 0.35
   // of them from the centre stood in the spine's outer wall on building:2x2.
   static constexpr double kCellReach = 0.25;
+  // Whether it started outside, looking in through an open side.
+  bool looksInFromOutside() const { return frame_.openSide >= 0; }
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
 
@@ -49,8 +52,8 @@ class WalkCamera {
   double sizeM() const;  // the bounds' diagonal
   double nearM() const;  // the near plane's distance, scaled to the model
   // Where the start stands in no room (in a wall between a building's rooms, in its courtyard): to
-  // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m, looking the longest
-  // way clear to a face.
+  // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m. In free space, looks
+  // the longest way clear to a face.
   void stepIntoFreeSpace();
 
   SceneFrame frame_;

@@ -143,9 +143,10 @@ class ShownSolve : public Shown {
       printedError_ = error;
     }
     // A camera outside every room (the scene's corner is outside a building) goes into the room
-    // solved first, once a solve.
+    // solved first, once a solve; not one looking into an open-sided model from outside (a Cornell
+    // box's start view went inside it, into the void behind its open side).
     const SolverSnapshot& s = feed_.shown();
-    if (s.cells && s.cells->focus >= 0 && s.generation != placedGeneration_) {
+    if (s.cells && s.cells->focus >= 0 && s.generation != placedGeneration_ && !camera.looksInFromOutside()) {
       placedGeneration_ = s.generation;
       const std::vector<Cell>& cells = s.cells->partition->cells;
       if (!s.cells->eyeInFocus && s.cells->focus < static_cast<int>(cells.size()))

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "tests/cli/cli_run.h"
+#include "viewer/image.h"
 
 namespace radmesh {
 namespace {
@@ -124,6 +125,23 @@ TEST(ViewerCli, FlagsThatShapeNothingAreRefusedAsSolveDoes) {
     EXPECT_EQ(run.exitCode, 2) << flags << ": " << run.output;
     EXPECT_NE(run.output.find(message), std::string::npos) << flags << ": " << run.output;
   }
+}
+
+// A cells solve of an open-sided model keeps the view in from outside: the eye, in no cell, was
+// sent into the Cornell box, half of the picture the void behind its open side. From outside, the
+// background shows either side of the box, the red wall left, the green right.
+TEST(ViewerCli, ACellsSolveOfAnOpenBoxKeepsTheViewFromOutside) {
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string png = tempPath("cornell-cells.png");
+  const CommandRun run = runCommand(viewer + "cornell --cells auto --cell 0.1 --frames 60 --screenshot " + png);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Image picture = readPng(png);
+  ASSERT_EQ(picture.width, 1280);
+  auto pixel = [&](int x, int y) { return &picture.rgba[4 * (size_t(y) * picture.width + x)]; };
+  for (int x : {20, 880}) EXPECT_LT(pixel(x, 360)[0] + pixel(x, 360)[1] + pixel(x, 360)[2], 30) << x;  // background
+  EXPECT_GT(pixel(200, 360)[0], 2 * pixel(200, 360)[1]);  // red
+  EXPECT_GT(pixel(700, 360)[1], pixel(700, 360)[0]);      // green
 }
 
 // --steps N after --resume takes N more iterations, then the screenshot: the run ends at the

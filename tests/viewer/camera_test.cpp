@@ -74,6 +74,21 @@ TEST(WalkCamera, AStartInsideAWallStepsIntoTheNearestFreeSpace) {
   EXPECT_NEAR(eye.x, office.boundsMin.x + 0.15 * (office.boundsMax.x - office.boundsMin.x), 1e-9);
 }
 
+// building:1x1's start corner is free space, and the start looked from it at the bounds' centre,
+// into the spine's wall a metre away; it looks the longest way clear, down the spine, as a start
+// stepped out of a wall does.
+TEST(WalkCamera, AStartInFreeSpaceLooksTheLongestWayClear) {
+  const SceneFrame frame = sceneFrame(loadScene("building:1x1"));
+  const RenderView view = WalkCamera(frame).view();
+  EXPECT_NEAR(view.eye.x, 1.33, 1e-12);  // where it stood: in the corner, free space
+  EXPECT_NEAR(view.eye.y, 1.03, 1e-12);
+  EXPECT_EQ(glm::normalize(view.look - view.eye), Vec3(0.0, 1.0, 0.0));  // down the spine
+  EXPECT_NEAR(clearDistance(frame, view.eye, Vec3(0.0, 1.0, 0.0)), 6.97, 1e-12);
+  Vec3 toCentre = 0.5 * (frame.boundsMin + frame.boundsMax) - view.eye;
+  toCentre.z = 0.0;
+  EXPECT_LT(clearDistance(frame, view.eye, glm::normalize(toCentre)), 1.5);  // where it looked
+}
+
 // A 4 x 4 m room (6 faces) with a 1 m square desk top at 0.75 m whose corner is at (x, y).
 std::vector<FrameFace> roomWithDesk(double x, double y) {
   const double s = 4.0, h = 2.7;
