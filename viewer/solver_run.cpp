@@ -129,7 +129,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
     run->buildMesh();
     return run;
   } catch (const std::exception& e) {
-    publishFailure(setup, e.what());
+    publishFailure(setup, e);
     return nullptr;
   }
 }
@@ -207,10 +207,11 @@ void SolverThread::publish(const Run& run) {
   latest_ = std::move(snapshot);
 }
 
-void SolverThread::publishFailure(const SolveSetup& setup, const std::string& error) {
+void SolverThread::publishFailure(const SolveSetup& setup, const std::exception& error) {
   auto snapshot = std::make_shared<SolverSnapshot>();
   snapshot->setup = setup;
-  snapshot->error = error;
+  snapshot->error = error.what();
+  snapshot->errorIsInput = dynamic_cast<const SceneError*>(&error) || dynamic_cast<const OptionError*>(&error);
   std::lock_guard lock(mutex_);
   snapshot->generation = generation_;
   snapshot->playing = playing_;

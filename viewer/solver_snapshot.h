@@ -86,6 +86,9 @@ struct SolverSnapshot {
   bool exhausted = false;  // nothing is left to shoot
   // Why the last restart or iteration failed (nothing of that solve is shown), else empty.
   std::string error;
+  // It was a SceneError or an OptionError (a bad --cell, a checkpoint of another solve): the user's
+  // to fix, which radmesh solve exits 2 for.
+  bool errorIsInput = false;
   std::string checkpointMessage;  // the last checkpoint saved (or resumed from), or why not
 
   int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }

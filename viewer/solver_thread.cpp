@@ -200,7 +200,7 @@ void SolverThread::loop() {
     try {
       run->step(eye, scene_.upAxis);
     } catch (const std::exception& e) {
-      publishFailure(run->setup, e.what());
+      publishFailure(run->setup, e);
       run.reset();
       continue;
     }

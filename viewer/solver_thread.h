@@ -2,6 +2,7 @@
 // The progressive solver (or, with SolveSetup::cells, the cells solver) on its own thread. The UI sends commands (play, pause, step, restart)
 // and reads the newest published snapshot; neither ever waits for an iteration to finish.
 #include <condition_variable>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -53,7 +54,7 @@ class SolverThread {
   void refreshItemBuffer(Run& run, bool finished);
   static std::shared_ptr<const CellsProgress> cellsProgress(const Run& run);
   void publish(const Run& run);
-  void publishFailure(const SolveSetup& setup, const std::string& error);
+  void publishFailure(const SolveSetup& setup, const std::exception& error);
 
   const Scene scene_;
   mutable std::mutex mutex_;  // guards everything below, up to thread_

@@ -126,6 +126,7 @@ class Shown {
   // Smoke test: ready for the screenshot, and why it failed (empty: it did not).
   virtual bool ready() const = 0;
   virtual std::string failure() const { return {}; }
+  virtual int failureExitCode() const { return 1; }  // 2 for the user's input, as radmesh's
   virtual std::string state() const = 0;  // for the frame statistics
 };
 
@@ -174,6 +175,7 @@ class ShownSolve : public Shown {
   std::string failure() const override {
     return feed_.shown().error.empty() ? "" : "the solve failed: " + feed_.shown().error;
   }
+  int failureExitCode() const override { return feed_.shown().errorIsInput ? 2 : 1; }
   std::string state() const override {
     const SolverSnapshot& s = feed_.shown();
     char line[160];
@@ -353,7 +355,7 @@ int runViewer(const ViewerArgs& args) {
     if (smokeTestDone || reportDone) {
       if (!viewing->shown->failure().empty()) {
         std::fprintf(stderr, "radmesh-view: %s\n", viewing->shown->failure().c_str());
-        exitCode = 1;
+        exitCode = viewing->shown->failureExitCode();
       } else if (!args.screenshot.empty()) {
         writePng(captureFramebuffer(size), args.screenshot);
         std::printf("wrote %s\n", args.screenshot.c_str());

@@ -159,14 +159,52 @@ TEST(ViewerCli, StepsCountFromTheResumedIteration) {
   EXPECT_TRUE(std::filesystem::exists(png));
 }
 
-// A solve that fails before its mesh shows ends the frame report with the reason and exit 1; it
-// waited for frames with a mesh for ever.
+// A solve that fails before its mesh shows ends the frame report with the reason; it waited for
+// frames with a mesh for ever.
 TEST(ViewerCli, TheFrameReportEndsWhenTheSolveFails) {
   const std::string viewer = windowed();
   if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
   const CommandRun run = runCommand(viewer + "cornell --resume " + tempPath("missing.ckpt") + " --frames 3");
-  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("radmesh-view: the solve failed: "), std::string::npos) << run.output;
+}
+
+// What the solve refuses on its thread (a scene or option error) exits 2, as radmesh solve does;
+// it exited 1, as for a fault of radmesh's own.
+TEST(ViewerCli, TheSolvesRefusalsExit2AsSolvesDo) {
+  if (windowed().empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string missing = tempPath("missing.ckpt"), truncated = tempPath("truncated.ckpt"),
+                    furnace = tempPath("furnace.ckpt"), cornell = tempPath("cornell.ckpt");
+  std::ofstream(truncated) << "RADMESHC";
+  ASSERT_EQ(radmesh("solve furnace --max-iterations 1 --quiet --checkpoint " + furnace).exitCode, 0);
+  ASSERT_EQ(radmesh("solve cornell --cell 0.2 --max-iterations 1 --quiet --checkpoint " + cornell).exitCode, 0);
+  const std::pair<std::string, std::string> cases[] = {
+      {"--cell 0", "--cell must be a finite grid size in metres greater than 0, got 0"},
+      {"--cell 1e-5", "--cell 1e-05 m would cut the scene into about 1.92e+10 patches"},
+      {"--cells auto --backend mesh", "--cells auto runs on the native back end"},
+      {"--pe-grid 2x2", "PE (row 0, col 0) needs 57360 bytes of local memory"},
+      {"--subdivide uniform --min-element 1e-6", "--min-element 1e-06 m would cut the 1910 patches"},
+      {"--resume " + missing, missing + ": cannot be read"},
+      {"--resume " + truncated, truncated + ": is truncated"},
+      {"--preset bake --resume " + furnace, furnace + ": was written for another meshed scene"},
+      {"--cell 0.2 --preset bake --resolution 64 --resume " + cornell,
+       cornell + ": was written with other options: --resolution 256 there, 64 here"},
+  };
+  // One virtual display for all: xvfb-run started many times in a row now and then fails to clean
+  // up after itself (exit 5).
+  std::string script;
+  for (const auto& [flags, message] : cases)
+    script += viewerPath() + " cornell " + flags + " --frames 2; echo \"[exit $?]\"; ";
+  const CommandRun run = runCommand("timeout 300 " + xvfb() + "sh -c '" + script + "'");
+  size_t from = 0;
+  for (const auto& [flags, message] : cases) {
+    const size_t end = run.output.find("[exit ", from);
+    ASSERT_NE(end, std::string::npos) << flags << ": " << run.output;
+    const std::string said = run.output.substr(from, end - from);
+    EXPECT_EQ(run.output.substr(end, 9), "[exit 2]\n") << flags << ": " << said;
+    EXPECT_NE(said.find("radmesh-view: the solve failed: " + message), std::string::npos) << flags << ": " << said;
+    from = end + 9;
+  }
 }
 
 // Walking interactively, a solve that fails on its thread is said in the terminal as well as the

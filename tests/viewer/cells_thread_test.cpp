@@ -157,6 +157,7 @@ TEST(CellsSolverThread, ACellsSolveOnTheMeshBackEndIsRefusedWithTheFix) {
   SolverThread thread(loadScene("building:1x1"), setup, false);
   const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return !s.error.empty(); });
   EXPECT_NE(s->error.find("--backend native"), std::string::npos) << s->error;
+  EXPECT_TRUE(s->errorIsInput);  // the user's to fix: the viewer exits 2, as radmesh solve
 }
 
 }  // namespace

@@ -293,6 +293,7 @@ TEST(SolverThread, SavesACheckpointAndReopensItWhereItStood) {
   SolverThread refused(scene, native, false, path);
   const Snapshot failed = waitFor(refused, [](const SolverSnapshot& s) { return !s.error.empty(); });
   EXPECT_NE(failed->error.find("--backend mesh there, native here"), std::string::npos) << failed->error;
+  EXPECT_TRUE(failed->errorIsInput);
   std::filesystem::remove_all(dir);
 }
 
