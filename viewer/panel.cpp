@@ -104,9 +104,10 @@ void Panel::drawOpen() {
                                               openPath_.data(), openPath_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
   if ((entered || typed) && openPath_[0] != '\0') openRequest_ = std::string(openPath_.data());
   if (openMessage_.empty()) return;
-  if (openFailed_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-  ImGui::TextWrapped("%s", openMessage_.c_str());
-  if (openFailed_) ImGui::PopStyleColor();
+  if (openFailed_)
+    failureText(openMessage_.c_str());
+  else
+    ImGui::TextWrapped("%s", openMessage_.c_str());
 }
 
 std::optional<std::string> Panel::takeOpenRequest() { return std::exchange(openRequest_, std::nullopt); }
@@ -167,11 +168,7 @@ bool Panel::beginTab(const char* label, PanelTab tab) {
 }
 
 void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& solver) {
-  if (!snapshot.error.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-    ImGui::TextWrapped("solve failed: %s", snapshot.error.c_str());
-    ImGui::PopStyleColor();
-  }
+  if (!snapshot.error.empty()) failureText(("solve failed: " + snapshot.error).c_str());
   const double unshot = snapshot.ledger.unshotFraction();
   const bool farFromConverged = unshot > kFarFromConvergedUnshot;
   const char* state = snapshot.exhausted                  ? "nothing left to shoot"
@@ -219,7 +216,10 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-FLT_MIN);
   ImGui::InputText("##checkpoint", checkpointPath_.data(), checkpointPath_.size());
-  if (!snapshot.checkpointMessage.empty()) note(snapshot.checkpointMessage.c_str());
+  if (snapshot.checkpointFailed)
+    failureText(snapshot.checkpointMessage.c_str());
+  else if (!snapshot.checkpointMessage.empty())
+    note(snapshot.checkpointMessage.c_str());
   const float fps = ImGui::GetIO().Framerate;
   ImGui::TextDisabled("%.1f fps (%.1f ms per frame)", fps, 1e3f / std::max(fps, 1e-3f));
 }

@@ -17,4 +17,11 @@ inline void note(const char* text) {
   ImGui::PopStyleColor();
 }
 
+// A failure, in red, that wraps at the panel's edge.
+inline void failureText(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
+}
+
 }  // namespace radmesh

@@ -2,6 +2,8 @@
 // and the snapshots the UI gets of it.
 #include "viewer/solver_run.h"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <exception>
 #include <utility>
@@ -135,24 +137,28 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
 }
 
 void SolverThread::save(Run& run, const std::string& path) {
+  // Said in the panel, where the path is typed: its fixes name the box, not --checkpoint.
+  constexpr const char* kBox = "in the box beside Save checkpoint";
+  run.checkpointFailed = true;
   if (path.empty()) {  // an empty box in the panel: said, not ignored
-    run.checkpointMessage = "no checkpoint saved: give it a path in the box above Save";
+    run.checkpointMessage = fmt::format("no checkpoint saved: type a path {}", kBox);
     return;
   }
   if (!scene_.file.empty() && sameFile(path, scene_.file)) {
-    run.checkpointMessage = path + " is the scene itself: save the checkpoint to another path";
+    run.checkpointMessage = fmt::format("not saved: {} is the scene itself: type another path {}", path, kBox);
     return;
   }
   try {
     if (run.cells) {
       writeCellsCheckpoint(path, scene_, *run.cells);
       run.checkpointMessage = "saved " + path + " after round " + std::to_string(run.cells->rounds());
-      return;
+    } else {
+      writeCheckpoint(path, *run.solver);
+      run.checkpointMessage = "saved " + path + " after iteration " + std::to_string(run.solver->history().size());
     }
-    writeCheckpoint(path, *run.solver);
-    run.checkpointMessage = "saved " + path + " after iteration " + std::to_string(run.solver->history().size());
-  } catch (const std::exception& e) {
-    run.checkpointMessage = e.what();
+    run.checkpointFailed = false;
+  } catch (const CheckpointWriteError& e) {
+    run.checkpointMessage = fmt::format("not saved: {}: type a path in a writable folder with room {}", e.reason(), kBox);
   }
 }
 
@@ -200,6 +206,7 @@ void SolverThread::publish(const Run& run) {
   snapshot->ledger = run.cells ? run.cells->ledger() : run.solver->ledger();
   snapshot->done = run.done();
   snapshot->checkpointMessage = run.checkpointMessage;
+  snapshot->checkpointFailed = run.checkpointFailed;
   snapshot->exhausted = run.exhausted();
   std::lock_guard lock(mutex_);
   snapshot->playing = playing_;

@@ -33,6 +33,7 @@ struct SolverThread::Run {
   int itemBufferShooter = -1;
   std::chrono::steady_clock::time_point itemBufferTime{};
   std::string checkpointMessage;  // the last save: where, or why not
+  bool checkpointFailed = false;
 
   void add(const IterationRecord& record);
   bool done() const { return cells ? cells->done() : solver->done(); }

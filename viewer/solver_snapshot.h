@@ -90,6 +90,7 @@ struct SolverSnapshot {
   // to fix, which radmesh solve exits 2 for.
   bool errorIsInput = false;
   std::string checkpointMessage;  // the last checkpoint saved (or resumed from), or why not
+  bool checkpointFailed = false;  // the last save failed: the message says why and the fix
 
   int iteration() const { return curve.empty() ? 0 : curve.back().iteration; }
   double convergence() const { return curve.empty() ? 0.0 : curve.back().convergence; }

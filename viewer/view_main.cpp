@@ -15,6 +15,7 @@
 #include "cli/solve_flags.h"
 #include "solver/io/output_path.h"
 #include "solver/radiosity/cell_solver.h"
+#include "solver/radiosity/checkpoint.h"
 #include "solver/scene/scene_error.h"
 #include "solver/scene/sun.h"
 #include "solver/scene/units.h"
@@ -108,8 +109,9 @@ int main(int argc, char** argv) {
   app.add_option("--cache-mb", cacheMb, radmesh::cli::kCacheMbHelp);
   app.add_option("--resume", args.resume, "Go on from a checkpoint of the same scene and options (radmesh solve "
                  "--checkpoint, or the panel's Save checkpoint)");
-  app.add_option("--checkpoint", args.checkpoint, "Where the panel's Save checkpoint (F5) writes")
-      ->capture_default_str();
+  CLI::Option* checkpointGiven =
+      app.add_option("--checkpoint", args.checkpoint, "Where the panel's Save checkpoint (F5) writes")
+          ->capture_default_str();
   app.add_option("--size", size, "Window size WxH")->capture_default_str();
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")
       ->capture_default_str();
@@ -141,6 +143,9 @@ int main(int argc, char** argv) {
     radmesh::checkOutputPath("--screenshot", args.screenshot, ".png", "the screenshot is PNG");
     radmesh::checkOutputsDistinct(args.scene, {{"--screenshot", args.screenshot}, {"--checkpoint", args.checkpoint}},
                                   args.resume);
+    // As radmesh solve does: a save hours later to a folder that does not exist is found now. The
+    // default, beside where it runs, is left to the panel, where it can be changed.
+    if (checkpointGiven->count() > 0) radmesh::checkCheckpointWritable(args.checkpoint);
     args.setup.cells = radmesh::parseCells(cells);
     radmesh::checkPortalBins(args.setup.portalBins);
     // The cells solve runs on the host's CPU (docs/cells.md).

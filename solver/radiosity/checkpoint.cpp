@@ -128,8 +128,7 @@ template <class Write> void writeOrRefuse(const std::string& path, Write write) 
   try {
     write();
   } catch (const std::runtime_error& e) {
-    throw std::runtime_error(fmt::format(
-        "cannot write checkpoint {}: {} (fix: give --checkpoint a path in a writable folder with room)", path, e.what()));
+    throw CheckpointWriteError(path, e.what());
   }
 }
 
@@ -328,6 +327,11 @@ std::string cellDifferences(const std::vector<CellEntry>& was, const std::vector
 }
 
 }  // namespace
+
+CheckpointWriteError::CheckpointWriteError(const std::string& path, const std::string& reason)
+    : std::runtime_error(fmt::format(
+          "cannot write checkpoint {}: {} (fix: give --checkpoint a path in a writable folder with room)", path, reason)),
+      reason_(reason) {}
 
 void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
   Contents contents{identityOf(solver), solver.progress()};

@@ -4,6 +4,7 @@
 // version and its size and ends in no surprise (a checksum over the payload). Resuming from one
 // goes on bitwise as if the solve had never stopped.
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,9 +18,20 @@ namespace radmesh {
 // 2: the ledger keeps lightOutside; 3: elements (--subdivide), portal patches and cells solves.
 inline constexpr std::uint32_t kCheckpointVersion = 3;
 
+// Why a checkpoint could not be written: what() names the file, the reason and the command line's
+// fix (--checkpoint); reason() is the reason alone, for the viewer's panel to give its own fix.
+class CheckpointWriteError : public std::runtime_error {
+ public:
+  CheckpointWriteError(const std::string& path, const std::string& reason);
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string reason_;
+};
+
 // Writes the solver's state to path atomically: a temporary file in the same folder, flushed to
 // disk, then renamed over path, so that a kill at any moment leaves the last good checkpoint.
-// Throws std::runtime_error naming the file when it cannot.
+// Throws CheckpointWriteError when it cannot.
 void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver);
 
 // Throws as writeCheckpoint would when path's folder cannot take a file: to know before solving.

@@ -127,6 +127,27 @@ TEST(ViewerCli, FlagsThatShapeNothingAreRefusedAsSolveDoes) {
   }
 }
 
+// --checkpoint is checked at launch, by radmesh solve's rule: a save to it failed only when asked
+// for, perhaps hours later.
+TEST(ViewerCli, ACheckpointPathThatCannotBeWrittenIsRefusedAtLaunch) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  const std::string folder = tempPath("folder");
+  std::filesystem::create_directories(folder);
+  const std::pair<std::string, std::string> cases[] = {
+      {"/nonexistent-radmesh/x.ckpt", "--checkpoint '/nonexistent-radmesh/x.ckpt': the folder '/nonexistent-radmesh' "
+                                      "does not exist: create it (mkdir -p /nonexistent-radmesh) or give another path"},
+      {folder, "--checkpoint '" + folder + "' is a folder: give the path of a file in it"},
+  };
+  for (const auto& [path, message] : cases) {
+    CommandRun run = runCommand(viewerPath() + " cornell --checkpoint " + path);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(run.output, "radmesh-view: error: " + message + "\n");
+    run = radmesh("solve cornell --checkpoint " + path);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(run.output, "radmesh: error: " + message + "\n");
+  }
+}
+
 // A cells solve of an open-sided model keeps the view in from outside: the eye, in no cell, was
 // sent into the Cornell box, half of the picture the void behind its open side. From outside, the
 // background shows either side of the box, the red wall left, the green right.

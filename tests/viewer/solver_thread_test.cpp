@@ -222,7 +222,8 @@ TEST(SolverThread, PauseHoldsTheIterationCount) {
 }
 
 // The panel's checkpoint path is typed by hand: the scene's own file there is refused, in the
-// panel's message, and the scene is left as it was.
+// panel's message, and the scene is left as it was. Every failure is marked (the panel shows it in
+// red) and its fix names the panel's box, not --checkpoint.
 TEST(SolverThread, ACheckpointIsNotSavedOverTheScene) {
   const auto dir = std::filesystem::temp_directory_path() / ("radmesh-viewer-scene-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -237,13 +238,28 @@ TEST(SolverThread, ACheckpointIsNotSavedOverTheScene) {
   waitFor(thread, [](const SolverSnapshot& s) { return s.iteration() >= 1; });
   thread.saveCheckpoint((dir / "." / "room.gltf").string());
   const Snapshot refused = waitFor(thread, [](const SolverSnapshot& s) { return !s.checkpointMessage.empty(); });
-  EXPECT_NE(refused->checkpointMessage.find("is the scene itself: save the checkpoint to another path"), std::string::npos)
-      << refused->checkpointMessage;
+  EXPECT_EQ(refused->checkpointMessage, "not saved: " + (dir / "." / "room.gltf").string() +
+                                            " is the scene itself: type another path in the box beside Save checkpoint");
+  EXPECT_TRUE(refused->checkpointFailed);
   EXPECT_EQ(std::filesystem::file_size(scenePath), size);
   // An empty path (the panel's box cleared) is said, where Save did nothing without a word.
   thread.saveCheckpoint("");
   const Snapshot empty = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.starts_with("no checkpoint"); });
-  EXPECT_EQ(empty->checkpointMessage, "no checkpoint saved: give it a path in the box above Save");
+  EXPECT_EQ(empty->checkpointMessage, "no checkpoint saved: type a path in the box beside Save checkpoint");
+  EXPECT_TRUE(empty->checkpointFailed);
+  // A folder that is not there: the writer's reason, and the fix in the panel's words.
+  thread.saveCheckpoint((dir / "missing" / "x.ckpt").string());
+  const Snapshot missing = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.find("missing") != std::string::npos; });
+  EXPECT_TRUE(missing->checkpointMessage.starts_with("not saved: cannot create " + (dir / "missing" / "x.ckpt").string()))
+      << missing->checkpointMessage;
+  EXPECT_TRUE(missing->checkpointMessage.ends_with(
+      ": No such file or directory: type a path in a writable folder with room in the box beside Save checkpoint"))
+      << missing->checkpointMessage;
+  EXPECT_TRUE(missing->checkpointFailed);
+  thread.saveCheckpoint((dir / "saved.ckpt").string());
+  const Snapshot saved = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.starts_with("saved"); });
+  EXPECT_EQ(saved->checkpointMessage, "saved " + (dir / "saved.ckpt").string() + " after iteration 1");
+  EXPECT_FALSE(saved->checkpointFailed);
   std::filesystem::remove_all(dir);
 }
 
