@@ -174,9 +174,9 @@ int main(int argc, char** argv) {
     for (const CLI::Option* option : app.get_options())
       if (option->count() > 0) given.push_back(option->get_name());
     radmesh::refuseFlagsThatShapeNothing(given, o, args.setup.cells);
-    for (const std::string& flag : given)  // what walking a bake takes; the rest shapes a solve
-      if (flag != "--up" && flag != "--size" && flag != "--panel" && flag != "--steps" && flag != "--frames" &&
-          flag != "--min-frames" && flag != "--screenshot")
+    for (const std::string& flag : given)  // what walking a bake takes, and the bake itself; the rest shapes a solve
+      if (flag != "scene" && flag != "--up" && flag != "--size" && flag != "--panel" && flag != "--steps" &&
+          flag != "--frames" && flag != "--min-frames" && flag != "--screenshot")
         args.solveFlags.push_back(flag);
     if (args.minFrames > 0 && args.steps <= 0)
       throw radmesh::OptionError("--min-frames times a --steps run: add --steps N, or leave --min-frames out");

@@ -164,6 +164,7 @@ TEST(UpAxisCli, TheViewerWalksABakeWithNoSolve) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("warning: --cell does not apply: " + bake + " is a bake"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("--up does not apply"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("scene does not apply"), std::string::npos) << run.output;  // the bake itself is no flag
   EXPECT_NE(run.output.find("wrote " + png), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("a bake, nothing to solve"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("no emitter"), std::string::npos) << run.output;
