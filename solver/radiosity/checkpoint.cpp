@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -178,6 +179,30 @@ std::string optionDifferences(const OptionList& saved, const OptionList& now) {
   return text;
 }
 
+// The preset whose options, on the back end the checkpoint was written on, are the saved ones:
+// "--preset bake, on the native back end" (the viewer's own defaults are no preset's, and a
+// solve's checkpoint needs --preset bake there); empty if none's are. `now` lists `options`,
+// and a cells solve's settings after them.
+std::string presetWritten(const OptionList& saved, const OptionList& now, const SolveOptions& options) {
+  SolveOptions written = options;
+  for (const auto& [flag, value] : saved)
+    if (flag == "--backend") written.backend = parseBackend(value);
+  written.formFactorCacheBytes = formFactorCacheBytes(written.backend, std::nullopt);
+  const OptionList plain = answerOptions(options);
+  for (const Preset preset : {Preset::Bake, Preset::Paper, Preset::Elements}) {
+    SolveOptions given = written;
+    applyPreset(preset, given);
+    OptionList candidate = answerOptions(given);
+    for (const auto& option : now)  // a cells solve's settings
+      if (std::none_of(plain.begin(), plain.end(), [&](const auto& listed) { return listed.first == option.first; }))
+        candidate.push_back(option);
+    if (optionDifferences(saved, candidate).empty())
+      return fmt::format("--preset {}{}", toString(preset),
+                         written.backend == options.backend ? "" : fmt::format(", on the {} back end", toString(written.backend)));
+  }
+  return {};
+}
+
 }  // namespace
 
 std::uint64_t meshedSceneHash(const Scene& scene, const std::vector<Patch>& patches) {
@@ -287,8 +312,9 @@ template <class T> T readFile(const std::string& path, const std::string& kind) 
   throw refuse("is corrupted: its contents do not parse although its checksum matches", kStartOver);
 }
 
-// Refuses a checkpoint of another meshed scene or of other options that change the answer.
-void checkSameSolve(const std::string& path, const Identity& was, const Identity& now) {
+// Refuses a checkpoint of another meshed scene or of other options that change the answer; `now`
+// is of a solve with `options`.
+void checkSameSolve(const std::string& path, const Identity& was, const Identity& now, const SolveOptions& options) {
   if (was.sceneHash != now.sceneHash || was.patches != now.patches) {
     // The same name and count: the scene was placed, scaled or lit otherwise (--up, --units, daylight).
     const std::string scenes = was.sceneSource == now.sceneSource && was.patches == now.patches
@@ -302,13 +328,18 @@ void checkSameSolve(const std::string& path, const Identity& was, const Identity
                   "resume with the scene, --cell, --units, --up and daylight (--sky, --sun) it was written with, or "
                   "solve from scratch without --resume");
   }
-  if (const std::string differences = optionDifferences(was.options, now.options); !differences.empty())
+  if (const std::string differences = optionDifferences(was.options, now.options); !differences.empty()) {
+    const std::string preset = presetWritten(was.options, now.options, options);
     throw refusal(path, "was written with other options: " + differences,
-                  "resume with the options it was written with, or solve from scratch without --resume");
+                  preset.empty() ? "resume with the options it was written with, or solve from scratch without --resume"
+                                 : fmt::format("resume with the options it was written with ({}), or solve from "
+                                               "scratch without --resume",
+                                               preset));
+  }
 }
 
 void restore(const std::string& path, Contents saved, ProgressiveSolver& solver) {
-  checkSameSolve(path, saved.identity, identityOf(solver));
+  checkSameSolve(path, saved.identity, identityOf(solver), solver.options());
   try {
     solver.restoreProgress(std::move(saved.progress));
   } catch (const std::invalid_argument& e) {
@@ -371,7 +402,7 @@ void writeCellsCheckpoint(const std::string& path, const Scene& scene, const Cel
 
 void resumeCellsFromCheckpoint(const std::string& path, const Scene& scene, CellSolver& solver) {
   CellsContents saved = readFile<CellsContents>(path, kCellsSolve);
-  checkSameSolve(path, saved.identity, identityOf(scene, solver));
+  checkSameSolve(path, saved.identity, identityOf(scene, solver), solver.options());
   if (const std::string differences = cellDifferences(saved.cells, cellsOf(solver)); !differences.empty())
     throw refusal(path, "was written for other cells: " + differences,
                   "resume with the radmesh, scene and options it was written with, or solve from scratch without "
@@ -387,7 +418,7 @@ void resumeCellsFromCheckpoint(const std::string& path, const Scene& scene, Cell
     } catch (const Malformed&) {
       throw refusal(path, fmt::format("is corrupted: the state of cell {} does not parse", c), kStartOver);
     }
-    checkSameSolve(path, cells[c].identity, identityOf(solver.cellSolver(c)));
+    checkSameSolve(path, cells[c].identity, identityOf(solver.cellSolver(c)), solver.cellSolver(c).options());
   }
   solver.restoreProgress(static_cast<int>(saved.rounds), saved.lights, [&](int cell, ProgressiveSolver& cellSolver) {
     restore(path, std::move(cells[cell]), cellSolver);

@@ -228,6 +228,30 @@ TEST(CliCheckpoint, RefusesOtherSubdivideOptionsNamingThem) {
   expectRefused(kSolve, checkpoint, "--subdivide adaptive there, off here");
 }
 
+// Options that differ exactly as a preset's are refused with that preset as the fix; the back end
+// too where it differs; other options with the general fix.
+TEST(CliCheckpoint, NamesThePresetItWasWrittenWith) {
+  const std::string checkpoint = tempPath("bake.ckpt");
+  const std::string solve = "solve cornell --cell 0.381 --quiet ";
+  ASSERT_EQ(radmesh(solve + "--max-iterations 2 --checkpoint " + checkpoint).exitCode, 0);
+  const std::string differ = ": was written with other options: --projection hemicube there, plane here; --resolution "
+                             "256 there, 128 here";
+  expectRefused(solve + "--preset paper", checkpoint,
+                differ + " (fix: resume with the options it was written with (--preset bake), or solve from scratch "
+                         "without --resume)");
+  expectRefused(solve + "--preset paper --backend mesh", checkpoint,
+                "(fix: resume with the options it was written with (--preset bake, on the native back end), or solve "
+                "from scratch without --resume)");
+  expectRefused(solve + "--resolution 128", checkpoint,
+                ": was written with other options: --resolution 256 there, 128 here (fix: resume with the options it "
+                "was written with (--preset bake), or solve from scratch without --resume)");
+  // Written with no preset's options: the general fix.
+  ASSERT_EQ(radmesh(solve + "--max-iterations 2 --resolution 64 --checkpoint " + checkpoint).exitCode, 0);
+  expectRefused(solve, checkpoint,
+                ": was written with other options: --resolution 64 there, 256 here (fix: resume with the options it "
+                "was written with, or solve from scratch without --resume)");
+}
+
 TEST(CliCheckpoint, CheckpointEveryNeedsACheckpointFile) {
   const CommandRun run = radmesh(kSolve + "--max-iterations 2 --checkpoint-every 5");
   EXPECT_NE(run.exitCode, 0);

@@ -148,6 +148,23 @@ TEST(ViewerCli, ACheckpointPathThatCannotBeWrittenIsRefusedAtLaunch) {
   }
 }
 
+// The viewer's defaults are no preset's: a solve's checkpoint is refused with the preset to give,
+// as docs/checkpoints.md says (it listed five flags and "the options it was written with").
+TEST(ViewerCli, AResumeOfASolvesCheckpointNamesItsPreset) {
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string checkpoint = tempPath("bake.ckpt");
+  ASSERT_EQ(radmesh("solve cornell --cell 0.2 --max-iterations 2 --quiet --checkpoint " + checkpoint).exitCode, 0);
+  CommandRun run = runCommand(viewer + "cornell --cell 0.2 --resume " + checkpoint + " --frames 2");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("(fix: resume with the options it was written with (--preset bake, on the native back "
+                            "end), or solve from scratch without --resume)"),
+            std::string::npos)
+      << run.output;
+  run = runCommand(viewer + "cornell --cell 0.2 --preset bake --resume " + checkpoint + " --frames 2");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+}
+
 // A cells solve of an open-sided model keeps the view in from outside: the eye, in no cell, was
 // sent into the Cornell box, half of the picture the void behind its open side. From outside, the
 // background shows either side of the box, the red wall left, the green right.
