@@ -35,6 +35,7 @@ void plotXY(const char* id, std::span<const double> x, std::span<const double> y
     for (size_t i = 0; i < n; i += stride) points.push_back(toScreen(x[i], values[i]));
     if (n > 0 && (n - 1) % stride != 0) points.push_back(toScreen(x[n - 1], values[n - 1]));
     if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), colour, 0, 1.5f);
+    if (points.size() == 1) draw->AddCircleFilled(points[0], 2.5f, colour);  // a resumed solve's first point
   };
   line(y, IM_COL32(110, 200, 255, 255));
   if (!y2.empty()) line(y2, IM_COL32(255, 170, 70, 255));

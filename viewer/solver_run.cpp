@@ -55,10 +55,14 @@ void SolverThread::Run::step(const std::optional<Vec3>& eye, int upAxis) {
   focusOn(eye, upAxis);
   const auto start = Clock::now();
   cells->round();
+  addRound(std::chrono::duration<double>(Clock::now() - start).count());
+}
+
+void SolverThread::Run::addRound(double seconds) {
   IterationRecord record;  // the building's, over the round: C has no meaning across cells
   record.iteration = cells->iterations();
   record.ledger = cells->ledger();
-  record.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  record.seconds = seconds;
   add(record);
 }
 
@@ -126,6 +130,9 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
       run->checkpointMessage = "resumed from " + resumePath;
     } else if (!resumePath.empty()) {
       resumeCellsFromCheckpoint(resumePath, scene_, *run->cells);
+      // Where it stands, from the start: the panel said 0 iterations until the next round. (The
+      // rounds before are not saved: the curve starts here.)
+      run->addRound(0.0);
       run->checkpointMessage = "resumed from " + resumePath + " after round " + std::to_string(run->cells->rounds());
     }
     run->buildMesh();

@@ -45,6 +45,7 @@ struct SolverThread::Run {
 
   // An iteration of the whole solve; a round of the cells solve, focused on the eye's cell first.
   void step(const std::optional<Vec3>& eye, int upAxis);
+  void addRound(double seconds);  // a cells solve's point of the curve, where it stands now
   // The cell the eye stands in, else the cell nearest it; nothing before the eye is known. The
   // look-up passes over every patch: only when the eye has moved.
   void focusOn(const std::optional<Vec3>& eye, int upAxis);

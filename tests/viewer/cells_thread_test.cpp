@@ -1,7 +1,10 @@
 // The viewer's cells solve: the camera's room is solved first, and the focus follows the eye.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
 #include <string>
 
 #include "solver/cells/find_cells.h"
@@ -158,6 +161,32 @@ TEST(CellsSolverThread, ACellsSolveOnTheMeshBackEndIsRefusedWithTheFix) {
   const Snapshot s = waitFor(thread, [](const SolverSnapshot& s) { return !s.error.empty(); });
   EXPECT_NE(s->error.find("--backend native"), std::string::npos) << s->error;
   EXPECT_TRUE(s->errorIsInput);  // the user's to fix: the viewer exits 2, as radmesh solve
+}
+
+// A resumed cells solve shows where it stood from its first snapshot: 16 iterations in round 1 of
+// building:1x1 (it said 0 until the next round), and that point of the curve.
+TEST(CellsSolverThread, AResumedCellsSolveShowsTheRestoredIterations) {
+  const auto dir = std::filesystem::temp_directory_path() / ("radmesh-cells-resume-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "cells.ckpt").string();
+  const Scene scene = loadScene("building:1x1");
+  SolveSetup setup = cellsSetup();
+  setup.cellM = 0.75;
+  SolverThread first(scene, setup, false);
+  first.step(1);
+  const Snapshot saved = waitFor(first, [](const SolverSnapshot& s) { return s.cells && s.cells->rounds >= 1; });
+  first.saveCheckpoint(path);
+  waitFor(first, [](const SolverSnapshot& s) { return s.checkpointMessage.starts_with("saved"); });
+
+  SolverThread reopened(scene, setup, false, path);
+  const Snapshot resumed = waitFor(reopened, [](const SolverSnapshot& s) { return s.mesh || !s.error.empty(); });
+  ASSERT_EQ(resumed->error, "");
+  EXPECT_EQ(resumed->cells->rounds, 1);
+  EXPECT_EQ(resumed->iteration(), saved->iteration());
+  EXPECT_GT(resumed->iteration(), 0);
+  ASSERT_EQ(resumed->curve.size(), 1u);
+  EXPECT_EQ(resumed->curve.back().unshotFraction, saved->curve.back().unshotFraction);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
