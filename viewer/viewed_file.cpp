@@ -35,4 +35,8 @@ ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args) {
   return file;
 }
 
+std::string openFailure(const std::string& path, const std::string& error) {
+  return "could not open " + (error.starts_with(path) ? error : path + ": " + error);
+}
+
 }  // namespace radmesh

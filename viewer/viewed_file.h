@@ -23,4 +23,7 @@ struct ViewedFile {
 // Throws SceneError naming the file (missing, truncated, not a scene) and OptionError, changing nothing.
 ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args);
 
+// "could not open PATH: why", the path said once: readViewedFile's errors mostly begin with it.
+std::string openFailure(const std::string& path, const std::string& error);
+
 }  // namespace radmesh

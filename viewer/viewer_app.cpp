@@ -312,8 +312,9 @@ int runViewer(const ViewerArgs& args) {
       view.autoExposure = true;
     } catch (const std::exception& e) {
       if (!viewing) throw;  // the file was read, but the window could not be set up for it
-      std::fprintf(stderr, "radmesh-view: could not open %s: %s\n", path.c_str(), e.what());
-      viewing->panel.setOpenMessage(path, std::string("could not open: ") + e.what(), true);
+      const std::string failure = openFailure(path, e.what());
+      std::fprintf(stderr, "radmesh-view: %s\n", failure.c_str());
+      viewing->panel.setOpenMessage(path, failure, true);
     }
   };
   while (!window.shouldClose()) {

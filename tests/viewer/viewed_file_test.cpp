@@ -83,5 +83,21 @@ TEST(ViewedFile, AFileThatCannotBeReadIsRefusedByName) {
   }
 }
 
+// The panel's Open error says the path once ("could not open X: X: no such file" it said).
+TEST(ViewedFile, AFileThatCannotBeOpenedIsNamedOnce) {
+  const std::string path = test::dataPath("no_such_file.gltf").string();
+  try {
+    readViewedFile(path, ViewerArgs{});
+    ADD_FAILURE() << path << " was read";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(openFailure(path, e.what()),
+              "could not open " + path +
+                  ": no such file, and not a built-in scene name (fix: give a .gltf, .glb or .mgf file, or a built-in "
+                  "scene name (office, cornell, furnace, two-rooms, building:COLSxROWS))");
+  }
+  // An error that does not name it is given the path.
+  EXPECT_EQ(openFailure("a.glb", "out of memory"), "could not open a.glb: out of memory");
+}
+
 }  // namespace
 }  // namespace radmesh
