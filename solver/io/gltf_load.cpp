@@ -22,6 +22,10 @@ namespace fs = std::filesystem;
 
 constexpr size_t kGlbHeaderBytes = 20;  // magic, version, length, then the JSON chunk's length and type
 
+// tinygltf's JSON parser (and nlohmann's, used here) recurse once per level of nesting: 20000 '['
+// overflow the stack. Real files nest a few dozen levels at most.
+constexpr int kMaxJsonDepth = 512;
+
 std::string readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, "", "cannot be opened", "check the path and the file's permissions");
@@ -108,6 +112,26 @@ void checkLightTypes(const std::string& path, const std::string& json) {
       throw refuse("node " + std::to_string(n), "extensions.KHR_lights_punctual", use,
                    "{\"light\": INDEX} with the index of one of the document's lights");
   }
+}
+
+// Whether the JSON text nests arrays and objects deeper than `limit`, counting brackets outside strings.
+bool nestsDeeperThan(std::string_view json, int limit) {
+  int depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (inString) {
+      if (c == '\\') ++i;  // an escaped character, '"' included
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
 }
 
 // The document's JSON: all of a .gltf, or the JSON chunk of a .glb that loaded.
@@ -212,6 +236,12 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
   const std::string bytes = readBytes(path);
   if (bytes.size() > std::numeric_limits<unsigned>::max())
     throw SceneError(path, "", "is larger than 4 GiB, more than tinygltf reads", "split the model");
+  if (nestsDeeperThan(jsonOf(bytes), kMaxJsonDepth))
+    throw SceneError(path, "JSON",
+                     fmt::format("nests arrays and objects more than {} levels deep, which no glTF needs (parsing it "
+                                 "would overflow the stack)",
+                                 kMaxJsonDepth),
+                     "remove the deep nesting (look in \"extras\") or export the file again");
   const std::string baseDir = fs::path(path).parent_path().string();  // external buffers and images
   const auto length = static_cast<unsigned>(bytes.size());
   tinygltf::TinyGLTF loader;

@@ -211,6 +211,42 @@ TEST(GltfBadInput, AZeroRotationNamesTheNode) {
   EXPECT_NE(r.what.find("rotation (0, 0, 0, 0) is zero or not finite"), std::string::npos) << r.what;
 }
 
+// 20000 nested '[' overflowed the stack in the JSON parser (exit 139): refused before parsing, in
+// a .gltf and in a .glb's JSON chunk alike.
+TEST(GltfBadInput, JsonNestedTooDeeplyIsRefusedBeforeParsing) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1);
+  const std::string gltf = b.write(dir / "deep.gltf").string();
+  std::string json = nlohmann::json::parse(std::ifstream(gltf)).dump();
+  json.pop_back();
+  json += R"(,"extras":{"note":"[[ quoted \" brackets do not count","deep":)" + std::string(20000, '[') +
+          std::string(20000, ']') + "}}";
+  std::ofstream(gltf) << json;
+  const std::string glb = (dir / "deep.glb").string();
+  std::ofstream(glb, std::ios::binary) << test::glbContainer(json);
+  for (const std::string& path : {gltf, glb}) {
+    const GltfRefusal r = gltfRefusalAt(path);
+    EXPECT_EQ(r.what, path + ": JSON: nests arrays and objects more than 512 levels deep, which no glTF needs (parsing "
+                             "it would overflow the stack) (fix: remove the deep nesting (look in \"extras\") or "
+                             "export the file again)");
+  }
+}
+
+// 512 levels (the document's object, "extras" and 510 arrays in it), the most radmesh reads, load.
+TEST(GltfBadInput, JsonNestedTo512LevelsLoads) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1);
+  b.doc()["extras"] = nlohmann::json::array();
+  nlohmann::json* inner = &b.doc()["extras"];
+  for (int level = 3; level <= 512; ++level) {
+    inner->push_back(nlohmann::json::array());
+    inner = &inner->back();
+  }
+  EXPECT_EQ(importGltf(b.write(dir / "nested.gltf").string()).polygons.size(), 1u);
+}
+
 TEST(GltfBadInput, MissingFileIsAClearError) {
   const GltfRefusal r = gltfRefusal("gltf_no_such_file.gltf");
   EXPECT_NE(r.what.find("does not exist"), std::string::npos) << r.what;

@@ -53,6 +53,21 @@ inline std::string base64(const std::vector<unsigned char>& bytes) {
   return out;
 }
 
+// A glTF binary holding `json` as its only chunk, with the header's `version`.
+inline std::string glbContainer(std::string json, uint32_t version = 2) {
+  while (json.size() % 4) json += ' ';
+  std::string glb;
+  const auto word = [&](uint32_t v) {
+    for (int k = 0; k < 4; ++k) glb += static_cast<char>(v >> (8 * k) & 0xFF);
+  };
+  glb += "glTF";
+  word(version);
+  word(static_cast<uint32_t>(20 + json.size()));
+  word(static_cast<uint32_t>(json.size()));
+  word(0x4E4F534Au);  // "JSON"
+  return glb + json;
+}
+
 // Builds a glTF document; accessors go into one buffer, embedded as a data URI or written beside.
 class GltfBuilder {
  public:
