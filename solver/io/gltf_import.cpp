@@ -65,24 +65,44 @@ class TriangleCollector {
   TriangleCollector(const tinygltf::Model& model, const std::string& file, std::vector<std::string>* warnings)
       : model_(model), file_(file), warnings_(warnings), onPath_(model.nodes.size(), false) {}
 
-  // glTF's transform hierarchy (glTF 2.0 spec, 3.5.2): world = parent x local.
-  void visit(int node, const glm::dmat4& parent, const std::string& referrer) {
-    if (node < 0 || static_cast<size_t>(node) >= model_.nodes.size())
-      throw SceneError(file_, referrer, "refers to node " + std::to_string(node) + ", which does not exist",
-                       "refer to existing nodes only");
-    const std::string element = nodeLabel(model_, node);
-    if (onPath_[node])
-      throw SceneError(file_, element, "is its own ancestor (the node hierarchy has a cycle)",
-                       "make the node hierarchy a tree");
-    const glm::dmat4 world = parent * localTransform(model_.nodes[node], element);
-    if (!finiteMatrix(world))
-      throw SceneError(file_, element, "has a NaN or infinite transform", "give the node a finite transform");
-    onPath_[node] = true;
-    if (model_.nodes[node].mesh >= 0) addMesh(model_.nodes[node].mesh, world, element);
-    if (const int light = gltfNodeLight(model_.nodes[node]); light >= 0)
-      lights_.push_back(gltfLight(model_, light, world, file_, element, &rangeIgnored_));
-    for (int child : model_.nodes[node].children) visit(child, world, "children of " + element);
-    onPath_[node] = false;
+  // glTF's transform hierarchy (glTF 2.0 spec, 3.5.2): world = parent x local. Walked with a stack
+  // of its own, depth first in the file's order: recursion overflowed the call stack on a chain of
+  // 30000 nested nodes.
+  void visit(int root, const std::string& referrer) {
+    struct Step {
+      int node;
+      glm::dmat4 parent;
+      std::string referrer;
+      bool leaving;  // its subtree is done: it leaves the current path
+    };
+    std::vector<Step> steps{{root, glm::dmat4(1.0), referrer, false}};
+    while (!steps.empty()) {
+      const Step step = std::move(steps.back());
+      steps.pop_back();
+      const int node = step.node;
+      if (step.leaving) {
+        onPath_[node] = false;
+        continue;
+      }
+      if (node < 0 || static_cast<size_t>(node) >= model_.nodes.size())
+        throw SceneError(file_, step.referrer, "refers to node " + std::to_string(node) + ", which does not exist",
+                         "refer to existing nodes only");
+      const std::string element = nodeLabel(model_, node);
+      if (onPath_[node])
+        throw SceneError(file_, element, "is its own ancestor (the node hierarchy has a cycle)",
+                         "make the node hierarchy a tree");
+      const glm::dmat4 world = step.parent * localTransform(model_.nodes[node], element);
+      if (!finiteMatrix(world))
+        throw SceneError(file_, element, "has a NaN or infinite transform", "give the node a finite transform");
+      onPath_[node] = true;
+      if (model_.nodes[node].mesh >= 0) addMesh(model_.nodes[node].mesh, world, element);
+      if (const int light = gltfNodeLight(model_.nodes[node]); light >= 0)
+        lights_.push_back(gltfLight(model_, light, world, file_, element, &rangeIgnored_));
+      steps.push_back({node, {}, {}, true});
+      const std::vector<int>& children = model_.nodes[node].children;
+      for (auto child = children.rbegin(); child != children.rend(); ++child)  // reversed: popped in order
+        steps.push_back({*child, world, "children of " + element, false});
+    }
   }
 
   std::vector<Polygon>& triangles() { return triangles_; }
@@ -299,7 +319,7 @@ void addBackFaces(const tinygltf::Model& model, std::vector<Polygon>& triangles)
 
 GltfColouredTriangles readGltfColouredTriangles(const tinygltf::Model& model, const std::string& path) {
   TriangleCollector collector(model, path, nullptr);
-  for (const auto& [node, referrer] : sceneRoots(model, path)) collector.visit(node, glm::dmat4(1.0), referrer);
+  for (const auto& [node, referrer] : sceneRoots(model, path)) collector.visit(node, referrer);
   GltfColouredTriangles out{std::move(collector.triangles()), collector.colours(), false};
   for (const Material& m : convertGltfMaterials(model, path, nullptr)) out.emits = out.emits || m.emits();
   return out;
@@ -312,7 +332,7 @@ Scene importGltf(const std::string& path, std::vector<std::string>* warnings) {
   scene.upAxis = 1;  // glTF 2.0 spec, 3.4: +Y is up
   scene.materials = convertGltfMaterials(model, path, warnings);
   TriangleCollector collector(model, path, warnings);
-  for (const auto& [node, referrer] : sceneRoots(model, path)) collector.visit(node, glm::dmat4(1.0), referrer);
+  for (const auto& [node, referrer] : sceneRoots(model, path)) collector.visit(node, referrer);
   if (collector.defaultMaterialUsers() > 0) {
     scene.materials.push_back(defaultGltfMaterial());
     if (warnings)

@@ -131,6 +131,22 @@ TEST(GltfImport, NodeTransformsComposeFromTheRootDown) {
 
 // A rotation quaternion must be unit length; one that is not (as written by hand or by a broken
 // exporter) is normalised with a warning counting the nodes, instead of scaling the node.
+// A chain of 30000 nodes, each the child of the one before, crashed the recursive walk (stack
+// overflow); each level translates by 1 mm, so the triangle lands 30 m along x.
+TEST(GltfImport, AChainOf30000NestedNodesIsWalkedWithoutRecursion) {
+  TempDir dir;
+  GltfBuilder b;
+  const int levels = 30000;
+  int node = b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                            {{"translation", {0.001, 0, 0}}});
+  for (int i = 1; i < levels; ++i) node = b.add("nodes", {{"translation", {0.001, 0, 0}}, {"children", {node}}});
+  const Scene s = importGltf(b.write(dir / "chain.gltf").string());
+  ASSERT_EQ(s.polygons.size(), 1u);
+  const std::vector<Vec3> expected = {{30, 0, 0}, {31, 0, 0}, {30, 1, 0}};
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.polygons[0].vertices[k][c], expected[k][c], 1e-9);
+}
+
 TEST(GltfImport, NonUnitRotationsAreNormalisedWithACountedWarning) {
   TempDir dir;
   GltfBuilder b;
