@@ -19,4 +19,22 @@ bool looksBinary(const std::string& path) {
   return head.find('\0') != std::string::npos;
 }
 
+FileKind fileKind(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) return FileKind::Missing;
+  if (std::filesystem::is_regular_file(status)) return FileKind::Regular;
+  return std::filesystem::is_directory(status) ? FileKind::Folder : FileKind::Special;
+}
+
+std::string fileKindName(FileKind kind) {
+  switch (kind) {
+    case FileKind::Missing: return "missing";
+    case FileKind::Regular: return "a file";
+    case FileKind::Folder: return "a folder";
+    case FileKind::Special: return "a FIFO, socket or device";
+  }
+  return "";
+}
+
 }  // namespace radmesh

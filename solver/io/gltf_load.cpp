@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <string_view>
 
+#include "solver/io/file_signature.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -77,10 +79,8 @@ std::string lightElement(const nlohmann::json& light, size_t index) {
 
 // tinygltf drops a light's property of the wrong type and keeps its default (an intensity of
 // "1000", a string, becomes 1 cd), and ignores a node's light that is no index: both are refused
-// here, naming the light or node. Read from the JSON only when the document has lights.
-void checkLightTypes(const std::string& path, const std::string& json) {
-  if (json.find("KHR_lights_punctual") == std::string::npos) return;
-  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+// here, naming the light or node.
+void checkLightTypes(const std::string& path, const nlohmann::json& doc) {
   const nlohmann::json lights = lightsOf(doc);
   const auto refuse = [&](const std::string& element, const std::string& key, const nlohmann::json& value,
                           const std::string& want) {
@@ -134,6 +134,49 @@ bool nestsDeeperThan(std::string_view json, int limit) {
   return false;
 }
 
+// The file a buffer's or image's URI names: relative to the glTF file's folder (glTF 2.0 3.6.1),
+// with %XX escapes decoded, as tinygltf reads it.
+fs::path uriFile(const std::string& path, const std::string& uri) {
+  std::string decoded;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      decoded += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      decoded += uri[i];
+    }
+  }
+  return fs::path(path).parent_path() / decoded;
+}
+
+// Every buffer and image the document names by a URI, not embedded, checked before tinygltf opens
+// it: reading a FIFO would block for ever, a folder failed with std::bad_alloc, and a missing buffer
+// would be looked for in the working directory too.
+void checkExternalFiles(const std::string& path, const nlohmann::json& doc) {
+  for (const std::string array : {"buffers", "images"}) {
+    if (!doc.is_object() || !doc.contains(array) || !doc[array].is_array()) continue;
+    const std::string what = array == "buffers" ? "buffer" : "image";
+    for (size_t i = 0; i < doc[array].size(); ++i) {
+      const nlohmann::json& entry = doc[array][i];
+      if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
+      const std::string uri = entry["uri"].get<std::string>();
+      if (uri.rfind("data:", 0) == 0) continue;
+      const std::string element = what + " " + std::to_string(i);
+      const fs::path file = uriFile(path, uri);
+      const FileKind kind = fileKind(file);
+      if (kind == FileKind::Folder || kind == FileKind::Special)
+        throw SceneError(path, element,
+                         fmt::format("its uri '{}' names '{}', which is {}, not a file", uri, file.string(),
+                                     fileKindName(kind)),
+                         fmt::format("give the uri of the {}'s file, beside the glTF file, or embed the {}", what, what));
+      if (kind == FileKind::Missing && what == "buffer")
+        throw SceneError(path, element, "its file '" + file.string() + "' does not exist",
+                         "put '" + uri + "' beside the glTF file, or embed the buffer");
+    }
+  }
+}
+
 // The document's JSON: all of a .gltf, or the JSON chunk of a .glb that loaded.
 std::string jsonOf(const std::string& bytes) {
   if (!isGlb(bytes) || bytes.size() < kGlbHeaderBytes) return bytes;
@@ -142,8 +185,7 @@ std::string jsonOf(const std::string& bytes) {
 
 // Why tinygltf refused the file, found by reading the file again ourselves: the GLB container,
 // the JSON syntax, or an external buffer that is missing or short.
-Diagnosis diagnose(const std::string& path, const std::string& bytes) {
-  std::string json = bytes;
+Diagnosis diagnose(const std::string& path, const std::string& bytes, const nlohmann::json& doc) {
   if (isGlb(bytes)) {
     const uint32_t declared = bytes.size() >= 12 ? littleEndian32(bytes, 8) : 0;
     const uint32_t jsonBytes = bytes.size() >= kGlbHeaderBytes ? littleEndian32(bytes, 12) : 0;
@@ -157,9 +199,7 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes) {
               fmt::format("its JSON chunk declares {} bytes, but {} follow the chunk's header", jsonBytes,
                           bytes.size() - kGlbHeaderBytes),
               damaged};
-    json = jsonOf(bytes);
   }
-  const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
   if (doc.is_discarded())
     return {"JSON", "", "repair the JSON text (a truncated file ends mid-object)"};
   // tinygltf refuses a light without a type (or a spot without its cone) without naming it.
@@ -193,11 +233,8 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes) {
                   "export the file again (the embedded buffer and its byteLength disagree)"};
         continue;
       }
-      const fs::path file = fs::path(path).parent_path() / uri;
+      const fs::path file = uriFile(path, uri);
       std::error_code ec;
-      if (!fs::is_regular_file(file, ec))
-        return {element, "its file '" + file.string() + "' does not exist",
-                "put '" + uri + "' beside the glTF file, or embed the buffer"};
       const auto size = fs::file_size(file, ec);
       if (!ec && declared && size < b["byteLength"].get<uint64_t>())
         return {element, "its file '" + file.string() + "' has " + std::to_string(size) + " bytes, fewer than byteLength",
@@ -242,6 +279,8 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
                                  "would overflow the stack)",
                                  kMaxJsonDepth),
                      "remove the deep nesting (look in \"extras\") or export the file again");
+  const nlohmann::json doc = nlohmann::json::parse(jsonOf(bytes), nullptr, /*allow_exceptions=*/false);
+  checkExternalFiles(path, doc);  // a document that is no JSON has none: tinygltf says what is wrong
   const std::string baseDir = fs::path(path).parent_path().string();  // external buffers and images
   const auto length = static_cast<unsigned>(bytes.size());
   tinygltf::TinyGLTF loader;
@@ -260,10 +299,10 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
   appendWarnings(path, warning, warnings);
   // tinygltf may report an error yet return true (a bad optional part); trust only a clean load.
   if (loaded && error.empty()) {
-    checkLightTypes(path, jsonOf(bytes));
+    checkLightTypes(path, doc);
     return model;
   }
-  const Diagnosis d = diagnose(path, bytes);
+  const Diagnosis d = diagnose(path, bytes, doc);
   throw SceneError(path, d.element,
                    "could not be loaded (tinygltf: " + oneLine(error) + ")" +
                        (d.detail.empty() ? "" : ": " + d.detail),

@@ -12,6 +12,7 @@
 #include <map>
 #include <numbers>
 
+#include "solver/io/file_signature.h"
 #include "solver/io/ies_photometry.h"
 #include "solver/io/mgf_color.h"
 #include "solver/io/mgf_context.h"
@@ -171,11 +172,12 @@ void MgfInterpreter::entity(const MgfEntity& e) {
 fs::path MgfInterpreter::includedPath(const std::string& name, const char* what) const {
   fs::path target = name;
   if (target.is_relative()) target = files_.back().path.parent_path() / target;
-  std::error_code ec;
-  if (fs::exists(target, ec) && !fs::is_regular_file(target, ec))
-    throw MgfError(std::string(what) + " '" + name + "' is not a file (" + target.string() + " is a folder or device)",
+  const FileKind kind = fileKind(target);
+  if (kind == FileKind::Folder || kind == FileKind::Special)
+    throw MgfError(std::string(what) + " '" + name + "' is not a file (" + target.string() + " is " +
+                       fileKindName(kind) + ")",
                    "name the file to read");
-  if (!fs::is_regular_file(target, ec))
+  if (kind == FileKind::Missing)
     throw MgfError(std::string(what) + " '" + name + "' not found (looked for " + target.string() + ")",
                    "check the name; include paths are relative to the including file's folder");
   return target;

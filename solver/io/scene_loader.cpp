@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <system_error>
 
 #include "solver/io/builtin_scenes.h"
 #include "solver/io/file_signature.h"
@@ -33,15 +32,12 @@ Scene importFile(const std::string& path, std::vector<std::string>* warnings) {
 }  // namespace
 
 void checkSceneFile(const std::string& path) {
-  std::error_code error;
-  const std::filesystem::path p(path);
-  if (!std::filesystem::exists(p, error))
+  const FileKind kind = fileKind(path);
+  if (kind == FileKind::Missing)
     throw SceneError(path, "", "no such file, and not a built-in scene name", acceptedForms());
-  if (std::filesystem::is_directory(p, error))
-    throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
-  // A FIFO, socket or device would block the reader, or never end.
-  if (!std::filesystem::is_regular_file(p, error))
-    throw SceneError(path, "", "is not a regular file (a FIFO, socket or device), not a scene file", acceptedForms());
+  if (kind == FileKind::Folder) throw SceneError(path, "", "is a directory, not a scene file", acceptedForms());
+  if (kind == FileKind::Special)
+    throw SceneError(path, "", "is not a regular file (" + fileKindName(kind) + "), not a scene file", acceptedForms());
   // Whatever it is named: read as a scene, it would fail for reasons that do not apply.
   if (fileStartsWith(path, kCheckpointSignature))
     throw SceneError(path, "", "is a radmesh checkpoint, not a scene",

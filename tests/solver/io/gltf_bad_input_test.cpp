@@ -7,6 +7,10 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <future>
 #include <memory>
@@ -245,6 +249,40 @@ TEST(GltfBadInput, JsonNestedTo512LevelsLoads) {
     inner = &inner->back();
   }
   EXPECT_EQ(importGltf(b.write(dir / "nested.gltf").string()).polygons.size(), 1u);
+}
+
+// A buffer or image whose URI names a FIFO blocked the reader for ever; one naming a folder gave
+// "std::bad_alloc ... does not exist". Both are refused before tinygltf opens them, as MGF's
+// include and ies are.
+TEST(GltfBadInput, AUriNamingAFifoOrAFolderIsRefusedWithoutBlocking) {
+  test::TempDir dir;
+  const std::string fifo = (dir / "fifo.bin").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto refusal = [&](const std::string& name, const std::string& bufferUri, const std::string& imageUri) {
+    test::GltfBuilder b;
+    b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1);
+    if (!imageUri.empty()) b.add("images", {{"uri", imageUri}});
+    const std::string path = b.write(dir / name, "mesh.bin").string();
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(path));
+    doc["buffers"][0]["uri"] = bufferUri;
+    std::ofstream(path) << doc.dump();
+    const GltfRefusal r = gltfRefusalWithin(std::chrono::seconds(10), path);
+    if (r.what.empty()) ::close(::open(fifo.c_str(), O_WRONLY | O_NONBLOCK));  // let a blocked reader go
+    return std::pair{path, r};
+  };
+  const std::string fifoFile = (dir.path() / "fifo.bin").string();
+  const auto [buffer, fromBuffer] = refusal("buffer.gltf", "fifo.bin", "");
+  EXPECT_EQ(fromBuffer.what, buffer + ": buffer 0: its uri 'fifo.bin' names '" + fifoFile +
+                                 "', which is a FIFO, socket or device, not a file (fix: give the uri of the buffer's "
+                                 "file, beside the glTF file, or embed the buffer)");
+  const auto [image, fromImage] = refusal("image.gltf", "mesh.bin", "fifo%2Ebin");
+  EXPECT_EQ(fromImage.what, image + ": image 0: its uri 'fifo%2Ebin' names '" + fifoFile +
+                                "', which is a FIFO, socket or device, not a file (fix: give the uri of the image's "
+                                "file, beside the glTF file, or embed the image)");
+  const auto [folder, fromFolder] = refusal("folder.gltf", ".", "");
+  EXPECT_EQ(fromFolder.what, folder + ": buffer 0: its uri '.' names '" + (dir.path() / ".").string() +
+                                 "', which is a folder, not a file (fix: give the uri of the buffer's file, beside the "
+                                 "glTF file, or embed the buffer)");
 }
 
 TEST(GltfBadInput, MissingFileIsAClearError) {
