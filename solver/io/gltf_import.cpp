@@ -249,10 +249,10 @@ class TriangleCollector {
   int defaultMaterialUsers_ = 0;
 };
 
-// Whether each node is some node's child. glTF 2.0 (3.5.2) requires the hierarchy to be disjoint
-// trees, each node with at most one parent: a node under two parents (or listed twice under one)
-// is refused, as the traversal would visit it once per path (2^40 times down 40 such levels).
-std::vector<bool> childNodes(const tinygltf::Model& model, const std::string& file) {
+// Each node's parent (-1 for none). glTF 2.0 (3.5.2) requires the hierarchy to be disjoint trees,
+// each node with at most one parent: a node under two parents (or listed twice under one) is
+// refused, as the traversal would visit it once per path (2^40 times down 40 such levels).
+std::vector<int> parentNodes(const tinygltf::Model& model, const std::string& file) {
   std::vector<int> parent(model.nodes.size(), -1);
   for (size_t p = 0; p < model.nodes.size(); ++p)
     for (int c : model.nodes[p].children) {
@@ -267,29 +267,40 @@ std::vector<bool> childNodes(const tinygltf::Model& model, const std::string& fi
       }
       parent[c] = static_cast<int>(p);
     }
-  std::vector<bool> isChild(parent.size());
-  for (size_t n = 0; n < parent.size(); ++n) isChild[n] = parent[n] >= 0;
-  return isChild;
+  return parent;
 }
 
-// The roots to draw: the default scene's, else every scene's, else every node no node has as a child.
-// Refuses a hierarchy that is not a forest first (childNodes), before anything is traversed.
+// The roots to draw: the default scene's, scene 0's when the file names no default (as viewers
+// do), else every node no node has as a child. A scene's nodes must be distinct roots (glTF 2.0
+// 3.5.2, and scene.nodes is uniqueItems): a node listed twice, or also some node's child, would be
+// drawn twice. The hierarchy is checked (parentNodes) before anything is traversed.
 std::vector<std::pair<int, std::string>> sceneRoots(const tinygltf::Model& model, const std::string& file) {
-  const std::vector<bool> isChild = childNodes(model, file);
+  const std::vector<int> parent = parentNodes(model, file);
   std::vector<std::pair<int, std::string>> roots;
-  auto addScene = [&](int s) {
-    for (int node : model.scenes[s].nodes) roots.emplace_back(node, "scene " + std::to_string(s));
-  };
-  if (model.defaultScene >= 0) {
-    if (static_cast<size_t>(model.defaultScene) >= model.scenes.size())
-      throw SceneError(file, "scene", "the default scene " + std::to_string(model.defaultScene) + " does not exist",
-                       "set \"scene\" to an existing scene's index");
-    addScene(model.defaultScene);
-  } else if (!model.scenes.empty()) {
-    for (size_t s = 0; s < model.scenes.size(); ++s) addScene(static_cast<int>(s));
-  } else {
+  if (model.scenes.empty()) {
     for (size_t n = 0; n < model.nodes.size(); ++n)
-      if (!isChild[n]) roots.emplace_back(static_cast<int>(n), "nodes");
+      if (parent[n] < 0) roots.emplace_back(static_cast<int>(n), "nodes");
+    return roots;
+  }
+  const int scene = std::max(model.defaultScene, 0);
+  if (static_cast<size_t>(scene) >= model.scenes.size())
+    throw SceneError(file, "scene", "the default scene " + std::to_string(scene) + " does not exist",
+                     "set \"scene\" to an existing scene's index");
+  const std::string label = "scene " + std::to_string(scene);
+  std::vector<bool> listed(model.nodes.size(), false);
+  for (int node : model.scenes[scene].nodes) {
+    roots.emplace_back(node, label);
+    if (node < 0 || static_cast<size_t>(node) >= model.nodes.size()) continue;  // refused when visited
+    const std::string problem =
+        listed[node] ? "is listed twice among the nodes of " + label
+        : parent[node] >= 0 ? "is among the nodes of " + label + " and a child of " + nodeLabel(model, parent[node])
+                            : "";
+    if (!problem.empty())
+      throw SceneError(file, nodeLabel(model, node),
+                       problem + "; glTF 2.0 (3.5.2) lists each root node of a scene once, and only root nodes "
+                                 "(it would be drawn twice)",
+                       "list each root node once in the scene's nodes, and no node's child (it comes with its parent)");
+    listed[node] = true;
   }
   return roots;
 }

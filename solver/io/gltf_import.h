@@ -11,7 +11,7 @@
 namespace radmesh {
 
 // Reads the triangles (lists, strips and fans, indexed or not) of every mesh under the default scene's roots
-// (or every scene's, or every root node's), in world space through the node transforms (matrix or
+// (scene 0's when none is named, or every root node's without scenes), in world space through the node transforms (matrix or
 // TRS); points and lines, which have no area, are warned about and skipped. Materials: rho = baseColorFactor x the
 // baseColorTexture's texel average, E = emissiveFactor x KHR_materials_emissive_strength (W/m^2);
 // see gltf_material.h. KHR_lights_punctual lights on the nodes become the scene's lights

@@ -204,6 +204,33 @@ TEST(GltfBadInput, ANodeWithTwoParentsIsRefusedBeforeTraversal) {
   EXPECT_NE(twice.what.find("is listed twice among the children of node 0 'L0'"), std::string::npos) << twice.what;
 }
 
+// A scene's nodes are distinct roots: a node (a wall, a light) listed twice, or a root that is also
+// another node's child, was drawn twice, doubling its area or its light.
+TEST(GltfBadInput, ASceneNodeListedTwiceOrAlsoAChildIsRefused) {
+  test::TempDir dir;
+  const auto refusal = [&](const std::string& name, const nlohmann::json& sceneNodes, bool grouped = false) {
+    test::GltfBuilder b;
+    b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1, {{"name", "wall"}});
+    b.add("nodes", {{"name", "lamp"}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    b.add("nodes", {{"name", "group"}, {"children", grouped ? nlohmann::json{0} : nlohmann::json::array()}});
+    b.doc()["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 10}}};
+    b.doc()["scenes"] = {{{"nodes", sceneNodes}}};
+    return gltfRefusalAt(b.write(dir / name).string());
+  };
+  const std::string fix = " (it would be drawn twice) (fix: list each root node once in the scene's nodes, and no "
+                          "node's child (it comes with its parent))";
+  const std::string rule = "; glTF 2.0 (3.5.2) lists each root node of a scene once, and only root nodes";
+  const GltfRefusal wall = refusal("wall.gltf", {0, 1, 0});
+  EXPECT_EQ(wall.what, (dir / "wall.gltf").string() + ": node 0 'wall': is listed twice among the nodes of scene 0" +
+                           rule + fix);
+  const GltfRefusal lamp = refusal("lamp.gltf", {0, 1, 1});
+  EXPECT_EQ(lamp.what, (dir / "lamp.gltf").string() + ": node 1 'lamp': is listed twice among the nodes of scene 0" +
+                           rule + fix);
+  const GltfRefusal child = refusal("child.gltf", {0, 2}, true);
+  EXPECT_EQ(child.what, (dir / "child.gltf").string() +
+                            ": node 0 'wall': is among the nodes of scene 0 and a child of node 2 'group'" + rule + fix);
+}
+
 // A rotation that is no rotation at all cannot be normalised (GltfImport.* checks the repair).
 TEST(GltfBadInput, AZeroRotationNamesTheNode) {
   test::TempDir dir;

@@ -184,18 +184,21 @@ TEST(GltfImport, MirroringTransformKeepsTheFrontFace) {
   EXPECT_GT(newellNormal(s.polygons[0].vertices).z, 0.0);  // faced +z before the mirror, still does
 }
 
-TEST(GltfImport, DefaultSceneAloneOrEveryScene) {
+// Two scenes sharing a node: the default one is read; with none named, scene 0 alone (all scenes
+// together drew every shared wall twice).
+TEST(GltfImport, DefaultSceneElseSceneZero) {
   TempDir dir;
   GltfBuilder b;
   const int a = b.addTriangles("a", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1);
   const int c = b.addTriangles("c", b.addPositions({{0, 0, 5}, {1, 0, 5}, {0, 1, 5}}), -1, -1);
-  b.doc()["scenes"] = {{{"nodes", {a}}}, {{"nodes", {c}}}};
-  const Scene all = importGltf(b.write(dir / "all.gltf").string());
-  EXPECT_EQ(all.polygons.size(), 2u);
+  b.doc()["scenes"] = {{{"nodes", {a}}}, {{"nodes", {a, c}}}};
+  const Scene first = importGltf(b.write(dir / "first.gltf").string());
+  ASSERT_EQ(first.polygons.size(), 1u);
+  EXPECT_EQ(first.polygons[0].vertices[0].z, 0.0);
   b.doc()["scene"] = 1;
   const Scene second = importGltf(b.write(dir / "second.gltf").string());
-  ASSERT_EQ(second.polygons.size(), 1u);
-  EXPECT_EQ(second.polygons[0].vertices[0].z, 5.0);
+  ASSERT_EQ(second.polygons.size(), 2u);
+  EXPECT_EQ(second.polygons[1].vertices[0].z, 5.0);
 }
 
 // An exporter's n-gon as a triangle fan, a quad as a strip, and a line (tests/data/repaired/).
