@@ -170,10 +170,11 @@ class TriangleCollector {
     const std::string& name = model_.meshes[mesh].name;
     const std::string label = name.empty() ? "mesh " + std::to_string(mesh) : "mesh '" + name + "'";
     for (size_t p = 0; p < model_.meshes[mesh].primitives.size(); ++p)
-      addPrimitive(model_.meshes[mesh].primitives[p], world, label + " primitive " + std::to_string(p));
+      addPrimitive(model_.meshes[mesh].primitives[p], world, label + " primitive " + std::to_string(p), element);
   }
 
-  void addPrimitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& element) {
+  void addPrimitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& element,
+                    const std::string& node) {
     if (prim.mode == TINYGLTF_MODE_POINTS || prim.mode == TINYGLTF_MODE_LINE ||
         prim.mode == TINYGLTF_MODE_LINE_LOOP || prim.mode == TINYGLTF_MODE_LINE_STRIP) {
       if (warnings_)
@@ -217,6 +218,13 @@ class TriangleCollector {
       for (int k = 0; k < 3; ++k) {
         const uint32_t index = indices[i + (mirrored ? 2 - k : k)];
         t.vertices.push_back(Vec3(world * glm::dvec4(local[index], 1.0)));
+        if (!withinCoordinateBound(t.vertices.back()))
+          throw SceneError(file_, element + " (" + node + ")",
+                           fmt::format("vertex {} lands at ({:g}, {:g}, {:g}) through the node transforms, farther "
+                                       "than {:g} m from the origin, where lengths and areas overflow",
+                                       index, t.vertices.back().x, t.vertices.back().y, t.vertices.back().z,
+                                       kMaxCoordinate),
+                           "check the scales and translations of the node and its parents (glTF is in metres)");
         if (!uncoloured_) colour[k] = colours[index];
       }
       triangles_.push_back(std::move(t));

@@ -29,13 +29,12 @@ class MgfError : public std::runtime_error {
   }
 };
 
-// Past this, lengths and areas overflow (or rounding swallows the model): a point farther from the
-// origin is refused where it is given or placed, not dropped later as degenerate.
-inline constexpr double kMaxMgfCoordinate = 1e30;
+// A point farther from the origin than kMaxCoordinate is refused where it is given or placed, not
+// dropped later as degenerate.
 inline void checkMgfPoint(const Vec3& p, const std::string& what, const std::string& fix) {
-  if (!(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxMgfCoordinate))
+  if (!withinCoordinateBound(p))
     throw MgfError(fmt::format("{} ({:g}, {:g}, {:g}) is farther than {:g} from the origin", what, p.x, p.y, p.z,
-                               kMaxMgfCoordinate),
+                               kMaxCoordinate),
                    fix);
 }
 

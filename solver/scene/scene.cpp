@@ -111,6 +111,19 @@ std::string describe(const Scene& scene, size_t index) {
   return "polygon " + std::to_string(index) + (p.origin.empty() ? "" : " (" + p.origin + ")");
 }
 
+// What an emitter sends, past kMaxEmitted: refused, for every format alike.
+void requireTrustedEmission(double emitted, const char* unit, const std::string& file, const std::string& element,
+                            const char* what) {
+  if (emitted > kMaxEmitted)
+    throw SceneError(file, element,
+                     fmt::format("emits {:g} {}, more than the {:g} {} radmesh trusts (no real light comes near; a "
+                                 "solve would overflow the bake's radiosities)",
+                                 emitted, unit, kMaxEmitted, unit),
+                     fmt::format("lower its {} to a real light's: MGF's ed is in lm/m^2, glTF's emission in W/m^2, "
+                                 "a glTF light's intensity in candela (lux for a directional light)",
+                                 what));
+}
+
 void validateMaterial(const Scene& scene, const Material& m) {
   const std::string element = "material '" + m.name + "'";
   for (int c = 0; c < 3; ++c) {
@@ -123,6 +136,8 @@ void validateMaterial(const Scene& scene, const Material& m) {
                        "emittance " + std::to_string(m.emittance[c]) + " is negative or not finite",
                        "give emittance as a finite, non-negative exitance in W/m^2");
   }
+  requireTrustedEmission(std::max({m.emittance.r, m.emittance.g, m.emittance.b}), "W/m^2", scene.source, element,
+                         "emittance");
 }
 
 void validatePolygon(const Scene& scene, size_t index) {
@@ -163,6 +178,8 @@ void validateLight(const Scene& scene, const Light& light) {
                      "has a negative, NaN or infinite intensity (" + std::to_string(light.intensity.r) + ", " +
                          std::to_string(light.intensity.g) + ", " + std::to_string(light.intensity.b) + ")",
                      "give the light a finite, non-negative intensity and colour");
+  const Rgb power = lightPower(scene, light);
+  requireTrustedEmission(power.r + power.g + power.b, "W", scene.source, light.name, "intensity");
   if (light.type != LightType::Directional && !finite(light.position))
     throw SceneError(scene.source, light.name, "has a NaN or infinite position",
                      "give its node a finite transform");

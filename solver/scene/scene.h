@@ -3,6 +3,7 @@
 // mesher consumes; nothing here knows about patches or light transport.
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -21,6 +22,18 @@ inline constexpr double kWhiteEfficacyLmPerW = 179.0;
 // What a reflectance of 1 or more is lowered to, in every reader: rho = 1 would never let light
 // die out, and exporters write 1 for white.
 inline constexpr double kHighestReflectance = 0.99;
+
+// Past this distance from the origin (m) lengths and areas overflow, or rounding swallows the model:
+// every reader refuses a point placed farther (MGF where it is given, glTF after the node transforms).
+inline constexpr double kMaxCoordinate = 1e30;
+inline bool withinCoordinateBound(const Vec3& p) {
+  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.z) <= kMaxCoordinate;
+}
+
+// The most an emitter may send that radmesh trusts: a material's exitance in W/m^2 per channel, a
+// light's power in W. Beyond it (no real light comes within twenty orders of it) a solve carries
+// the number into radiosities that a bake's 32-bit floats cannot hold.
+inline constexpr double kMaxEmitted = 1e30;
 
 struct Material {
   std::string name;
@@ -84,8 +97,9 @@ std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n);
 
 // Throws SceneError for input that cannot be solved: no polygons, NaN or infinite coordinates,
 // fewer than 3 vertices, zero area, non-planar polygons, rho outside [0,1), negative or non-finite
-// emittance, a material index out of range, a light with a non-finite or negative intensity, a
-// zero direction or cone angles outside 0 <= inner < outer <= pi/2.
+// emittance or one past kMaxEmitted, a material index out of range, a light with a non-finite or
+// negative intensity or a power past kMaxEmitted, a zero direction or cone angles outside
+// 0 <= inner < outer <= pi/2.
 void validateGeometry(const Scene& scene);
 // The same, and no emitter at all, neither an emitting material nor a light (the message points to
 // daylight).

@@ -231,6 +231,24 @@ TEST(GltfBadInput, ASceneNodeListedTwiceOrAlsoAChildIsRefused) {
                             ": node 0 'wall': is among the nodes of scene 0 and a child of node 2 'group'" + rule + fix);
 }
 
+// A node scale of 1e39 put inf in the bake's float positions, and 1e155 overflowed the area into
+// "degenerate triangles dropped": past MGF's bound, 1e30 m, a world-space vertex is refused.
+TEST(GltfBadInput, AVertexPastTheCoordinateBoundNamesTheMeshAndNode) {
+  test::TempDir dir;
+  for (const double scale : {1e39, 1e155}) {
+    test::GltfBuilder b;
+    const int inner = b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1, {{"name", "wall"}});
+    b.add("nodes", {{"name", "huge"}, {"scale", {scale, scale, scale}}, {"children", {inner}}});
+    const std::string path = b.write(dir / "huge.gltf").string();
+    const GltfRefusal r = gltfRefusalAt(path);
+    EXPECT_EQ(r.what, path + fmt::format(": mesh 't' primitive 0 (node 0 'wall'): vertex 1 lands at ({:g}, 0, 0) "
+                                         "through the node transforms, farther than 1e+30 m from the origin, where "
+                                         "lengths and areas overflow (fix: check the scales and translations of the "
+                                         "node and its parents (glTF is in metres))",
+                                         scale));
+  }
+}
+
 // A rotation that is no rotation at all cannot be normalised (GltfImport.* checks the repair).
 TEST(GltfBadInput, AZeroRotationNamesTheNode) {
   test::TempDir dir;
