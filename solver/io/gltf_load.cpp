@@ -1,9 +1,11 @@
 #include "solver/io/gltf_load.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
@@ -132,6 +134,31 @@ bool nestsDeeperThan(std::string_view json, int limit) {
     }
   }
   return false;
+}
+
+// What a file may list in extensionsRequired: the extensions radmesh reads, and those that change
+// nothing it reads (it averages a texture's texels, so their placement does not matter; quantized
+// positions are refused by name where they are read).
+constexpr std::array<std::string_view, 5> kRequirableExtensions = {
+    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_unlit", "KHR_texture_transform",
+    "KHR_mesh_quantization"};
+
+// glTF 2.0 (3.12): a reader must refuse a file requiring an extension it does not implement.
+// Unrefused, a compressed mesh loaded as nothing or failed as "no valid bufferView".
+void checkRequiredExtensions(const std::string& path, const nlohmann::json& doc) {
+  if (!doc.is_object() || !doc.contains("extensionsRequired") || !doc["extensionsRequired"].is_array()) return;
+  for (const nlohmann::json& name : doc["extensionsRequired"]) {
+    if (!name.is_string() || std::ranges::find(kRequirableExtensions, name.get<std::string>()) !=
+                                 kRequirableExtensions.end())
+      continue;
+    const std::string extension = name.get<std::string>();
+    throw SceneError(path, "extensionsRequired",
+                     fmt::format("the file requires {}, which radmesh does not implement (it accepts {})", extension,
+                                 fmt::join(kRequirableExtensions, ", ")),
+                     extension.find("compression") != std::string::npos
+                         ? "export the file without Draco or meshopt compression"
+                         : "export the file without " + extension);
+  }
 }
 
 // The file a buffer's or image's URI names: relative to the glTF file's folder (glTF 2.0 3.6.1),
@@ -280,7 +307,9 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
                                  kMaxJsonDepth),
                      "remove the deep nesting (look in \"extras\") or export the file again");
   const nlohmann::json doc = nlohmann::json::parse(jsonOf(bytes), nullptr, /*allow_exceptions=*/false);
-  checkExternalFiles(path, doc);  // a document that is no JSON has none: tinygltf says what is wrong
+  // A document that is no JSON has neither: tinygltf says what is wrong with it.
+  checkRequiredExtensions(path, doc);
+  checkExternalFiles(path, doc);
   const std::string baseDir = fs::path(path).parent_path().string();  // external buffers and images
   const auto length = static_cast<unsigned>(bytes.size());
   tinygltf::TinyGLTF loader;

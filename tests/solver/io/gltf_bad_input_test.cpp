@@ -249,6 +249,36 @@ TEST(GltfBadInput, AVertexPastTheCoordinateBoundNamesTheMeshAndNode) {
   }
 }
 
+// A required extension radmesh does not implement loaded as nothing (meshopt) or failed as "no
+// valid bufferView" (Draco); the extensions it reads may still be required.
+TEST(GltfBadInput, ARequiredExtensionRadmeshDoesNotImplementIsRefusedByName) {
+  test::TempDir dir;
+  const auto write = [&](const std::string& name, const nlohmann::json& required) {
+    test::GltfBuilder b;
+    const int lamp = b.add("materials", {{"emissiveFactor", {1, 1, 1}}});
+    b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, lamp);
+    b.doc()["extensionsUsed"] = required;
+    b.doc()["extensionsRequired"] = required;
+    return b.write(dir / name).string();
+  };
+  const std::string reads = "(it accepts KHR_lights_punctual, KHR_materials_emissive_strength, KHR_materials_unlit, "
+                            "KHR_texture_transform, KHR_mesh_quantization)";
+  for (const std::string extension : {"EXT_meshopt_compression", "KHR_draco_mesh_compression"}) {
+    const std::string path = write(extension + ".gltf", {"KHR_lights_punctual", extension});
+    EXPECT_EQ(gltfRefusalAt(path).what, path + ": extensionsRequired: the file requires " + extension +
+                                            ", which radmesh does not implement " + reads +
+                                            " (fix: export the file without Draco or meshopt compression)");
+  }
+  const std::string other = write("other.gltf", {"KHR_materials_variants"});
+  EXPECT_EQ(gltfRefusalAt(other).what, other + ": extensionsRequired: the file requires KHR_materials_variants, which "
+                                               "radmesh does not implement " + reads +
+                                               " (fix: export the file without KHR_materials_variants)");
+  EXPECT_EQ(importGltf(write("read.gltf", {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                           "KHR_texture_transform"}))
+                .polygons.size(),
+            1u);
+}
+
 // A rotation that is no rotation at all cannot be normalised (GltfImport.* checks the repair).
 TEST(GltfBadInput, AZeroRotationNamesTheNode) {
   test::TempDir dir;
