@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "solver/io/file_signature.h"
+#include "solver/io/scene_loader.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -25,6 +26,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr size_t kGlbHeaderBytes = 20;  // magic, version, length, then the JSON chunk's length and type
+
+// What becomes of an image that cannot be read: a texture only scales a material's colour.
+constexpr const char* kImageLeftOut = "the textures using it are left out (their materials keep their factors alone)";
 
 // tinygltf's JSON parser (and nlohmann's, used here) recurse once per level of nesting: 20000 '['
 // overflow the stack. Real files nest a few dozen levels at most.
@@ -36,7 +40,7 @@ std::string readBytes(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-bool isGlb(const std::string& bytes) { return bytes.compare(0, 4, "glTF") == 0; }
+bool isGlb(const std::string& bytes) { return bytes.starts_with(kGlbSignature); }
 
 uint32_t littleEndian32(const std::string& bytes, size_t at) {
   uint32_t v = 0;
@@ -180,7 +184,7 @@ fs::path uriFile(const std::string& path, const std::string& uri) {
 // Every buffer and image the document names by a URI, not embedded, checked before tinygltf opens
 // it: reading a FIFO would block for ever, a folder failed with std::bad_alloc, and a missing buffer
 // would be looked for in the working directory too.
-void checkExternalFiles(const std::string& path, const nlohmann::json& doc) {
+void checkExternalFiles(const std::string& path, const nlohmann::json& doc, std::vector<std::string>* warnings) {
   for (const std::string array : {"buffers", "images"}) {
     if (!doc.is_object() || !doc.contains(array) || !doc[array].is_array()) continue;
     const std::string what = array == "buffers" ? "buffer" : "image";
@@ -188,8 +192,21 @@ void checkExternalFiles(const std::string& path, const nlohmann::json& doc) {
       const nlohmann::json& entry = doc[array][i];
       if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
       const std::string uri = entry["uri"].get<std::string>();
-      if (uri.rfind("data:", 0) == 0) continue;
       const std::string element = what + " " + std::to_string(i);
+      if (uri.rfind("data:", 0) == 0) {
+        // tinygltf would look for a file of that name, and quote all of it.
+        if (!tinygltf::IsDataURI(uri))
+          throw SceneError(path, element,
+                           fmt::format("its data: URI ('{}...') is not base64 of a type glTF embeds", uri.substr(0, 40)),
+                           fmt::format("embed the {} as data:application/octet-stream;base64,... (or "
+                                       "data:image/png;base64,... for a PNG)",
+                                       what));
+        continue;
+      }
+      if (uri.find("://") != std::string::npos || fs::path(uri).has_root_path())
+        throw SceneError(path, element,
+                         "its uri '" + uri + "' is absolute; glTF names external files relative to the glTF file",
+                         "copy the file beside the glTF file (or below it) and give its relative path");
       const fs::path file = uriFile(path, uri);
       const FileKind kind = fileKind(file);
       if (kind == FileKind::Folder || kind == FileKind::Special)
@@ -200,6 +217,20 @@ void checkExternalFiles(const std::string& path, const nlohmann::json& doc) {
       if (kind == FileKind::Missing && what == "buffer")
         throw SceneError(path, element, "its file '" + file.string() + "' does not exist",
                          "put '" + uri + "' beside the glTF file, or embed the buffer");
+      if (kind == FileKind::Missing && warnings)  // an image: tinygltf's own two warnings are dropped
+        warnings->push_back(path + ": " + element + ": its file '" + file.string() + "' does not exist: " +
+                            kImageLeftOut);
+      std::error_code ec;
+      const uintmax_t size = fs::file_size(file, ec);
+      if (what == "buffer" && !ec && entry.contains("byteLength") && entry["byteLength"].is_number_unsigned() &&
+          size != entry["byteLength"].get<uint64_t>())
+        throw SceneError(path, element,
+                         fmt::format("its file '{}' has {} bytes, but its byteLength is {} (the buffer's length, "
+                                     "which tinygltf requires the file to match)",
+                                     file.string(), size, entry["byteLength"].get<uint64_t>()),
+                         size < entry["byteLength"].get<uint64_t>()
+                             ? "supply the whole buffer file (it may be truncated)"
+                             : "set byteLength to the file's size, or export the file again");
     }
   }
 }
@@ -211,7 +242,7 @@ std::string jsonOf(const std::string& bytes) {
 }
 
 // Why tinygltf refused the file, found by reading the file again ourselves: the GLB container,
-// the JSON syntax, or an external buffer that is missing or short.
+// the JSON syntax, a light or camera tinygltf cannot read, or an embedded buffer that is short.
 Diagnosis diagnose(const std::string& path, const std::string& bytes, const nlohmann::json& doc) {
   if (isGlb(bytes)) {
     const uint32_t declared = bytes.size() >= 12 ? littleEndian32(bytes, 8) : 0;
@@ -239,6 +270,16 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes, const nloh
     if (lights[i]["type"] == "spot" && !(lights[i].contains("spot") && lights[i]["spot"].is_object()))
       return {element, "a spot light without its \"spot\" object", "give it \"spot\": {\"outerConeAngle\": ...}"};
   }
+  // radmesh uses no cameras, but tinygltf refuses a file with one it cannot read.
+  const auto cameras = doc.find("cameras");
+  for (size_t i = 0; cameras != doc.end() && cameras->is_array() && i < cameras->size(); ++i) {
+    const nlohmann::json& camera = (*cameras)[i];
+    const std::string type = camera.is_object() ? camera.value("type", std::string()) : std::string();
+    if (type.empty() || !camera.contains(type) || !camera[type].is_object())
+      return {"camera " + std::to_string(i), "it is incomplete (a \"" + type +
+                                                "\" camera needs its \"" + type + "\" object; radmesh uses no cameras)",
+              "give it its \"perspective\" or \"orthographic\" object, or delete the camera"};
+  }
   const auto buffers = doc.find("buffers");
   if (buffers != doc.end() && buffers->is_array()) {
     for (size_t i = 0; i < buffers->size(); ++i) {
@@ -260,12 +301,6 @@ Diagnosis diagnose(const std::string& path, const std::string& bytes, const nloh
                   "export the file again (the embedded buffer and its byteLength disagree)"};
         continue;
       }
-      const fs::path file = uriFile(path, uri);
-      std::error_code ec;
-      const auto size = fs::file_size(file, ec);
-      if (!ec && declared && size < b["byteLength"].get<uint64_t>())
-        return {element, "its file '" + file.string() + "' has " + std::to_string(size) + " bytes, fewer than byteLength",
-                "supply the whole buffer file (it may be truncated)"};
     }
   }
   return {"", "", "check that the file is valid glTF 2.0 (for example with the Khronos glTF validator)"};
@@ -277,16 +312,20 @@ bool decodeImageOrWarn(tinygltf::Image* image, const int index, std::string* /*e
                        int height, const unsigned char* bytes, int size, void* options) {
   std::string why;
   if (tinygltf::LoadImageData(image, index, &why, warn, width, height, bytes, size, options)) return true;
-  if (warn) *warn += "image " + std::to_string(index) + " could not be decoded (" + oneLine(why) + ")\n";
+  if (warn) *warn += "image " + std::to_string(index) + " could not be decoded (" + oneLine(why) + "): " + kImageLeftOut + "\n";
   return true;
 }
 
+// tinygltf's warnings but its two about a missing image file, which checkExternalFiles said in one.
 void appendWarnings(const std::string& path, const std::string& text, std::vector<std::string>* warnings) {
   if (!warnings || text.empty()) return;
   size_t start = 0;
   while (start < text.size()) {
     const size_t end = std::min(text.find('\n', start), text.size());
-    if (end > start) warnings->push_back(path + ": " + text.substr(start, end - start));
+    const std::string line = text.substr(start, end - start);
+    if (!line.empty() && !line.starts_with("File not found : ") &&
+        !line.starts_with("Failed to load external 'uri' for image["))
+      warnings->push_back(path + ": " + line);
     start = end + 1;
   }
 }
@@ -298,6 +337,9 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
   if (!fs::is_regular_file(path, ec))
     throw SceneError(path, "", "does not exist or is not a file", "check the path");
   const std::string bytes = readBytes(path);
+  if (!isGlb(bytes) && lowerCaseExtension(path) == ".glb" && looksBinary(path))  // an image renamed, say
+    throw SceneError(path, "GLB container", "is not a GLB: it does not start with 'glTF'",
+                     "give a glTF binary (.glb) or a .gltf text file; check what the file really is");
   if (bytes.size() > std::numeric_limits<unsigned>::max())
     throw SceneError(path, "", "is larger than 4 GiB, more than tinygltf reads", "split the model");
   if (nestsDeeperThan(jsonOf(bytes), kMaxJsonDepth))
@@ -309,7 +351,7 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
   const nlohmann::json doc = nlohmann::json::parse(jsonOf(bytes), nullptr, /*allow_exceptions=*/false);
   // A document that is no JSON has neither: tinygltf says what is wrong with it.
   checkRequiredExtensions(path, doc);
-  checkExternalFiles(path, doc);
+  checkExternalFiles(path, doc, warnings);
   const std::string baseDir = fs::path(path).parent_path().string();  // external buffers and images
   const auto length = static_cast<unsigned>(bytes.size());
   tinygltf::TinyGLTF loader;

@@ -41,7 +41,7 @@ std::optional<Rgb> averageTexels(const tinygltf::Image& image) {
   return sum / static_cast<double>(texels);
 }
 
-// The average of a material's texture, 1 when it has none or it cannot be used (with a warning).
+// The average of a material's texture, 1 when it has none or it cannot be used.
 Rgb textureAverage(const tinygltf::Model& model, const tinygltf::TextureInfo& info, const std::string& file,
                    const std::string& element, const std::string& slot, std::vector<std::string>* warnings) {
   if (info.index < 0) return Rgb(1.0);
@@ -53,13 +53,8 @@ Rgb textureAverage(const tinygltf::Model& model, const tinygltf::TextureInfo& in
     warn(warnings, file, element, slot + " has no image radmesh can read; using the factor alone");
     return Rgb(1.0);
   }
-  const std::optional<Rgb> average = averageTexels(model.images[source]);
-  if (!average) {
-    warn(warnings, file, element,
-         slot + "'s image " + std::to_string(source) + " could not be decoded; using the factor alone");
-    return Rgb(1.0);
-  }
-  return *average;
+  // An image that could not be read or decoded was warned about once, when the file was loaded.
+  return averageTexels(model.images[source]).value_or(Rgb(1.0));
 }
 
 std::string materialLabel(const tinygltf::Material& m, size_t index) {

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <functional>
 #include <future>
 #include <memory>
 #include <string>
@@ -277,6 +278,49 @@ TEST(GltfBadInput, ARequiredExtensionRadmeshDoesNotImplementIsRefusedByName) {
                                            "KHR_texture_transform"}))
                 .polygons.size(),
             1u);
+}
+
+// tinygltf's own words leaked: "File not found : /etc/passwd", "File size mismatch", a whole data:
+// URI, a PNG's '\x89' as a JSON error, "Perspective camera description not found.". Each is now
+// said in radmesh's words, naming the element.
+TEST(GltfBadInput, BufferUriPngAndCameraProblemsAreSaidInRadmeshsWords) {
+  test::TempDir dir;
+  const auto write = [&](const std::string& name, const std::function<void(nlohmann::json&)>& change) {
+    test::GltfBuilder b;
+    b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1);
+    const std::string path = b.write(dir / name, "mesh.bin").string();
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(path));
+    change(doc);
+    std::ofstream(path) << doc.dump();
+    return path;
+  };
+  const std::string absolute = write("absolute.gltf", [](nlohmann::json& d) { d["buffers"][0]["uri"] = "/etc/passwd"; });
+  EXPECT_EQ(gltfRefusalAt(absolute).what,
+            absolute + ": buffer 0: its uri '/etc/passwd' is absolute; glTF names external files relative to the glTF "
+                       "file (fix: copy the file beside the glTF file (or below it) and give its relative path)");
+  const std::string longer = write("longer.gltf", [&](nlohmann::json&) {
+    std::ofstream(dir / "mesh.bin", std::ios::binary | std::ios::app) << std::string(376, '\0');
+  });
+  EXPECT_EQ(gltfRefusalAt(longer).what,
+            longer + ": buffer 0: its file '" + (dir / "mesh.bin").string() +
+                "' has 412 bytes, but its byteLength is 36 (the buffer's length, which tinygltf requires the file to "
+                "match) (fix: set byteLength to the file's size, or export the file again)");
+  const std::string plain = write("plain.gltf", [](nlohmann::json& d) {
+    d["buffers"][0]["uri"] = "data:application/octet-stream," + std::string(5000, 'A');
+  });
+  EXPECT_EQ(gltfRefusalAt(plain).what,
+            plain + ": buffer 0: its data: URI ('data:application/octet-stream,AAAAAAAAAA...') is not base64 of a type "
+                    "glTF embeds (fix: embed the buffer as data:application/octet-stream;base64,... (or "
+                    "data:image/png;base64,... for a PNG))");
+  const std::string camera = write("camera.gltf", [](nlohmann::json& d) { d["cameras"] = {{{"type", "perspective"}}}; });
+  EXPECT_EQ(gltfRefusalAt(camera).what,
+            camera + ": camera 0: could not be loaded (tinygltf: Perspective camera description not found.): it is "
+                     "incomplete (a \"perspective\" camera needs its \"perspective\" object; radmesh uses no cameras) "
+                     "(fix: give it its \"perspective\" or \"orthographic\" object, or delete the camera)");
+  const std::string png = (dir / "picture.glb").string();
+  std::ofstream(png, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16) << std::string(40, '\0');
+  EXPECT_EQ(gltfRefusalAt(png).what, png + ": GLB container: is not a GLB: it does not start with 'glTF' (fix: give a "
+                                           "glTF binary (.glb) or a .gltf text file; check what the file really is)");
 }
 
 // A rotation that is no rotation at all cannot be normalised (GltfImport.* checks the repair).
