@@ -140,6 +140,25 @@ bool nestsDeeperThan(std::string_view json, int limit) {
   return false;
 }
 
+// glTF 1.0 (a different format: its materials are shaders, its buffers typed) loaded as if it were
+// 2.0. The GLB header's version and asset.version's major number must both say 2.
+void checkVersion(const std::string& path, const std::string& bytes, const nlohmann::json& doc) {
+  const std::string fix = "re-export the model as glTF 2.0";
+  if (isGlb(bytes) && bytes.size() >= 8 && littleEndian32(bytes, 4) != 2)
+    throw SceneError(path, "GLB container",
+                     fmt::format("its header says version {}, not 2: glTF 1.0's binary format, which radmesh does not "
+                                 "read",
+                                 littleEndian32(bytes, 4)),
+                     fix);
+  if (!doc.is_object() || !doc.contains("asset") || !doc["asset"].is_object() || !doc["asset"].contains("version") ||
+      !doc["asset"]["version"].is_string())
+    return;  // tinygltf refuses a missing version
+  const std::string version = doc["asset"]["version"].get<std::string>();
+  if (version.substr(0, version.find('.')) != "2")
+    throw SceneError(path, "asset", "its version is '" + version + "', not glTF 2.0 (glTF 1.0 is a different format)",
+                     fix);
+}
+
 // What a file may list in extensionsRequired: the extensions radmesh reads, and those that change
 // nothing it reads (it averages a texture's texels, so their placement does not matter; quantized
 // positions are refused by name where they are read).
@@ -350,6 +369,7 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
                      "remove the deep nesting (look in \"extras\") or export the file again");
   const nlohmann::json doc = nlohmann::json::parse(jsonOf(bytes), nullptr, /*allow_exceptions=*/false);
   // A document that is no JSON has neither: tinygltf says what is wrong with it.
+  checkVersion(path, bytes, doc);
   checkRequiredExtensions(path, doc);
   checkExternalFiles(path, doc, warnings);
   const std::string baseDir = fs::path(path).parent_path().string();  // external buffers and images

@@ -323,6 +323,24 @@ TEST(GltfBadInput, BufferUriPngAndCameraProblemsAreSaidInRadmeshsWords) {
                                            "glTF binary (.glb) or a .gltf text file; check what the file really is)");
 }
 
+// glTF 1.0, a different format, loaded silently as 2.0: asset.version "1.0" and a GLB header of
+// version 1 are refused; "2.1" (a later minor version) still loads.
+TEST(GltfBadInput, GltfOneIsRefusedByItsVersion) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1);
+  const std::string glb = (dir / "old.glb").string();
+  std::ofstream(glb, std::ios::binary) << test::glbContainer(b.doc().dump(), 1);
+  EXPECT_EQ(gltfRefusalAt(glb).what, glb + ": GLB container: its header says version 1, not 2: glTF 1.0's binary "
+                                           "format, which radmesh does not read (fix: re-export the model as glTF 2.0)");
+  b.doc()["asset"]["version"] = "1.0";
+  const std::string gltf = b.write(dir / "old.gltf").string();
+  EXPECT_EQ(gltfRefusalAt(gltf).what, gltf + ": asset: its version is '1.0', not glTF 2.0 (glTF 1.0 is a different "
+                                             "format) (fix: re-export the model as glTF 2.0)");
+  b.doc()["asset"]["version"] = "2.1";
+  EXPECT_EQ(importGltf(b.write(dir / "minor.gltf").string()).polygons.size(), 1u);
+}
+
 // A rotation that is no rotation at all cannot be normalised (GltfImport.* checks the repair).
 TEST(GltfBadInput, AZeroRotationNamesTheNode) {
   test::TempDir dir;
