@@ -155,6 +155,11 @@ void SolverThread::save(Run& run, const std::string& path) {
     run.checkpointMessage = fmt::format("not saved: {} is the scene itself: type another path {}", path, kBox);
     return;
   }
+  if (holdsSomethingElse(path)) {
+    run.checkpointMessage =
+        fmt::format("not saved: {} is a file that is not a radmesh checkpoint: type another path {}", path, kBox);
+    return;
+  }
   try {
     if (run.cells) {
       writeCellsCheckpoint(path, scene_, *run.cells);

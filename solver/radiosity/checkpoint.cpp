@@ -369,13 +369,15 @@ void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver) {
   writeFile(path, kOneSolve, bytesOf(contents));
 }
 
+bool holdsSomethingElse(const std::string& path) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error) && std::filesystem::file_size(path, error) > 0 &&
+         !fileStartsWith(path, kCheckpointSignature);
+}
+
 void checkCheckpointWritable(const std::string& path) {
   checkOutputPath("--checkpoint", path, "", "");  // a missing folder or a folder in its place, as for --out
-  // A checkpoint has no extension of its own to check, so what is already there is: a scene's
-  // included file, a buffer or a document would be lost without a word.
-  std::error_code error;
-  if (std::filesystem::is_regular_file(path, error) && std::filesystem::file_size(path, error) > 0 &&
-      !fileStartsWith(path, kCheckpointSignature))
+  if (holdsSomethingElse(path))
     throw OptionError(fmt::format("--checkpoint '{}' is a file that is not a radmesh checkpoint: writing the "
                                   "checkpoint would replace it; give a new path, or a checkpoint's",
                                   path));

@@ -37,6 +37,10 @@ void writeCheckpoint(const std::string& path, const ProgressiveSolver& solver);
 // Throws as writeCheckpoint would when path's folder cannot take a file: to know before solving.
 void checkCheckpointWritable(const std::string& path);
 
+// Whether a file that is not a checkpoint is at `path` (a scene's included file, a document): a
+// checkpoint has no extension of its own to check, so what is there is, before it is replaced.
+bool holdsSomethingElse(const std::string& path);
+
 // Puts the state saved in path into a solver just made of the same meshed scene and the same
 // options that change the answer. Throws SceneError naming the file, what differs and the fix for
 // a checkpoint of another scene or other options, or a truncated or corrupted one; the solver is

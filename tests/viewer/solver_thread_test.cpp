@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <thread>
 #include <unistd.h>
@@ -256,6 +257,14 @@ TEST(SolverThread, ACheckpointIsNotSavedOverTheScene) {
       ": No such file or directory: type a path in a writable folder with room in the box beside Save checkpoint"))
       << missing->checkpointMessage;
   EXPECT_TRUE(missing->checkpointFailed);
+  // A file that is not a checkpoint (here a note beside the scene) is not replaced.
+  const std::string note = (dir / "notes.txt").string();
+  { std::ofstream(note) << "keep me\n"; }
+  thread.saveCheckpoint(note);
+  const Snapshot other = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.find("notes") != std::string::npos; });
+  EXPECT_EQ(other->checkpointMessage, "not saved: " + note + " is a file that is not a radmesh checkpoint: type another "
+                                      "path in the box beside Save checkpoint");
+  EXPECT_EQ(std::filesystem::file_size(note), 8u);
   thread.saveCheckpoint((dir / "saved.ckpt").string());
   const Snapshot saved = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.starts_with("saved"); });
   EXPECT_EQ(saved->checkpointMessage, "saved " + (dir / "saved.ckpt").string() + " after iteration 1");
