@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "cli/interrupt.h"
 #include "cli/progress.h"
 #include "cli/stats_json.h"
 #include "solver/cells/find_cells.h"
@@ -40,7 +41,7 @@ double solveCellsWithProgress(CellSolver& solver, bool quiet, const std::functio
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   IterationRecord record;  // the building's, as Progress reads a solve's
-  while (!solver.done()) {
+  while (!solver.done() && !interrupted()) {
     solver.round();
     record.iteration = solver.iterations();
     record.ledger = solver.ledger();

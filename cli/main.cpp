@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "cli/distributed_command.h"
+#include "cli/interrupt.h"
 #include "cli/option_checks.h"
 #include "cli/usage_failure.h"
 #include "solver/scene/scene_error.h"
@@ -53,6 +54,8 @@ int main(int argc, char** argv) {
     // every usage error exits 2, as radmesh's own option and scene errors do.
     const int code = says ? app.exit(e) : e.get_exit_code();
     return code == 0 ? 0 : 2;
+  } catch (const radmesh::cli::Interrupted&) {
+    return 130;  // what was saved, or lost, is said
   } catch (const radmesh::SceneError& e) {
     return fail(e.what(), 2);
   } catch (const radmesh::OptionError& e) {

@@ -9,6 +9,8 @@
 #include <limits>
 #include <string>
 
+#include "cli/interrupt.h"
+
 namespace radmesh::cli {
 
 namespace {
@@ -112,7 +114,7 @@ double solveWithProgress(ProgressiveSolver& solver, bool quiet, const std::funct
   if (!solver.history().empty()) progress.resumeFrom(solver.history().back());
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  while (!solver.done()) {
+  while (!solver.done() && !interrupted()) {
     const IterationRecord& record = solver.step();
     if (!quiet) progress.report(record, elapsed());
     if (afterStep) afterStep(elapsed());

@@ -14,6 +14,7 @@
 #include "cli/effects_text.h"
 #include "solver/radiosity/effects_plan.h"
 #include "solver/io/output_path.h"
+#include "cli/interrupt.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
 #include "cli/stats_json.h"
@@ -86,6 +87,18 @@ void writeBake(const std::string& path, const std::vector<Patch>& patches, const
   fmt::print("wrote {}\n", path);
 }
 
+// After Ctrl-C, the checkpoint written above (or the work lost) is said, and nothing else is
+// written: a bake or stats of a solve cut short would pass for finished ones.
+[[noreturn]] void stopAfterInterrupt(const SolveArgs& args, const std::string& where) {
+  if (args.checkpointPath.empty())
+    fmt::print(stderr, "radmesh: interrupted after {}: nothing saved (give --checkpoint FILE to keep a solve's work)\n",
+               where);
+  else
+    fmt::print(stderr, "radmesh: interrupted after {}: the checkpoint {} holds the work; go on with --resume {}\n", where,
+               args.checkpointPath, args.checkpointPath);
+  throw Interrupted();
+}
+
 // --cells auto: the rooms solved cell by cell. With `ranks`, this process's part of a distributed
 // solve: process 0 alone writes (checkpoints too, every process's cells gathered).
 void runCells(const SolveArgs& args, const Scene& scene, double cellM, const SolveOptions& options,
@@ -113,6 +126,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
     writeCellsCheckpoint(args.checkpointPath, scene, *solver);
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
+  if (interrupted()) stopAfterInterrupt(args, fmt::format("round {}", solver->rounds()));
   printCellsSummary(*solver, seconds);
   if (writes) warnIfFarFromConverged(solver->ledger()), warnIfLightLost(solver->ledger(), isClosed(scene));
   if (!args.statsPath.empty()) {
@@ -136,6 +150,8 @@ void run(const SolveArgs& args, Processes* processes) {
   // Process 0 writes the checkpoints (the others may run where the folder is not theirs).
   if (!args.checkpointPath.empty() && (!processes || processes->ranks.rank() == 0))
     checkCheckpointWritable(args.checkpointPath);
+  // A distributed solve's processes would stop at different iterations, each waiting on the others.
+  if (!processes) stopSolvesOnInterrupt();
   SolveOptions options = args.flags.resolved();
   if (readBake(args.flags.scene))  // else refused as a scene with no emitter
     throw SceneError(args.flags.scene, "", "is a bake, already solved: there is nothing to solve",
@@ -187,6 +203,7 @@ void run(const SolveArgs& args, Processes* processes) {
     writeCheckpoint(args.checkpointPath, solver);
     fmt::print("wrote checkpoint {}\n", args.checkpointPath);
   }
+  if (interrupted()) stopAfterInterrupt(args, fmt::format("iteration {}", solver.history().size()));
   printSummary(solver, seconds, resumedAt);
   if (writes) warnIfFarFromConverged(solver.ledger()), warnIfLightLost(solver.ledger(), isClosed(scene));
 

@@ -102,6 +102,32 @@ TEST(CliCheckpoint, ACheckpointPathThatCannotBeWrittenIsRefusedFirst) {
 }
 
 
+// Ctrl-C stops a solve at the end of the iteration under way: its checkpoint is written and said,
+// no bake or stats of a solve cut short, exit 130; without --checkpoint the loss is said.
+TEST(CliCheckpoint, CtrlCWritesTheCheckpointAndSaysWhere) {
+  const std::string saved = tempPath("interrupted.ckpt"), bake = tempPath("interrupted.glb");
+  const std::string radmeshPath = (test::binaryDir() / "cli" / "radmesh").string();
+  for (const std::string cells : {"off", "auto"}) {
+    std::filesystem::remove(saved);
+    const CommandRun run = runCommand("(" + radmeshPath + " solve two-rooms --cell 0.1 --cells " + cells +
+                                      " --quiet --checkpoint " + saved + " --out " + bake +
+                                      " & pid=$!; sleep 2; kill -INT $pid; wait $pid; echo exit $?)");
+    EXPECT_NE(run.output.find("exit 130"), std::string::npos) << cells << ": " << run.output;
+    EXPECT_NE(run.output.find(": the checkpoint " + saved + " holds the work; go on with --resume " + saved),
+              std::string::npos)
+        << cells << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(bake)) << cells;
+    const CommandRun resumed =
+        radmesh("solve two-rooms --cell 0.1 --cells " + cells + " --quiet --max-iterations 1 --resume " + saved);
+    EXPECT_EQ(resumed.exitCode, 0) << cells << ": " << resumed.output;
+  }
+  const CommandRun lost = runCommand("(" + radmeshPath + " solve two-rooms --cell 0.1 --quiet & pid=$!; sleep 2; " +
+                                     "kill -INT $pid; wait $pid; echo exit $?)");
+  EXPECT_NE(lost.output.find("nothing saved (give --checkpoint FILE to keep a solve's work)"), std::string::npos)
+      << lost.output;
+  EXPECT_NE(lost.output.find("exit 130"), std::string::npos) << lost.output;
+}
+
 // --max-iterations counts from the start: a resume already past it solves nothing, and says so.
 TEST(CliCheckpoint, AResumePastMaxIterationsSaysNothingMoreWasSolved) {
   const std::string saved = tempPath("c15.ckpt");

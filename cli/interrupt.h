@@ -1,0 +1,21 @@
+#pragma once
+// Ctrl-C during a long solve: the solve stops at the end of the iteration (or round) under way, so
+// that its checkpoint can still be written, and a second Ctrl-C ends the program at once.
+#include <exception>
+
+namespace radmesh::cli {
+
+// From now on, SIGINT and SIGTERM ask the solve loops to stop (interrupted()); a second one
+// ends the program as the signal would.
+void stopSolvesOnInterrupt();
+
+// Whether a stop was asked for since stopSolvesOnInterrupt.
+bool interrupted();
+
+// Thrown once the interrupted solve's work is saved (or said to be lost): main exits 130, as a
+// shell reports a program ended by Ctrl-C.
+struct Interrupted : std::exception {
+  const char* what() const noexcept override { return "interrupted"; }
+};
+
+}  // namespace radmesh::cli
