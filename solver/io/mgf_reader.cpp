@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "solver/io/mgf_error.h"
@@ -26,13 +27,21 @@ std::vector<MgfEntity> readMgfEntities(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw SceneError(path, "", "cannot be opened", "check that the file exists and is readable");
+  // Lines end in LF, CR LF (Windows) or CR alone (classic Mac OS, which read as one line).
+  const std::string raw{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw SceneError(path, "", "could not be read", "check the file system and permissions");
+  std::string text;
+  text.reserve(raw.size());
+  for (size_t i = 0; i < raw.size(); ++i)
+    if (raw[i] != '\r') text += raw[i];
+    else if (i + 1 == raw.size() || raw[i + 1] != '\n') text += '\n';
+  std::istringstream lines(text);
   std::vector<MgfEntity> entities;
   std::string pending;  // text of an entity continued over several lines
   int start = 0;
   int number = 0;
-  for (std::string line; std::getline(in, line);) {
+  for (std::string line; std::getline(lines, line);) {
     ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // files written on Windows
     if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // the byte-order mark some editors write
     if (pending.empty()) start = number;
     const bool continues = !line.empty() && line.back() == '\\';
@@ -45,9 +54,6 @@ std::vector<MgfEntity> readMgfEntities(const std::string& path) {
     if (words.empty() || words[0][0] == '#') continue;
     entities.push_back({start, std::move(words)});
   }
-  if (in.bad())
-    throw SceneError(path, "line " + std::to_string(number), "could not be read",
-                     "check the file system and permissions");
   if (!pending.empty() && !splitWords(pending).empty())
     throw SceneError(path, "line " + std::to_string(start),
                      "the file ends inside an entity continued with a backslash (truncated file?)",

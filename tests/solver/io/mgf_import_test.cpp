@@ -241,6 +241,20 @@ TEST(MgfImport, AByteOrderMarkIsSkipped) {
   EXPECT_TRUE(warnings.empty()) << warnings.front();
 }
 
+// Lines ending in CR alone (classic Mac OS) read as lines, not as one line holding the whole file
+// ("contains no polygons"); Windows' CR LF as before.
+TEST(MgfImport, LinesEndingInCrAloneOrCrLfAreRead) {
+  std::string mac = kUnitSquare + "f a b c d\n", windows = mac;
+  for (char& c : mac) c = c == '\n' ? '\r' : c;
+  for (size_t at = windows.find('\n'); at != std::string::npos; at = windows.find('\n', at + 2)) windows.insert(at, "\r");
+  for (const std::string& text : {mac, windows}) {
+    std::vector<std::string> warnings;
+    const Scene s = importMgfText(text, &warnings);
+    EXPECT_EQ(s.polygons.size(), 1u);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+  }
+}
+
 TEST(MgfImport, OriginsNameLineEntityAndObject) {
   const Scene s = importMgfText(kUnitSquare + "o desk\no top\nf a b c\no\no\n");
   ASSERT_EQ(s.polygons.size(), 1u);
