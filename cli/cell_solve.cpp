@@ -15,13 +15,6 @@
 
 namespace radmesh::cli {
 
-void requireCellsOptions(const SolveOptions& options) {
-  if (options.backend != Backend::Native)
-    throw OptionError("--cells auto runs on the native back end only: each cell's solver would keep its own "
-                      "emulated MP-1 (its PE memory, item buffers and patch state), a machine per cell, too much "
-                      "memory for a building of a hundred rooms; give --backend native, or --cells off");
-}
-
 std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,
                                            const CellSolveSettings& settings, CellRanks* ranks) {
   requireCellsOptions(options);

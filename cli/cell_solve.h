@@ -11,8 +11,6 @@
 
 namespace radmesh::cli {
 
-// Throws OptionError for options the cells solve does not run with (a back end other than native).
-void requireCellsOptions(const SolveOptions& options);
 // The cells of the meshed scene (findCells) and their solver; prints how many cells and portals.
 // With `ranks`, this process's part of a distributed solve (CellSolver).
 std::unique_ptr<CellSolver> makeCellSolver(const Scene& scene, std::vector<Patch> patches, const SolveOptions& options,

@@ -115,8 +115,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setu
     run->summary = summarizeScene(scene_, patches, setup.cellM);
     run->sceneClosed = isClosed(scene_);
     if (setup.cells) {
-      if (setup.options.backend != Backend::Native)
-        throw OptionError("--cells auto runs on the native back end: give --backend native, or --cells off");
+      requireCellsOptions(setup.options);
       run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
       run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, run->setup.options,
                                                 CellSolveSettings{setup.cellM, setup.exchangeShots, setup.portalBins});

@@ -11,8 +11,16 @@
 
 #include "solver/formfactors/direction_bins.h"
 #include "solver/radiosity/cell_solver_state.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh {
+
+void requireCellsOptions(const SolveOptions& options) {
+  if (options.backend != Backend::Native)
+    throw OptionError("--cells auto runs on the native back end only: each cell's solver would keep its own "
+                      "emulated MP-1 (its PE memory, item buffers and patch state), a machine per cell, too much "
+                      "memory for a building of a hundred rooms; give --backend native, or --cells off");
+}
 
 using namespace cell_state;
 

@@ -20,6 +20,10 @@
 
 namespace radmesh {
 
+// Throws OptionError for options the cells solve does not run with (a back end other than native):
+// radmesh solve, bench and the viewer refuse alike.
+void requireCellsOptions(const SolveOptions& options);
+
 constexpr int kMaxPortalBins = 16;  // CellSolveSettings::portalBins: 16 x 16 on top, 768 bins in all
 
 struct CellSolveSettings {
