@@ -12,11 +12,11 @@ namespace radmesh {
 namespace {
 
 // The analytic form factor of patch j times the fraction of its covered pixel centres showing
-// it. Covering none, the pixel its centroid falls in decides: nothing there, or j's own polygon,
-// or a surface behind j, and j is seen; a surface strictly in front of it, and j is hidden. Where
-// the pixel shows another polygon in j's very plane (the room next door's wall in line with this
-// room's), the wall that hides j may stand beside it, unseen: the segment from the shooter to j's
-// centroid decides, tested exactly against every patch.
+// it. Covering none: hidden where the pixel its centroid falls in shows a surface strictly in front
+// of it; seen where it shows nothing. Otherwise the pixel cannot say: what it shows may be j's own
+// plane further on (the room next door's wall in line with this room's, or one floor under both
+// rooms) beside the wall that hides j, so the segment from the shooter to j's centroid decides,
+// tested exactly against every patch.
 double visibleFormFactor(const ProjectedShot& shot, int j) {
   const Patch& shooter = shot.shooter;
   const Patch& patch = shot.patches[j];
