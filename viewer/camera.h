@@ -1,6 +1,8 @@
 #pragma once
 // The walkthrough camera: walks on the scene's floor at an eye height, turns with the mouse.
 // Knows nothing of GLFW; the window turns keys and mouse motion into a WalkInput.
+#include <algorithm>
+
 #include <glm/vec2.hpp>
 
 #include "viewer/render_view.h"
@@ -42,6 +44,14 @@ class WalkCamera {
   bool looksInFromOutside() const { return frame_.openSide >= 0; }
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
+
+  // The panel's slider ranges, which follow the model as the pace does: metres in a room, a
+  // millimetre model's own scale in one (a 0.05 m/s floor jumped past its whole size).
+  struct Range {
+    double low = 0.0, high = 0.0;
+  };
+  Range speedRange() const { return {std::min(0.05, 0.01 * sizeM()), std::max(10.0, sizeM())}; }
+  Range eyeHeightRange() const { return {std::min(0.02, 0.01 * sizeM()), std::min(3.0, sizeM())}; }
 
   double speedMps = 1.4;  // a walking pace; in a model under 2.8 m across, half its size a second
   double eyeHeightM = 1.6;

@@ -77,8 +77,9 @@ void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
   ImGui::Checkbox("follow auto exposure", &view.autoExposure);
   if (solving) ImGui::Checkbox("highlight last shooters", &view.highlightShooters);
   if (solving) ImGui::Checkbox("draw only the rooms in sight through doors", &view.cullCells);
-  sliderDouble("speed m/s", &camera.speedMps, 0.05, 10.0, "%.2f", ImGuiSliderFlags_Logarithmic);
-  sliderDouble("eye height m", &camera.eyeHeightM, 0.02, 3.0, "%.2f");
+  const WalkCamera::Range speed = camera.speedRange(), eye = camera.eyeHeightRange();
+  sliderDouble("speed m/s", &camera.speedMps, speed.low, speed.high, "%.3g", ImGuiSliderFlags_Logarithmic);
+  sliderDouble("eye height m", &camera.eyeHeightM, eye.low, eye.high, "%.3g");
   sliderDouble("field of view", &camera.fovYDeg, 20.0, 110.0, "%.0f deg");
   ImGui::PopItemWidth();
   note("WASD/arrows walk, Q/E lower/raise, Shift runs");

@@ -140,6 +140,11 @@ TEST(WalkCamera, NearFarAndPaceFollowTheModelsSize) {
   EXPECT_LT(view.nearM, 0.01 * view.eye.z);
   EXPECT_DOUBLE_EQ(small.speedMps, 0.5 * diagonal);
   EXPECT_NO_THROW(validateView(view));
+  // The panel's sliders span the model's own scale, and a room's metres in a room.
+  EXPECT_DOUBLE_EQ(small.speedRange().low, 0.01 * diagonal);
+  EXPECT_DOUBLE_EQ(small.eyeHeightRange().low, 0.01 * diagonal);
+  EXPECT_DOUBLE_EQ(small.eyeHeightRange().high, diagonal);
+  EXPECT_LT(small.speedRange().low, small.speedMps);
   small.update(WalkInput{.rise = -1.0}, 100.0);  // lowered, the floor stays beyond the near plane
   EXPECT_DOUBLE_EQ(small.view().eye.z, 2.0 * view.nearM);
 
@@ -150,6 +155,8 @@ TEST(WalkCamera, NearFarAndPaceFollowTheModelsSize) {
   EXPECT_DOUBLE_EQ(view.farM, 4.0 * glm::length(Vec3(4000.0, 3000.0, 2700.0)));
   EXPECT_DOUBLE_EQ(view.eye.z, 1.6);
   EXPECT_DOUBLE_EQ(large.speedMps, 1.4);
+  EXPECT_DOUBLE_EQ(large.speedRange().low, 0.05);
+  EXPECT_DOUBLE_EQ(large.eyeHeightRange().high, 3.0);
 }
 
 TEST(WalkCamera, LooksIntoAnOpenSideFromOutsideSeeingAllOfIt) {
