@@ -1,6 +1,6 @@
 #pragma once
 // How a checkpoint writes and reads its values, numbers, strings, containers and the solver's records,
-// byte for byte; private to checkpoint.cpp, which lays out the file and its contents with them.
+// byte for byte; private to checkpoint.cpp and checkpoint_identity.cpp, which lay out the file and its contents with them.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -21,6 +21,13 @@
 // Writer, Reader and these transfer overloads share one namespace, so that lookup through Io finds
 // them for any element type (Rgb is glm's); checkpoint.cpp's own types have theirs beside them.
 namespace radmesh::checkpoint_io {
+
+// FNV-1a 64: the payload's checksum and the meshed scene's hash.
+inline std::uint64_t fnv1a(const void* data, std::size_t bytes, std::uint64_t hash = 0xcbf29ce484222325ull) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 0x100000001b3ull;
+  return hash;
+}
 
 // One field list per type serves writing and reading: transfer(io, x) with io a Writer or a Reader.
 class Writer {
