@@ -24,6 +24,22 @@ Vec3 vector3(const MgfEntity& e, const std::string& what) {
   return {v[0], v[1], v[2]};
 }
 
+// Material entities radmesh reads and checks but cannot represent, and why.
+struct IgnoredEntity {
+  const char* keyword;
+  size_t arguments;
+  const char* usage;
+  const char* why;
+};
+constexpr IgnoredEntity kIgnoredEntities[] = {
+    {"rs", 2, "rs rho_s alpha_r", "specular reflectance, radmesh surfaces are ideal diffusers"},
+    {"ts", 2, "ts tau_s alpha_t", "specular transmittance, radmesh surfaces are opaque"},
+    {"td", 1, "td tau_d", "diffuse transmittance, radmesh surfaces are opaque"},
+    {"ir", 2, "ir n_real n_imag", "index of refraction, radmesh surfaces are opaque"},
+    {"sides", 1, "sides {1|2}",
+     "radmesh surfaces are one-sided: they emit and receive on their right-hand-rule front"},
+};
+
 }  // namespace
 
 template <class T>
@@ -78,7 +94,7 @@ bool MgfContexts::handle(const MgfEntity& e) {
       const double sum = std::max(x + y, 1.0);
       x /= sum;
       y /= sum;
-      repairs_.push_back("cxy outside the chromaticity diagram (x >= 0, y > 0, x + y <= 1) clipped into it");
+      notes_.push_back("cxy outside the chromaticity diagram (x >= 0, y > 0, x + y <= 1) clipped into it");
     }
     color = xyzFromChromaticity(x, y);
   } else if (k == "cspec") {
@@ -107,7 +123,7 @@ bool MgfContexts::handle(const MgfEntity& e) {
       throw MgfError("diffuse reflectance " + e.words[1] + " is negative", "give rd a value from 0 up to 1");
     // rho = 1 would never let light die out; files in the wild write `rd 1` for white.
     if (rd >= 1.0)
-      repairs_.push_back(fmt::format("rd of 1 or more lowered to {} (a reflectance of 1 never lets light die out)",
+      notes_.push_back(fmt::format("rd of 1 or more lowered to {} (a reflectance of 1 never lets light die out)",
                                      kHighestReflectance));
     material.rd = std::min(rd, kHighestReflectance);
     material.rdColor = color;
@@ -128,9 +144,26 @@ bool MgfContexts::handle(const MgfEntity& e) {
     requireMgfArguments(e, 3, 3, "n dx dy dz");
     vertex.normal = vector3(e, "normal component");
   } else {
-    return false;
+    return ignore(e);
   }
   return true;
+}
+
+bool MgfContexts::ignore(const MgfEntity& e) {
+  const std::string& k = e.words[0];
+  for (const IgnoredEntity& ignored : kIgnoredEntities) {
+    if (k != ignored.keyword) continue;
+    requireMgfArguments(e, ignored.arguments, ignored.arguments, ignored.usage);
+    if (k == "sides" && e.words[1] != "1" && e.words[1] != "2")
+      throw MgfError("sides must be 1 or 2", "write sides 1 or sides 2");
+    for (size_t i = 1; i < e.words.size(); ++i)
+      // A fraction of light or a roughness below 0 is a broken file, as a negative rd is.
+      if (const double value = parseMgfNumber(e.words[i], k + " value"); value < 0.0 && k != "ir")
+        throw MgfError(fmt::format("{} value {} is negative", k, e.words[i]), fmt::format("give {} values >= 0", k));
+    notes_.push_back(k + " ignored: " + ignored.why);
+    return true;
+  }
+  return false;
 }
 
 }  // namespace radmesh

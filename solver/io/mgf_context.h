@@ -30,19 +30,22 @@ class MgfContexts {
   MgfContexts(const MgfContexts&) = delete;  // `current` points into the object itself
   MgfContexts& operator=(const MgfContexts&) = delete;
 
-  // Handles c, cxy, cspec, cct, cmix, m, rd, ed, v, p and n; returns false for any other entity.
-  // Throws MgfError for bad arguments or undefined names.
+  // Handles c, cxy, cspec, cct, cmix, m, rd, ed, v, p and n, and checks rs, ts, td, ir and sides,
+  // which radmesh cannot represent; returns false for any other entity. Throws MgfError for bad
+  // arguments or undefined names.
   bool handle(const MgfEntity& entity);
 
   const MgfVertex& vertex(const std::string& name) const;  // throws MgfError when undefined
   const MgfMaterial& material() const { return *materials_.current; }
   const std::string& materialName() const { return materials_.currentName; }  // "" if unnamed
-  // What the last handle() repaired (a reflectance of 1 or more, an impossible chromaticity), as
-  // MGF's reference parser does: one message per kind, for the caller to count and report.
-  std::vector<std::string> takeRepairs() { return std::exchange(repairs_, {}); }
+  // What the last handle() repaired (a reflectance of 1 or more, an impossible chromaticity) or
+  // passed over (a specular reflectance), as MGF's reference parser does: one message per kind, for
+  // the caller to count and report.
+  std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
 
  private:
-  std::vector<std::string> repairs_;
+  bool ignore(const MgfEntity& entity);  // rs, ts, td, ir and sides: checked, noted, not kept
+  std::vector<std::string> notes_;
   // The get/set pattern shared by c, m and v: "x" (the unnamed one, reset), "x id" (a defined
   // one), "x id =" (define id afresh), "x id = template" (define id as a copy).
   template <class T>

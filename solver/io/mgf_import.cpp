@@ -36,22 +36,6 @@ constexpr size_t kMaxIncludeDepth = 64;
 // four million files.
 constexpr size_t kMaxIncludedReads = 100'000;
 
-// Entities radmesh reads and checks but cannot represent, and why.
-struct IgnoredEntity {
-  const char* keyword;
-  size_t arguments;
-  const char* usage;
-  const char* why;
-};
-constexpr IgnoredEntity kIgnoredEntities[] = {
-    {"rs", 2, "rs rho_s alpha_r", "specular reflectance, radmesh surfaces are ideal diffusers"},
-    {"ts", 2, "ts tau_s alpha_t", "specular transmittance, radmesh surfaces are opaque"},
-    {"td", 1, "td tau_d", "diffuse transmittance, radmesh surfaces are opaque"},
-    {"ir", 2, "ir n_real n_imag", "index of refraction, radmesh surfaces are opaque"},
-    {"sides", 1, "sides {1|2}",
-     "radmesh surfaces are one-sided: they emit and receive on their right-hand-rule front"},
-};
-
 // A warning given once however often it applies: where it first did, and how often.
 struct Note {
   std::string firstAt;
@@ -144,7 +128,7 @@ void MgfInterpreter::load(const fs::path& path, const std::string& label) {
 void MgfInterpreter::entity(const MgfEntity& e) {
   const std::string& k = e.words[0];
   if (contexts_.handle(e)) {
-    for (const std::string& repair : contexts_.takeRepairs()) note(e, repair);
+    for (const std::string& message : contexts_.takeNotes()) note(e, message);
     return;
   }
   if (geometry(e)) return;
@@ -152,17 +136,6 @@ void MgfInterpreter::entity(const MgfEntity& e) {
   if (k == "o") return object(e);
   if (k == "i") return include(e);
   if (k == "ies") return luminaire(e);
-  for (const IgnoredEntity& ignored : kIgnoredEntities) {
-    if (k != ignored.keyword) continue;
-    requireMgfArguments(e, ignored.arguments, ignored.arguments, ignored.usage);
-    if (k == "sides" && e.words[1] != "1" && e.words[1] != "2")
-      throw MgfError("sides must be 1 or 2", "write sides 1 or sides 2");
-    for (size_t i = 1; i < e.words.size(); ++i)
-      // A fraction of light or a roughness below 0 is a broken file, as a negative rd is.
-      if (const double value = parseMgfNumber(e.words[i], k + " value"); value < 0.0 && k != "ir")
-        throw MgfError(fmt::format("{} value {} is negative", k, e.words[i]), fmt::format("give {} values >= 0", k));
-    return note(e, k + " ignored: " + ignored.why);
-  }
   // As MGF's reference parser does: counted and passed over, so files of newer or private
   // dialects still open.
   note(e, "unknown entity '" + k + "' skipped (radmesh reads the MGF 2.0 entities # o xf i ies c cxy "
