@@ -12,9 +12,9 @@
 #include "emulator/front_end.h"
 #include "emulator/memory_ledger.h"
 #include "emulator/reduce.h"
-#include "emulator/router.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
 #include "solver/backends/mesh/mesh_contrast.h"
+#include "solver/backends/mesh/mesh_element_split.h"
 #include "solver/scene/scene_error.h"
 #include "solver/projection/single_plane.h"
 #include "solver/formfactors/sub_pixel_receivers.h"
@@ -62,41 +62,7 @@ struct ShooterClaim {
   }
 };
 
-// Fills `onPe` with of(j) for every item j of the layout, at its PE and slot: on a machine split
-// over processes, those of this process's PEs; PE 0 holds the most, which every PE reserves.
-template <class T, class Of>
-void lay(emu::PeArray<T>& onPe, const PatchLayout& layout, Of of) {
-  onPe.reserve(layout.slotsPerPe());
-  for (int j = 0; j < layout.patches; ++j)
-    if (onPe.machine().holds(layout.peOf(j))) onPe.push(layout.peOf(j), of(j));
-}
-
-// An element on its way to its PE after a split: its record, and the light it carries (its
-// radiosity and this iteration's gain, RGB).
-struct ElementInTransit {
-  PatchRecord record;
-  // routerSend compiles every combine; an element only ever arrives by Overwrite.
-  friend ElementInTransit operator+(const ElementInTransit&, const ElementInTransit& b) { return b; }
-  friend bool operator<(const ElementInTransit& a, const ElementInTransit& b) { return a.record.patch < b.record.patch; }
-};
-
-// Declared MP-1 work of a split (docs/emulator-cost-model.md): making an element from its parent
-// (edge midpoints and centre, then the child's normal, area, centroid and projection frame, as
-// solver/meshing/elements.cpp does) about 100 flops; its new PE and slot, 6 integer operations.
-constexpr double kMakeElementFlops = 100.0;
-constexpr double kPlaceElementIntOps = 6.0;
-
 }  // namespace
-}  // namespace radmesh
-
-namespace radmesh::emu {
-template <>
-struct WireSize<radmesh::ElementInTransit> {
-  static constexpr std::int64_t bytes = kWireBytes<radmesh::PatchRecord> + 6 * 4;
-};
-}  // namespace radmesh::emu
-
-namespace radmesh {
 
 MeshBackendOptions meshBackendOptions(const SolveOptions& options) {
   return {options.mapping, options.machine.rows, options.machine.cols, std::int64_t{options.machine.memoryKb} * 1024};
@@ -363,35 +329,7 @@ void MeshBackend::receiversSplit(std::span<const int> origin) try {
     const PatchLayout before = layout_;
     layout_ = {static_cast<int>(receivers_.size()), machine_.size()};
     scan_.reset();  // its buffers are free between shots: made again over the new elements below
-    // Per PE, the new elements made from the records it holds, in element order.
-    std::vector<std::vector<int>> madeOn(machine_.size());
-    for (int e = 0; e < layout_.patches; ++e) madeOn[before.peOf(origin[e])].push_back(e);
-    std::size_t rounds = 0;
-    for (const std::vector<int>& made : madeOn) rounds = std::max(rounds, made.size());
-    emu::PeArray<ElementInTransit> arrived(machine_, "elements in transit");
-    lay(arrived, layout_, [](int) { return ElementInTransit{}; });
-    emu::Plural<ElementInTransit> element(machine_, {}, "element made");
-    emu::Plural<int> to(machine_, 0, "its new PE"), slot(machine_, 0, "its new slot");
-    emu::Plural<bool> moves(machine_, false, "element moves");
-    for (std::size_t round = 0; round < rounds; ++round) {
-      // Each PE makes its round's element; one that stays on its PE goes to its new slot in place.
-      machine_.compute({kMakeElementFlops, kPlaceElementIntOps}, [&](int pe) {
-        moves[pe] = false;
-        if (round >= madeOn[pe].size()) return;
-        const int e = madeOn[pe][round];
-        element[pe] = {PatchRecord{e}};
-        to[pe] = layout_.peOf(e);
-        slot[pe] = layout_.slotOf(e);
-        moves[pe] = to[pe] != pe;
-        if (!moves[pe]) arrived.at(pe, slot[pe]) = element[pe];
-      });
-      emu::ActiveScope scope(machine_, moves);
-      emu::routerSend(machine_, arrived, element, to, slot, emu::Combine::Overwrite);
-    }
-    // Each PE copies what arrived into its element list, and the transit buffer is freed.
-    patchesOnPe_.clearAll();
-    lay(patchesOnPe_, layout_, [&](int e) { return arrived.at(layout_.peOf(e), layout_.slotOf(e)).record; });
-    machine_.chargeAlu({0.0, 2.0 * layout_.slotsPerPe()});
+    moveSplitElements(machine_, before, layout_, origin, patchesOnPe_);
     makeScanConversion();
   });
   shotPending_ = true;

@@ -22,6 +22,15 @@ struct PatchLayout {
   int slotOf(int patch) const { return patch / pes; }
 };
 
+// Fills `onPe` with of(j) for every item j of the layout, at its PE and slot: on a machine split
+// over processes, those of this process's PEs; PE 0 holds the most, which every PE reserves.
+template <class T, class Of>
+void lay(emu::PeArray<T>& onPe, const PatchLayout& layout, Of of) {
+  onPe.reserve(layout.slotsPerPe());
+  for (int j = 0; j < layout.patches; ++j)
+    if (onPe.machine().holds(layout.peOf(j))) onPe.push(layout.peOf(j), of(j));
+}
+
 // Per plane of the shot, per patch: the summed delta form factors of the pixels showing it.
 std::vector<std::vector<double>> meshFormFactors(emu::MeshMachine& machine,
                                                  const MeshScanConversion& scan,
