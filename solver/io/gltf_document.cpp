@@ -1,0 +1,307 @@
+#include "solver/io/gltf_document.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+
+#include "solver/io/file_signature.h"
+#include "solver/scene/scene_error.h"
+
+namespace radmesh {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr size_t kGlbHeaderBytes = 20;  // magic, version, length, then the JSON chunk's length and type
+
+// tinygltf's JSON parser (and nlohmann's, used here) recurse once per level of nesting: 20000 '['
+// overflow the stack. Real files nest a few dozen levels at most.
+constexpr int kMaxJsonDepth = 512;
+
+uint32_t littleEndian32(const std::string& bytes, size_t at) {
+  uint32_t v = 0;
+  for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
+  return v;
+}
+
+// The document's KHR_lights_punctual lights (an empty array when it has none).
+nlohmann::json lightsOf(const nlohmann::json& doc) {
+  if (doc.is_object() && doc.contains("extensions") && doc["extensions"].is_object() &&
+      doc["extensions"].contains("KHR_lights_punctual") && doc["extensions"]["KHR_lights_punctual"].is_object())
+    return doc["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
+  return nlohmann::json::array();
+}
+
+std::string lightElement(const nlohmann::json& light, size_t index) {
+  return "KHR_lights_punctual light " + std::to_string(index) +
+         (light.contains("name") && light["name"].is_string() ? " '" + light["name"].get<std::string>() + "'" : "");
+}
+
+// Whether the JSON text nests arrays and objects deeper than `limit`, counting brackets outside strings.
+bool nestsDeeperThan(std::string_view json, int limit) {
+  int depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (inString) {
+      if (c == '\\') ++i;  // an escaped character, '"' included
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
+}
+
+// glTF 1.0 (a different format: its materials are shaders, its buffers typed) loaded as if it were
+// 2.0. The GLB header's version and asset.version's major number must both say 2.
+void checkVersion(const std::string& path, const std::string& bytes, const nlohmann::json& doc) {
+  const std::string fix = "re-export the model as glTF 2.0";
+  if (isGlb(bytes) && bytes.size() >= 8 && littleEndian32(bytes, 4) != 2)
+    throw SceneError(path, "GLB container",
+                     fmt::format("its header says version {}, not 2: glTF 1.0's binary format, which radmesh does not "
+                                 "read",
+                                 littleEndian32(bytes, 4)),
+                     fix);
+  if (!doc.is_object() || !doc.contains("asset") || !doc["asset"].is_object() || !doc["asset"].contains("version") ||
+      !doc["asset"]["version"].is_string())
+    return;  // tinygltf refuses a missing version
+  const std::string version = doc["asset"]["version"].get<std::string>();
+  if (version.substr(0, version.find('.')) != "2")
+    throw SceneError(path, "asset", "its version is '" + version + "', not glTF 2.0 (glTF 1.0 is a different format)",
+                     fix);
+}
+
+// What a file may list in extensionsRequired: the extensions radmesh reads, and those that change
+// nothing it reads (it averages a texture's texels, so their placement does not matter; quantized
+// positions are refused by name where they are read).
+constexpr std::array<std::string_view, 5> kRequirableExtensions = {
+    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_unlit", "KHR_texture_transform",
+    "KHR_mesh_quantization"};
+
+// glTF 2.0 (3.12): a reader must refuse a file requiring an extension it does not implement.
+// Unrefused, a compressed mesh loaded as nothing or failed as "no valid bufferView".
+void checkRequiredExtensions(const std::string& path, const nlohmann::json& doc) {
+  if (!doc.is_object() || !doc.contains("extensionsRequired") || !doc["extensionsRequired"].is_array()) return;
+  for (const nlohmann::json& name : doc["extensionsRequired"]) {
+    if (!name.is_string() || std::ranges::find(kRequirableExtensions, name.get<std::string>()) !=
+                                 kRequirableExtensions.end())
+      continue;
+    const std::string extension = name.get<std::string>();
+    throw SceneError(path, "extensionsRequired",
+                     fmt::format("the file requires {}, which radmesh does not implement (it accepts {})", extension,
+                                 fmt::join(kRequirableExtensions, ", ")),
+                     extension.find("compression") != std::string::npos
+                         ? "export the file without Draco or meshopt compression"
+                         : "export the file without " + extension);
+  }
+}
+
+// The file a buffer's or image's URI names: relative to the glTF file's folder (glTF 2.0 3.6.1),
+// with %XX escapes decoded, as tinygltf reads it.
+fs::path uriFile(const std::string& path, const std::string& uri) {
+  std::string decoded;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      decoded += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      decoded += uri[i];
+    }
+  }
+  return fs::path(path).parent_path() / decoded;
+}
+
+// Every buffer and image the document names by a URI, not embedded, checked before tinygltf opens
+// it: reading a FIFO would block for ever, a folder failed with std::bad_alloc, and a missing buffer
+// would be looked for in the working directory too.
+void checkExternalFiles(const std::string& path, const nlohmann::json& doc, std::vector<std::string>* warnings) {
+  for (const std::string array : {"buffers", "images"}) {
+    if (!doc.is_object() || !doc.contains(array) || !doc[array].is_array()) continue;
+    const std::string what = array == "buffers" ? "buffer" : "image";
+    for (size_t i = 0; i < doc[array].size(); ++i) {
+      const nlohmann::json& entry = doc[array][i];
+      if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
+      const std::string uri = entry["uri"].get<std::string>();
+      const std::string element = what + " " + std::to_string(i);
+      if (uri.rfind("data:", 0) == 0) {
+        // tinygltf would look for a file of that name, and quote all of it.
+        if (!tinygltf::IsDataURI(uri))
+          throw SceneError(path, element,
+                           fmt::format("its data: URI ('{}...') is not base64 of a type glTF embeds", uri.substr(0, 40)),
+                           fmt::format("embed the {} as data:application/octet-stream;base64,... (or "
+                                       "data:image/png;base64,... for a PNG)",
+                                       what));
+        continue;
+      }
+      if (uri.find("://") != std::string::npos || fs::path(uri).has_root_path())
+        throw SceneError(path, element,
+                         "its uri '" + uri + "' is absolute; glTF names external files relative to the glTF file",
+                         "copy the file beside the glTF file (or below it) and give its relative path");
+      const fs::path file = uriFile(path, uri);
+      const FileKind kind = fileKind(file);
+      if (kind == FileKind::Folder || kind == FileKind::Special)
+        throw SceneError(path, element,
+                         fmt::format("its uri '{}' names '{}', which is {}, not a file", uri, file.string(),
+                                     fileKindName(kind)),
+                         fmt::format("give the uri of the {}'s file, beside the glTF file, or embed the {}", what, what));
+      if (kind == FileKind::Missing && what == "buffer")
+        throw SceneError(path, element, "its file '" + file.string() + "' does not exist",
+                         "put '" + uri + "' beside the glTF file, or embed the buffer");
+      if (kind == FileKind::Missing && warnings)  // an image: tinygltf's own two warnings are dropped
+        warnings->push_back(path + ": " + element + ": its file '" + file.string() + "' does not exist: " +
+                            kImageLeftOut);
+      std::error_code ec;
+      const uintmax_t size = fs::file_size(file, ec);
+      if (what == "buffer" && !ec && entry.contains("byteLength") && entry["byteLength"].is_number_unsigned() &&
+          size != entry["byteLength"].get<uint64_t>())
+        throw SceneError(path, element,
+                         fmt::format("its file '{}' has {} bytes, but its byteLength is {} (the buffer's length, "
+                                     "which tinygltf requires the file to match)",
+                                     file.string(), size, entry["byteLength"].get<uint64_t>()),
+                         size < entry["byteLength"].get<uint64_t>()
+                             ? "supply the whole buffer file (it may be truncated)"
+                             : "set byteLength to the file's size, or export the file again");
+    }
+  }
+}
+
+// The document's JSON: all of a .gltf, or the JSON chunk of a .glb that loaded.
+std::string jsonOf(const std::string& bytes) {
+  if (!isGlb(bytes) || bytes.size() < kGlbHeaderBytes) return bytes;
+  return bytes.substr(kGlbHeaderBytes, std::min<size_t>(littleEndian32(bytes, 12), bytes.size() - kGlbHeaderBytes));
+}
+
+}  // namespace
+
+bool isGlb(const std::string& bytes) { return bytes.starts_with(kGlbSignature); }
+
+nlohmann::json readGltfDocument(const std::string& path, const std::string& bytes, std::vector<std::string>* warnings) {
+  if (nestsDeeperThan(jsonOf(bytes), kMaxJsonDepth))
+    throw SceneError(path, "JSON",
+                     fmt::format("nests arrays and objects more than {} levels deep, which no glTF needs (parsing it "
+                                 "would overflow the stack)",
+                                 kMaxJsonDepth),
+                     "remove the deep nesting (look in \"extras\") or export the file again");
+  nlohmann::json doc = nlohmann::json::parse(jsonOf(bytes), nullptr, /*allow_exceptions=*/false);
+  // A document that is no JSON has neither: tinygltf says what is wrong with it.
+  checkVersion(path, bytes, doc);
+  checkRequiredExtensions(path, doc);
+  checkExternalFiles(path, doc, warnings);
+  return doc;
+}
+
+// tinygltf drops a light's property of the wrong type and keeps its default (an intensity of
+// "1000", a string, becomes 1 cd), and ignores a node's light that is no index: both are refused
+// here, naming the light or node.
+void checkGltfLightTypes(const std::string& path, const nlohmann::json& doc) {
+  const nlohmann::json lights = lightsOf(doc);
+  const auto refuse = [&](const std::string& element, const std::string& key, const nlohmann::json& value,
+                          const std::string& want) {
+    return SceneError(path, element, fmt::format("{} is {} ({}), not {}", key, value.dump(), value.type_name(), want),
+                      fmt::format("give {} as {}", key, want));
+  };
+  for (size_t i = 0; lights.is_array() && i < lights.size(); ++i) {
+    const nlohmann::json& light = lights[i];
+    if (!light.is_object()) continue;
+    for (const char* key : {"intensity", "range"})
+      if (light.contains(key) && !light[key].is_number()) throw refuse(lightElement(light, i), key, light[key], "a number");
+    if (light.contains("color") &&
+        !(light["color"].is_array() && std::all_of(light["color"].begin(), light["color"].end(),
+                                                    [](const nlohmann::json& c) { return c.is_number(); })))
+      throw refuse(lightElement(light, i), "color", light["color"], "3 numbers");
+    if (light.contains("spot") && light["spot"].is_object())
+      for (const char* key : {"innerConeAngle", "outerConeAngle"})
+        if (light["spot"].contains(key) && !light["spot"][key].is_number())
+          throw refuse(lightElement(light, i), std::string("spot.") + key, light["spot"][key], "a number of radians");
+  }
+  const auto nodes = doc.is_object() ? doc.find("nodes") : doc.end();
+  for (size_t n = 0; nodes != doc.end() && nodes->is_array() && n < nodes->size(); ++n) {
+    const nlohmann::json& node = (*nodes)[n];
+    if (!node.is_object() || !node.contains("extensions") || !node["extensions"].is_object() ||
+        !node["extensions"].contains("KHR_lights_punctual"))
+      continue;
+    const nlohmann::json& use = node["extensions"]["KHR_lights_punctual"];
+    if (!(use.is_object() && use.contains("light") && use["light"].is_number_unsigned()))
+      throw refuse("node " + std::to_string(n), "extensions.KHR_lights_punctual", use,
+                   "{\"light\": INDEX} with the index of one of the document's lights");
+  }
+}
+
+GltfDiagnosis diagnoseGltf(const std::string& bytes, const nlohmann::json& doc) {
+  if (isGlb(bytes)) {
+    const uint32_t declared = bytes.size() >= 12 ? littleEndian32(bytes, 8) : 0;
+    const uint32_t jsonBytes = bytes.size() >= kGlbHeaderBytes ? littleEndian32(bytes, 12) : 0;
+    const std::string damaged = "the file is truncated or damaged: export or copy it again";
+    if (bytes.size() < kGlbHeaderBytes || declared > bytes.size())
+      return {"GLB container",
+              "the file has " + std::to_string(bytes.size()) + " bytes, its header declares " + std::to_string(declared),
+              damaged};
+    if (jsonBytes > bytes.size() - kGlbHeaderBytes)
+      return {"GLB container",
+              fmt::format("its JSON chunk declares {} bytes, but {} follow the chunk's header", jsonBytes,
+                          bytes.size() - kGlbHeaderBytes),
+              damaged};
+  }
+  if (doc.is_discarded())
+    return {"JSON", "", "repair the JSON text (a truncated file ends mid-object)"};
+  // tinygltf refuses a light without a type (or a spot without its cone) without naming it.
+  const nlohmann::json lights = lightsOf(doc);
+  for (size_t i = 0; lights.is_array() && i < lights.size(); ++i) {
+    if (!lights[i].is_object()) continue;
+    const std::string element = lightElement(lights[i], i);
+    if (!lights[i].contains("type") || !lights[i]["type"].is_string())
+      return {element, "it has no type", "give it \"type\": \"point\", \"spot\" or \"directional\""};
+    if (lights[i]["type"] == "spot" && !(lights[i].contains("spot") && lights[i]["spot"].is_object()))
+      return {element, "a spot light without its \"spot\" object", "give it \"spot\": {\"outerConeAngle\": ...}"};
+  }
+  // radmesh uses no cameras, but tinygltf refuses a file with one it cannot read.
+  const auto cameras = doc.find("cameras");
+  for (size_t i = 0; cameras != doc.end() && cameras->is_array() && i < cameras->size(); ++i) {
+    const nlohmann::json& camera = (*cameras)[i];
+    const std::string type = camera.is_object() ? camera.value("type", std::string()) : std::string();
+    if (type.empty() || !camera.contains(type) || !camera[type].is_object())
+      return {"camera " + std::to_string(i), "it is incomplete (a \"" + type +
+                                                "\" camera needs its \"" + type + "\" object; radmesh uses no cameras)",
+              "give it its \"perspective\" or \"orthographic\" object, or delete the camera"};
+  }
+  const auto buffers = doc.find("buffers");
+  if (buffers != doc.end() && buffers->is_array()) {
+    for (size_t i = 0; i < buffers->size(); ++i) {
+      const nlohmann::json& b = (*buffers)[i];
+      if (!b.is_object() || !b.contains("uri") || !b["uri"].is_string()) continue;
+      const std::string uri = b["uri"].get<std::string>();
+      const std::string element = "buffer " + std::to_string(i);
+      const bool declared = b.contains("byteLength") && b["byteLength"].is_number_unsigned();
+      if (uri.rfind("data:", 0) == 0) {
+        // Base64 carries 3 bytes in 4 characters, less its '=' padding.
+        const size_t comma = uri.find(',');
+        if (comma == std::string::npos || !declared) continue;
+        const std::string_view payload = std::string_view(uri).substr(comma + 1);
+        const size_t padding = payload.size() - std::min(payload.size(), payload.find_last_not_of('=') + 1);
+        const uint64_t held = payload.size() / 4 * 3 - std::min<uint64_t>(padding, payload.size() / 4 * 3);
+        if (held < b["byteLength"].get<uint64_t>())
+          return {element, fmt::format("its data: URI holds {} bytes, fewer than its byteLength, {}", held,
+                                       b["byteLength"].get<uint64_t>()),
+                  "export the file again (the embedded buffer and its byteLength disagree)"};
+        continue;
+      }
+    }
+  }
+  return {"", "", "check that the file is valid glTF 2.0 (for example with the Khronos glTF validator)"};
+}
+
+}  // namespace radmesh
