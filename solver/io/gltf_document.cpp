@@ -125,58 +125,64 @@ fs::path uriFile(const std::string& path, const std::string& uri) {
   return fs::path(path).parent_path() / decoded;
 }
 
-// Every buffer and image the document names by a URI, not embedded, checked before tinygltf opens
-// it: reading a FIFO would block for ever, a folder failed with std::bad_alloc, and a missing buffer
-// would be looked for in the working directory too.
-void checkExternalFiles(const std::string& path, const nlohmann::json& doc, std::vector<std::string>* warnings) {
+// Calls f(what, index, entry, uri) for every buffer and image the document gives a URI.
+template <class F> void forEachUri(const nlohmann::json& doc, F f) {
   for (const std::string array : {"buffers", "images"}) {
     if (!doc.is_object() || !doc.contains(array) || !doc[array].is_array()) continue;
     const std::string what = array == "buffers" ? "buffer" : "image";
     for (size_t i = 0; i < doc[array].size(); ++i) {
       const nlohmann::json& entry = doc[array][i];
-      if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
-      const std::string uri = entry["uri"].get<std::string>();
-      const std::string element = what + " " + std::to_string(i);
-      if (uri.rfind("data:", 0) == 0) {
-        // tinygltf would look for a file of that name, and quote all of it.
-        if (!tinygltf::IsDataURI(uri))
-          throw SceneError(path, element,
-                           fmt::format("its data: URI ('{}...') is not base64 of a type glTF embeds", uri.substr(0, 40)),
-                           fmt::format("embed the {} as data:application/octet-stream;base64,... (or "
-                                       "data:image/png;base64,... for a PNG)",
-                                       what));
-        continue;
-      }
-      if (uri.find("://") != std::string::npos || fs::path(uri).has_root_path())
-        throw SceneError(path, element,
-                         "its uri '" + uri + "' is absolute; glTF names external files relative to the glTF file",
-                         "copy the file beside the glTF file (or below it) and give its relative path");
-      const fs::path file = uriFile(path, uri);
-      const FileKind kind = fileKind(file);
-      if (kind == FileKind::Folder || kind == FileKind::Special)
-        throw SceneError(path, element,
-                         fmt::format("its uri '{}' names '{}', which is {}, not a file", uri, file.string(),
-                                     fileKindName(kind)),
-                         fmt::format("give the uri of the {}'s file, beside the glTF file, or embed the {}", what, what));
-      if (kind == FileKind::Missing && what == "buffer")
-        throw SceneError(path, element, "its file '" + file.string() + "' does not exist",
-                         "put '" + uri + "' beside the glTF file, or embed the buffer");
-      if (kind == FileKind::Missing && warnings)  // an image: tinygltf's own two warnings are dropped
-        warnings->push_back(path + ": " + element + ": its file '" + file.string() + "' does not exist: " +
-                            kImageLeftOut);
-      std::error_code ec;
-      const uintmax_t size = fs::file_size(file, ec);
-      if (what == "buffer" && !ec && entry.contains("byteLength") && entry["byteLength"].is_number_unsigned() &&
-          size != entry["byteLength"].get<uint64_t>())
-        throw SceneError(path, element,
-                         fmt::format("its file '{}' has {} bytes, but its byteLength is {} (the buffer's length, "
-                                     "which tinygltf requires the file to match)",
-                                     file.string(), size, entry["byteLength"].get<uint64_t>()),
-                         size < entry["byteLength"].get<uint64_t>()
-                             ? "supply the whole buffer file (it may be truncated)"
-                             : "set byteLength to the file's size, or export the file again");
+      if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string())
+        f(what, i, entry, entry["uri"].get<std::string>());
     }
   }
+}
+
+// Every buffer and image the document names by a URI, not embedded, checked before tinygltf opens
+// it: reading a FIFO would block for ever, a folder failed with std::bad_alloc, and a missing buffer
+// would be looked for in the working directory too.
+void checkExternalFiles(const std::string& path, const nlohmann::json& doc, std::vector<std::string>* warnings) {
+  forEachUri(doc, [&](const std::string& what, size_t i, const nlohmann::json& entry, const std::string& uri) {
+    const std::string element = what + " " + std::to_string(i);
+    if (uri.rfind("data:", 0) == 0) {
+      // tinygltf would look for a file of that name, and quote all of it.
+      if (!tinygltf::IsDataURI(uri))
+        throw SceneError(path, element,
+                         fmt::format("its data: URI ('{}...') is not base64 of a type glTF embeds", uri.substr(0, 40)),
+                         fmt::format("embed the {} as data:application/octet-stream;base64,... (or "
+                                     "data:image/png;base64,... for a PNG)",
+                                     what));
+      return;
+    }
+    if (uri.find("://") != std::string::npos || fs::path(uri).has_root_path())
+      throw SceneError(path, element,
+                       "its uri '" + uri + "' is absolute; glTF names external files relative to the glTF file",
+                       "copy the file beside the glTF file (or below it) and give its relative path");
+    const fs::path file = uriFile(path, uri);
+    const FileKind kind = fileKind(file);
+    if (kind == FileKind::Folder || kind == FileKind::Special)
+      throw SceneError(path, element,
+                       fmt::format("its uri '{}' names '{}', which is {}, not a file", uri, file.string(),
+                                   fileKindName(kind)),
+                       fmt::format("give the uri of the {}'s file, beside the glTF file, or embed the {}", what, what));
+    if (kind == FileKind::Missing && what == "buffer")
+      throw SceneError(path, element, "its file '" + file.string() + "' does not exist",
+                       "put '" + uri + "' beside the glTF file, or embed the buffer");
+    if (kind == FileKind::Missing && warnings)  // an image: tinygltf's own two warnings are dropped
+      warnings->push_back(path + ": " + element + ": its file '" + file.string() + "' does not exist: " +
+                          kImageLeftOut);
+    std::error_code ec;
+    const uintmax_t size = fs::file_size(file, ec);
+    if (what == "buffer" && !ec && entry.contains("byteLength") && entry["byteLength"].is_number_unsigned() &&
+        size != entry["byteLength"].get<uint64_t>())
+      throw SceneError(path, element,
+                       fmt::format("its file '{}' has {} bytes, but its byteLength is {} (the buffer's length, "
+                                   "which tinygltf requires the file to match)",
+                                   file.string(), size, entry["byteLength"].get<uint64_t>()),
+                       size < entry["byteLength"].get<uint64_t>()
+                           ? "supply the whole buffer file (it may be truncated)"
+                           : "set byteLength to the file's size, or export the file again");
+  });
 }
 
 // The document's JSON: all of a .gltf, or the JSON chunk of a .glb that loaded.
@@ -186,6 +192,19 @@ std::string jsonOf(const std::string& bytes) {
 }
 
 }  // namespace
+
+std::map<std::string, std::string> plusUriFiles(const std::string& path, const nlohmann::json& doc) {
+  std::map<std::string, std::string> files;
+  const std::string folder = fs::path(path).parent_path().string();
+  forEachUri(doc, [&](const std::string&, size_t, const nlohmann::json&, const std::string& uri) {
+    if (uri.find('+') == std::string::npos || uri.starts_with("data:")) return;
+    std::string spaced = uri;
+    std::ranges::replace(spaced, '+', ' ');  // before the %XX escapes: "%2B" stays a '+'
+    const std::string asked = uriFile("", spaced).string();
+    files[folder.empty() || folder.ends_with('/') ? folder + asked : folder + "/" + asked] = uriFile(path, uri).string();
+  });
+  return files;
+}
 
 bool isGlb(const std::string& bytes) { return bytes.starts_with(kGlbSignature); }
 

@@ -4,6 +4,7 @@
 // why tinygltf refused a file, which its own message seldom says.
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,11 @@ bool isGlb(const std::string& bytes);
 // file; discarded when it does not parse, for tinygltf to say why. Throws SceneError naming the
 // element; a missing image is a warning.
 nlohmann::json readGltfDocument(const std::string& path, const std::string& bytes, std::vector<std::string>* warnings);
+
+// The files named by buffers' and images' URIs that hold a '+', by the path tinygltf asks for: it
+// decodes a '+' as a space, as in a web form's query, where in a glTF URI (RFC 3986) it is a '+',
+// as other glTF readers take it.
+std::map<std::string, std::string> plusUriFiles(const std::string& path, const nlohmann::json& doc);
 
 // After tinygltf loaded the file: what it dropped or ignored for being of the wrong type.
 void checkGltfLightTypes(const std::string& path, const nlohmann::json& doc);

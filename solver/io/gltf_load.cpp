@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
 
 #include "solver/io/file_signature.h"
 #include "solver/io/gltf_document.h"
@@ -65,6 +66,19 @@ void appendWarnings(const std::string& path, const std::string& text, std::vecto
   }
 }
 
+// tinygltf's file access, with the paths plusUriFiles lists (user data) read where their URIs point.
+const std::string& fileFor(const std::string& asked, void* plusFiles) {
+  const auto& files = *static_cast<const std::map<std::string, std::string>*>(plusFiles);
+  const auto it = files.find(asked);
+  return it == files.end() ? asked : it->second;
+}
+bool fileExists(const std::string& path, void* plusFiles) {
+  return tinygltf::FileExists(fileFor(path, plusFiles), nullptr);
+}
+bool readWholeFile(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* plusFiles) {
+  return tinygltf::ReadWholeFile(out, error, fileFor(path, plusFiles), nullptr);
+}
+
 }  // namespace
 
 tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>* warnings) {
@@ -82,6 +96,8 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
   const auto length = static_cast<unsigned>(bytes.size());
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&decodeImageOrWarn, nullptr);  // no options: the decoder's defaults (RGBA)
+  std::map<std::string, std::string> plusFiles = plusUriFiles(path, doc);
+  loader.SetFsCallbacks({&fileExists, &tinygltf::ExpandFilePath, &readWholeFile, &tinygltf::WriteWholeFile, &plusFiles});
   tinygltf::Model model;
   std::string error, warning;
   bool loaded = false;

@@ -336,6 +336,26 @@ TEST(GltfImport, ExternalBinBufferBesideTheFile) {
   EXPECT_EQ(s.polygons[0].vertices, kQuadVertices);
 }
 
+// In a glTF URI (RFC 3986) a '+' is a '+', as other glTF readers take it; tinygltf alone would
+// read a space, here the decoy beside it.
+TEST(GltfImport, APlusInABufferUriNamesAPlusNotASpace) {
+  TempDir dir;
+  GltfBuilder b;
+  const int lamp = b.add("materials", {{"emissiveFactor", {1, 1, 1}}});
+  b.addTriangles("quad", b.addPositions(kQuadVertices), b.addIndices({0, 1, 2, 0, 2, 3}), lamp);
+  const std::filesystem::path gltf = b.write(dir / "plus.gltf", "lamp+shade.bin");
+  const auto bytes = std::filesystem::file_size(dir / "lamp+shade.bin");
+  std::ofstream(dir / "lamp shade.bin", std::ios::binary) << std::string(bytes, '\0');
+  const Scene s = importGltf(gltf.string());
+  ASSERT_EQ(s.polygons.size(), 1u);
+  EXPECT_EQ(s.polygons[0].vertices, kQuadVertices);
+  // "%2B" is a '+' too.
+  nlohmann::json doc = nlohmann::json::parse(std::ifstream(gltf));
+  doc["buffers"][0]["uri"] = "lamp%2Bshade.bin";
+  std::ofstream(dir / "escaped.gltf") << doc.dump();
+  EXPECT_EQ(importGltf((dir / "escaped.gltf").string()).polygons.at(0).vertices, kQuadVertices);
+}
+
 TEST(GltfImport, GlbWrittenByTheBakeExportReadsBack) {
   TempDir dir;
   DisplayMesh mesh;
