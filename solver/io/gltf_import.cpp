@@ -121,6 +121,14 @@ class TriangleCollector {
     };
     if (!n.matrix.empty()) {
       if (n.matrix.size() != 16) throw sizeError("matrix", 16, n.matrix.size());
+      // glTF 2.0 (5.25): a node's matrix is a translation, rotation and scale; its last row was
+      // dropped unread, moving the geometry silently.
+      if (n.matrix[3] != 0.0 || n.matrix[7] != 0.0 || n.matrix[11] != 0.0 || n.matrix[15] != 1.0)
+        throw SceneError(file_, element,
+                         fmt::format("its matrix's last row is ({}, {}, {}, {}), not (0, 0, 0, 1): a projective "
+                                     "matrix, where glTF allows only translation, rotation and scale",
+                                     n.matrix[3], n.matrix[7], n.matrix[11], n.matrix[15]),
+                         "export the node's transform as translation, rotation and scale");
       return glm::make_mat4(n.matrix.data());  // both column-major
     }
     glm::dmat4 m(1.0);

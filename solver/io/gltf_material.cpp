@@ -1,5 +1,7 @@
 #include "solver/io/gltf_material.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -92,6 +94,12 @@ Rgb emittance(const tinygltf::Model& model, const tinygltf::Material& m, const s
     e = Rgb(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
     for (int c = 0; c < 3; ++c)
       requireNonNegativeFactor(e[c], "emissiveFactor", file, element, "give emissiveFactor 3 numbers >= 0 (linear RGB)");
+    // Beyond glTF's [0, 1], but three.js and the Khronos sample viewer light with it as given.
+    if (e.r > 1.0 || e.g > 1.0 || e.b > 1.0)
+      warn(warnings, file, element,
+           fmt::format("emissiveFactor ({}, {}, {}) is above glTF's 1, read as given (fix: give emissiveFactor at "
+                       "most 1, and the rest as KHR_materials_emissive_strength)",
+                       e.r, e.g, e.b));
   }
   double strength = 1.0;
   const auto ext = m.extensions.find("KHR_materials_emissive_strength");

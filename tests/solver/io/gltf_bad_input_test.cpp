@@ -352,6 +352,17 @@ TEST(GltfBadInput, AZeroRotationNamesTheNode) {
   EXPECT_NE(r.what.find("rotation (0, 0, 0, 0) is zero or not finite"), std::string::npos) << r.what;
 }
 
+// Its last row was dropped unread: the quad moved without a word.
+TEST(GltfBadInput, AProjectiveNodeMatrixNamesTheNode) {
+  test::TempDir dir;
+  test::GltfBuilder b;
+  b.addTriangles("t", b.addPositions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), -1, -1,
+                 {{"name", "wall"}, {"matrix", {1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}});
+  const GltfRefusal r = gltfRefusalAt(b.write(dir / "projective.gltf").string());
+  EXPECT_EQ(r.element, "node 0 'wall'");
+  EXPECT_NE(r.what.find("its matrix's last row is (0.5, 0, 0, 1), not (0, 0, 0, 1)"), std::string::npos) << r.what;
+}
+
 // 20000 nested '[' overflowed the stack in the JSON parser (exit 139): refused before parsing, in
 // a .gltf and in a .glb's JSON chunk alike.
 TEST(GltfBadInput, JsonNestedTooDeeplyIsRefusedBeforeParsing) {

@@ -296,6 +296,19 @@ TEST(GltfImport, MaterialsFromFactorsEmissiveStrengthAndTextureAverage) {
   EXPECT_EQ(s.materials[2].rho, Rgb(0.99));  // a reflectance of 1 cannot converge
   EXPECT_TRUE(mentions(warnings, "material 2 'white': reflectance above 0.99"));
   EXPECT_FALSE(mentions(warnings, "textured"));
+  EXPECT_FALSE(mentions(warnings, "emissiveFactor"));
+}
+
+// Beyond glTF's [0, 1], read as three.js and the Khronos sample viewer read it, with a warning.
+TEST(GltfImport, AnEmissiveFactorAboveOneIsReadAsGivenWithAWarning) {
+  TempDir dir;
+  GltfBuilder b;
+  const int lamp = b.add("materials", {{"name", "lamp"}, {"emissiveFactor", {3.0, 2.0, 1.0}}});
+  b.addTriangles("quad", b.addPositions(kQuadVertices), b.addIndices({0, 1, 2, 0, 2, 3}), lamp);
+  std::vector<std::string> warnings;
+  const Scene s = importGltf(b.write(dir / "bright.gltf").string(), &warnings);
+  EXPECT_EQ(s.materials.at(0).emittance, Rgb(3.0, 2.0, 1.0));
+  EXPECT_TRUE(mentions(warnings, "material 0 'lamp': emissiveFactor (3, 2, 1) is above glTF's 1, read as given"));
 }
 
 // A texture only scales a colour: an image missing or undecodable leaves the factor alone, with
