@@ -13,9 +13,10 @@
 namespace radmesh {
 namespace {
 
-// What failed, with errno's reason.
+// What failed, with errno's reason, in words about the file asked for: the temporary file's name
+// means nothing to whoever typed the path.
 std::runtime_error failure(const std::string& what) {
-  return std::runtime_error(fmt::format("{}: {}", what, std::strerror(errno)));
+  return std::runtime_error(fmt::format("{} ({})", what, std::strerror(errno)));
 }
 
 // A new temporary file beside path (named by the pid and a count, with the permissions the umask
@@ -31,7 +32,9 @@ TempFile createTempBeside(const std::string& path) {
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   TempFile temp{(folder / fmt::format("{}.tmp-{}-{}", target.filename().string(), ::getpid(), count++)).string()};
   temp.fd = ::open(temp.path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (temp.fd < 0) throw failure("cannot create " + temp.path);
+  if (temp.fd < 0 && errno == ENOENT)
+    throw std::runtime_error(fmt::format("the folder '{}' does not exist", folder.string()));
+  if (temp.fd < 0) throw failure(fmt::format("cannot make a file in the folder '{}'", folder.string()));
   return temp;
 }
 
@@ -62,9 +65,9 @@ void writeAtomically(const std::string& linkOrPath, const std::string& bytes) {
   std::string failed;
   if (!flushed) {
     errno = writeErrno;
-    failed = "writing " + temp.path;
+    failed = "cannot write " + path;
   } else if (std::rename(temp.path.c_str(), path.c_str()) != 0) {
-    failed = "renaming " + temp.path;
+    failed = "cannot put the new " + path + " in place of the old";
   }
   if (!failed.empty()) {
     const std::runtime_error error = failure(failed);

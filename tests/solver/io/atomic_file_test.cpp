@@ -31,7 +31,7 @@ TEST(AtomicFile, ReplacesTheFileWholeLeavingNothingBeside) {
   EXPECT_EQ(files, 1);
 }
 
-// A folder that does not exist: both say which file they could not create, and why.
+// A folder that does not exist: both name it, not the temporary file's name.
 TEST(AtomicFile, AMissingFolderIsNamedWithTheReason) {
   const test::TempDir dir;
   const std::string path = (dir / "missing" / "state.bin").string();
@@ -41,8 +41,7 @@ TEST(AtomicFile, AMissingFolderIsNamedWithTheReason) {
       ADD_FAILURE() << "wrote into a missing folder";
     } catch (const std::runtime_error& e) {
       const std::string what = e.what();
-      EXPECT_EQ(what.find("cannot create " + path + ".tmp-"), 0u) << what;
-      EXPECT_NE(what.find("No such file or directory"), std::string::npos) << what;
+      EXPECT_EQ(what, "the folder '" + (dir / "missing").string() + "' does not exist");
     }
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
