@@ -58,10 +58,11 @@ class NearFieldFinder {
   std::vector<char> found_;
 };
 
-// The mean over the shooter's area of the point-to-polygon form factor to the receiver, without
-// occlusion: the shooter's triangles cut into subdivisions^2 triangles each, one point at the
-// centroid of each, weighted by its area. A receiver smaller than the shooter, each wholly in front
-// of the other, is sampled instead, by reciprocity, at sub-triangles no larger (at least 2 cuts).
+// The mean over the shooter's area of the point-to-polygon form factor to the receiver's front,
+// without occlusion: the shooter's triangles cut into subdivisions^2 triangles each, one point at
+// the centroid of each, weighted by its area; a point behind the receiver's plane sends it nothing.
+// A receiver no larger than the shooter (to a slack), wholly in front of it, is sampled instead, by
+// reciprocity, at sub-triangles no larger (at least 2 cuts).
 double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions = kNearFieldSubdivisions);
 
 // A near pair's unoccluded form factors: from the shooter's centroid (pointToPolygonFormFactor) and

@@ -61,6 +61,18 @@ TEST(NearField, AReceiverSmallerThanTheShooterIsSampledByReciprocityToTheClosedF
   }
 }
 
+// A floor cell a quarter under a block, and the block's side, as large as the cell to rounding: the
+// quarter behind the side's plane sees its back and sends its front nothing, whichever of the two is
+// sampled, and the choice of which does not turn on rounding.
+TEST(NearField, AShooterPartlyBehindTheReceiversPlaneSendsItNothingFromThere) {
+  const Patch floor = makePatch({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)});
+  auto side = [](double h) { return makePatch({Vec3(0.25, 0, 0), Vec3(0.25, 1, 0), Vec3(0.25, 1, h), Vec3(0.25, 0, h)}); };
+  const double exact = 0.75 * perpendicularRectanglesFormFactor(0.75, 1.0, 1.0);  // from the part x > 0.25
+  const double f = areaToAreaFormFactor(floor, side(1.0));
+  EXPECT_NEAR(f, exact, 0.01 * exact);
+  for (double h : {1.0 - 1e-9, 1.0 + 1e-9}) EXPECT_NEAR(areaToAreaFormFactor(floor, side(h)), f, 1e-7 * f) << "h - 1 = " << h - 1;
+}
+
 // Near receivers found in groups of shooters by size are those of the definition
 // (near_field.h), checked pair by pair, among patches from 0.02 m to 3 m.
 TEST(NearField, ReceiversFoundInGroupsBySizeAreThoseOfTheDefinition) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/io/gltf_import.h"
@@ -186,6 +187,49 @@ TEST(HardCases, SceneOffset1e5MetresGivesTheSameRadiosity) {
     for (size_t j = 0; j < b[0].size(); ++j)
       EXPECT_NEAR(b[1][j].r, b[0][j].r, 1e-4 * std::max(b[0][j].r, mean)) << toString(p) << " patch " << j;
   }
+}
+
+// A room lit by its ceiling with a block on the floor, moved by `shift` and meshed at the paper's
+// 15 inches: the grid line x = 1.905 cuts the floor a quarter of a cell short of the block's side
+// x = 2, and the side's cells are the floor's size. Returns the first of the block's polygons.
+int roomWithABlock(Vec3 shift, TestScene& t) {
+  t = test::closedBox({4, 3, 2.5}, 1, {test::grey(0.6), test::grey(0.0, 10.0, "light")}, {0, 1, 0, 0, 0, 0}, shift);
+  const int block = static_cast<int>(t.scene.polygons.size());
+  const Vec3 low = shift + Vec3(1, 1, 0), high = shift + Vec3(2, 1.8, 0.8);
+  const Vec3 x(1, 0, 0), y(0, 0.8, 0), z(0, 0, 0.8);
+  for (const auto& [corner, u, v] : {std::tuple{Vec3(low.x, low.y, high.z), x, y}, {low, z, y}, {low, x, z},
+                                     {Vec3(high.x, low.y, low.z), y, z}, {Vec3(low.x, high.y, low.z), z, x}})
+    test::addPolygon(t.scene, corner, u, v, 0);  // outward: top, x = 1, y = 1, x = 2, y = 1.8
+  t.patches = meshScene(t.scene, kDefaultCellM);
+  return block;
+}
+
+// The floor cell beside the block's side, a quarter of it under the block, was sampled from itself
+// in the near field when rounding made the side's diameter no smaller than the cell's, and its
+// quarter under the block, which sees the side's back, counted as lighting the side's front: a
+// shift of 1e-12 m moved the side's lowest patch by 7 %.
+TEST(HardCases, ARoomMovedBy1e12MetresGivesItsBlockTheSameRadiosity) {
+  std::vector<Rgb> b[2];
+  TestScene t[2];
+  int block = 0;
+  for (int k = 0; k < 2; ++k) {
+    block = roomWithABlock(Vec3(0, 0, k ? 1e-12 : 0.0), t[k]);
+    SolveOptions o = optionsFor(Projection::Hemicube, 64);
+    o.untilUnshot = 1e-4;
+    ProgressiveSolver solver(t[k].scene, t[k].patches, o);
+    ASSERT_TRUE(solveChecked(solver));
+    b[k] = solver.radiosity();
+  }
+  ASSERT_EQ(t[0].patches.size(), t[1].patches.size());
+  int blockPatches = 0;
+  for (size_t j = 0; j < b[0].size(); ++j)
+    if (t[0].patches[j].polygon >= block) {
+      ++blockPatches;
+      EXPECT_NEAR(b[1][j].r, b[0][j].r, 0.005 * b[0][j].r) << "patch " << j << " at " << t[0].patches[j].centroid.x
+                                                            << ", " << t[0].patches[j].centroid.y << ", "
+                                                            << t[0].patches[j].centroid.z;
+    }
+  EXPECT_GT(blockPatches, 20);
 }
 
 // Two closed rooms side by side, one lit, parted by a wall of no thickness, their outer walls in
