@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/meshing/elements.h"
@@ -16,17 +17,19 @@ double diameter(const Patch& p) {
   return std::sqrt(squaredDiameter({p.vertices.data(), static_cast<size_t>(p.vertexCount)}));
 }
 
+constexpr double kRounding = 1e-9;  // of a patch's size: a vertex this close to a plane is on it
+
 // Every vertex of `patch` on or in front of the plane of `of` (to rounding at size `scale`).
 bool whollyInFront(const Patch& patch, const Patch& of, double scale) {
   for (int k = 0; k < patch.vertexCount; ++k)
-    if (glm::dot(patch.vertices[k] - of.centroid, of.normal) < -1e-9 * scale) return false;
+    if (glm::dot(patch.vertices[k] - of.centroid, of.normal) < -kRounding * scale) return false;
   return true;
 }
 
 // Some vertex of `patch` strictly in front of the plane of `of` (beyond rounding at size `scale`).
 bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
   for (int k = 0; k < patch.vertexCount; ++k)
-    if (glm::dot(patch.vertices[k] - of.centroid, of.normal) > 1e-9 * scale) return true;
+    if (glm::dot(patch.vertices[k] - of.centroid, of.normal) > kRounding * scale) return true;
   return false;
 }
 
@@ -55,6 +58,36 @@ NearFieldFinder::Cell NearFieldFinder::Grid::cellOf(const Vec3& c) const {
               std::llround(std::floor(c.z / cellSize))};
 }
 
+NearFieldFinder::Key NearFieldFinder::Grid::keyOf(const Patch& receiver) const {
+  const Cell cell = cellOf(receiver.centroid);
+  const Vec3 n = receiver.normal * 1e12;  // a unit normal: well within long long
+  return Key{cell[0], cell[1], cell[2],
+             static_cast<long long>(n.x), static_cast<long long>(n.y), static_cast<long long>(n.z)};
+}
+
+NearFieldFinder::Spread NearFieldFinder::spreadOf(const Patch& patch) {
+  Spread spread;
+  for (int k = 0; k < patch.vertexCount; ++k) {
+    const Vec3 d = patch.vertices[k] - patch.centroid;
+    spread.bulge = std::max(spread.bulge, std::abs(glm::dot(d, patch.normal)));
+    spread.radius = std::max(spread.radius, glm::length(d));
+  }
+  return spread;
+}
+
+// A receiver near the shooter has a vertex in front of the shooter's plane, and the shooter one in
+// front of its plane, each by more than the rounding tolerance: their sum exceeds twice that. Yet
+// were both normals `normal`, the sum would be at most the two bulges; their differences from it
+// add at most that difference times the distances involved (centroids within reach, vertices
+// within radius of theirs), and 1e-12 of those distances covers rounding. Where that bound stays
+// under twice the tolerance, no receiver of the stack faces the shooter: parallel, flat copies never do.
+bool NearFieldFinder::neverNear(const Patch& shooter, const Spread& spread, double reach, const Stack& stack,
+                                const Vec3& normal) {
+  const double tilt = glm::length(shooter.normal - normal) + stack.tilt + 1e-12;
+  const double distances = reach + spread.radius + stack.spread.radius;
+  return spread.bulge + stack.spread.bulge + tilt * distances <= 2.0 * kRounding * reach;
+}
+
 // Shooters in classes by diameter, halving from the largest; a class's grid has cells half as wide
 // as its largest diameter, so a shooter searches only the cells its reach (its diameter) overlaps,
 // at most 5 x 5 x 5 of them, and never cells much wider than itself.
@@ -67,11 +100,34 @@ const NearFieldFinder::Grid& NearFieldFinder::gridFor(double size) {
   if (grid.cellSize == 0.0) {
     grid.cellSize = 0.5 * top;
     grid.sorted.resize(receivers_.size());
-    for (size_t j = 0; j < receivers_.size(); ++j) grid.sorted[j] = {grid.cellOf(receivers_[j].centroid), static_cast<int>(j)};
+    for (size_t j = 0; j < receivers_.size(); ++j) grid.sorted[j] = {grid.keyOf(receivers_[j]), static_cast<int>(j)};
     std::sort(grid.sorted.begin(), grid.sorted.end());
-    for (const auto& [cell, j] : grid.sorted) grid.centroids.push_back(receivers_[j].centroid);
+    indexStacks(grid);
   }
   return grid;
+}
+
+void NearFieldFinder::indexStacks(Grid& grid) const {
+  const int n = static_cast<int>(grid.sorted.size());
+  grid.centroids.clear();
+  for (const auto& [key, j] : grid.sorted) grid.centroids.push_back(receivers_[j].centroid);
+  grid.stackAt.assign(n, -1);
+  grid.stacks.clear();
+  for (int begin = 0, end = 0; begin < n; begin = end) {
+    for (end = begin + 1; end < n && grid.sorted[end].first == grid.sorted[begin].first;) ++end;
+    if (end - begin < kStackSize) continue;
+    Stack stack{end, 0.0, {}};
+    const Vec3& normal = receivers_[grid.sorted[begin].second].normal;
+    for (int k = begin; k < end; ++k) {
+      const Patch& receiver = receivers_[grid.sorted[k].second];
+      stack.tilt = std::max(stack.tilt, glm::length(receiver.normal - normal));
+      const Spread spread = spreadOf(receiver);
+      stack.spread.bulge = std::max(stack.spread.bulge, spread.bulge);
+      stack.spread.radius = std::max(stack.spread.radius, spread.radius);
+    }
+    grid.stackAt[begin] = static_cast<int>(grid.stacks.size());
+    grid.stacks.push_back(stack);
+  }
 }
 
 void NearFieldFinder::receiversSplit(const std::vector<int>& origin, const std::vector<char>& split) {
@@ -83,16 +139,15 @@ void NearFieldFinder::receiversSplit(const std::vector<int>& origin, const std::
     if (grid.cellSize == 0.0) continue;
     // Renumbering keeps the order of the receivers that did not split (it is monotone): so the
     // merge gives the fresh sort's order exactly.
-    std::vector<std::pair<Cell, int>> kept, made;
+    std::vector<std::pair<Key, int>> kept, made;
     kept.reserve(grid.sorted.size());
-    for (const auto& [cell, j] : grid.sorted)
-      if (newIndex[j] >= 0) kept.push_back({cell, newIndex[j]});
-    for (int e : children) made.push_back({grid.cellOf(receivers_[e].centroid), e});
+    for (const auto& [key, j] : grid.sorted)
+      if (newIndex[j] >= 0) kept.push_back({key, newIndex[j]});
+    for (int e : children) made.push_back({grid.keyOf(receivers_[e]), e});
     std::sort(made.begin(), made.end());
     grid.sorted.resize(kept.size() + made.size());
     std::merge(kept.begin(), kept.end(), made.begin(), made.end(), grid.sorted.begin());
-    grid.centroids.clear();
-    for (const auto& [cell, j] : grid.sorted) grid.centroids.push_back(receivers_[j].centroid);
+    indexStacks(grid);
   }
   for (std::vector<int>& near : near_) near.clear();
   std::fill(found_.begin(), found_.end(), 0);
@@ -105,19 +160,30 @@ const std::vector<int>& NearFieldFinder::receiversNear(int i) {
   found_[i] = 1;
   const bool selfReceives = &shooters_ == &receivers_;
   const Patch& shooter = shooters_[i];
+  const Spread spread = spreadOf(shooter);
   const Grid& grid = gridFor(reach);
   const Cell low = grid.cellOf(shooter.centroid - Vec3(reach)), high = grid.cellOf(shooter.centroid + Vec3(reach));
+  constexpr long long kLeast = std::numeric_limits<long long>::min();
+  size_t examined = 0;
   for (long long x = low[0]; x <= high[0]; ++x)
     for (long long y = low[1]; y <= high[1]; ++y) {
-      auto it = std::lower_bound(grid.sorted.begin(), grid.sorted.end(), std::pair<Cell, int>{Cell{x, y, low[2]}, -1});
+      const Key first{x, y, low[2], kLeast, kLeast, kLeast};
+      auto it = std::lower_bound(grid.sorted.begin(), grid.sorted.end(), std::pair<Key, int>{first, -1});
       for (; it != grid.sorted.end() && it->first[0] == x && it->first[1] == y && it->first[2] <= high[2]; ++it) {
+        const size_t k = it - grid.sorted.begin();
         const int j = it->second;
-        const Vec3& centroid = grid.centroids[it - grid.sorted.begin()];
-        if ((selfReceives && j == i) || !(glm::length(centroid - shooter.centroid) < reach)) continue;
+        if (const int s = grid.stackAt[k];
+            s >= 0 && neverNear(shooter, spread, reach, grid.stacks[s], receivers_[j].normal)) {
+          it = grid.sorted.begin() + grid.stacks[s].end - 1;  // on to the stack's last
+          continue;
+        }
+        ++examined;
+        if ((selfReceives && j == i) || !(glm::length(grid.centroids[k] - shooter.centroid) < reach)) continue;
         if (partlyInFront(receivers_[j], shooter, reach) && partlyInFront(shooter, receivers_[j], reach))
           near.push_back(j);
       }
     }
+  examined_ += examined;
   std::sort(near.begin(), near.end());
   return near;
 }

@@ -35,19 +35,44 @@ class NearFieldFinder {
   // takes): the grids keep their order, renumbered, with the children merged in, where building
   // them anew would sort every receiver again; every shooter's near receivers are found again.
   void receiversSplit(const std::vector<int>& origin, const std::vector<char>& split);
+  // Receivers measured against a shooter, summed over the shooters found so far: what finding
+  // costs, for tests (the stacks passed over whole are not counted).
+  size_t receiversExamined() const { return examined_; }
 
  private:
   using Cell = std::array<long long, 3>;
-  // The receivers' centroids in cells of one size, sorted by cell; a cell's run along z is
-  // consecutive, and the centroids are copied in the same order so the distance tests walk
-  // memory in sequence.
+  // A receiver's cell, then its normal in steps of 1e-12: parallel receivers of a cell sort together.
+  using Key = std::array<long long, 6>;
+  // How far a patch departs from its plane (through its centroid) and from its centroid: bounds on
+  // where its vertices can lie.
+  struct Spread {
+    double bulge = 0.0, radius = 0.0;
+  };
+  static Spread spreadOf(const Patch& patch);
+  // At least kStackSize consecutive receivers with one key: a stack of parallel copies (an MGF
+  // array), which a shooter parallel to them passes over whole (neverNear), as none of them can face
+  // it. Fewer are measured one by one: passing over them would save little more than the bound costs.
+  static constexpr int kStackSize = 8;
+  struct Stack {
+    int end = 0;         // into Grid::sorted, past its last receiver; its first receiver's normal is the stack's
+    double tilt = 0.0;   // the most a receiver's normal differs from the first's (length of the difference)
+    Spread spread;       // the largest of its receivers'
+  };
+  static bool neverNear(const Patch& shooter, const Spread& spread, double reach, const Stack& stack,
+                        const Vec3& normal);
+  // The receivers in cells of one size, sorted by key: a cell's column along z is consecutive,
+  // and the centroids are copied in the same order so the distance tests walk memory in sequence.
   struct Grid {
     double cellSize = 0.0;
-    std::vector<std::pair<Cell, int>> sorted;
+    std::vector<std::pair<Key, int>> sorted;
     std::vector<Vec3> centroids;
+    std::vector<int> stackAt;  // per sorted receiver, the stack it begins, or -1
+    std::vector<Stack> stacks;
     Cell cellOf(const Vec3& point) const;
+    Key keyOf(const Patch& receiver) const;
   };
   const Grid& gridFor(double size);
+  void indexStacks(Grid& grid) const;  // centroids and stacks from sorted
 
   const std::vector<Patch>& shooters_;
   const std::vector<Patch>& receivers_;
@@ -56,6 +81,7 @@ class NearFieldFinder {
   std::vector<Grid> grids_;   // by size class: shooters no larger than largest_ / 2^k and more than half that
   std::vector<std::vector<int>> near_;
   std::vector<char> found_;
+  size_t examined_ = 0;
 };
 
 // The mean over the shooter's area of the point-to-polygon form factor to the receiver's front,
