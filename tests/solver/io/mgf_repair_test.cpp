@@ -102,6 +102,20 @@ TEST(MgfRepair, FlatFacesThatCrossThemselvesAreSkippedByName) {
                        "line 16:"));
 }
 
+// A face that lists a triangle's corners 30 000 times over is skipped with the same words as one
+// that goes round twice, and after as little work (it was ear-clipped vertex by vertex: 50 s).
+TEST(MgfRepair, AFaceGoingRoundATriangle30000TimesIsSkippedByName) {
+  std::string rounds;
+  for (int k = 0; k < 30000; ++k) rounds += " a b c";
+  std::vector<std::string> warnings;
+  const Scene scene = test::importMgfText(test::kUnitSquare + "m light\nf a b c d\nf" + rounds + "\n", &warnings);
+  EXPECT_EQ(scene.polygons.size(), 1u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(contains(warnings[0], "line 13: f skipped: its outline crosses itself (its outline goes round part of "
+                                    "it 30000 times) (fix: split it into faces that do not cross themselves)"))
+      << warnings[0];
+}
+
 TEST(MgfRepair, AChromaticityOutsideTheDiagramIsClipped) {
   const Repaired r = repaired("mgf_color_outside_gamut.mgf");
   ASSERT_EQ(r.scene.materials.size(), 2u);
