@@ -1,7 +1,11 @@
 #include "solver/radiosity/effects_plan.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -19,12 +23,34 @@ bool grey(const Rgb& c) { return c.r == c.g && c.g == c.b; }
 
 bool isConvexEnclosure(const Scene& scene) {
   const double tolerance = 1e-9 * sceneDiagonal(scene);
+  // The vertices about a point among them, so that a normal's rounding weighs by the scene's size.
+  const Vec3 centre = scene.polygons.empty() ? Vec3(0.0) : scene.polygons[0].vertices[0];
+  std::vector<Vec3> points;
+  double radius = 0.0;
+  for (const Polygon& p : scene.polygons)
+    for (const Vec3& v : p.vertices) {
+      points.push_back(v - centre);
+      radius = std::max(radius, glm::length(points.back()));
+    }
+  const auto lowest = [&](const Vec3& n) {
+    double low = std::numeric_limits<double>::infinity();
+    for (const Vec3& v : points) low = std::min(low, glm::dot(v, n));
+    return low;
+  };
+  // Every vertex on or in front of every polygon's plane. A wall exported as thousands of polygons
+  // has one plane: the lowest vertex along it is found once per normal (to 1e-9), and bounds a
+  // polygon whose normal n differs from that by d to within |d| times the scene's radius; only a
+  // polygon the bound cannot clear is measured itself. Else a finely meshed box took n^2.
+  std::map<std::array<long long, 3>, std::pair<Vec3, double>> lowestAlong;
   for (const Polygon& p : scene.polygons) {
     const Vec3 n = glm::normalize(newellNormal(p.vertices));
-    const Vec3 origin = p.vertices[0];
-    for (const Polygon& q : scene.polygons)
-      for (const Vec3& v : q.vertices)
-        if (glm::dot(v - origin, n) < -tolerance) return false;
+    const std::array<long long, 3> key = {std::llround(n.x * 1e9), std::llround(n.y * 1e9), std::llround(n.z * 1e9)};
+    auto [at, added] = lowestAlong.try_emplace(key);
+    if (added) at->second = {n, lowest(n)};
+    const auto& [along, low] = at->second;
+    const double offset = glm::dot(p.vertices[0] - centre, n);
+    if (low - glm::length(n - along) * radius - offset >= -tolerance) continue;
+    if (lowest(n) - offset < -tolerance) return false;
   }
   return true;
 }

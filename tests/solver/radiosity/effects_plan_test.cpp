@@ -73,6 +73,35 @@ TEST(EffectsPlan, WallSplitInTwoAlongAnEdgeStillCloses) {
   EXPECT_TRUE(isClosed(s));
 }
 
+// The unit box with each face exported as n x n quads (an exporter's tessellation), the quad at
+// `dent` of the floor lowered by `depth` (negative: raised into the room).
+Scene tessellatedBox(int n, int dent = -1, double depth = 0.0) {
+  Scene s;
+  s.materials.push_back({"grey", Rgb(0.5), Rgb(1.0)});
+  Scene box;
+  addBox(box, Vec3(0), 1.0, true, 0);
+  for (const Polygon& face : box.polygons) {
+    const Vec3 o = face.vertices[0], u = face.vertices[1] - o, v = face.vertices[3] - o;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        Polygon q{{}, 0, ""};
+        for (const auto& [a, b] : {std::pair{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}})
+          q.vertices.push_back(o + u * (double(a) / n) + v * (double(b) / n));
+        if (&face == &box.polygons[0] && i * n + j == dent)
+          for (Vec3& vertex : q.vertices) vertex.z -= depth;
+        s.polygons.push_back(q);
+      }
+  }
+  return s;
+}
+
+TEST(EffectsPlan, ABoxExportedAsThousandsOfQuadsIsAConvexEnclosureUnlessAQuadLeavesTheFloor) {
+  EXPECT_TRUE(isConvexEnclosure(tessellatedBox(30)));             // 5400 quads on six planes
+  EXPECT_FALSE(isConvexEnclosure(tessellatedBox(30, 437, 1e-3)));  // sunk: behind the other floor quads
+  EXPECT_FALSE(isConvexEnclosure(tessellatedBox(30, 437, -1e-3)));  // raised: the rest is behind it
+  EXPECT_TRUE(isConvexEnclosure(tessellatedBox(30, 437, -1e-13)));  // raised within rounding
+}
+
 TEST(EffectsPlan, ColourAndBlackMaterialsAreDetectedAndAllForcesEverything) {
   Scene s = greyFurnace();
   s.materials[0].rho = Rgb(0.0);
