@@ -225,9 +225,10 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option_function<double>(
       "--exposure",
       [args](double ev) {
-        // 2^64 either way is far past any scene's range of light; beyond, a typo or an overflow.
-        if (!(std::abs(ev) <= 64.0))
-          throw OptionError(fmt::format("--exposure {} is out of range: give stops from -64 to 64, e.g. -2 "
+        // As far as any automatic exposure it reports goes (a bake's floats span 2^-149 to 2^128,
+        // a solve's light 1e-30 to 1e32 W/m^2), so that it can be given back; beyond, a typo.
+        if (!(std::abs(ev) <= 160.0))
+          throw OptionError(fmt::format("--exposure {} is out of range: give stops from -160 to 160, e.g. -2 "
                                         "(or leave it out: automatic)", ev));
         args->exposureEv = ev;
       },

@@ -738,6 +738,27 @@ TEST(Cli, RenderSolvesOrReadsABakeAndWritesThePictureOfTheAskedSize) {
   EXPECT_EQ(pngSize(fromBake), std::make_pair(96, 64));
 }
 
+// A lamp of 1e-25 lm/m^2 needs about +90 EV: the automatic exposure says so, and that can be given back.
+TEST(Cli, RenderTakesBackTheExposureItChoseForAVeryDimScene) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  const std::string scene = tempPath("dim.mgf"), bake = tempPath("dim.glb");
+  std::ofstream(scene) << "m wall =\n c\n rd 0.5\nm lamp =\n c\n ed 1e-25\nv r1 =\n p 0 0 0\nv r2 =\n p 4 0 0\n"
+                          "v r3 =\n p 4 4 0\nv r4 =\n p 0 4 0\nm wall\nprism r1 r2 r3 r4 -2.7\nv l1 =\n p 1.8 1.8 2.69\n"
+                          "v l2 =\n p 1.8 2.2 2.69\nv l3 =\n p 2.2 2.2 2.69\nv l4 =\n p 2.2 1.8 2.69\nm lamp\nf l1 l2 l3 l4\n";
+  ASSERT_EQ(radmesh("solve " + scene + " --cell 0.5 --resolution 32 --quiet --out " + bake).exitCode, 0);
+  const CommandRun automatic = radmesh("render " + bake + " --size 80x60 --out " + tempPath("auto.png"));
+  ASSERT_EQ(automatic.exitCode, 0) << automatic.output;
+  const size_t at = automatic.output.find("exposure +");
+  ASSERT_NE(at, std::string::npos) << automatic.output;
+  const double ev = std::stod(automatic.output.substr(at + 9));
+  EXPECT_GT(ev, 64.0);  // past the range --exposure took until 2026-12-04
+  const CommandRun given =
+      radmesh("render " + bake + " --size 80x60 --exposure " + fmt::format("{:.2f}", ev) + " --out " + tempPath("given.png"));
+  EXPECT_EQ(given.exitCode, 0) << given.output;
+  EXPECT_NE(given.output.find(fmt::format("exposure {:+.2f} EV (given", ev)), std::string::npos) << given.output;
+}
+
 TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
   const CommandRun probe = radmesh("render --help");
   if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
@@ -752,6 +773,7 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--look nan,0,0", "--look"},
       {"--exposure nan", "--exposure nan is out of range"},
       {"--exposure 1e308", "--exposure 1e+308 is out of range"},
+      {"--exposure -161", "--exposure -161 is out of range: give stops from -160 to 160"},
       {"--effects some", "--effects"},
       {"--fov 1e-308", "--fov must be at least 0.01 and below 180 degrees"},
       {"--camera 1e308,0,0", "--camera/--look: too far apart to aim the camera"},
