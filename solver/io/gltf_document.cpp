@@ -201,6 +201,7 @@ std::map<std::string, std::string> plusUriFiles(const std::string& path, const n
     std::string spaced = uri;
     std::ranges::replace(spaced, '+', ' ');  // before the %XX escapes: "%2B" stays a '+'
     const std::string asked = uriFile("", spaced).string();
+    // Keyed as tinygltf joins its base folder and the name it decoded.
     files[folder.empty() || folder.ends_with('/') ? folder + asked : folder + "/" + asked] = uriFile(path, uri).string();
   });
   return files;
