@@ -74,10 +74,13 @@ inline std::string tempPath(const std::string& name) {
 
 // The start of a command line running its program in a virtual X display, or empty without
 // xvfb-run. Each process starts its search for a free server number at its own: xvfb-run -a alone
-// starts every one at 99, and two tests at once raced for it (one failed as it cleaned up).
+// starts every one at 99, and two tests at once raced for it (one failed as it cleaned up). The
+// X authority file is the test's own: left to itself, xvfb-run makes a folder for one and now and
+// then fails to remove it after the command, exiting 5 in place of the command's own status.
 inline std::string virtualDisplay(const std::string& screen = "1280x720x24") {
   if (std::system("command -v xvfb-run > /dev/null") != 0) return {};
-  return "xvfb-run -a -n " + std::to_string(100 + getpid() % 800) + " -s '-screen 0 " + screen + "' ";
+  return "xvfb-run -a -n " + std::to_string(100 + getpid() % 800) + " -f " + tempPath("Xauthority") +
+         " -s '-screen 0 " + screen + "' ";
 }
 
 // The plots are drawn by gnuplot where it is installed (scripts/install-deps.sh installs it).
