@@ -164,7 +164,6 @@ const std::vector<int>& NearFieldFinder::receiversNear(int i) {
   const Grid& grid = gridFor(reach);
   const Cell low = grid.cellOf(shooter.centroid - Vec3(reach)), high = grid.cellOf(shooter.centroid + Vec3(reach));
   constexpr long long kLeast = std::numeric_limits<long long>::min();
-  size_t examined = 0;
   for (long long x = low[0]; x <= high[0]; ++x)
     for (long long y = low[1]; y <= high[1]; ++y) {
       const Key first{x, y, low[2], kLeast, kLeast, kLeast};
@@ -177,13 +176,12 @@ const std::vector<int>& NearFieldFinder::receiversNear(int i) {
           it = grid.sorted.begin() + grid.stacks[s].end - 1;  // on to the stack's last
           continue;
         }
-        ++examined;
+        ++examined_;
         if ((selfReceives && j == i) || !(glm::length(grid.centroids[k] - shooter.centroid) < reach)) continue;
         if (partlyInFront(receivers_[j], shooter, reach) && partlyInFront(shooter, receivers_[j], reach))
           near.push_back(j);
       }
     }
-  examined_ += examined;
   std::sort(near.begin(), near.end());
   return near;
 }

@@ -109,9 +109,8 @@ void checkRequiredExtensions(const std::string& path, const nlohmann::json& doc)
   }
 }
 
-// The file a buffer's or image's URI names: relative to the glTF file's folder (glTF 2.0 3.6.1),
-// with %XX escapes decoded, as tinygltf reads it.
-fs::path uriFile(const std::string& path, const std::string& uri) {
+// A URI's %XX escapes decoded, as tinygltf decodes them.
+std::string percentDecoded(const std::string& uri) {
   std::string decoded;
   for (size_t i = 0; i < uri.size(); ++i) {
     if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
@@ -122,7 +121,12 @@ fs::path uriFile(const std::string& path, const std::string& uri) {
       decoded += uri[i];
     }
   }
-  return fs::path(path).parent_path() / decoded;
+  return decoded;
+}
+
+// The file a buffer's or image's URI names: relative to the glTF file's folder (glTF 2.0 3.6.1).
+fs::path uriFile(const std::string& path, const std::string& uri) {
+  return fs::path(path).parent_path() / percentDecoded(uri);
 }
 
 // Calls f(what, index, entry, uri) for every buffer and image the document gives a URI.
@@ -200,7 +204,7 @@ std::map<std::string, std::string> plusUriFiles(const std::string& path, const n
     if (uri.find('+') == std::string::npos || uri.starts_with("data:")) return;
     std::string spaced = uri;
     std::ranges::replace(spaced, '+', ' ');  // before the %XX escapes: "%2B" stays a '+'
-    const std::string asked = uriFile("", spaced).string();
+    const std::string asked = percentDecoded(spaced);
     // Keyed as tinygltf joins its base folder and the name it decoded.
     files[folder.empty() || folder.ends_with('/') ? folder + asked : folder + "/" + asked] = uriFile(path, uri).string();
   });
