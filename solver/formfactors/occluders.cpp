@@ -1,7 +1,10 @@
 #include "solver/formfactors/occluders.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <numeric>
+#include <span>
 
 namespace radmesh {
 
@@ -37,6 +40,10 @@ bool segmentCrosses(const Vec3& a, const Vec3& b, const Patch& p) {
 namespace {
 
 constexpr int kLeafPatches = 4;
+// The hierarchy's depth is at most kHeuristicDepth levels, then log2 of the polygons and of a
+// polygon's patches, rounded up (together at most 33 for int indices).
+constexpr int kHeuristicDepth = 32;
+constexpr int kMaxDepth = kHeuristicDepth + 33;
 
 // Whether the segment a + t (b - a), t in [0, 1], meets the box grown by `margin` (slabs).
 bool segmentMeets(const Vec3& a, const Vec3& b, const Box& box, double margin) {
@@ -55,35 +62,132 @@ bool segmentMeets(const Vec3& a, const Vec3& b, const Box& box, double margin) {
   return true;
 }
 
+Box unite(const Box& a, const Box& b) { return {glm::min(a.lo, b.lo), glm::max(a.hi, b.hi)}; }
+
+// The index of the widest axis of a box.
+int widestAxis(const Box& box) {
+  const Vec3 extent = box.hi - box.lo;
+  return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+}
+
+double surfaceArea(const Box& box) {
+  const Vec3 e = box.hi - box.lo;
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+// Where to split groups_[first, first + count): the surface area heuristic over 16 bins of their box
+// centres along each axis, since polygons differ in size by orders of magnitude (a floor beside a
+// cup) and a median split would put the floor's box in every node around it. -1: no useful split.
+struct GroupSplit {
+  int axis = -1;
+  double at = 0.0;  // centres (lo + hi) below it go left
+};
+GroupSplit bestSplit(std::span<const Occluders::Group> groups) {
+  constexpr int kBins = 16;
+  Box centres{groups[0].box.lo + groups[0].box.hi, groups[0].box.lo + groups[0].box.hi};
+  for (const auto& g : groups) centres = unite(centres, Box{g.box.lo + g.box.hi, g.box.lo + g.box.hi});
+  GroupSplit best;
+  double bestCost = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    const double lo = centres.lo[axis], width = centres.hi[axis] - lo;
+    if (!(width > 0.0)) continue;
+    const auto binOf = [&](const Occluders::Group& g) {
+      return std::min(kBins - 1, static_cast<int>(kBins * ((g.box.lo[axis] + g.box.hi[axis]) - lo) / width));
+    };
+    std::array<Box, kBins> boxes;
+    std::array<int, kBins> counts{};
+    for (const auto& g : groups) {
+      const int b = binOf(g);
+      boxes[b] = counts[b]++ ? unite(boxes[b], g.box) : g.box;
+    }
+    std::array<double, kBins> rightCost{};
+    Box right;
+    int rightCount = 0;
+    for (int b = kBins - 1; b > 0; --b) {
+      if (counts[b]) right = rightCount ? unite(right, boxes[b]) : boxes[b];
+      rightCount += counts[b];
+      rightCost[b] = rightCount ? surfaceArea(right) * rightCount : 0.0;
+    }
+    Box left;
+    int leftCount = 0;
+    for (int b = 0; b + 1 < kBins; ++b) {
+      if (counts[b]) left = leftCount ? unite(left, boxes[b]) : boxes[b];
+      leftCount += counts[b];
+      if (leftCount == 0 || leftCount == static_cast<int>(groups.size())) continue;
+      const double cost = surfaceArea(left) * leftCount + rightCost[b + 1];
+      if (cost < bestCost) {
+        bestCost = cost;
+        best = {axis, lo + width * (b + 1) / kBins};
+      }
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
+// Each polygon's patches make one subtree, so that a segment skips the polygons it starts and ends
+// on whole, rather than visiting every patch box around its two ends.
 Occluders::Occluders(const std::vector<Patch>& patches) : patches_(&patches), order_(patches.size()) {
   for (const Patch& p : patches) boxes_.push_back(boxOf(p, 0.0));
   std::iota(order_.begin(), order_.end(), 0);
-  if (!patches.empty()) build(0, static_cast<int>(patches.size()));
+  std::stable_sort(order_.begin(), order_.end(), [&](int p, int q) { return patches[p].polygon < patches[q].polygon; });
+  for (int i = 0; i < static_cast<int>(order_.size()); ++i) {
+    const Box& box = boxes_[order_[i]];
+    if (i > 0 && patches[order_[i]].polygon == patches[order_[i - 1]].polygon) {
+      groups_.back().box = unite(groups_.back().box, box);
+      ++groups_.back().count;
+    } else {
+      groups_.push_back({box, i, 1});
+    }
+  }
+  if (!groups_.empty()) buildGroups(0, static_cast<int>(groups_.size()), 0);
 }
 
-// Median split along the box centres' widest axis, depth first: a node's left child follows it.
-int Occluders::build(int first, int count) {
-  const int index = static_cast<int>(nodes_.size());
-  nodes_.push_back({boxes_[order_[first]], first, count, -1});
-  Box box = boxes_[order_[first]];
-  for (int i = first; i < first + count; ++i) {
-    box.lo = glm::min(box.lo, boxes_[order_[i]].lo);
-    box.hi = glm::max(box.hi, boxes_[order_[i]].hi);
+int Occluders::addNode(const Box& box, int first, int count, int polygon) {
+  nodes_.push_back({box, first, count, -1, polygon});
+  return static_cast<int>(nodes_.size()) - 1;
+}
+
+// Splits groups_[first, first + count) by bestSplit, depth first: a node's left child follows it.
+// Past kHeuristicDepth levels the groups are halved instead, which bounds the depth (kMaxDepth) where
+// the heuristic would peel one polygon off at a time (polygons in a row, each twice the last).
+int Occluders::buildGroups(int first, int count, int depth) {
+  if (count == 1) return buildPatches(groups_[first].first, groups_[first].count);
+  Box box = groups_[first].box;
+  for (int i = first + 1; i < first + count; ++i) box = unite(box, groups_[i].box);
+  const int index = addNode(box, 0, 0, -1);
+  const auto begin = groups_.begin() + first, end = begin + count;
+  const GroupSplit split = depth < kHeuristicDepth ? bestSplit({&*begin, static_cast<size_t>(count)}) : GroupSplit{};
+  int half = count / 2;
+  if (split.axis >= 0) {
+    half = static_cast<int>(std::partition(begin, end, [&](const Group& g) {
+                              return g.box.lo[split.axis] + g.box.hi[split.axis] < split.at;
+                            }) - begin);
   }
-  nodes_[index].box = box;
-  if (count <= kLeafPatches) return index;
-  const Vec3 extent = box.hi - box.lo;
-  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+  if (half == 0 || half == count) {  // centres all alike: halve them
+    half = count / 2;
+    std::nth_element(begin, begin + half, end, [](const Group& g, const Group& h) { return g.first < h.first; });
+  }
+  buildGroups(first, half, depth + 1);
+  nodes_[index].right = buildGroups(first + half, count - half, depth + 1);
+  return index;
+}
+
+// The same split over one polygon's patches order_[first, first + count).
+int Occluders::buildPatches(int first, int count) {
+  Box box = boxes_[order_[first]];
+  for (int i = first + 1; i < first + count; ++i) box = unite(box, boxes_[order_[i]]);
+  const int polygon = (*patches_)[order_[first]].polygon;
+  if (count <= kLeafPatches) return addNode(box, first, count, polygon);
+  const int index = addNode(box, 0, 0, polygon);
+  const int axis = widestAxis(box);
   const auto centre = [&](int p) { return boxes_[p].lo[axis] + boxes_[p].hi[axis]; };
   const int half = count / 2;
   std::nth_element(order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
                    [&](int p, int q) { return centre(p) < centre(q); });
-  build(first, half);
-  const int right = build(first + half, count - half);
-  nodes_[index].count = 0;
-  nodes_[index].right = right;
+  buildPatches(first, half);
+  nodes_[index].right = buildPatches(first + half, count - half);
   return index;
 }
 
@@ -93,18 +197,16 @@ bool Occluders::segmentBlocked(const Vec3& a, const Vec3& b, int skipA, int skip
   // Far more than the slab test's rounding, so that no box the segment touches is passed over.
   const double margin = 1e-9 * (glm::length(segment.hi - segment.lo) + glm::length(nodes_[0].box.hi - nodes_[0].box.lo) +
                                 glm::length(a) + glm::length(b));
-  int stack[64];
+  int stack[kMaxDepth + 1];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
+    if (node.polygon >= 0 && (node.polygon == skipA || node.polygon == skipB)) continue;
     if (!overlap(segment, node.box) || !segmentMeets(a, b, node.box, margin)) continue;
     if (node.right < 0) {
-      for (int i = node.first; i < node.first + node.count; ++i) {
-        const Patch& p = (*patches_)[order_[i]];
-        if (p.polygon == skipA || p.polygon == skipB) continue;
-        if (overlap(segment, boxes_[order_[i]]) && segmentCrosses(a, b, p)) return true;
-      }
+      for (int i = node.first; i < node.first + node.count; ++i)
+        if (overlap(segment, boxes_[order_[i]]) && segmentCrosses(a, b, (*patches_)[order_[i]])) return true;
       continue;
     }
     stack[top++] = node.right;

@@ -1,8 +1,9 @@
 #pragma once
 // Exact visibility between two points: the patches as occluders, in a bounding volume hierarchy over
 // their boxes (built once per solve), so that a segment tests the few patches near it rather than
-// every one. The shadow criterion of adaptive subdivision and the receivers too small for a pixel
-// centre ask it.
+// every one. Each scene polygon's patches form one subtree, which a segment from or to that polygon
+// passes over whole; the polygons are split by the surface area heuristic. The shadow criterion of
+// adaptive subdivision and the receivers too small for a pixel centre ask it.
 #include <vector>
 
 #include "solver/meshing/patch.h"
@@ -29,17 +30,25 @@ class Occluders {
   bool segmentBlocked(const Vec3& a, const Vec3& b, int skipA, int skipB) const;
 
   using Box = AxisBox;
+  struct Group {  // one scene polygon's patches, order_[first, first + count)
+    Box box;
+    int first = 0, count = 0;
+  };
 
  private:
   struct Node {
     Box box;
     int first = 0, count = 0;  // a leaf: patches order_[first, first + count)
     int right = -1;            // an inner node: its children are the next node and `right`
+    int polygon = -1;          // the scene polygon all its patches belong to; -1: several
   };
-  int build(int first, int count);
+  int buildGroups(int first, int count, int depth);
+  int buildPatches(int first, int count);
+  int addNode(const Box& box, int first, int count, int polygon);
   const std::vector<Patch>* patches_;
   std::vector<Box> boxes_;  // per patch
-  std::vector<int> order_;
+  std::vector<int> order_;  // patch indices, each polygon's together
+  std::vector<Group> groups_;
   std::vector<Node> nodes_;
 };
 

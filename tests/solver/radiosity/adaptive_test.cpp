@@ -451,35 +451,6 @@ TEST(Adaptive, OptionsAreRefusedNamingTheFix) {
 
 // The shadow criterion's rays see through the hierarchy exactly what they see testing every patch:
 // random rays between points of the office's patches, some blocked, some not, all agreeing.
-TEST(Adaptive, OccludersAnswerAsTestingEveryPatch) {
-  const Scene office = builtinScene("office");
-  const std::vector<Patch> patches = meshScene(office, 0.75);
-  const Occluders occluders(patches);
-  const auto pointOn = [&](const Patch& p, double u, double v) {
-    const Vec3 a = p.vertices[0], b = p.vertices[1], c = p.vertices[p.vertexCount - 1];
-    return u + v <= 1.0 ? a + u * (b - a) + v * (c - a) : p.centroid;
-  };
-  unsigned state = 12345u;
-  const auto next = [&] {
-    state = state * 1664525u + 1013904223u;
-    return static_cast<double>(state >> 8) / static_cast<double>(1u << 24);
-  };
-  int blocked = 0;
-  const int rays = 4000;
-  for (int i = 0; i < rays; ++i) {
-    const Patch& from = patches[static_cast<size_t>(next() * patches.size()) % patches.size()];
-    const Patch& to = patches[static_cast<size_t>(next() * patches.size()) % patches.size()];
-    const Vec3 a = pointOn(from, 0.5 * next(), 0.5 * next()), b = pointOn(to, 0.5 * next(), 0.5 * next());
-    const bool everyPatch = std::ranges::any_of(patches, [&](const Patch& p) {
-      return p.polygon != from.polygon && p.polygon != to.polygon && segmentCrosses(a, b, p);
-    });
-    ASSERT_EQ(occluders.segmentBlocked(a, b, from.polygon, to.polygon), everyPatch) << "ray " << i;
-    blocked += everyPatch;
-  }
-  EXPECT_GT(blocked, rays / 10);
-  EXPECT_LT(blocked, rays - rays / 10);
-}
-
 // One element in `oneIn` marked to split, drawn by a linear congruential generator from `state`.
 std::vector<char> randomSplits(size_t elements, unsigned& state, unsigned oneIn) {
   std::vector<char> split(elements, 0);
