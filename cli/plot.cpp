@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +17,18 @@ std::string quoted(const std::string& text) {
   std::string out = "'";
   for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
   return out + "'";
+}
+
+// "set xrange [...]" around a single value, for data spread over none: gnuplot would otherwise warn
+// of an empty range on every plot of a one-point sweep. Empty where the data spreads.
+std::string rangeAroundOneValue(const char* axis, const std::vector<double>& values, bool log) {
+  if (values.empty()) return "";
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  if (*lo != *hi) return "";
+  const double v = *lo;
+  if (log && v > 0.0) return fmt::format("set {}range [{:.9g}:{:.9g}]\n", axis, v / 10.0, v * 10.0);  // decades labelled
+  const double half = v == 0.0 ? 1.0 : 0.5 * std::abs(v);
+  return fmt::format("set {}range [{:.9g}:{:.9g}]\n", axis, v - half, v + half);
 }
 
 }  // namespace
@@ -37,6 +51,13 @@ bool drawPlot(const Plot& plot, const std::string& png) {
   script += "set grid\nset key below\n";
   if (plot.logX) script += "set logscale x\n";
   if (plot.logY) script += "set logscale y\n";
+  std::vector<double> xs, ys;
+  for (const Series& series : plot.series)
+    for (const auto& [x, y] : series.points) {
+      xs.push_back(x);
+      ys.push_back(y);
+    }
+  script += rangeAroundOneValue("x", xs, plot.logX) + rangeAroundOneValue("y", ys, plot.logY);
   for (const std::string& setting : plot.settings) script += setting + "\n";
   script += "plot ";
   for (size_t i = 0; i < plot.series.size(); ++i)

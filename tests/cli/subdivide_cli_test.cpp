@@ -213,6 +213,20 @@ TEST(CliSubdivide, BenchAccuracyMeasuresEachElementRows) {
   EXPECT_NE(run.output.find("uniform 0.5 share"), std::string::npos) << run.output;
 }
 
+// A sweep of one point spreads over no range: its plots are drawn around the point, without
+// gnuplot's "empty x range" warnings (one per axis and plot until 2026-12-04).
+TEST(CliSubdivide, BenchAccuracyOfOnePointDrawsItsPlotsWithoutWarnings) {
+  if (!gnuplotInstalled()) GTEST_SKIP() << "gnuplot is not installed (scripts/install-deps.sh installs it)";
+  const std::string dir = tempPath("accuracy-one-point");
+  const CommandRun run = radmesh(
+      "bench accuracy furnace --cells 1 --resolutions 16 --projections hemicube --reference-resolution 32 "
+      "--threads 1 --out-dir " + dir);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  for (const std::string plot : {"error-vs-time", "image-error-vs-time", "error-vs-convergence"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/furnace-" + plot + ".png")) << plot;
+  EXPECT_EQ(run.output.find("Warning:"), std::string::npos) << run.output;
+}
+
 // A sweep of elements alone has no patch row for the same-mesh plots: they are left out, and the
 // subdivide plot is drawn (before 2026-12-03 gnuplot was handed an empty plot and the bench failed).
 TEST(CliSubdivide, BenchAccuracyOfElementsAloneDrawsTheSubdividePlot) {
