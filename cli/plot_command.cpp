@@ -53,7 +53,7 @@ CsvTable gatherStats(const PaperArgs& args) {
     try {
       const nlohmann::json stats = nlohmann::json::parse(in);
       const std::string n = std::to_string(stats.at("resolution").get<int>());
-      const std::string wasBackend = stats.at("backend"), wasMapping = stats.at("mapping");
+      const std::string wasBackend = stats.at("backend"), wasMapping = stats.value("mapping", "");
       if (wasBackend != backend || (backend == "mesh" && wasMapping != mapping) ||
           (resolution > 0 && n != std::to_string(resolution)))
         throw std::runtime_error(fmt::format(

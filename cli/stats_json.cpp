@@ -35,7 +35,7 @@ nlohmann::json ledgerJson(const Ledger& l) {
 }
 
 nlohmann::json optionsJson(const SolveOptions& o) {
-  nlohmann::json j = {{"backend", toString(o.backend)}, {"projection", toString(o.projection)}, {"mapping", toString(o.mapping)},
+  nlohmann::json j = {{"backend", toString(o.backend)}, {"projection", toString(o.projection)},
           {"resolution", o.resolution},     {"ratio", o.ratio},                       {"shooters", o.shooters},
           {"threads", o.threads},           {"until", o.until},                       {"until_unshot", o.untilUnshot},
           {"subdivide", toString(o.subdivide)}, {"min_element", o.minElementM},
@@ -43,7 +43,9 @@ nlohmann::json optionsJson(const SolveOptions& o) {
           {"split_contrast", o.splitContrast}, {"split_shadows", o.splitShadows},
           {"split_regather", o.splitRegatherAll ? "all" : "last"},
           {"cache_mb", o.formFactorCacheBytes / 1048576.0}};
-  if (o.backend == Backend::Mesh) j.update({{"pe_grid", peGridText(o.machine)}, {"pe_memory_kb", o.machine.memoryKb}});
+  // The plane's mapping onto PEs and the machine are the mesh back end's alone.
+  if (o.backend == Backend::Mesh)
+    j.update({{"mapping", toString(o.mapping)}, {"pe_grid", peGridText(o.machine)}, {"pe_memory_kb", o.machine.memoryKb}});
   return j;
 }
 

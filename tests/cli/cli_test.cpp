@@ -49,8 +49,10 @@ TEST(Cli, SolveWritesStatsWithTheDocumentedKeysAndABalancedLedger) {
   ASSERT_EQ(j["per_iteration"].size(), j["iterations"].get<size_t>());
   for (const char* key : {"iteration", "shooter", "shot_power", "convergence", "unshot_fraction", "seconds"})
     EXPECT_TRUE(j["per_iteration"][0].contains(key)) << key;
-  // The native back end has no machine of its own: no shot figures, no machine seconds printed.
+  // The native back end has no machine of its own: no shot figures, no mapping onto PEs, no machine
+  // seconds printed.
   EXPECT_FALSE(j["per_iteration"][0].contains("emulated_seconds"));
+  for (const char* key : {"mapping", "pe_grid", "pe_memory_kb"}) EXPECT_FALSE(j.contains(key)) << key;
   EXPECT_EQ(run.output.find("emulated"), std::string::npos) << run.output;
   EXPECT_EQ(j["per_iteration"].back()["unshot_fraction"], j["unshot_fraction"]);
   const auto& l = j["ledger"];
@@ -895,9 +897,9 @@ void writePaperStats(const std::string& path, int resolution, const std::string&
     if (mesh) it.update({{"emulated_seconds", emulated[i]}, {"depth_a_max", depthA[i]}, {"depth_b_max", 2 * depthA[i]}});
     perIteration.push_back(it);
   }
-  std::ofstream(path) << nlohmann::json{{"backend", mesh ? "mesh" : "native"}, {"mapping", mesh ? mapping : "hierarchical"},
-                                        {"resolution", resolution}, {"per_iteration", perIteration}}
-                             .dump();
+  nlohmann::json stats{{"backend", mesh ? "mesh" : "native"}, {"resolution", resolution}, {"per_iteration", perIteration}};
+  if (mesh) stats["mapping"] = mapping;  // a native solve has none
+  std::ofstream(path) << stats.dump();
 }
 
 void writeAllPaperStats(const std::string& folder) {
