@@ -120,24 +120,9 @@ std::string rowSetting(const CsvTable& t, size_t row) { return settingLabel(t.te
 bool hasSubdivide(const CsvTable& t) { return std::ranges::find(t.columns, "subdivide") != t.columns.end(); }
 std::string rowSubdivide(const CsvTable& t, size_t row) { return hasSubdivide(t) ? t.text(row, "subdivide") : "off"; }
 
-// Error at C = 0.99 against the time to reach it, a series per setting and cell, Pareto front in black.
-Plot errorVersusTime(const std::string& title, const std::string& errorLabel, const CsvTable& points,
-                     const std::string& errorColumn) {
-  Plot plot{.title = title, .xLabel = "seconds to C = 0.99", .yLabel = errorLabel, .logX = true, .logY = true};
-  std::vector<std::pair<double, double>> all;
-  for (size_t row = 0; row < points.rows.size(); ++row) {
-    const double seconds = points.number(row, "seconds_to_99"), error = points.number(row, errorColumn);
-    if (seconds <= 0 || error < 0 || rowSubdivide(points, row) != "off") continue;
-    const std::string name = fmt::format("{} cell {}", rowSetting(points, row), points.number(row, "cell_m"));
-    auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const Series& s) { return s.title == name; });
-    if (it == plot.series.end()) it = plot.series.insert(plot.series.end(), Series{name, {}, "linespoints"});
-    // Log axes: an exact zero is drawn at the floor.
-    it->points.emplace_back(seconds, std::max(error, 1e-9));
-    all.push_back(it->points.back());
-  }
-  addParetoFront(plot, all);
-  return plot;
-}
+}  // namespace
+
+namespace accuracy_sweep {
 
 // The frame gnuplot draws within its 1000 x 700 picture (the key below), and a label at font 9.
 constexpr double kFrameWidthPx = 894.0, kFrameHeightPx = 576.0, kLabelCharPx = 6.0, kLabelHeightPx = 12.0;
@@ -153,8 +138,8 @@ std::array<double, 4> fitLogFrame(const std::vector<std::pair<double, double>>& 
   }
   const std::array<double, 4> frame = {std::floor(std::log10(xLow)), std::ceil(std::log10(xHigh) + 1e-9),
                                        std::log10(yLow / 1.25), std::log10(yHigh * 1.25)};
-  std::string ticks;
-  for (double decade = std::floor(frame[2]); decade <= frame[3]; ++decade)
+  std::string ticks;  // over more than two decades gnuplot's own, a decade apart, read better
+  for (double decade = std::floor(frame[2]); frame[3] - frame[2] <= 2.0 && decade <= frame[3]; ++decade)
     for (double mantissa : {1.0, 1.5, 2.0, 3.0, 5.0, 7.0})
       if (const double tick = mantissa * std::pow(10.0, decade); std::log10(tick) >= frame[2] && std::log10(tick) <= frame[3])
         ticks += fmt::format("{}{:g}", ticks.empty() ? "" : ", ", tick);
@@ -165,8 +150,8 @@ std::array<double, 4> fitLogFrame(const std::vector<std::pair<double, double>>& 
 }
 
 // The labels to draw, in order of priority, as gnuplot commands: each a character right of its
-// point, half a line above it or else a line below, and skipped where both would cover a label
-// drawn before it.
+// point (left of it where the frame would cut it), half a line above it or else a line below, and
+// skipped where both would cover a label drawn before it.
 std::vector<std::string> unclutteredLabels(const std::vector<std::pair<double, double>>& points,
                                            const std::vector<std::string>& labels, const std::vector<size_t>& priority,
                                            const std::array<double, 4>& frame) {
@@ -179,20 +164,47 @@ std::vector<std::string> unclutteredLabels(const std::vector<std::pair<double, d
     const double x = (std::log10(points[i].first) - frame[0]) / (frame[1] - frame[0]) * kFrameWidthPx + kLabelCharPx;
     const double y = (std::log10(points[i].second) - frame[2]) / (frame[3] - frame[2]) * kFrameHeightPx;
     const double width = kLabelCharPx * static_cast<double>(labels[i].size());
+    // Left of the point where the frame's right edge would cut it.
+    const bool left = x + width > kFrameWidthPx;
+    const double begin = left ? x - 2.0 * kLabelCharPx - width : x;
     for (const double lines : {0.5, -1.0}) {
       const double middle = y + lines * kLabelHeightPx;
-      const Box box{x, x + width, middle - kLabelHeightPx / 2, middle + kLabelHeightPx / 2};
+      const Box box{begin, begin + width, middle - kLabelHeightPx / 2, middle + kLabelHeightPx / 2};
       if (std::ranges::any_of(drawn, [&](const Box& d) {
             return box.left < d.right && d.left < box.right && box.bottom < d.top && d.bottom < box.top;
           }))
         continue;
       drawn.push_back(box);
-      commands.push_back(fmt::format("set label \"{}\" at {},{} offset 1,{} font ',9'", labels[i], points[i].first,
-                                     points[i].second, lines));
+      commands.push_back(fmt::format("set label \"{}\" at {},{} {} offset {},{} font ',9'", labels[i], points[i].first,
+                                     points[i].second, left ? "right" : "left", left ? -1 : 1, lines));
       break;
     }
   }
   return commands;
+}
+
+}  // namespace accuracy_sweep
+
+namespace {
+
+// Error at C = 0.99 against the time to reach it, a series per setting and cell, Pareto front in black.
+Plot errorVersusTime(const std::string& title, const std::string& errorLabel, const CsvTable& points,
+                     const std::string& errorColumn) {
+  Plot plot{.title = title, .xLabel = "seconds to C = 0.99", .yLabel = errorLabel, .logX = true, .logY = true};
+  std::vector<std::pair<double, double>> all;
+  for (size_t row = 0; row < points.rows.size(); ++row) {
+    const double seconds = points.number(row, "seconds_to_99"), error = points.number(row, errorColumn);
+    if (seconds <= 0 || error < 0 || rowSubdivide(points, row) != "off") continue;
+    const std::string name = fmt::format("{} cell {}", rowSetting(points, row), points.number(row, "cell_m"));
+    auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const Series& s) { return s.title == name; });
+    if (it == plot.series.end()) it = plot.series.insert(plot.series.end(), Series{name, {}, "linespoints"});
+    // Log axes: an exact zero is drawn at the floor.
+    it->points.emplace_back(seconds, std::max(error, 1e-9));
+    all.push_back(it->points.back());
+  }
+  if (!all.empty()) fitLogFrame(all, plot);
+  addParetoFront(plot, all);
+  return plot;
 }
 
 // A point's --element-rows when it was not the default (older CSVs have no such column).

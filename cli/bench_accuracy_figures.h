@@ -1,11 +1,13 @@
 #pragma once
 // What a bench accuracy sweep measures, its points and traces: shared by the sweep (bench_accuracy.cpp)
 // and its tables and plots (bench_accuracy_figures.cpp).
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "cli/csv.h"
+#include "cli/plot.h"
 #include "solver/scene/solve_options.h"
 
 namespace radmesh::cli::accuracy_sweep {
@@ -57,6 +59,15 @@ struct Trace {
 // Which of (seconds, error) points no other point beats in both (the Pareto front): their
 // indices, in order of time. The plots draw the front and label its points.
 std::vector<size_t> paretoIndices(const std::vector<std::pair<double, double>>& points);
+
+// Log axes fitted to (seconds, error) points, into plot.settings: the frame, in decades {x0, x1, y0, y1}.
+std::array<double, 4> fitLogFrame(const std::vector<std::pair<double, double>>& points, Plot& plot);
+
+// gnuplot commands labelling the points of a fitLogFrame frame, in order of priority, skipping labels
+// that would cover one drawn before.
+std::vector<std::string> unclutteredLabels(const std::vector<std::pair<double, double>>& points,
+                                           const std::vector<std::string>& labels, const std::vector<size_t>& priority,
+                                           const std::array<double, 4>& frame);
 
 // A trace's name in the JSON and on the plot.
 std::string traceLabel(const std::string& setting, int n, double cellM);

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "cli/bench_accuracy_figures.h"
 
 namespace radmesh::cli::accuracy_sweep {
@@ -18,6 +21,35 @@ TEST(AccuracyFigures, TheParetoFrontIsThePointsNoneBeatsInOrderOfTime) {
   };
   EXPECT_EQ(paretoIndices(points), (std::vector<size_t>{1, 2, 5, 0}));
   EXPECT_TRUE(paretoIndices({}).empty());
+}
+
+// Under two decades of error the axis is ticked at 1, 1.5, 2, 3, 5 and 7 times powers of ten; over
+// more, gnuplot's decades are left alone. Time runs over whole decades.
+TEST(AccuracyFigures, TheLogFrameTicksAnErrorRangeUnderTwoDecades) {
+  Plot narrow;
+  const std::array<double, 4> frame = fitLogFrame({{0.5, 4.0}, {30.0, 8.0}}, narrow);
+  EXPECT_EQ(frame[0], -1.0);
+  EXPECT_EQ(frame[1], 2.0);
+  EXPECT_NEAR(frame[2], std::log10(4.0 / 1.25), 1e-12);
+  EXPECT_NEAR(frame[3], std::log10(8.0 * 1.25), 1e-12);
+  EXPECT_NE(std::ranges::find(narrow.settings, "set ytics (5, 7, 10)"), narrow.settings.end());
+  Plot wide;
+  fitLogFrame({{1.0, 1e-9}, {2.0, 0.5}}, wide);
+  EXPECT_TRUE(std::ranges::none_of(wide.settings, [](const std::string& s) { return s.starts_with("set ytics"); }));
+}
+
+// A label goes right of its point, or left of it where the frame's right edge would cut it; a label
+// that would cover one drawn before goes a line lower, or is left out.
+TEST(AccuracyFigures, LabelsStayInsideTheFrameAndOffEachOther) {
+  Plot plot;
+  const std::vector<std::pair<double, double>> points = {{2.0, 5.0}, {2.0, 5.0}, {2.0, 5.0}, {95.0, 5.0}};
+  const std::vector<std::string> labels = {"a", "b", "c", "256², cell 0.381"};
+  const std::array<double, 4> frame = fitLogFrame(points, plot);
+  const std::vector<std::string> commands = unclutteredLabels(points, labels, {0, 1, 2, 3}, frame);
+  ASSERT_EQ(commands.size(), 3u);
+  EXPECT_EQ(commands[0], "set label \"a\" at 2,5 left offset 1,0.5 font ',9'");
+  EXPECT_EQ(commands[1], "set label \"b\" at 2,5 left offset 1,-1 font ',9'");
+  EXPECT_EQ(commands[2], "set label \"256², cell 0.381\" at 95,5 right offset -1,0.5 font ',9'");
 }
 
 }  // namespace
