@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <unordered_map>
 
@@ -28,23 +29,51 @@ struct Rect {
   double area() const { return (s1 - s0) * (t1 - t0); }
 };
 
-// Whether p lies inside the polygon seen along `axis` (the even-odd rule).
-bool containsPoint(const std::vector<Vec3>& vs, int axis, const Vec3& p) {
-  const int s = (axis + 1) % 3, t = (axis + 2) % 3;
+// A plane's frame: n its normal, s and t in it with s x t = n. Coordinates are dot products, which
+// for the axes' unit vectors are the components themselves, bit for bit.
+struct Frame {
+  Vec3 n, s, t;
+  double w(const Vec3& v) const { return glm::dot(n, v); }
+  Vec2 in2d(const Vec3& v) const { return {glm::dot(s, v), glm::dot(t, v)}; }
+  Vec3 point(double c, Vec2 st) const { return c * n + st.x * s + st.y * t; }
+};
+
+Frame axisFrame(int axis) {
+  Frame f{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+  f.n[axis] = 1.0;
+  f.s[(axis + 1) % 3] = 1.0;
+  f.t[(axis + 2) % 3] = 1.0;
+  return f;
+}
+
+// The frame of a plane of normal n (unit), t along the world axis least aligned with it: a wall's
+// upright, so that an opening's rectangle stands as a door does.
+Frame obliqueFrame(const Vec3& n) {
+  int least = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(n[k]) < std::abs(n[least])) least = k;
+  Vec3 up(0.0);
+  up[least] = 1.0;
+  const Vec3 t = glm::normalize(up - glm::dot(up, n) * n);
+  return {n, glm::normalize(glm::cross(t, n)), t};
+}
+
+// Whether p lies inside the polygon, its vertices mapped to the plane by in2d (the even-odd rule).
+template <typename In2d>
+bool containsPoint(const std::vector<Vec3>& vs, In2d in2d, Vec2 p) {
   bool inside = false;
   for (size_t k = 0, j = vs.size() - 1; k < vs.size(); j = k++) {
-    const Vec3 &a = vs[k], &b = vs[j];
-    if ((a[t] > p[t]) != (b[t] > p[t]) && p[s] < a[s] + (b[s] - a[s]) * (p[t] - a[t]) / (b[t] - a[t])) inside = !inside;
+    const Vec2 a = in2d(vs[k]), b = in2d(vs[j]);
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y)) inside = !inside;
   }
   return inside;
 }
 
-// How far rays from p along +s, -s, +t, -t run in the plane coordinate[axis] = c before they meet
-// a polygon (one lying in the plane, or one crossing it); nullopt when p is inside a polygon in the
+// How far rays from p along +s, -s, +t, -t run in the plane w = c of the frame before they meet a
+// polygon (one lying in the plane, or one crossing it); nullopt when p is inside a polygon in the
 // plane or a ray runs free.
-std::optional<Rect> openingAround(const ScenePolygons& polys, const std::vector<int>& near, int axis, double c,
-                                  Vec2 p) {
-  const int s = (axis + 1) % 3, t = (axis + 2) % 3;
+std::optional<Rect> openingAround(const ScenePolygons& polys, const std::vector<int>& near, const Frame& frame,
+                                  double c, Vec2 p) {
   const double eps = 1e-9;
   std::array<double, 4> reach{kInf, kInf, kInf, kInf};  // +s, -s, +t, -t
   auto hitSegment = [&](Vec2 a, Vec2 b) {
@@ -68,25 +97,21 @@ std::optional<Rect> openingAround(const ScenePolygons& polys, const std::vector<
       }
     }
   };
-  auto in2d = [&](const Vec3& v) { return Vec2(v[s], v[t]); };
+  const auto in2d = [&](const Vec3& v) { return frame.in2d(v); };
   for (int index : near) {
     const std::vector<Vec3>& vs = polys.scene.polygons[index].vertices;
     const size_t n = vs.size();
     bool coplanar = true;
-    for (const Vec3& v : vs) coplanar = coplanar && std::abs(v[axis] - c) <= eps;
+    for (const Vec3& v : vs) coplanar = coplanar && std::abs(frame.w(v) - c) <= eps;
     if (coplanar) {
-      Vec3 p3;
-      p3[axis] = c;
-      p3[s] = p.x;
-      p3[t] = p.y;
-      if (containsPoint(vs, axis, p3)) return std::nullopt;
+      if (containsPoint(vs, in2d, p)) return std::nullopt;
       for (size_t k = 0; k < n; ++k) hitSegment(in2d(vs[k]), in2d(vs[(k + 1) % n]));
       continue;
     }
     std::vector<Vec2> cut;  // where the polygon meets the plane
     for (size_t k = 0; k < n; ++k) {
       const Vec3 &a = vs[k], &b = vs[(k + 1) % n];
-      const double da = a[axis] - c, db = b[axis] - c;
+      const double da = frame.w(a) - c, db = frame.w(b) - c;
       if (std::abs(da) <= eps) cut.push_back(in2d(a));
       if ((da > eps && db < -eps) || (da < -eps && db > eps)) cut.push_back(in2d(a + (b - a) * (da / (da - db))));
     }
@@ -107,57 +132,87 @@ std::optional<Rect> openingAround(const ScenePolygons& polys, const std::vector<
   return Rect{p.x - reach[1], p.x + reach[0], p.y - reach[3], p.y + reach[2]};
 }
 
-// The portal for one place where cells a < b meet: the smallest opening, among the planes of the
-// polygons across the contact's axis near it, that matches the contact to within 1.5 voxels.
-Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vector<Contact>& contacts, int a, int b,
-                 int radius) {
-  std::array<int, 3> perAxis{0, 0, 0};
-  for (const Contact& k : contacts) ++perAxis[k.axis];
-  const int axis = int(std::max_element(perAxis.begin(), perAxis.end()) - perAxis.begin());
-  const int s = (axis + 1) % 3, t = (axis + 2) % 3;
+// Where cells meet, in a frame: the contact faces' bounds in the plane (box) and across it (cLo,
+// cHi), their mean offset and centre.
+struct ContactExtent {
   Rect box{kInf, -kInf, kInf, -kInf};
-  double cLo = kInf, cHi = -kInf, cSum = 0.0;
-  Vec2 centre(0.0);
-  int count = 0, bAbove = 0;
-  for (const Contact& k : contacts) {
-    if (k.axis != axis) continue;
-    const Vec3 lo = g.corner(g.coords(k.low));
-    const double c = lo[axis] + g.voxel;
-    box = {std::min(box.s0, lo[s]), std::max(box.s1, lo[s] + g.voxel), std::min(box.t0, lo[t]),
-           std::max(box.t1, lo[t] + g.voxel)};
-    cLo = std::min(cLo, c);
-    cHi = std::max(cHi, c);
-    cSum += c;
-    centre += Vec2(lo[s], lo[t]) + 0.5 * g.voxel;
-    ++count;
-    bAbove += k.higherCellAbove ? 1 : 0;
-  }
-  centre /= double(count);
-  const double cMean = cSum / count;
-  const double reachM = (radius + 2) * g.voxel, tolerance = 1.5 * g.voxel;
+  double cLo = kInf, cHi = -kInf, cMean = 0.0;
+  Vec2 centre{0.0};
+};
 
-  Vec3 nearLo(0.0), nearHi(0.0);
-  nearLo[axis] = cLo - reachM;
-  nearHi[axis] = cHi + reachM;
-  nearLo[s] = box.s0 - 2 * tolerance;
-  nearHi[s] = box.s1 + 2 * tolerance;
-  nearLo[t] = box.t0 - 2 * tolerance;
-  nearHi[t] = box.t1 + 2 * tolerance;
+// The contact faces across `axis` (-1: all of them) in the frame: each face a voxel square whose
+// corners bound it.
+ContactExtent extentOf(const VoxelGrid& g, const std::vector<Contact>& contacts, int axis, const Frame& frame) {
+  ContactExtent e;
+  double cSum = 0.0;
+  int count = 0;
+  for (const Contact& k : contacts) {
+    if (axis >= 0 && k.axis != axis) continue;
+    Vec3 lo = g.corner(g.coords(k.low));
+    lo[k.axis] += g.voxel;  // the face between the voxel and its +axis neighbour
+    const int u = (k.axis + 1) % 3, v = (k.axis + 2) % 3;
+    Vec3 centre = lo;
+    centre[u] += 0.5 * g.voxel;
+    centre[v] += 0.5 * g.voxel;
+    for (const double du : {0.0, g.voxel})
+      for (const double dv : {0.0, g.voxel}) {
+        Vec3 corner = lo;
+        corner[u] += du;
+        corner[v] += dv;
+        const Vec2 st = frame.in2d(corner);
+        e.box = {std::min(e.box.s0, st.x), std::max(e.box.s1, st.x), std::min(e.box.t0, st.y), std::max(e.box.t1, st.y)};
+      }
+    const double c = frame.w(centre);
+    e.cLo = std::min(e.cLo, c);
+    e.cHi = std::max(e.cHi, c);
+    cSum += c;
+    e.centre += frame.in2d(centre);
+    ++count;
+  }
+  e.centre /= double(count);
+  e.cMean = cSum / count;
+  return e;
+}
+
+// The smallest opening, among the planes of the frame's polygons near the contact, that matches the
+// contact to within `tolerance`: its offset along n and its rectangle.
+std::optional<std::pair<double, Rect>> smallestOpening(const ScenePolygons& polys, const Frame& frame,
+                                                       const ContactExtent& e, double reachM, double tolerance) {
+  const std::array<double, 3> lo{e.cLo - reachM, e.box.s0 - 2 * tolerance, e.box.t0 - 2 * tolerance};
+  const std::array<double, 3> hi{e.cHi + reachM, e.box.s1 + 2 * tolerance, e.box.t1 + 2 * tolerance};
+  // The world box that holds that slab of the frame: the polygons' boxes are tested against it first.
+  Vec3 worldLo(kInf), worldHi(-kInf);
+  for (const double c : {lo[0], hi[0]})
+    for (const double u : {lo[1], hi[1]})
+      for (const double v : {lo[2], hi[2]}) {
+        worldLo = glm::min(worldLo, frame.point(c, {u, v}));
+        worldHi = glm::max(worldHi, frame.point(c, {u, v}));
+      }
   std::vector<int> near;
   std::vector<double> planes;
   for (size_t i = 0; i < polys.bounds.size(); ++i) {
-    const auto& [lo, hi] = polys.bounds[i];
-    if (glm::any(glm::greaterThan(lo, nearHi)) || glm::any(glm::lessThan(hi, nearLo))) continue;
+    const auto& [blo, bhi] = polys.bounds[i];
+    if (glm::any(glm::greaterThan(blo, worldHi)) || glm::any(glm::lessThan(bhi, worldLo))) continue;
+    // Its extent in the frame (for the axes' frames, its box itself).
+    std::array<double, 3> plo{kInf, kInf, kInf}, phi{-kInf, -kInf, -kInf};
+    for (const Vec3& v : polys.scene.polygons[i].vertices) {
+      const std::array<double, 3> q{frame.w(v), frame.in2d(v).x, frame.in2d(v).y};
+      for (int k = 0; k < 3; ++k) plo[k] = std::min(plo[k], q[k]), phi[k] = std::max(phi[k], q[k]);
+    }
+    bool overlaps = true;
+    for (int k = 0; k < 3; ++k) overlaps = overlaps && plo[k] <= hi[k] && phi[k] >= lo[k];
+    if (!overlaps) continue;
     near.push_back(int(i));
-    if (hi[axis] - lo[axis] <= 1e-9) planes.push_back(lo[axis]);
+    if (phi[0] - plo[0] <= 1e-9) planes.push_back(plo[0]);
   }
   std::sort(planes.begin(), planes.end());
   planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
 
   std::optional<std::pair<double, Rect>> best;
   for (double c : planes) {
-    const std::optional<Rect> r = openingAround(polys, near, axis, c, centre);
+    const std::optional<Rect> r = openingAround(polys, near, frame, c, e.centre);
     if (!r) continue;
+    const Rect& box = e.box;
     const bool covers = r->s0 <= box.s0 + tolerance && r->s1 >= box.s1 - tolerance &&
                         r->t0 <= box.t0 + tolerance && r->t1 >= box.t1 - tolerance;
     const bool within = r->s0 >= box.s0 - tolerance && r->s1 <= box.s1 + tolerance &&
@@ -165,24 +220,74 @@ Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vect
     if (!covers || !within) continue;
     const bool better = !best || r->area() < best->second.area() - 1e-9 ||
                         (r->area() <= best->second.area() + 1e-9 &&
-                         std::abs(c - cMean) < std::abs(best->first - cMean) - 1e-9);
+                         std::abs(c - e.cMean) < std::abs(best->first - e.cMean) - 1e-9);
     if (better) best = {c, *r};
   }
-  // Geometry the search does not fit (a slanted wall, an arch): the voxels' own rectangle.
-  const auto [plane, rect] = best ? *best : std::pair{cMean, box};
+  return best;
+}
+
+// The unit normals, up to sign, of the polygons near the contact within 30 degrees of `towards`
+// and along no axis: the planes of a wall at an angle to the axes. The first of each direction.
+std::vector<Vec3> obliqueNormals(const ScenePolygons& polys, const Vec3& towards, const Vec3& nearLo, const Vec3& nearHi) {
+  std::vector<Vec3> normals;
+  for (size_t i = 0; i < polys.bounds.size(); ++i) {
+    const auto& [lo, hi] = polys.bounds[i];
+    if (glm::any(glm::greaterThan(lo, nearHi)) || glm::any(glm::lessThan(hi, nearLo))) continue;
+    const Vec3 normal = newellNormal(polys.scene.polygons[i].vertices);
+    if (!(glm::length(normal) > 0.0)) continue;
+    Vec3 n = glm::normalize(normal);
+    if (glm::dot(n, towards) < 0.0) n = -n;
+    if (glm::dot(n, towards) < std::cos(std::numbers::pi / 6.0)) continue;
+    if (std::abs(n.x) == 1.0 || std::abs(n.y) == 1.0 || std::abs(n.z) == 1.0) continue;  // the axes' frames
+    if (std::none_of(normals.begin(), normals.end(), [&](const Vec3& m) { return glm::dot(m, n) > 1.0 - 1e-9; }))
+      normals.push_back(n);
+  }
+  return normals;
+}
+
+// The portal for one place where cells a < b meet: the smallest opening, among the planes of the
+// polygons across the contact's main axis near it, that matches the contact to within 1.5 voxels;
+// failing that, the same among the planes of a wall at an angle to the axes, matched to the
+// contact's faces across every axis (a staircase of voxels along it), within 2.5 voxels.
+Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vector<Contact>& contacts, int a, int b,
+                 int radius) {
+  std::array<int, 3> perAxis{0, 0, 0};
+  Vec3 aToB(0.0);
+  for (const Contact& k : contacts) {
+    ++perAxis[k.axis];
+    aToB[k.axis] += k.higherCellAbove ? 1.0 : -1.0;
+  }
+  const int axis = int(std::max_element(perAxis.begin(), perAxis.end()) - perAxis.begin());
+  const double reachM = (radius + 2) * g.voxel;
+  Frame frame = axisFrame(axis);
+  const ContactExtent main = extentOf(g, contacts, axis, frame);
+  std::optional<std::pair<double, Rect>> best = smallestOpening(polys, frame, main, reachM, 1.5 * g.voxel);
+  if (!best && glm::length(aToB) > 0.0) {
+    Vec3 nearLo(kInf), nearHi(-kInf);
+    for (const Contact& k : contacts) {
+      nearLo = glm::min(nearLo, g.corner(g.coords(k.low)));
+      nearHi = glm::max(nearHi, g.corner(g.coords(k.low)) + Vec3(2.0 * g.voxel));
+    }
+    nearLo -= Vec3(reachM);
+    nearHi += Vec3(reachM);
+    for (const Vec3& n : obliqueNormals(polys, glm::normalize(aToB), nearLo, nearHi)) {
+      const Frame oblique = obliqueFrame(n);
+      const ContactExtent all = extentOf(g, contacts, -1, oblique);
+      const auto found = smallestOpening(polys, oblique, all, reachM, 2.5 * g.voxel);
+      if (found && (!best || found->second.area() < best->second.area())) best = found, frame = oblique;
+    }
+  }
+  // Geometry the search does not fit (a curved wall, an arch): the voxels' own rectangle.
+  if (!best) frame = axisFrame(axis);
+  const auto [plane, rect] = best ? *best : std::pair{main.cMean, main.box};
 
   Portal portal;
   portal.cellA = a;
   portal.cellB = b;
-  for (const auto& [cs, ct] : {std::pair{rect.s0, rect.t0}, {rect.s1, rect.t0}, {rect.s1, rect.t1}, {rect.s0, rect.t1}}) {
-    Vec3 v;
-    v[axis] = plane;
-    v[s] = cs;
-    v[t] = ct;
-    portal.vertices.push_back(v);
-  }
-  // Counter-clockwise around +axis as listed (s, t, axis run cyclically); b lies on its side or not.
-  if (2 * bAbove < count) std::reverse(portal.vertices.begin(), portal.vertices.end());
+  for (const Vec2 st : {Vec2(rect.s0, rect.t0), Vec2(rect.s1, rect.t0), Vec2(rect.s1, rect.t1), Vec2(rect.s0, rect.t1)})
+    portal.vertices.push_back(frame.point(plane, st));
+  // Counter-clockwise around n as listed (s x t = n); b lies on its side or not.
+  if (glm::dot(frame.n, aToB) < 0.0) std::reverse(portal.vertices.begin(), portal.vertices.end());
   portal.areaM2 = rect.area();
   return portal;
 }
@@ -198,24 +303,6 @@ ScenePolygons::ScenePolygons(const Scene& s) : scene(s) {
     }
     bounds.emplace_back(lo, hi);
   }
-}
-
-// Whether the segment a..b passes through a polygon other than `own`.
-bool segmentBlocked(const ScenePolygons& polys, int own, const Vec3& a, const Vec3& b) {
-  const Vec3 lo = glm::min(a, b), hi = glm::max(a, b);
-  for (size_t i = 0; i < polys.bounds.size(); ++i) {
-    const auto& [plo, phi] = polys.bounds[i];
-    if (int(i) == own || glm::any(glm::greaterThan(plo, hi)) || glm::any(glm::lessThan(phi, lo))) continue;
-    const std::vector<Vec3>& vs = polys.scene.polygons[i].vertices;
-    const Vec3 n = newellNormal(vs);
-    const double da = glm::dot(n, a - vs[0]), db = glm::dot(n, b - vs[0]);
-    if ((da > 0.0) == (db > 0.0) || da == db) continue;
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
-    if (containsPoint(vs, axis, a + (b - a) * (da / (da - db)))) return true;
-  }
-  return false;
 }
 
 // Each place two cells meet: the contacts between each pair of cells, split into connected

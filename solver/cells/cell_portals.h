@@ -16,9 +16,6 @@ struct ScenePolygons {
   explicit ScenePolygons(const Scene& s);
 };
 
-// Whether the segment a..b passes through a polygon other than `own`.
-bool segmentBlocked(const ScenePolygons& polys, int own, const Vec3& a, const Vec3& b);
-
 // One portal per opening between two cells, in the order of the cells' pairs; `radius` is the
 // erosion's, in voxels (how far from where the cells meet the opening's planes may lie).
 std::vector<Portal> findPortals(const VoxelGrid& g, const VoxelLabels& labels, const ScenePolygons& polys, int radius);

@@ -10,6 +10,7 @@
 
 #include "solver/cells/cell_portals.h"
 #include "solver/cells/voxel_grid.h"
+#include "solver/meshing/occluders.h"
 
 namespace radmesh {
 
@@ -190,10 +191,30 @@ VoxelLabels labelVoxels(const VoxelGrid& g, const std::vector<std::uint8_t>& sol
 }
 
 
+// The cell on x's side of the portal's plane where x is within `reach` of the portal (the rectangle
+// findPortals makes, grown by reach in its plane), else -1; -1 as well in the plane itself.
+int sideOfPortal(const Portal& portal, const Vec3& x, double reach) {
+  const Vec3& origin = portal.vertices[0];
+  const Vec3 n = glm::normalize(newellNormal(portal.vertices));
+  const double d = glm::dot(n, x - origin);
+  if (std::abs(d) <= 1e-6 * reach || std::abs(d) > reach) return -1;
+  for (const Vec3& corner : {portal.vertices[1], portal.vertices.back()}) {
+    const Vec3 edge = corner - origin;
+    const double length = glm::length(edge), along = glm::dot(edge, x - origin) / length;
+    if (along < -reach || along > length + reach) return -1;
+  }
+  return d > 0.0 ? portal.cellB : portal.cellA;
+}
+
 // The label of the voxel next to the patch's own along its normal's main axis; kUnreached when it
 // is solid (a face in a gap narrower than a voxel, or within a voxel of a wall across it), or
 // when it is outside but a polygon lies between (the back of a cabinet 2 cm from an exterior wall).
-std::int32_t labelAhead(const VoxelGrid& g, const VoxelLabels& labels, const ScenePolygons& polys, const Patch& p) {
+// Near a portal of that cell (a floor just past a doorway, whose voxel ahead the cell beyond took:
+// cells meet within a voxel or two of the door's plane, and anywhere across a wall at an angle to
+// the axes), the cell on the side of the portal the patch faces: that of a point half a voxel in
+// front of it, so that the wall around the door goes by the side it faces.
+std::int32_t labelAhead(const VoxelGrid& g, const VoxelLabels& labels, const Occluders& occluders,
+                        const std::vector<Portal>& portals, const Patch& p) {
   int axis = 0;
   for (int a = 1; a < 3; ++a)
     if (std::abs(p.normal[a]) > std::abs(p.normal[axis])) axis = a;
@@ -202,7 +223,14 @@ std::int32_t labelAhead(const VoxelGrid& g, const VoxelLabels& labels, const Sce
   v[axis] += p.normal[axis] > 0 ? 1 : -1;
   if (!g.inside(v)) return kOutsideCell;
   const std::int32_t l = labels.label[g.index(v)];
-  if (l == kOutsideCell && segmentBlocked(polys, p.polygon, p.centroid, g.corner(v) + 0.5 * g.voxel)) return kUnreached;
+  for (const Portal& portal : portals)
+    if (portal.cellA == l || portal.cellB == l)
+      if (const int side = sideOfPortal(portal, p.centroid + p.normal * (0.5 * g.voxel), 2.0 * g.voxel); side >= 0)
+        return side;
+  // A polygon between: the voxel ahead is past a wall a patch in a corner runs into (along the main
+  // axis of a wall at an angle to the axes), or outside past a cabinet's back.
+  if (l >= kOutsideCell && occluders.segmentBlocked(p.centroid, g.corner(v) + 0.5 * g.voxel, p.polygon, p.polygon))
+    return kUnreached;
   return l >= kOutsideCell ? l : kUnreached;
 }
 
@@ -235,11 +263,12 @@ int nearestCell(const VoxelGrid& g, const VoxelLabels& labels, const Patch& p, i
 // whose voxel ahead was free (the same surface, a little further from the wall it runs into);
 // else the nearest cell.
 std::vector<int> cellsFaced(const VoxelGrid& g, const VoxelLabels& labels, const ScenePolygons& polys,
-                            const std::vector<Patch>& patches, int reach) {
+                            const std::vector<Portal>& portals, const std::vector<Patch>& patches, int reach) {
   std::vector<int> out(patches.size());
   std::vector<std::vector<int>> seen(polys.bounds.size());  // per polygon, its patches with a label
+  const Occluders occluders(patches);
   for (size_t i = 0; i < patches.size(); ++i) {
-    out[i] = labelAhead(g, labels, polys, patches[i]);
+    out[i] = labelAhead(g, labels, occluders, portals, patches[i]);
     if (out[i] != kUnreached) seen[patches[i].polygon].push_back(int(i));
   }
   for (size_t i = 0; i < patches.size(); ++i) {
@@ -360,9 +389,9 @@ CellPartition findCells(const Scene& scene, const std::vector<Patch>& patches, C
 
   const int cells = std::max(labels.cells, 1);  // no enclosed room at all: the whole scene is one
   const ScenePolygons polys(scene);
-  out.cellOfPatch = labels.cells == 0 ? std::vector<int>(patches.size(), 0)
-                                       : cellsFaced(g, labels, polys, patches, 2 * radius);
   if (labels.cells > 0) out.portals = findPortals(g, labels, polys, radius);
+  out.cellOfPatch = labels.cells == 0 ? std::vector<int>(patches.size(), 0)
+                                       : cellsFaced(g, labels, polys, out.portals, patches, 2 * radius);
 
   out.cells.resize(cells);
   std::vector<Vec3> lo(cells, Vec3(kInf)), hi(cells, Vec3(-kInf));

@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-#include "solver/formfactors/occluders.h"
+#include "solver/meshing/occluders.h"
 #include "solver/projection/item_buffer.h"
 #include "solver/meshing/patch.h"
 #include "solver/projection/projection_surface.h"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "solver/formfactors/form_factor_row.h"
-#include "solver/formfactors/occluders.h"
+#include "solver/meshing/occluders.h"
 #include "solver/meshing/elements.h"
 
 namespace radmesh {

@@ -13,7 +13,7 @@
 #include "solver/backends/mesh/mesh_form_factors.h"
 #include "solver/backends/mesh/mesh_scan_conversion.h"
 #include "solver/backends/mesh/mesh_shot_stats.h"
-#include "solver/formfactors/occluders.h"
+#include "solver/meshing/occluders.h"
 #include "solver/projection/plane_mapping.h"
 #include "solver/projection/projection_surface.h"
 #include "parallel/thread_pool.h"

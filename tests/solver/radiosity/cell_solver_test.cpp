@@ -6,7 +6,9 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
+#include "solver/cells/find_cells.h"
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/elements.h"
 #include "solver/meshing/meshing.h"
@@ -70,6 +72,34 @@ TEST(CellSolver, LedgerBalancesPerCellAndInTotalEveryRound) {
   EXPECT_GT(cells[0].ledger.portalOut, 0.0);  // light left A through the door
   EXPECT_GT(cells[1].ledger.portalOut, 0.0);  // and came back from B
   EXPECT_EQ(cells[1].ledger.emitted, 0.0);
+}
+
+// two-rooms turned about its vertical, its cells found from the geometry, solved to 5 % unshot: the
+// light the door lets through, summed over both directions, and what escaped the closed building.
+std::pair<double, double> throughTheDoorAndEscaped(double degrees) {
+  Scene scene = builtinScene("two-rooms");
+  const double a = degrees * std::numbers::pi / 180.0;
+  for (Polygon& polygon : scene.polygons)
+    for (Vec3& v : polygon.vertices) v = Vec3(std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y, v.z);
+  const std::vector<Patch> patches = meshScene(scene, kDefaultCellM);
+  SolveOptions o = testOptions();
+  o.untilUnshot = 0.05;
+  CellSolver solver(scene, patches, findCells(scene, patches), o, {kDefaultCellM, 16});
+  for (int rounds = 0; !solver.done() && rounds < 2000; ++rounds) solver.round();
+  double through = 0.0;
+  for (const CellFigures& cell : solver.cellFigures()) through += cell.ledger.portalIn;
+  return {through, solver.ledger().escaped / solver.ledger().emitted};
+}
+
+// A building at an angle to the axes lets the same light through its doors as one along them, and
+// none out of its closed rooms (before 2026-12-04, turned by 30°: 55 % of the light through, and
+// 2.9 % of the emitted escaping past a portal that a staircase of voxels had cut short).
+TEST(CellSolver, ABuildingAtAnAngleToTheAxesLetsTheSameLightThroughItsDoors) {
+  const auto [along, alongEscaped] = throughTheDoorAndEscaped(0.0);
+  const auto [through, escaped] = throughTheDoorAndEscaped(30.0);
+  EXPECT_LE(alongEscaped, 1e-4);
+  EXPECT_NEAR(through, along, 0.02 * along);  // 0.9 % apart: the two meshes differ
+  EXPECT_LE(escaped, 1e-4);
 }
 
 // With no unshot stop the rounds end once less is left than the ledger vouches for, not after

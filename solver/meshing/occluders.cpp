@@ -1,4 +1,4 @@
-#include "solver/formfactors/occluders.h"
+#include "solver/meshing/occluders.h"
 
 #include <algorithm>
 #include <array>

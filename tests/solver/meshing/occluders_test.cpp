@@ -1,6 +1,6 @@
-// The occluders' hierarchy (solver/formfactors/occluders.h) against the definition it speeds up: a
+// The occluders' hierarchy (solver/meshing/occluders.h) against the definition it speeds up: a
 // segment is blocked where it crosses a patch of any polygon but the two it joins.
-#include "solver/formfactors/occluders.h"
+#include "solver/meshing/occluders.h"
 
 #include <gtest/gtest.h>
 
