@@ -96,6 +96,43 @@ TEST(Renderer, BackOfAOneSidedPolygonIsDarkNotLit) {
   EXPECT_GT(centre[2], centre[0]);  // the blue-grey of a back face, not the clear colour
 }
 
+// A wall of no thickness is two polygons back to back (as SketchUp and many exports draw walls).
+// Seen from the front, its front shows everywhere: the back of the other face, at the same depth
+// but for rounding, shows nowhere (it showed in blotches of blue-grey before 2026-12-04).
+TEST(Renderer, AWallOfNoThicknessShowsItsFrontNotTheBackBehindIt) {
+  DisplayMesh mesh;
+  constexpr int kCuts = 8;  // the back face cut otherwise than the front, so its depths round otherwise
+  mesh.positions = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+  mesh.normals.assign(4, Vec3{0, -1, 0});
+  mesh.indices = {0, 2, 1, 0, 3, 2};
+  mesh.patchOfTriangle = {0, 0};
+  for (int i = 0; i < kCuts; ++i) {
+    const double x0 = -1.0 + 2.0 * i / kCuts, x1 = -1.0 + 2.0 * (i + 1) / kCuts;
+    const unsigned first = static_cast<unsigned>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), {{x0, 0, -1}, {x1, 0, -1}, {x1, 0, 1}, {x0, 0, 1}});
+    mesh.normals.insert(mesh.normals.end(), 4, Vec3{0, 1, 0});
+    mesh.indices.insert(mesh.indices.end(), {first, first + 1, first + 3, first + 1, first + 2, first + 3});
+    mesh.patchOfTriangle.insert(mesh.patchOfTriangle.end(), {1, 1});
+  }
+  OffscreenRenderer renderer(mesh, {256, 256});
+  std::vector<Rgb> b(mesh.positions.size(), Rgb{0.5});
+  const RenderView oblique{{-1.5, -1.2, 0.4}, {0.3, 0, -0.1}, {0, 0, 1}, 70.0, 0.1, 10.0};
+  const Image image = renderer.render(b, oblique, {.exposure = 1.0, .highlightedPatches = {}});
+  const auto near = [](const std::array<int, 3>& p, const std::array<int, 3>& q) {
+    return std::abs(p[0] - q[0]) <= 3 && std::abs(p[1] - q[1]) <= 3 && std::abs(p[2] - q[2]) <= 3;
+  };
+  const std::array<int, 3> grey{srgbByte(0.5), srgbByte(0.5), srgbByte(0.5)};
+  const std::array<int, 3> backColour{srgbByte(0.010), srgbByte(0.012), srgbByte(0.020)};
+  int front = 0, back = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      front += near(pixel(image, x, y), grey);
+      back += near(pixel(image, x, y), backColour);
+    }
+  EXPECT_GT(front, 10000);
+  EXPECT_EQ(back, 0);
+}
+
 TEST(Renderer, HighlightTintsOnlyTheShootingPatch) {
   OffscreenRenderer renderer(facingSquare(), {64, 64});
   const std::vector<Rgb> grey(4, Rgb{0.2});
