@@ -31,15 +31,15 @@ struct Rect {
 
 // A plane's frame: n its normal, s and t in it with s x t = n. Coordinates are dot products, which
 // for the axes' unit vectors are the components themselves, bit for bit.
-struct Frame {
+struct PlaneFrame {
   Vec3 n, s, t;
   double w(const Vec3& v) const { return glm::dot(n, v); }
   Vec2 in2d(const Vec3& v) const { return {glm::dot(s, v), glm::dot(t, v)}; }
   Vec3 point(double c, Vec2 st) const { return c * n + st.x * s + st.y * t; }
 };
 
-Frame axisFrame(int axis) {
-  Frame f{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+PlaneFrame axisFrame(int axis) {
+  PlaneFrame f{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
   f.n[axis] = 1.0;
   f.s[(axis + 1) % 3] = 1.0;
   f.t[(axis + 2) % 3] = 1.0;
@@ -48,7 +48,7 @@ Frame axisFrame(int axis) {
 
 // The frame of a plane of normal n (unit), t along the world axis least aligned with it: a wall's
 // upright, so that an opening's rectangle stands as a door does.
-Frame obliqueFrame(const Vec3& n) {
+PlaneFrame obliqueFrame(const Vec3& n) {
   int least = 0;
   for (int k = 1; k < 3; ++k)
     if (std::abs(n[k]) < std::abs(n[least])) least = k;
@@ -72,7 +72,7 @@ bool containsPoint(const std::vector<Vec3>& vs, In2d in2d, Vec2 p) {
 // How far rays from p along +s, -s, +t, -t run in the plane w = c of the frame before they meet a
 // polygon (one lying in the plane, or one crossing it); nullopt when p is inside a polygon in the
 // plane or a ray runs free.
-std::optional<Rect> openingAround(const ScenePolygons& polys, const std::vector<int>& near, const Frame& frame,
+std::optional<Rect> openingAround(const ScenePolygons& polys, const std::vector<int>& near, const PlaneFrame& frame,
                                   double c, Vec2 p) {
   const double eps = 1e-9;
   std::array<double, 4> reach{kInf, kInf, kInf, kInf};  // +s, -s, +t, -t
@@ -142,7 +142,7 @@ struct ContactExtent {
 
 // The contact faces across `axis` (-1: all of them) in the frame: each face a voxel square whose
 // corners bound it.
-ContactExtent extentOf(const VoxelGrid& g, const std::vector<Contact>& contacts, int axis, const Frame& frame) {
+ContactExtent extentOf(const VoxelGrid& g, const std::vector<Contact>& contacts, int axis, const PlaneFrame& frame) {
   ContactExtent e;
   double cSum = 0.0;
   int count = 0;
@@ -176,7 +176,7 @@ ContactExtent extentOf(const VoxelGrid& g, const std::vector<Contact>& contacts,
 
 // The smallest opening, among the planes of the frame's polygons near the contact, that matches the
 // contact to within `tolerance`: its offset along n and its rectangle.
-std::optional<std::pair<double, Rect>> smallestOpening(const ScenePolygons& polys, const Frame& frame,
+std::optional<std::pair<double, Rect>> smallestOpening(const ScenePolygons& polys, const PlaneFrame& frame,
                                                        const ContactExtent& e, double reachM, double tolerance) {
   const std::array<double, 3> lo{e.cLo - reachM, e.box.s0 - 2 * tolerance, e.box.t0 - 2 * tolerance};
   const std::array<double, 3> hi{e.cHi + reachM, e.box.s1 + 2 * tolerance, e.box.t1 + 2 * tolerance};
@@ -259,7 +259,7 @@ Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vect
   }
   const int axis = int(std::max_element(perAxis.begin(), perAxis.end()) - perAxis.begin());
   const double reachM = (radius + 2) * g.voxel;
-  Frame frame = axisFrame(axis);
+  PlaneFrame frame = axisFrame(axis);
   const ContactExtent main = extentOf(g, contacts, axis, frame);
   std::optional<std::pair<double, Rect>> best = smallestOpening(polys, frame, main, reachM, 1.5 * g.voxel);
   if (!best && glm::length(aToB) > 0.0) {
@@ -271,7 +271,7 @@ Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vect
     nearLo -= Vec3(reachM);
     nearHi += Vec3(reachM);
     for (const Vec3& n : obliqueNormals(polys, glm::normalize(aToB), nearLo, nearHi)) {
-      const Frame oblique = obliqueFrame(n);
+      const PlaneFrame oblique = obliqueFrame(n);
       const ContactExtent all = extentOf(g, contacts, -1, oblique);
       const auto found = smallestOpening(polys, oblique, all, reachM, 2.5 * g.voxel);
       if (found && (!best || found->second.area() < best->second.area())) best = found, frame = oblique;

@@ -207,9 +207,9 @@ int sideOfPortal(const Portal& portal, const Vec3& x, double reach) {
 }
 
 // The label of the voxel next to the patch's own along its normal's main axis; kUnreached when it
-// is solid (a face in a gap narrower than a voxel, or within a voxel of a wall across it), or
-// when it is outside but a polygon lies between (the back of a cabinet 2 cm from an exterior wall).
-// Near a portal of that cell (a floor just past a doorway, whose voxel ahead the cell beyond took:
+// is solid (a face in a gap narrower than a voxel, or within a voxel of a wall across it), or when
+// a polygon lies between (the back of a cabinet 2 cm from an exterior wall; the end of a wall at an
+// angle to the axes, whose voxel ahead is past the wall it runs into). Near a portal of that cell (a floor just past a doorway, whose voxel ahead the cell beyond took:
 // cells meet within a voxel or two of the door's plane, and anywhere across a wall at an angle to
 // the axes), the cell on the side of the portal the patch faces: that of a point half a voxel in
 // front of it, so that the wall around the door goes by the side it faces.
@@ -227,8 +227,6 @@ std::int32_t labelAhead(const VoxelGrid& g, const VoxelLabels& labels, const Occ
     if (portal.cellA == l || portal.cellB == l)
       if (const int side = sideOfPortal(portal, p.centroid + p.normal * (0.5 * g.voxel), 2.0 * g.voxel); side >= 0)
         return side;
-  // A polygon between: the voxel ahead is past a wall a patch in a corner runs into (along the main
-  // axis of a wall at an angle to the axes), or outside past a cabinet's back.
   if (l >= kOutsideCell && occluders.segmentBlocked(p.centroid, g.corner(v) + 0.5 * g.voxel, p.polygon, p.polygon))
     return kUnreached;
   return l >= kOutsideCell ? l : kUnreached;
