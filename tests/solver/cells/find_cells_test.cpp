@@ -23,8 +23,18 @@ struct Found {
   CellPartition cells;
 };
 
-Found find(const std::string& name) {
+// A point turned about the vertical (z) by `degrees`.
+Vec3 turned(const Vec3& v, double degrees) {
+  const double a = degrees * std::numbers::pi / 180.0;
+  return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y, v.z};
+}
+
+// A built-in scene, turned about the vertical by `degrees` (buildings are rarely drawn along the
+// axes), meshed and its cells found.
+Found find(const std::string& name, double degrees = 0.0) {
   Found f{builtinScene(name), {}, {}};
+  for (Polygon& polygon : f.scene.polygons)
+    for (Vec3& v : polygon.vertices) v = turned(v, degrees);
   f.patches = meshScene(f.scene);
   f.cells = findCells(f.scene, f.patches);
   return f;
@@ -124,15 +134,7 @@ TEST(FindCells, TwoRoomsAreTwoCellsJoinedByTheDoorway) {
 TEST(FindCells, TwoRoomsAtAnAngleToTheAxesAreJoinedByTheWholeDoorway) {
   for (const double degrees : {10.0, 30.0, 45.0, 75.0, 135.0}) {
     SCOPED_TRACE(degrees);
-    const double a = degrees * std::numbers::pi / 180.0;
-    const auto turned = [&](const Vec3& v) {
-      return Vec3(std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y, v.z);
-    };
-    Found f{builtinScene("two-rooms"), {}, {}};
-    for (Polygon& polygon : f.scene.polygons)
-      for (Vec3& v : polygon.vertices) v = turned(v);
-    f.patches = meshScene(f.scene);
-    f.cells = findCells(f.scene, f.patches);
+    const Found f = find("two-rooms", degrees);
     ASSERT_EQ(f.cells.cells.size(), 2u);
     ASSERT_EQ(f.cells.portals.size(), 1u);
     const Portal& p = f.cells.portals[0];
@@ -142,7 +144,8 @@ TEST(FindCells, TwoRoomsAtAnAngleToTheAxesAreJoinedByTheWholeDoorway) {
     const auto index = cellIndexByName(f.cells);
     ASSERT_TRUE(index.count("first") && index.count("second"));
     // Across the dividing wall, from the first room into the second.
-    const Vec3 towardsSecond = p.cellB == index.at("second") ? turned(Vec3(1, 0, 0)) : -turned(Vec3(1, 0, 0));
+    const Vec3 across = turned(Vec3(1, 0, 0), degrees);
+    const Vec3 towardsSecond = p.cellB == index.at("second") ? across : -across;
     EXPECT_NEAR(glm::dot(portalNormal(p), towardsSecond), 1.0, 1e-12);
     for (size_t i = 0; i < f.patches.size(); ++i) {
       const std::string& origin = f.scene.polygons[f.patches[i].polygon].origin;
@@ -154,10 +157,10 @@ TEST(FindCells, TwoRoomsAtAnAngleToTheAxesAreJoinedByTheWholeDoorway) {
 
 // The generator's rooms and corridors, each its own cell named for it, and each door one portal
 // between the room and its corridor (or a wing's corridor and the spine).
-void expectBuildingCells(const std::string& name) {
-  SCOPED_TRACE(name);
+void expectBuildingCells(const std::string& name, double degrees = 0.0) {
+  SCOPED_TRACE(name + " turned by " + std::to_string(degrees));
   const BuildingLayout layout = parseBuildingName(name);
-  const Found f = find(name);
+  const Found f = find(name, degrees);
   EXPECT_EQ(int(f.cells.cells.size()), layout.rooms() + layout.corridors());
   ASSERT_EQ(int(f.cells.portals.size()), layout.doors());
   const auto index = cellIndexByName(f.cells);
@@ -201,6 +204,8 @@ TEST(FindCells, BuildingGivesTheGeneratorsRoomsAndDoors) {
   expectBuildingCells("building:1x1");
   expectBuildingCells("building:2x2");
   expectBuildingCells("building:3x1");
+  expectBuildingCells("building:2x2", 30.0);  // each door's portal exact in its turned wall
+  expectBuildingCells("building:3x1", 60.0);
 }
 
 // A box standing outside a closed room faces no cell; the room's own faces, and a cabinet 2 cm
