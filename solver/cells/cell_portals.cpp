@@ -58,12 +58,11 @@ PlaneFrame obliqueFrame(const Vec3& n) {
   return {n, glm::normalize(glm::cross(t, n)), t};
 }
 
-// Whether p lies inside the polygon, its vertices mapped to the plane by in2d (the even-odd rule).
-template <typename In2d>
-bool containsPoint(const std::vector<Vec3>& vs, In2d in2d, Vec2 p) {
+// Whether p lies inside the polygon seen in the frame's plane (the even-odd rule).
+bool containsPoint(const std::vector<Vec3>& vs, const PlaneFrame& frame, Vec2 p) {
   bool inside = false;
   for (size_t k = 0, j = vs.size() - 1; k < vs.size(); j = k++) {
-    const Vec2 a = in2d(vs[k]), b = in2d(vs[j]);
+    const Vec2 a = frame.in2d(vs[k]), b = frame.in2d(vs[j]);
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y)) inside = !inside;
   }
   return inside;
@@ -104,7 +103,7 @@ std::optional<Rect> openingAround(const ScenePolygons& polys, const std::vector<
     bool coplanar = true;
     for (const Vec3& v : vs) coplanar = coplanar && std::abs(frame.w(v) - c) <= eps;
     if (coplanar) {
-      if (containsPoint(vs, in2d, p)) return std::nullopt;
+      if (containsPoint(vs, frame, p)) return std::nullopt;
       for (size_t k = 0; k < n; ++k) hitSegment(in2d(vs[k]), in2d(vs[(k + 1) % n]));
       continue;
     }
@@ -278,7 +277,6 @@ Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vect
     }
   }
   // Geometry the search does not fit (a curved wall, an arch): the voxels' own rectangle.
-  if (!best) frame = axisFrame(axis);
   const auto [plane, rect] = best ? *best : std::pair{main.cMean, main.box};
 
   Portal portal;
