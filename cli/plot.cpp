@@ -26,7 +26,7 @@ std::string rangeAroundOneValue(const char* axis, const std::vector<double>& val
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   if (*lo != *hi) return "";
   const double v = *lo;
-  if (log && v > 0.0) return fmt::format("set {}range [{:.9g}:{:.9g}]\n", axis, v / 10.0, v * 10.0);  // decades labelled
+  if (log) return v > 0.0 ? fmt::format("set {}range [{:.9g}:{:.9g}]\n", axis, v / 10.0, v * 10.0) : "";  // decades labelled
   const double half = v == 0.0 ? 1.0 : 0.5 * std::abs(v);
   return fmt::format("set {}range [{:.9g}:{:.9g}]\n", axis, v - half, v + half);
 }
