@@ -195,7 +195,8 @@ std::optional<std::pair<double, Rect>> smallestOpening(const ScenePolygons& poly
     // Its extent in the frame (for the axes' frames, its box itself).
     std::array<double, 3> plo{kInf, kInf, kInf}, phi{-kInf, -kInf, -kInf};
     for (const Vec3& v : polys.scene.polygons[i].vertices) {
-      const std::array<double, 3> q{frame.w(v), frame.in2d(v).x, frame.in2d(v).y};
+      const Vec2 st = frame.in2d(v);
+      const std::array<double, 3> q{frame.w(v), st.x, st.y};
       for (int k = 0; k < 3; ++k) plo[k] = std::min(plo[k], q[k]), phi[k] = std::max(phi[k], q[k]);
     }
     bool overlaps = true;

@@ -132,16 +132,20 @@ Occluders::Occluders(const std::vector<Patch>& patches) : patches_(&patches), or
   for (const Patch& p : patches) boxes_.push_back(boxOf(p, 0.0));
   std::iota(order_.begin(), order_.end(), 0);
   std::stable_sort(order_.begin(), order_.end(), [&](int p, int q) { return patches[p].polygon < patches[q].polygon; });
+  std::vector<Group> groups;
   for (int i = 0; i < static_cast<int>(order_.size()); ++i) {
-    const Box& box = boxes_[order_[i]];
-    if (i > 0 && patches[order_[i]].polygon == patches[order_[i - 1]].polygon) {
-      groups_.back().box = unite(groups_.back().box, box);
-      ++groups_.back().count;
-    } else {
-      groups_.push_back({box, i, 1});
-    }
+    const bool samePolygon = i > 0 && patches[order_[i]].polygon == patches[order_[i - 1]].polygon;
+    if (samePolygon) ++groups.back().count;
+    else groups.push_back({{}, i, 1});
   }
-  if (!groups_.empty()) buildGroups(0, static_cast<int>(groups_.size()), 0);
+  for (Group& g : groups) g.box = boxOfPatches(g.first, g.count);
+  if (!groups.empty()) buildGroups(groups, 0);
+}
+
+Occluders::Box Occluders::boxOfPatches(int first, int count) const {
+  Box box = boxes_[order_[first]];
+  for (int i = first + 1; i < first + count; ++i) box = unite(box, boxes_[order_[i]]);
+  return box;
 }
 
 int Occluders::addNode(const Box& box, int first, int count, int polygon) {
@@ -149,16 +153,17 @@ int Occluders::addNode(const Box& box, int first, int count, int polygon) {
   return static_cast<int>(nodes_.size()) - 1;
 }
 
-// Splits groups_[first, first + count) by bestSplit, depth first: a node's left child follows it.
-// Past kHeuristicDepth levels the groups are halved instead, which bounds the depth (kMaxDepth) where
-// the heuristic would peel one polygon off at a time (polygons in a row, each twice the last).
-int Occluders::buildGroups(int first, int count, int depth) {
-  if (count == 1) return buildPatches(groups_[first].first, groups_[first].count);
-  Box box = groups_[first].box;
-  for (int i = first + 1; i < first + count; ++i) box = unite(box, groups_[i].box);
+// Splits the groups by bestSplit, depth first: a node's left child follows it. Past kHeuristicDepth
+// levels they are halved instead, which bounds the depth (kMaxDepth) where the heuristic would peel
+// one polygon off at a time (polygons in a row, each twice the last).
+int Occluders::buildGroups(std::span<Group> groups, int depth) {
+  const int count = static_cast<int>(groups.size());
+  if (count == 1) return buildPatches(groups[0].first, groups[0].count);
+  Box box = groups[0].box;
+  for (const Group& g : groups) box = unite(box, g.box);
   const int index = addNode(box, 0, 0, -1);
-  const auto begin = groups_.begin() + first, end = begin + count;
-  const GroupSplit split = depth < kHeuristicDepth ? bestSplit({&*begin, static_cast<size_t>(count)}) : GroupSplit{};
+  const auto begin = groups.begin(), end = groups.end();
+  const GroupSplit split = depth < kHeuristicDepth ? bestSplit(groups) : GroupSplit{};
   int half = count / 2;
   if (split.axis >= 0) {
     half = static_cast<int>(std::partition(begin, end, [&](const Group& g) {
@@ -169,15 +174,14 @@ int Occluders::buildGroups(int first, int count, int depth) {
     half = count / 2;
     std::nth_element(begin, begin + half, end, [](const Group& g, const Group& h) { return g.first < h.first; });
   }
-  buildGroups(first, half, depth + 1);
-  nodes_[index].right = buildGroups(first + half, count - half, depth + 1);
+  buildGroups(groups.first(half), depth + 1);
+  nodes_[index].right = buildGroups(groups.subspan(half), depth + 1);
   return index;
 }
 
 // The same split over one polygon's patches order_[first, first + count).
 int Occluders::buildPatches(int first, int count) {
-  Box box = boxes_[order_[first]];
-  for (int i = first + 1; i < first + count; ++i) box = unite(box, boxes_[order_[i]]);
+  const Box box = boxOfPatches(first, count);
   const int polygon = (*patches_)[order_[first]].polygon;
   if (count <= kLeafPatches) return addNode(box, first, count, polygon);
   const int index = addNode(box, 0, 0, polygon);

@@ -4,6 +4,7 @@
 // every one. Each scene polygon's patches form one subtree, which a segment from or to that polygon
 // passes over whole; the polygons are split by the surface area heuristic. The shadow criterion of
 // adaptive subdivision and the receivers too small for a pixel centre ask it.
+#include <span>
 #include <vector>
 
 #include "solver/meshing/patch.h"
@@ -42,13 +43,13 @@ class Occluders {
     int right = -1;            // an inner node: its children are the next node and `right`
     int polygon = -1;          // the scene polygon all its patches belong to; -1: several
   };
-  int buildGroups(int first, int count, int depth);
+  int buildGroups(std::span<Group> groups, int depth);
   int buildPatches(int first, int count);
   int addNode(const Box& box, int first, int count, int polygon);
+  Box boxOfPatches(int first, int count) const;  // of order_[first, first + count)
   const std::vector<Patch>* patches_;
   std::vector<Box> boxes_;  // per patch
   std::vector<int> order_;  // patch indices, each polygon's together
-  std::vector<Group> groups_;
   std::vector<Node> nodes_;
 };
 

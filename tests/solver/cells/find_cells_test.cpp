@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <set>
 #include <string>
 
@@ -13,6 +12,7 @@
 #include "solver/io/builtin_scenes.h"
 #include "solver/io/scene_builder.h"
 #include "solver/meshing/meshing.h"
+#include "tests/solver/turned_scene.h"
 
 namespace radmesh {
 namespace {
@@ -23,18 +23,10 @@ struct Found {
   CellPartition cells;
 };
 
-// A point turned about the vertical (z) by `degrees`.
-Vec3 turned(const Vec3& v, double degrees) {
-  const double a = degrees * std::numbers::pi / 180.0;
-  return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y, v.z};
-}
-
-// A built-in scene, turned about the vertical by `degrees` (buildings are rarely drawn along the
-// axes), meshed and its cells found.
+// A built-in scene, turned about the vertical by `degrees`, meshed and its cells found.
 Found find(const std::string& name, double degrees = 0.0) {
   Found f{builtinScene(name), {}, {}};
-  for (Polygon& polygon : f.scene.polygons)
-    for (Vec3& v : polygon.vertices) v = turned(v, degrees);
+  test::turnAboutVertical(f.scene, degrees);
   f.patches = meshScene(f.scene);
   f.cells = findCells(f.scene, f.patches);
   return f;
@@ -144,7 +136,7 @@ TEST(FindCells, TwoRoomsAtAnAngleToTheAxesAreJoinedByTheWholeDoorway) {
     const auto index = cellIndexByName(f.cells);
     ASSERT_TRUE(index.count("first") && index.count("second"));
     // Across the dividing wall, from the first room into the second.
-    const Vec3 across = turned(Vec3(1, 0, 0), degrees);
+    const Vec3 across = test::turnedAboutVertical(Vec3(1, 0, 0), degrees);
     const Vec3 towardsSecond = p.cellB == index.at("second") ? across : -across;
     EXPECT_NEAR(glm::dot(portalNormal(p), towardsSecond), 1.0, 1e-12);
     for (size_t i = 0; i < f.patches.size(); ++i) {

@@ -14,6 +14,7 @@
 #include "solver/meshing/meshing.h"
 #include "solver/scene/scene_error.h"
 #include "tests/solver/radiosity/two_rooms_cells.h"
+#include "tests/solver/turned_scene.h"
 
 namespace radmesh {
 namespace {
@@ -78,9 +79,7 @@ TEST(CellSolver, LedgerBalancesPerCellAndInTotalEveryRound) {
 // light the door lets through, summed over both directions, and what escaped the closed building.
 std::pair<double, double> throughTheDoorAndEscaped(double degrees) {
   Scene scene = builtinScene("two-rooms");
-  const double a = degrees * std::numbers::pi / 180.0;
-  for (Polygon& polygon : scene.polygons)
-    for (Vec3& v : polygon.vertices) v = Vec3(std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y, v.z);
+  test::turnAboutVertical(scene, degrees);
   const std::vector<Patch> patches = meshScene(scene, kDefaultCellM);
   SolveOptions o = testOptions();
   o.untilUnshot = 0.05;
