@@ -8,6 +8,7 @@
 
 #include "solver/geometry/polygon_clip.h"
 #include "solver/geometry/polygon_convex.h"
+#include "solver/meshing/grid_turn.h"
 #include "solver/scene/scene_error.h"
 #include "solver/scene/solve_options.h"
 
@@ -41,7 +42,8 @@ struct PolygonFrame {
 
 // One polygon cut into convex pieces, in its own frame, before slicing.
 struct PreparedPolygon {
-  PolygonFrame frame;
+  PolygonFrame frame;  // in the grid's frame: the world's unless the grid is turned
+  Vec3 worldNormal{0.0};
   Frame patchFrame;
   std::vector<std::vector<Vec2>> pieces;
   double noiseM = 0.0;        // distances below this are rounding, not geometry
@@ -60,16 +62,22 @@ Frame frameFor(const Vec3& normal) {
   return {u, v, normal};
 }
 
-PreparedPolygon prepare(const Scene& scene, size_t index, double cellM) {
-  const std::vector<Vec3>& vertices = scene.polygons[index].vertices;
-  const Vec3 newell = newellNormal(vertices);
-  const double length = glm::length(newell);
-  if (vertices.size() < 3 || !(length > 0.0) || !std::isfinite(length))
+PreparedPolygon prepare(const Scene& scene, size_t index, double cellM, const GridTurn& turn) {
+  const std::vector<Vec3>& worldVertices = scene.polygons[index].vertices;
+  const Vec3 worldNewell = newellNormal(worldVertices);
+  const double length = glm::length(worldNewell);
+  if (worldVertices.size() < 3 || !(length > 0.0) || !std::isfinite(length))
     throw SceneError(scene.source, describe(scene, index), "has zero or non-finite area",
                      "remove the polygon or fix its vertices");
+  std::vector<Vec3> turned;
+  if (turn.turned())
+    for (const Vec3& p : worldVertices) turned.push_back(turn.toGrid(p));
+  const std::vector<Vec3>& vertices = turn.turned() ? turned : worldVertices;
+  const Vec3 newell = turn.turned() ? newellNormal(vertices) : worldNewell;
   PreparedPolygon out;
+  out.worldNormal = worldNewell / length;
   PolygonFrame& f = out.frame;
-  f.unitNormal = newell / length;
+  f.unitNormal = newell / glm::length(newell);
   for (int k = 0; k < 3; ++k)
     if (std::abs(newell[k]) > std::abs(newell[f.n])) f.n = k;
   // Newell's n-component is twice the signed area projected along n: order u, v to make it positive.
@@ -93,7 +101,11 @@ PreparedPolygon prepare(const Scene& scene, size_t index, double cellM) {
   mean /= static_cast<double>(vertices.size());
   f.planePoint = {mean[f.u], mean[f.v]};
   f.planeHeight = mean[f.n];
-  out.patchFrame = frameFor(f.unitNormal);
+  // On a turned grid the projection frame turns with it: a model's shots do not depend on its turn.
+  const Frame grid = frameFor(f.unitNormal);
+  out.patchFrame = turn.turned()
+                       ? Frame{turn.directionToWorld(grid.u), turn.directionToWorld(grid.v), out.worldNormal}
+                       : frameFor(out.worldNormal);
 
   // Rounding noise: relative to the polygon's size, and to the magnitude of its world coordinates.
   out.noiseM = 1e-12 * extentOf(points) + 4.0 * DBL_EPSILON * maxAbs;
@@ -171,8 +183,8 @@ void startAtLowestVertex(std::vector<Vec2>& p) {
   std::rotate(p.begin(), std::min_element(p.begin(), p.end(), lower), p.end());
 }
 
-Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, double area2d, int material,
-                int polygon) {
+Patch makePatch(const PreparedPolygon& prepared, const GridTurn& turn, const std::vector<Vec2>& q, double area2d,
+                int material, int polygon) {
   const PolygonFrame& f = prepared.frame;
   Patch patch;
   patch.vertexCount = static_cast<int>(q.size());
@@ -180,12 +192,13 @@ Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, dou
   for (size_t i = 1; i + 1 < q.size(); ++i)
     centroid += cross2(q[i] - q[0], q[i + 1] - q[0]) * (q[0] + q[i] + q[i + 1]) / 3.0;
   centroid = centroid / (2.0 * area2d);
-  for (size_t i = 0; i < q.size(); ++i) patch.vertices[i] = f.lift(q[i]);
-  // Lifting onto the plane is affine, so it carries the area centroid along; areas grow by
-  // 1 / cos of the angle between the normal and the dropped axis.
-  patch.centroid = f.lift(centroid);
+  const auto world = [&](const Vec2& p) { return turn.turned() ? turn.toWorld(f.lift(p)) : f.lift(p); };
+  for (size_t i = 0; i < q.size(); ++i) patch.vertices[i] = world(q[i]);
+  // Lifting onto the plane and turning are affine, so they carry the area centroid along; areas
+  // grow by 1 / cos of the angle between the normal and the dropped axis.
+  patch.centroid = world(centroid);
   patch.areaM2 = area2d / std::abs(f.unitNormal[f.n]);
-  patch.normal = f.unitNormal;
+  patch.normal = prepared.worldNormal;
   patch.frame = prepared.patchFrame;
   patch.material = material;
   patch.polygon = polygon;
@@ -194,12 +207,12 @@ Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, dou
 
 // How many patches the cell makes, from above (cellEstimate), each polygon prepared for it;
 // `prepared` and `areaM2` (the pieces' projected area) are filled when given.
-double patchEstimate(const Scene& scene, double cellM, std::vector<PreparedPolygon>* prepared = nullptr,
-                     double* areaM2 = nullptr) {
+double patchEstimate(const Scene& scene, double cellM, const GridTurn& turn,
+                     std::vector<PreparedPolygon>* prepared = nullptr, double* areaM2 = nullptr) {
   if (prepared) prepared->reserve(scene.polygons.size());
   double estimate = 0.0;
   for (size_t i = 0; i < scene.polygons.size(); ++i) {
-    PreparedPolygon p = prepare(scene, i, cellM);
+    PreparedPolygon p = prepare(scene, i, cellM, turn);
     for (const auto& piece : p.pieces) {
       estimate += cellEstimate(piece, cellM, p.noiseM);
       if (areaM2) *areaM2 += signedArea(piece);
@@ -221,7 +234,8 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
     refuseCount(sceneAreaM2 / (cellM * cellM), cellM, maxPatches, sceneAreaM2);
   std::vector<PreparedPolygon> prepared;
   double areaM2 = 0.0;
-  const double estimate = patchEstimate(scene, cellM, &prepared, &areaM2);
+  const GridTurn turn = gridTurnOf(scene);
+  const double estimate = patchEstimate(scene, cellM, turn, &prepared, &areaM2);
   // Refuse before slicing: a tiny cell must fail fast, not exhaust memory.
   if (!(estimate <= static_cast<double>(maxPatches))) refuseCount(estimate, cellM, maxPatches, areaM2);
 
@@ -239,7 +253,7 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
           if (!(area2d > p.sliverAreaM2)) continue;  // a zero-area sliver of clipping
           if (patches.size() >= maxPatches)
             refuseCount(std::max(estimate, maxPatches + 1.0), cellM, maxPatches, areaM2);
-          patches.push_back(makePatch(p, q, area2d, scene.polygons[i].material, static_cast<int>(i)));
+          patches.push_back(makePatch(p, turn, q, area2d, scene.polygons[i].material, static_cast<int>(i)));
         }
       }
     }
@@ -282,10 +296,11 @@ CellChoice chooseCell(const Scene& scene) {
     // building's walls: three times as many): grow the cell until the count itself fits.
     // The estimate is from above: "about" allows it a quarter over. Where the polygons alone are
     // most of the count, a larger cell stops helping: the cell stays where it did.
-    double estimate = patchEstimate(scene, budgetCell);
+    const GridTurn turn = gridTurnOf(scene);
+    double estimate = patchEstimate(scene, budgetCell, turn);
     for (int step = 0; step < 20 && estimate > 1.25 * kCellPatchBudget; ++step) {
       const double grown = budgetCell * std::min(2.0, estimate / kCellPatchBudget);
-      const double fewer = patchEstimate(scene, grown);
+      const double fewer = patchEstimate(scene, grown, turn);
       if (fewer > 0.9 * estimate) break;
       budgetCell = grown;
       estimate = fewer;

@@ -112,6 +112,33 @@ TEST(UpAxisCli, AModelOverAKilometreIsNotedBesideTheJsonNotInIt) {
   EXPECT_EQ(radmesh("info " + path + " --cell 100 --units mm").output.find("the model is"), std::string::npos);
 }
 
+// A 4 x 3 m room (a floor and four walls), as drawn, or turned by `turn` degrees about z.
+std::string roomMgf(const std::string& name, const std::string& turn) {
+  const std::string path = tempPath(name);
+  std::ofstream out(path);
+  out << "m white =\n\tc\n\trd 0.5\n\ted 1\n";  // every surface glows: info needs an emitter
+  if (!turn.empty()) out << "xf -rz " << turn << "\n";
+  const char* corners[] = {"0 0", "4 0", "4 3", "0 3"};
+  for (int i = 0; i < 4; ++i)
+    out << "v f" << i << " =\n\tp " << corners[i] << " 0\nv c" << i << " =\n\tp " << corners[i] << " 2.5\n";
+  out << "f f0 f1 f2 f3\n";
+  for (int i = 0; i < 4; ++i) out << "f f" << i << " c" << i << " c" << (i + 1) % 4 << " f" << (i + 1) % 4 << "\n";
+  if (!turn.empty()) out << "xf\n";
+  return path;
+}
+
+TEST(UpAxisCli, AModelAtAnAngleToTheAxesIsMeshedOnAGridTurnedWithIt) {
+  const nlohmann::json along = infoJson(roomMgf("room.mgf", "") + " --cell 0.381");
+  const nlohmann::json turned = infoJson(roomMgf("room30.mgf", "30") + " --cell 0.381");
+  EXPECT_EQ(along["grid_turn_degrees"], 0.0);
+  EXPECT_NEAR(turned["grid_turn_degrees"].get<double>(), 30.0, 1e-9);
+  // 11 x 8 floor cells, the same turned: the world grid cut it into slivers along the walls.
+  EXPECT_EQ(along["patches"], turned["patches"]);
+  const CommandRun text = radmesh("info " + roomMgf("room30.mgf", "30") + " --cell 0.381");
+  EXPECT_NE(text.output.find("\ngrid            turned 30 degrees about z"), std::string::npos) << text.output;
+  EXPECT_EQ(radmesh("info office").output.find("\ngrid "), std::string::npos);
+}
+
 TEST(UpAxisCli, TheOfficesBakeIsYUpAndInfoDescribesItAsABake) {
   const std::string bake = tempPath("office.glb");
   const CommandRun solve = radmesh("solve office --cell 1 --resolution 32 --max-iterations 5 --quiet --out " + bake);

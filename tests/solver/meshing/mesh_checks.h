@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/meshing/grid_turn.h"
 #include "solver/meshing/patch.h"
 #include "solver/scene/scene.h"
 
@@ -25,7 +26,7 @@ inline int dominantAxis(const Vec3& n) {
 // vertices, an orthonormal right-handed frame whose n is the normal, and a bounding box inside one
 // grid cell along the two axes spanning its dominant plane. Returns false (after reporting) on
 // the first failure so that a broken mesh does not print thousands of lines.
-inline bool patchIsValid(const Patch& p, double cellM, const std::string& where) {
+inline bool patchIsValid(const Patch& p, double cellM, const std::string& where, const GridTurn& turn = {}) {
   SCOPED_TRACE(where);
   const double tol = 1e-9;
   if (p.vertexCount != 3 && p.vertexCount != 4) {
@@ -63,7 +64,8 @@ inline bool patchIsValid(const Patch& p, double cellM, const std::string& where)
     centroid += a * (v[0] + v[i] + v[i + 1]) / 3.0;
     twice += a;
   }
-  check(glm::length(centroid / twice - p.centroid) <= tol * size + 1e-9, "centroid is not the area centroid");
+  check(glm::length(centroid / twice - p.centroid) <= tol * size + 1e-9 + 8.0 * DBL_EPSILON * magnitude,
+        "centroid is not the area centroid");
   const Frame& f = p.frame;
   check(glm::length(f.n - p.normal) < 1e-12, "frame n is not the normal");
   check(std::abs(glm::dot(f.u, f.v)) < 1e-12 && std::abs(glm::dot(f.u, f.n)) < 1e-12 &&
@@ -73,31 +75,39 @@ inline bool patchIsValid(const Patch& p, double cellM, const std::string& where)
         "frame is not unit");
   check(glm::dot(glm::cross(f.u, f.v), f.n) > 0.999999, "frame is not right-handed");
   // The grid cuts along the two axes spanning the dominant plane; a 45-degree face may take
-  // either of its tied axes as dominant.
+  // either of its tied axes as dominant. The grid's axes, where it is turned.
+  std::vector<Vec3> g = v;
+  Vec3 normal = p.normal;
+  if (turn.turned()) {
+    for (Vec3& a : g) a = turn.toGrid(a);
+    normal = turn.directionToGrid(p.normal);
+  }
   const auto fitsOneCell = [&](int dropped) {
     for (int axis = 0; axis < 3; ++axis) {
       if (axis == dropped) continue;
-      double lo = v[0][axis], hi = lo;
-      for (const Vec3& a : v) {
+      double lo = g[0][axis], hi = lo;
+      for (const Vec3& a : g) {
         lo = std::min(lo, a[axis]);
         hi = std::max(hi, a[axis]);
       }
-      const double slack = 1e-9 * cellM + 1e-14 * std::abs(lo);
+      // A turned grid's coordinates are small, but carry the world coordinates' rounding.
+      const double slack = 1e-9 * cellM + 1e-14 * std::max(std::abs(lo), magnitude);
       if (std::floor((lo + slack) / cellM) != std::floor((hi - slack) / cellM)) return false;
     }
     return true;
   };
-  const int n = dominantAxis(p.normal);
+  const int n = dominantAxis(normal);
   bool fits = false;
   for (int axis = 0; axis < 3; ++axis)
-    if (std::abs(p.normal[axis]) >= std::abs(p.normal[n]) - 1e-12) fits = fits || fitsOneCell(axis);
+    if (std::abs(normal[axis]) >= std::abs(normal[n]) - 1e-12) fits = fits || fitsOneCell(axis);
   check(fits, "spans more than one grid cell");
   return ok;
 }
 
-inline void expectValidPatches(const std::vector<Patch>& patches, double cellM, const std::string& where) {
+inline void expectValidPatches(const std::vector<Patch>& patches, double cellM, const std::string& where,
+                               const GridTurn& turn = {}) {
   for (size_t i = 0; i < patches.size(); ++i)
-    if (!patchIsValid(patches[i], cellM, where + ", patch " + std::to_string(i))) return;
+    if (!patchIsValid(patches[i], cellM, where + ", patch " + std::to_string(i), turn)) return;
 }
 
 // Sum of patch areas per polygon equals the polygon's area to `relative`; each patch keeps the

@@ -97,7 +97,8 @@ TEST(CellSolver, ABuildingAtAnAngleToTheAxesLetsTheSameLightThroughItsDoors) {
   const auto [along, alongEscaped] = throughTheDoorAndEscaped(0.0);
   const auto [through, escaped] = throughTheDoorAndEscaped(30.0);
   EXPECT_LE(alongEscaped, 1e-4);
-  EXPECT_NEAR(through, along, 0.02 * along);  // 0.9 % apart: the two meshes differ
+  // The meshes and projection frames are the same turned; the cells' voxels are not: 0.2 % apart.
+  EXPECT_NEAR(through, along, 0.01 * along);
   EXPECT_LE(escaped, 1e-4);
 }
 

@@ -1,0 +1,145 @@
+#include "solver/meshing/grid_turn.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "solver/io/builtin_scenes.h"
+#include "solver/meshing/meshing.h"
+#include "tests/solver/meshing/mesh_checks.h"
+#include "tests/solver/turned_scene.h"
+
+namespace radmesh {
+namespace {
+
+using test::turnAboutVertical;
+using test::turnedAboutVertical;
+
+constexpr double kCellM = 0.381;
+
+Scene moved(Scene scene, const Vec3& by) {
+  for (Polygon& p : scene.polygons)
+    for (Vec3& v : p.vertices) v += by;
+  return scene;
+}
+
+Scene turned(Scene scene, double degrees) {
+  turnAboutVertical(scene, degrees);
+  return scene;
+}
+
+// The corner of a scene's plan, low in x and y.
+Vec3 planCorner(const Scene& scene) {
+  Vec3 low(INFINITY);
+  for (const Polygon& p : scene.polygons)
+    for (const Vec3& v : p.vertices) low = glm::min(low, v);
+  return {low.x, low.y, 0.0};
+}
+
+// The turned model's patches are the axis-aligned model's, turned and moved by shift: each matched by
+// its polygon and centroid, its corners the same up to where the fan starts (the grid's axes may
+// be a quarter turn apart).
+void expectSameMeshTurned(const std::vector<Patch>& axisAligned, const std::vector<Patch>& turned, double degrees,
+                          const Vec3& shift, double tolerance) {
+  ASSERT_EQ(axisAligned.size(), turned.size());
+  const auto moved = [&](const Vec3& p) { return turnedAboutVertical(p, degrees) + shift; };
+  std::vector<bool> matched(axisAligned.size(), false);
+  for (size_t i = 0; i < turned.size(); ++i) {
+    const Patch& b = turned[i];
+    size_t j = 0;
+    while (j < axisAligned.size() && (matched[j] || axisAligned[j].polygon != b.polygon ||
+                                      glm::length(moved(axisAligned[j].centroid) - b.centroid) > tolerance))
+      ++j;
+    ASSERT_LT(j, axisAligned.size()) << "patch " << i << " of polygon " << b.polygon << " has no match";
+    matched[j] = true;
+    const Patch& a = axisAligned[j];
+    ASSERT_EQ(a.vertexCount, b.vertexCount) << i;
+    EXPECT_NEAR(a.areaM2, b.areaM2, 1e-12 + tolerance * std::sqrt(a.areaM2)) << i;
+    for (int k = 0; k < a.vertexCount; ++k) {
+      double nearest = INFINITY;
+      for (int m = 0; m < b.vertexCount; ++m) nearest = std::min(nearest, glm::length(moved(a.vertices[k]) - b.vertices[m]));
+      ASSERT_LT(nearest, tolerance) << "patch " << i << " corner " << k;
+    }
+    EXPECT_LT(glm::length(turnedAboutVertical(a.normal, degrees) - b.normal), 10.0 * tolerance) << i;
+    // The projection frame turns too, so the shots are the same: up to a quarter turn about the
+    // normal, which maps a hemicube or a square plane onto itself (an axis of the grid's frame
+    // that a normal misses by a rounding may be taken for the other).
+    const Vec3 u = turnedAboutVertical(a.frame.u, degrees), v = turnedAboutVertical(a.frame.v, degrees);
+    double nearest = INFINITY;
+    for (const Vec3& w : {u, v, -u, -v}) nearest = std::min(nearest, glm::length(w - b.frame.u));
+    EXPECT_LT(nearest, 10.0 * tolerance) << i;
+  }
+}
+
+TEST(GridTurn, AModelAlongTheAxesKeepsTheWorldGrid) {
+  for (const char* name : {"office", "two-rooms", "cornell", "building:3x3"}) {
+    const GridTurn turn = gridTurnOf(builtinScene(name));
+    EXPECT_FALSE(turn.turned()) << name << " turned by " << turn.degrees();
+  }
+}
+
+TEST(GridTurn, AModelTurnedAboutAnyPointMeshesAsItselfUnturnedAtTheOrigin) {
+  // two-rooms has the corner of its plan at the origin, where the world grid lines cross.
+  const Scene rooms = builtinScene("two-rooms");
+  ASSERT_EQ(planCorner(rooms), Vec3(0.0));
+  for (const double degrees : {10.0, 30.0, 45.0, 75.0, 135.0, -20.0}) {
+    SCOPED_TRACE(degrees);
+    const Vec3 offset(1.234, -5.678, 0.0);
+    const Scene scene = turned(moved(rooms, offset), degrees);
+    const GridTurn turn = gridTurnOf(scene);
+    ASSERT_TRUE(turn.turned());
+    EXPECT_EQ(turn.axis, 2);
+    // Modulo a quarter turn (45 degrees may go either way): the grid's own axes are the model's
+    // turned by what is left.
+    const double left = turn.degrees();
+    EXPECT_NEAR(std::remainder(degrees - left, 90.0), 0.0, 1e-9);
+    EXPECT_LE(std::abs(left), 45.0);
+    // So the model lies in the grid as itself turned by the quarter turns, its corner at the origin.
+    const Scene quarterTurned = turned(rooms, degrees - left);
+    const Vec3 corner = planCorner(quarterTurned);
+    const std::vector<Patch> reference = meshScene(moved(quarterTurned, -corner), kCellM);
+    test::expectValidPatches(reference, kCellM, "two-rooms, quarter turns");
+    const std::vector<Patch> patches = meshScene(scene, kCellM);
+    test::expectValidPatches(patches, kCellM, "two-rooms turned", turn);
+    test::expectAreaKept(scene, patches, 1e-9, "two-rooms turned");
+    const Vec3 shift = turnedAboutVertical(corner, left) + turnedAboutVertical(offset, degrees);
+    expectSameMeshTurned(reference, patches, left, shift, 1e-11);
+  }
+}
+
+TEST(GridTurn, OneTableAtAnAngleDoesNotTurnTheGridNorDoTheRoomsTurnedFromIt) {
+  // A table top at 20 degrees in the axis-aligned rooms: the world grid stays.
+  const std::vector<Vec3> table{{0.5, 0.5, 0.75}, {1.6, 0.9, 0.75}, {1.4, 1.46, 0.75}, {0.3, 1.06, 0.75}};
+  Scene rooms = builtinScene("two-rooms");
+  rooms.polygons.push_back({table, 0, "table"});
+  EXPECT_FALSE(gridTurnOf(rooms).turned());
+  // The rooms turned by 30 degrees, the table with them: the grid turns by the rooms' 30.
+  turnAboutVertical(rooms, 30.0);
+  EXPECT_NEAR(gridTurnOf(rooms).degrees(), 30.0, 1e-9);
+}
+
+TEST(GridTurn, AModelWithYUpTurnsAboutY) {
+  Scene scene = turned(builtinScene("two-rooms"), 25.0);
+  for (Polygon& p : scene.polygons)
+    for (Vec3& v : p.vertices) v = {v.x, v.z, -v.y};
+  const GridTurn turn = gridTurnOf(scene);
+  EXPECT_EQ(turn.axis, 1);
+  EXPECT_NEAR(std::abs(turn.degrees()), 25.0, 1e-9);
+  const std::vector<Patch> patches = meshScene(scene, kCellM);
+  EXPECT_EQ(patches.size(), meshScene(builtinScene("two-rooms"), kCellM).size());
+  test::expectAreaKept(scene, patches, 1e-9, "two-rooms, y up, turned");
+}
+
+TEST(GridTurn, ATurnedModelFarFromTheOriginMeshesAsAtTheOrigin) {
+  // Site coordinates, UTM-sized: a vertex there is only known to about 1e-9 m.
+  const Scene rooms = builtinScene("two-rooms");
+  const Vec3 site(512345.678, 5012345.678, 0.0);
+  const Scene far = moved(turned(rooms, 30.0), site);
+  const std::vector<Patch> patches = meshScene(far, kCellM);
+  test::expectValidPatches(patches, kCellM, "two-rooms turned, far out", gridTurnOf(far));
+  test::expectAreaKept(far, patches, 1e-9, "two-rooms turned, far out");
+  expectSameMeshTurned(meshScene(rooms, kCellM), patches, 30.0, site, 1e-8);
+}
+
+}  // namespace
+}  // namespace radmesh
