@@ -46,8 +46,9 @@ bool drawPlot(const Plot& plot, const std::string& png) {
     return false;
   }
   std::string script = "set terminal pngcairo size 1000,700 noenhanced font 'DejaVu Sans,11'\n";
-  script += fmt::format("set output {}\nset title {}\nset xlabel {}\nset ylabel {}\n", quoted(png), quoted(plot.title),
-                        quoted(plot.xLabel), quoted(plot.yLabel));
+  // The x label ends in an empty line: gnuplot sets the key below right under it, touching.
+  script += fmt::format("set output {}\nset title {}\nset xlabel {} . \"\\n\"\nset ylabel {}\n", quoted(png),
+                        quoted(plot.title), quoted(plot.xLabel), quoted(plot.yLabel));
   script += "set grid\nset key below\n";
   if (plot.logX) script += "set logscale x\n";
   if (plot.logY) script += "set logscale y\n";

@@ -4,6 +4,11 @@
 #include <cmath>
 
 #include "cli/bench_accuracy_figures.h"
+#include "cli/plot.h"
+#include "tests/cli/cli_run.h"
+#ifdef RADMESH_HAS_VIEWER
+#include "viewer/image.h"
+#endif
 
 namespace radmesh::cli::accuracy_sweep {
 namespace {
@@ -51,6 +56,46 @@ TEST(AccuracyFigures, LabelsStayInsideTheFrameAndOffEachOther) {
   EXPECT_EQ(commands[1], "set label \"b\" at 2,5 left offset 1,-1 font ',9'");
   EXPECT_EQ(commands[2], "set label \"256², cell 0.381\" at 95,5 right offset -1,0.5 font ',9'");
 }
+
+#ifdef RADMESH_HAS_VIEWER
+// Below the frame come the tick labels, the x label and the key, each apart from the next: the key
+// of two rows sat right under the label, touching it.
+TEST(AccuracyFigures, TheXLabelStandsApartFromTheKeyBelowIt) {
+  if (!gnuplotInstalled()) GTEST_SKIP() << "gnuplot is not installed (apt-get install gnuplot-nox)";
+  Plot plot{"a figure", "CPU seconds to the unshot stop (one thread)", "RMSE", true, true, {}, {}};
+  for (int i = 0; i < 6; ++i)  // six series: a key of two rows
+    plot.series.push_back({"a series named at some length " + std::to_string(i), {{1.0 + i, 5.0 + i}}, "points"});
+  const std::string png = tempPath("figure.png");
+  ASSERT_TRUE(drawPlot(plot, png));
+  const Image image = readPng(png);
+  const auto inked = [&](int y, int x0, int x1) {
+    int n = 0;
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* p = &image.rgba[4 * (static_cast<size_t>(y) * image.width + x)];
+      n += std::min({p[0], p[1], p[2]}) < 160;
+    }
+    return n;
+  };
+  // The frame's bottom edge: the lowest row inked across most of the width.
+  int frame = image.height - 1;
+  while (frame > 0 && inked(frame, 0, image.width) < image.width / 2) --frame;
+  ASSERT_GT(frame, image.height / 2);
+  // Below it, bands of inked rows: tick labels, the x label and the key's rows, each a line of text
+  // at most (11-point type: 15 rows of pixels here). The label and the key touching make one band
+  // of two lines (28 rows).
+  std::vector<int> heights;
+  for (int y = frame + 2, run = 0; y < image.height; ++y) {
+    const bool ink = inked(y, 0, image.width) > 0;
+    if (ink) ++run;
+    if ((!ink || y + 1 == image.height) && run > 0) {
+      heights.push_back(run);
+      run = 0;
+    }
+  }
+  ASSERT_GE(heights.size(), 4u) << "tick labels, the x label and the key's rows";
+  for (size_t i = 0; i < heights.size(); ++i) EXPECT_LE(heights[i], 20) << "band " << i << " of " << heights.size();
+}
+#endif
 
 }  // namespace
 }  // namespace radmesh::cli::accuracy_sweep
