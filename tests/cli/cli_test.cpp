@@ -1359,7 +1359,7 @@ TEST(Cli, OutputsThatWouldReplaceTheSceneOrEachOtherAreRefused) {
   // A link named as a picture that leads to the scene: render and info --plan wrote through it.
   const std::string link = tempPath("link.png");
   std::filesystem::create_symlink(scene, link);
-  for (const std::string arguments : {"render " + scene + " --cell 0.2 --iterations 2 --out " + link,
+  for (const std::string& arguments : {"render " + scene + " --cell 0.2 --iterations 2 --out " + link,
                                       "info " + scene + " --plan " + link}) {
     const CommandRun run = radmesh(arguments);
     EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;

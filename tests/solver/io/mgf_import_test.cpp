@@ -244,9 +244,12 @@ TEST(MgfImport, AByteOrderMarkIsSkipped) {
 // Lines ending in CR alone (classic Mac OS) read as lines, not as one line holding the whole file
 // ("contains no polygons"); Windows' CR LF as before.
 TEST(MgfImport, LinesEndingInCrAloneOrCrLfAreRead) {
-  std::string mac = kUnitSquare + "f a b c d\n", windows = mac;
-  for (char& c : mac) c = c == '\n' ? '\r' : c;
-  for (size_t at = windows.find('\n'); at != std::string::npos; at = windows.find('\n', at + 2)) windows.insert(at, "\r");
+  std::string mac, windows;
+  for (const char c : kUnitSquare + "f a b c d\n") {
+    mac += c == '\n' ? '\r' : c;
+    if (c == '\n') windows += '\r';
+    windows += c;
+  }
   for (const std::string& text : {mac, windows}) {
     std::vector<std::string> warnings;
     const Scene s = importMgfText(text, &warnings);
