@@ -15,7 +15,6 @@
 #include "cli/solve_flags.h"
 #include "solver/radiosity/effects_plan.h"
 #include "solver/meshing/elements.h"
-#include "solver/meshing/grid_turn.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/scene_summary.h"
@@ -132,6 +131,7 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"polygons", s.polygons},
           {"patches", s.patches},
           {"cell", s.cellM},
+          {"grid_turn_degrees", s.grid.degrees()},
           {"materials", s.materials},
           {"material_list", materials},
           {"emitters", s.emitterPolygons},
@@ -158,10 +158,9 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
   fmt::print("up              {}\n", upAxisName(scene.upAxis));
   fmt::print("polygons        {}\n", s.polygons);
   fmt::print("patches         {} (cell {:.4g} m)\n", s.patches, s.cellM);
-  const GridTurn turn = gridTurnOf(scene);
-  if (turn.turned())
-    fmt::print("grid            turned {:.6g} degrees about {}, along most of the model's edges\n", turn.degrees(),
-               "xyz"[turn.axis]);
+  if (s.grid.turned())
+    fmt::print("grid            turned {:.6g} degrees about {}, along most of the model's edges\n", s.grid.degrees(),
+               "xyz"[s.grid.axis]);
   fmt::print("materials       {}\n", s.materials);
   fmt::print("emitters        {} polygons, {} patches\n", s.emitterPolygons, s.emitterPatches);
   if (s.lights > 0) fmt::print("lights          {} (no patch: each shoots once, first)\n", s.lights);
@@ -267,7 +266,6 @@ void addInfoCommand(CLI::App& app) {
       nlohmann::json j = toJson(summary, scene);
       j["cell_m"] = cell.cellM;
       j["cell_why"] = cell.why;
-      j["grid_turn_degrees"] = gridTurnOf(scene).degrees();
       // A count, as "patches" is; a double only past what a count holds exactly (a --min-element of nothing).
       j["elements"] = elements < 9e15 ? nlohmann::json(static_cast<long long>(elements)) : nlohmann::json(elements);
       j["min_element"] = args->minElementM;

@@ -199,8 +199,11 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   }
   const std::string elements =
       o.subdivide == Subdivide::Off ? "" : fmt::format(" ({} elements)", snapshot.receivers);
-  ImGui::TextWrapped("%s back end, %s %dx%d, k = %d, %zu patches%s", toString(o.backend), toString(o.projection),
-              o.resolution, o.resolution, o.shooters, snapshot.summary.patches, elements.c_str());
+  const GridTurn& grid = snapshot.summary.grid;
+  const std::string turned =
+      grid.turned() ? fmt::format(" on a grid turned {:.3g} degrees about {}", grid.degrees(), "xyz"[grid.axis]) : "";
+  ImGui::TextWrapped("%s back end, %s %dx%d, k = %d, %zu patches%s%s", toString(o.backend), toString(o.projection),
+              o.resolution, o.resolution, o.shooters, snapshot.summary.patches, elements.c_str(), turned.c_str());
   if (ImGui::Button(snapshot.playing ? "Pause" : "Play")) snapshot.playing ? solver.pause() : solver.play();
   ImGui::SameLine();
   if (ImGui::Button(snapshot.cells ? "Round 1" : "Step 1")) solver.step(1);
