@@ -52,9 +52,10 @@ struct ImageErrorProbe::State {
 
 ImageErrorProbe::ImageErrorProbe(const Scene& scene) : state_(std::make_unique<State>()) {
   const SceneFrame frame = sceneFrame(scene);
-  const RenderView start = WalkCamera(frame).view();
+  const WalkCamera camera(frame);
+  const RenderView start = camera.view();
   state_->views.push_back(start);
-  if (frame.openSide < 0) {  // the opposite corner, same height, looking at the same point
+  if (!camera.looksInFromOutside()) {  // the opposite corner, same height, looking at the same point
     RenderView opposite = start;
     const glm::dvec3 centre = 0.5 * (frame.boundsMin + frame.boundsMax);
     for (int axis = 0; axis < 3; ++axis)

@@ -25,6 +25,17 @@ glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& axis, double angle) {
 WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
   up_[frame.upAxis] = 1.0;
   speedMps = std::min(speedMps, 0.5 * sizeM());  // a model 4 mm across is crossed in seconds, not a frame
+  if (frame.planTurn.turned()) {
+    // A building drawn at an angle: the corner of its axis-aligned bounds lies outside it. It starts
+    // where it would drawn along the axes, turned back.
+    const WalkCamera along(alongItsPlan(frame));
+    eyeHeightM = along.eyeHeightM;
+    outside_ = along.outside_;
+    ground_ = frame.planTurn.toWorld(along.ground_);
+    forward_ = frame.planTurn.directionToWorld(along.forward_);
+    return;
+  }
+  outside_ = frame.openSide >= 0;
   const glm::dvec3 extent = frame.boundsMax - frame.boundsMin;
   const glm::dvec3 centre = frame.boundsMin + 0.5 * horizontal(extent, up_);  // on the floor
   if (frame.openSide >= 0) {

@@ -25,7 +25,8 @@ class WalkCamera {
   // (lower in a room under 2.7 m), looking level the longest way clear (stepIntoFreeSpace): the
   // corner of least across and along (upFrame's), unless the furniture stands on that side
   // (cornerFacingFurniture). A scene open on one side (a Cornell box) is looked into through that
-  // side from outside instead.
+  // side from outside instead. A building drawn at an angle to the axes (frame.planTurn) starts as
+  // it would drawn along them.
   explicit WalkCamera(const SceneFrame& frame);
 
   // The corner to start in, as the signs of across and along (-1 least, 1 greatest): the least,
@@ -41,7 +42,7 @@ class WalkCamera {
   // of them from the centre stood in the spine's outer wall on building:2x2.
   static constexpr double kCellReach = 0.25;
   // Whether it started outside, looking in through an open side.
-  bool looksInFromOutside() const { return frame_.openSide >= 0; }
+  bool looksInFromOutside() const { return outside_; }
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
 
@@ -67,6 +68,7 @@ class WalkCamera {
   void stepIntoFreeSpace();
 
   SceneFrame frame_;
+  bool outside_ = false;
   glm::dvec3 up_{0.0};
   glm::dvec3 ground_{0.0};   // the point on the floor plane below the eye
   glm::dvec3 forward_{0.0};  // unit view direction

@@ -59,6 +59,10 @@ SceneFrame frameOf(std::vector<FrameFace> faceList, int upAxis) {
       frame.boundsMax = glm::max(frame.boundsMax, p);
     }
   frame.openSide = openSide(faces, frame);
+  std::vector<const std::vector<Vec3>*> outlines;
+  for (const FrameFace& face : faces) outlines.push_back(&face.vertices);
+  const GridTurn turn = gridTurnOf(outlines);
+  if (turn.axis == upAxis) frame.planTurn = turn;
   // A tenth of the height clear of floor and ceiling: a raised floor or a lowered ceiling is no desk.
   const double clearM = 0.1 * frame.heightM();
   Vec3 weighted(0.0);
@@ -76,6 +80,14 @@ SceneFrame frameOf(std::vector<FrameFace> faceList, int upAxis) {
   }
   if (frame.furnitureAreaM2 > 0.0) frame.furnitureCentre = weighted / frame.furnitureAreaM2;
   return frame;
+}
+
+SceneFrame alongItsPlan(const SceneFrame& frame) {
+  if (!frame.faces) return frame;
+  std::vector<FrameFace> faces = *frame.faces;
+  for (FrameFace& face : faces)
+    for (Vec3& v : face.vertices) v = frame.planTurn.toGrid(v);
+  return frameOf(std::move(faces), frame.upAxis);
 }
 
 namespace {

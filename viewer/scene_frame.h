@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "solver/meshing/grid_turn.h"
 #include "solver/scene/scene.h"
 
 namespace radmesh {
@@ -26,11 +27,17 @@ struct SceneFrame {
   double furnitureAreaM2 = 0.0;
   // The faces it was made from (shared: frames are copied), for freeSpaceAt.
   std::shared_ptr<const std::vector<FrameFace>> faces;
+  // The plan's turn about the up axis (the meshing grid's, gridTurnOf): none for a building drawn
+  // along the axes.
+  GridTurn planTurn;
   double floorLevel() const { return boundsMin[upAxis]; }
   double heightM() const { return boundsMax[upAxis] - boundsMin[upAxis]; }
 };
 
 SceneFrame frameOf(std::vector<FrameFace> faces, int upAxis);
+// The frame of the same faces turned by the plan's turn back onto the axes (planTurn.toGrid): the
+// building as if drawn along them.
+SceneFrame alongItsPlan(const SceneFrame& frame);
 
 // Whether an eye at `eye` stands in free space: the nearest face straight above it and straight
 // below it shows it its front, and so does the nearest along each direction of the plan, if any (a

@@ -85,16 +85,24 @@ Vec3 GridTurn::toGrid(const Vec3& world) const { return directionToGrid(world - 
 Vec3 GridTurn::toWorld(const Vec3& grid) const { return directionToWorld(grid) + pivot; }
 
 GridTurn gridTurnOf(const Scene& scene) {
+  std::vector<const std::vector<Vec3>*> outlines;
+  outlines.reserve(scene.polygons.size());
+  for (const Polygon& polygon : scene.polygons) outlines.push_back(&polygon.vertices);
+  return gridTurnOf(outlines);
+}
+
+GridTurn gridTurnOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   std::array<std::vector<Edge>, 3> edges;
   double allEdges = 0.0;
   Vec3 low(INFINITY), high(-INFINITY);
-  for (const Polygon& polygon : scene.polygons) {
-    const size_t n = polygon.vertices.size();
+  for (const std::vector<Vec3>* outline : outlines) {
+    const std::vector<Vec3>& vertices = *outline;
+    const size_t n = vertices.size();
     for (size_t i = 0; i < n; ++i) {
-      const Vec3& p = polygon.vertices[i];
+      const Vec3& p = vertices[i];
       low = glm::min(low, p);
       high = glm::max(high, p);
-      const Vec3 d = polygon.vertices[(i + 1) % n] - p;
+      const Vec3 d = vertices[(i + 1) % n] - p;
       const double length = glm::length(d);
       if (!(length > 0.0)) continue;
       allEdges += length;
@@ -123,8 +131,8 @@ GridTurn gridTurnOf(const Scene& scene) {
     best.pivot = (low + high) / 2.0;
     best.pivot[best.axis] = 0.0;
     Vec3 corner(INFINITY);
-    for (const Polygon& polygon : scene.polygons)
-      for (const Vec3& v : polygon.vertices) corner = glm::min(corner, best.toGrid(v));
+    for (const std::vector<Vec3>* outline : outlines)
+      for (const Vec3& v : *outline) corner = glm::min(corner, best.toGrid(v));
     corner[best.axis] = 0.0;
     best.pivot = best.toWorld(corner);
   }

@@ -3,6 +3,8 @@
 // models are often turned about the vertical (a site plan's north); on the world grid their walls
 // would be cut into patches stretched by 1 / cos of the angle and their floors into slivers along
 // the walls. The grid stays one global grid, only turned about one world axis.
+#include <vector>
+
 #include "solver/scene/scene.h"
 
 namespace radmesh {
@@ -26,5 +28,7 @@ struct GridTurn {
 // world axes, where no one direction holds half of it, or where the edges along the turn are less
 // than a quarter of all the scene's edge length.
 GridTurn gridTurnOf(const Scene& scene);
+// The same over any outlines: a bake's triangles, the viewer's faces.
+GridTurn gridTurnOf(const std::vector<const std::vector<Vec3>*>& outlines);
 
 }  // namespace radmesh

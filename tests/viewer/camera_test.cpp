@@ -9,6 +9,7 @@
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/up_axis.h"
+#include "tests/solver/turned_scene.h"
 #include "tests/test_paths.h"
 
 namespace radmesh {
@@ -250,6 +251,31 @@ TEST(WalkCamera, TurningAClosedSceneOntoYUpTurnsItsStartView) {
       EXPECT_NEAR(after.look[c], rotateToYUp(before.look, up)[c], 1e-12) << "up " << up;
     }
     EXPECT_EQ(after.up, Vec3(0, 1, 0));
+  }
+}
+
+// A building drawn at an angle to the axes starts as it does drawn along them, turned: the corner of
+// its axis-aligned bounds lies outside it, where the start stood looking at its outer walls.
+TEST(WalkCamera, ABuildingDrawnAtAnAngleStartsInsideAsItDoesAlongTheAxes) {
+  const Scene along = loadScene("two-rooms");  // the corner of its plan at the origin
+  const RenderView before = WalkCamera(sceneFrame(along)).view();
+  for (const double degrees : {20.0, 30.0, 60.0}) {
+    SCOPED_TRACE(degrees);
+    Scene turned = along;
+    test::turnAboutVertical(turned, degrees);
+    const SceneFrame frame = sceneFrame(turned);
+    ASSERT_TRUE(frame.planTurn.turned());
+    const WalkCamera camera(frame);
+    const RenderView after = camera.view();
+    // Modulo quarter turns, the plan lies on its axes as two-rooms does, its corner at the origin,
+    // when the turn leaves it as drawn (20 and 30 degrees).
+    if (std::abs(frame.planTurn.degrees() - degrees) < 1e-9) {
+      EXPECT_LT(glm::length(after.eye - test::turnedAboutVertical(before.eye, degrees)), 1e-9);
+      EXPECT_LT(glm::length(after.look - test::turnedAboutVertical(before.look, degrees)), 1e-9);
+    }
+    EXPECT_TRUE(freeSpaceAt(frame, after.eye, 0.3)) << after.eye.x << " " << after.eye.y;
+    EXPECT_FALSE(camera.looksInFromOutside());
+    EXPECT_NEAR(after.eye.z, 1.6, 1e-9);
   }
 }
 
