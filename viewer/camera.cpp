@@ -69,13 +69,20 @@ void WalkCamera::stepIntoFreeSpace() {
   };
   const glm::dvec3 start = ground_;
   bool free = freeSpaceAt(frame_, eyeAt(start), clearM);
-  for (int ring = 1; !free && ring * kStepM <= kReachM; ++ring)  // the square rings of a grid round the start
-    for (int i = -ring; i <= ring && !free; ++i)
-      for (int j = -ring; j <= ring && !free; ++j) {
-        if (std::max(std::abs(i), std::abs(j)) != ring) continue;
-        const glm::dvec3 ground = start + kStepM * (double(i) * axes.across + double(j) * axes.along);
-        if ((free = freeSpaceAt(frame_, eyeAt(ground), clearM))) ground_ = ground;
-      }
+  const auto searchRings = [&](double step, double reach) {  // the square rings of a grid round the start
+    for (int ring = 1; !free && ring * step <= reach; ++ring)
+      for (int i = -ring; i <= ring && !free; ++i)
+        for (int j = -ring; j <= ring && !free; ++j) {
+          if (std::max(std::abs(i), std::abs(j)) != ring) continue;
+          const glm::dvec3 ground = start + step * (double(i) * axes.across + double(j) * axes.along);
+          if ((free = freeSpaceAt(frame_, eyeAt(ground), clearM))) ground_ = ground;
+        }
+  };
+  searchRings(kStepM, kReachM);
+  // A corner of the bounds far from the building (an L's or a U's missing corner): over the whole
+  // plan, in at most 16 rings (as many points as within 4 m).
+  const double plan = std::max(std::abs(glm::dot(extent, axes.across)), std::abs(glm::dot(extent, axes.along)));
+  searchRings(std::max(kStepM, plan / 16.0), plan);
   if (!free) return;
   // Looking the longest way clear to a face: towards the centre (standIn's), or every 45 degrees;
   // down a corridor, across a room, not out through a window. Towards the centre a corner of

@@ -63,8 +63,9 @@ class WalkCamera {
   double sizeM() const;  // the bounds' diagonal
   double nearM() const;  // the near plane's distance, scaled to the model
   // Where the start stands in no room (in a wall between a building's rooms, in its courtyard): to
-  // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m. In free space, looks
-  // the longest way clear to a face.
+  // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m, else on a grid of
+  // 16 steps over the plan (an L-shaped building's missing corner). In free space, looks the
+  // longest way clear to a face.
   void stepIntoFreeSpace();
 
   SceneFrame frame_;

@@ -11,10 +11,10 @@ namespace radmesh {
 
 namespace {
 
-// The vertical side of the bounds least covered by walls along it, if under half. A wall is a
-// face turned inward along the side's axis within 10% of the extent of the side's plane: real
-// walls are a little off square (the Cornell box's) or stand back from recessed doors and
-// windows (the office's, by 0.3 m).
+// The vertical side of the bounds least covered by walls facing in from it, if under half. A wall
+// is a face turned inward along the side's axis, wherever it stands: real walls are a little off
+// square (the Cornell box's), stand back from recessed doors and windows (the office's, by 0.3 m),
+// or close an L-shaped building's notch far from the side of its bounds.
 int openSide(const std::vector<FrameFace>& faces, const SceneFrame& frame) {
   const Vec3 extent = frame.boundsMax - frame.boundsMin;
   int best = -1;
@@ -22,16 +22,12 @@ int openSide(const std::vector<FrameFace>& faces, const SceneFrame& frame) {
   for (int axis = 0; axis < 3; ++axis) {
     if (axis == frame.upAxis) continue;
     const double sideArea = extent[(axis + 1) % 3] * extent[(axis + 2) % 3];
-    const double toleranceM = 0.1 * extent[axis];
     for (int end = 0; end < 2; ++end) {
-      const double plane = end == 0 ? frame.boundsMin[axis] : frame.boundsMax[axis];
       const double inward = end == 0 ? 1.0 : -1.0;
       double covered = 0.0;
       for (const FrameFace& face : faces) {
         const Vec3 area = 0.5 * newellNormal(face.vertices);
-        bool wall = inward * area[axis] >= 0.9 * glm::length(area);
-        for (const Vec3& v : face.vertices) wall = wall && std::abs(v[axis] - plane) <= toleranceM;
-        if (wall) covered += std::abs(area[axis]);
+        if (inward * area[axis] >= 0.9 * glm::length(area)) covered += std::abs(area[axis]);
       }
       const double coverage = sideArea > 0.0 ? covered / sideArea : 1.0;
       if (coverage < bestCoverage) {

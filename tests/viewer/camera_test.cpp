@@ -254,6 +254,32 @@ TEST(WalkCamera, TurningAClosedSceneOntoYUpTurnsItsStartView) {
   }
 }
 
+// A closed L-shaped room whose plan misses the corner of its bounds where the start stands, by
+// more than the 4 m searched round it: a 12 x 12 m plan without its 6 x 8 m corner at the origin.
+std::vector<FrameFace> lShapedRoom() {
+  const double h = 2.7;
+  const std::vector<glm::dvec2> plan = {{6, 0}, {12, 0}, {12, 12}, {0, 12}, {0, 8}, {6, 8}};
+  std::vector<FrameFace> faces(2);
+  for (const glm::dvec2& p : plan) faces[0].vertices.push_back({p.x, p.y, 0.0});  // the floor, facing up
+  for (auto p = plan.rbegin(); p != plan.rend(); ++p) faces[1].vertices.push_back({p->x, p->y, h});
+  for (size_t i = 0; i < plan.size(); ++i) {  // walls facing in
+    const glm::dvec2 a = plan[i], b = plan[(i + 1) % plan.size()];
+    faces.push_back({{{a.x, a.y, 0.0}, {a.x, a.y, h}, {b.x, b.y, h}, {b.x, b.y, 0.0}}});
+  }
+  return faces;
+}
+
+// It was taken for a model open on its notched sides and looked into from outside.
+TEST(WalkCamera, AnLShapedRoomStartsInsideNotAtTheCornerItMisses) {
+  const SceneFrame frame = frameOf(lShapedRoom(), 2);
+  EXPECT_EQ(frame.openSide, -1);
+  const WalkCamera camera(frame);
+  EXPECT_FALSE(camera.looksInFromOutside());
+  const RenderView view = camera.view();
+  EXPECT_TRUE(freeSpaceAt(frame, view.eye, 0.3)) << view.eye.x << " " << view.eye.y;
+  EXPECT_NEAR(view.eye.z, 1.6, 1e-12);
+}
+
 // A building drawn at an angle to the axes starts as it does drawn along them, turned: the corner of
 // its axis-aligned bounds lies outside it, where the start stood looking at its outer walls.
 TEST(WalkCamera, ABuildingDrawnAtAnAngleStartsInsideAsItDoesAlongTheAxes) {
