@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <ctime>
 
 #include "cli/counted.h"
@@ -119,6 +120,16 @@ void writePlan(const std::vector<Patch>& patches, const CellPartition& cells, in
 #endif
 }
 
+// Each turned grid: its axis, turn and how many polygons are meshed on it.
+nlohmann::json gridTurnsJson(const Grids& grids) {
+  nlohmann::json list = nlohmann::json::array();
+  for (size_t t = 0; t < grids.turns.size(); ++t)
+    list.push_back({{"axis", std::string(1, "xyz"[grids.turns[t].axis])},
+                    {"degrees", grids.turns[t].degrees()},
+                    {"polygons", std::count(grids.turnOf.begin(), grids.turnOf.end(), static_cast<int>(t))}});
+  return list;
+}
+
 nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
   nlohmann::json materials = nlohmann::json::array();
   for (const Material& m : scene.materials)
@@ -131,7 +142,8 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"polygons", s.polygons},
           {"patches", s.patches},
           {"cell", s.cellM},
-          {"grid_turn_degrees", s.grid.degrees()},
+          {"grid_turn_degrees", s.grids.principal().degrees()},
+          {"grid_turns", gridTurnsJson(s.grids)},
           {"materials", s.materials},
           {"material_list", materials},
           {"emitters", s.emitterPolygons},
@@ -158,9 +170,13 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
   fmt::print("up              {}\n", upAxisName(scene.upAxis));
   fmt::print("polygons        {}\n", s.polygons);
   fmt::print("patches         {} (cell {:.4g} m)\n", s.patches, s.cellM);
-  if (s.grid.turned())
-    fmt::print("grid            turned {:.6g} degrees about {}, along most of the model's edges\n", s.grid.degrees(),
-               "xyz"[s.grid.axis]);
+  for (size_t t = 0; t < s.grids.turns.size(); ++t) {
+    const GridTurn& turn = s.grids.turns[t];
+    const auto polygons = std::count(s.grids.turnOf.begin(), s.grids.turnOf.end(), static_cast<int>(t));
+    fmt::print("grid            turned {:.6g} degrees about {} for {}\n", turn.degrees(), "xyz"[turn.axis],
+               static_cast<size_t>(polygons) == s.polygons ? fmt::format("all {} polygons", polygons)
+                                                           : fmt::format("{} of {} polygons", polygons, s.polygons));
+  }
   fmt::print("materials       {}\n", s.materials);
   fmt::print("emitters        {} polygons, {} patches\n", s.emitterPolygons, s.emitterPatches);
   if (s.lights > 0) fmt::print("lights          {} (no patch: each shoots once, first)\n", s.lights);

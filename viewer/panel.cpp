@@ -199,7 +199,7 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   }
   const std::string elements =
       o.subdivide == Subdivide::Off ? "" : fmt::format(" ({} elements)", snapshot.receivers);
-  const GridTurn& grid = snapshot.summary.grid;
+  const GridTurn grid = snapshot.summary.grids.principal();
   const std::string turned =
       grid.turned() ? fmt::format(" on a grid turned {:.3g} degrees about {}", grid.degrees(), "xyz"[grid.axis]) : "";
   ImGui::TextWrapped("%s back end, %s %dx%d, k = %d, %zu patches%s%s", toString(o.backend), toString(o.projection),

@@ -1,5 +1,6 @@
 #include "solver/meshing/grid_turn.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -11,49 +12,71 @@ namespace {
 
 // Edges within half a degree of a direction count as along it: exported walls are that straight.
 const double kAlongRadians = 0.5 * std::numbers::pi / 180.0;
+// Directions are compared four times over, so that a quarter turn apart is the same.
+const double kAlongQuadrupled = 4.0 * kAlongRadians;
+// Of all the edge length, for a turn of its own: a wing, not tilted furniture (office3 has 14 % of
+// its edges on chairs at 15 degrees about a level axis).
+constexpr double kTurnShare = 0.25;
+constexpr int kMaxTurns = 4;
+constexpr int kBins = 360;  // of the quadrupled direction: a quarter of a degree of direction each
 
 double wrapped(double angle) { return std::remainder(angle, 2.0 * std::numbers::pi); }
 
-// An edge square to the axis: its length and its direction in the plane of the other two axes,
-// times four, so that directions a quarter turn apart are one.
+bool squareTo(const Vec3& d, double length, int axis) { return std::abs(d[axis]) <= std::sin(kAlongRadians) * length; }
+bool alongAxis(const Vec3& d, double length, int axis) { return std::abs(d[axis]) >= std::cos(kAlongRadians) * length; }
+double quadrupledDirection(const Vec3& d, int axis) {
+  return wrapped(4.0 * std::atan2(d[(axis + 2) % 3], d[(axis + 1) % 3]));
+}
+
+// An edge square to an axis, not along the world axes: its length and quadrupled direction.
 struct Edge {
   double length;
   double quadrupled;
 };
 
-struct AxisTurn {
-  double radians = 0.0;
-  double along = 0.0;    // edge length within kAlongRadians of the turn
-  double aligned = 0.0;  // edge length along the world axes
-  double total = 0.0;
-};
-
-AxisTurn turnAbout(const std::vector<Edge>& edges) {
-  AxisTurn out;
-  double c = 0.0, s = 0.0;
-  for (const Edge& e : edges) {
-    c += e.length * std::cos(e.quadrupled);
-    s += e.length * std::sin(e.quadrupled);
-    out.total += e.length;
+// The heaviest direction of the edges: the histogram's heaviest five bins, then the mean of the
+// edges near them, which stray edges (a chair at an angle) do not pull.
+double heaviestDirection(const std::vector<Edge>& edges) {
+  std::array<double, kBins> bins{};
+  const auto binOf = [](double quadrupled) {
+    return static_cast<int>(std::floor((quadrupled + std::numbers::pi) / (2.0 * std::numbers::pi) * kBins)) % kBins;
+  };
+  for (const Edge& e : edges) bins[binOf(e.quadrupled)] += e.length;
+  int peak = 0;
+  double heaviest = -1.0;
+  for (int b = 0; b < kBins; ++b) {
+    double sum = 0.0;
+    for (int k = -2; k <= 2; ++k) sum += bins[(b + k + kBins) % kBins];
+    if (sum > heaviest) heaviest = sum, peak = b;
   }
-  if (!(out.total > 0.0)) return out;
-  // The weighted mean direction, then the mean of the edges near it, which stray edges (a chair
-  // at an angle) do not pull.
-  const double mean = std::atan2(s, c);
+  const double centre = wrapped((peak + 0.5) / kBins * 2.0 * std::numbers::pi - std::numbers::pi);
   double offset = 0.0, near = 0.0;
   for (const Edge& e : edges) {
-    const double d = wrapped(e.quadrupled - mean);
-    if (std::abs(d) > 16.0 * kAlongRadians) continue;
+    const double d = wrapped(e.quadrupled - centre);
+    if (std::abs(d) > 3.0 * 2.0 * std::numbers::pi / kBins) continue;
     offset += e.length * d;
     near += e.length;
   }
-  const double quadrupled = near > 0.0 ? wrapped(mean + offset / near) : mean;
-  out.radians = quadrupled / 4.0;
-  for (const Edge& e : edges) {
-    if (std::abs(wrapped(e.quadrupled - quadrupled)) <= 4.0 * kAlongRadians) out.along += e.length;
-    if (std::abs(wrapped(e.quadrupled)) <= 4.0 * kAlongRadians) out.aligned += e.length;
+  return wrapped(centre + offset / near);
+}
+
+// The outline's edge length along the grid's axes: the turn's own axis, and the turned directions
+// square to it (the world grid: any of the world axes).
+double lengthAlong(const std::vector<Vec3>& outline, const GridTurn* turn, double quadrupled) {
+  double sum = 0.0;
+  for (size_t i = 0; i < outline.size(); ++i) {
+    const Vec3 d = outline[(i + 1) % outline.size()] - outline[i];
+    const double length = glm::length(d);
+    if (!(length > 0.0)) continue;
+    if (!turn) {
+      if (alongAxis(d, length, 0) || alongAxis(d, length, 1) || alongAxis(d, length, 2)) sum += length;
+    } else if (alongAxis(d, length, turn->axis) ||
+               (squareTo(d, length, turn->axis) &&
+                std::abs(wrapped(quadrupledDirection(d, turn->axis) - quadrupled)) <= kAlongQuadrupled)) {
+      sum += length;
+    }
   }
-  return out;
+  return sum;
 }
 
 }  // namespace
@@ -84,59 +107,107 @@ Vec3 GridTurn::toGrid(const Vec3& world) const { return directionToGrid(world - 
 
 Vec3 GridTurn::toWorld(const Vec3& grid) const { return directionToWorld(grid) + pivot; }
 
-GridTurn gridTurnOf(const Scene& scene) {
+const GridTurn& Grids::of(size_t outline) const {
+  static const GridTurn world;
+  return turnOf[outline] < 0 ? world : turns[turnOf[outline]];
+}
+
+GridTurn Grids::principal() const {
+  GridTurn best;
+  double bestM = worldEdgeM;
+  for (size_t t = 0; t < turns.size(); ++t)
+    if (edgeM[t] > bestM) best = turns[t], bestM = edgeM[t];
+  return best;
+}
+
+Grids gridsOf(const Scene& scene) {
   std::vector<const std::vector<Vec3>*> outlines;
   outlines.reserve(scene.polygons.size());
   for (const Polygon& polygon : scene.polygons) outlines.push_back(&polygon.vertices);
-  return gridTurnOf(outlines);
+  return gridsOf(outlines);
 }
 
-GridTurn gridTurnOf(const std::vector<const std::vector<Vec3>*>& outlines) {
+Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
+  // Edges square to each axis, not along the world axes.
   std::array<std::vector<Edge>, 3> edges;
   double allEdges = 0.0;
-  Vec3 low(INFINITY), high(-INFINITY);
-  for (const std::vector<Vec3>* outline : outlines) {
-    const std::vector<Vec3>& vertices = *outline;
-    const size_t n = vertices.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Vec3& p = vertices[i];
-      low = glm::min(low, p);
-      high = glm::max(high, p);
-      const Vec3 d = vertices[(i + 1) % n] - p;
+  for (const std::vector<Vec3>* outline : outlines)
+    for (size_t i = 0; i < outline->size(); ++i) {
+      const Vec3 d = (*outline)[(i + 1) % outline->size()] - (*outline)[i];
       const double length = glm::length(d);
       if (!(length > 0.0)) continue;
       allEdges += length;
-      for (int a = 0; a < 3; ++a)
-        if (std::abs(d[a]) <= std::sin(kAlongRadians) * length)
-          edges[a].push_back({length, wrapped(4.0 * std::atan2(d[(a + 2) % 3], d[(a + 1) % 3]))});
+      for (int a = 0; a < 3; ++a) {
+        if (!squareTo(d, length, a)) continue;
+        const double quadrupled = quadrupledDirection(d, a);
+        if (std::abs(quadrupled) > kAlongQuadrupled) edges[a].push_back({length, quadrupled});
+      }
     }
-  }
-  GridTurn best;
-  double bestAlong = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const AxisTurn t = turnAbout(edges[a]);
-    // A few edges that happen to lie square to an axis (a slanted roof's) do not turn the grid.
-    const bool turned = t.along >= 0.5 * t.total && t.aligned < 0.5 * t.total && t.along >= 0.25 * allEdges;
-    if (turned && t.along > bestAlong) {
-      best.axis = a;
-      best.radians = t.radians;
-      bestAlong = t.along;
+
+  // The turns, heaviest first, each taking its edges away from the next search.
+  std::vector<double> quadrupledOfTurn;
+  Grids grids;
+  for (int a = 0; a < 3; ++a)
+    while (!edges[a].empty() && static_cast<int>(grids.turns.size()) < kMaxTurns) {
+      const double quadrupled = heaviestDirection(edges[a]);
+      const auto along = [&](const Edge& e) { return std::abs(wrapped(e.quadrupled - quadrupled)) <= kAlongQuadrupled; };
+      double alongM = 0.0;
+      for (const Edge& e : edges[a]) alongM += along(e) ? e.length : 0.0;
+      if (alongM < kTurnShare * allEdges) break;
+      GridTurn turn;
+      turn.axis = a;
+      turn.radians = quadrupled / 4.0;
+      grids.turns.push_back(turn);
+      quadrupledOfTurn.push_back(quadrupled);
+      std::erase_if(edges[a], along);
     }
+
+  // Each outline on the grid most of its edge length lies along; turns no outline takes go.
+  grids.turnOf.assign(outlines.size(), -1);
+  std::vector<double> edgeM(grids.turns.size(), 0.0);
+  for (size_t i = 0; i < outlines.size(); ++i) {
+    double best = lengthAlong(*outlines[i], nullptr, 0.0);
+    for (size_t t = 0; t < grids.turns.size(); ++t) {
+      const double m = lengthAlong(*outlines[i], &grids.turns[t], quadrupledOfTurn[t]);
+      if (m > best) best = m, grids.turnOf[i] = static_cast<int>(t);
+    }
+    (grids.turnOf[i] < 0 ? grids.worldEdgeM : edgeM[grids.turnOf[i]]) += best;
   }
-  // Along the axis the grid is the world's. Across it, grid lines pass through the corner of the
-  // model's box in the grid's frame, as they pass through the world origin, where models are often
-  // drawn from: a model turned about any point meshes as itself unturned with that corner at the
-  // origin. The corner is found about the model's middle, so that site coordinates keep precision.
-  if (best.turned()) {
-    best.pivot = (low + high) / 2.0;
-    best.pivot[best.axis] = 0.0;
+  std::vector<int> kept(grids.turns.size(), -1);
+  std::vector<GridTurn> turns;
+  for (size_t t = 0; t < grids.turns.size(); ++t)
+    if (edgeM[t] > 0.0) {
+      kept[t] = static_cast<int>(turns.size());
+      turns.push_back(grids.turns[t]);
+      grids.edgeM.push_back(edgeM[t]);
+    }
+  grids.turns = std::move(turns);
+  for (int& t : grids.turnOf) t = t < 0 ? -1 : kept[t];
+
+  // Along its axis a turned grid is the world's. Across it, its lines pass through the corner of
+  // its outlines' box in its frame: a model turned about any point meshes as itself unturned with
+  // that corner at the origin. The corner is found about the outlines' middle, so that site
+  // coordinates keep their precision.
+  for (size_t t = 0; t < grids.turns.size(); ++t) {
+    GridTurn& turn = grids.turns[t];
+    Vec3 low(INFINITY), high(-INFINITY);
+    for (size_t i = 0; i < outlines.size(); ++i)
+      if (grids.turnOf[i] == static_cast<int>(t))
+        for (const Vec3& v : *outlines[i]) low = glm::min(low, v), high = glm::max(high, v);
+    turn.pivot = (low + high) / 2.0;
+    turn.pivot[turn.axis] = 0.0;
     Vec3 corner(INFINITY);
-    for (const std::vector<Vec3>* outline : outlines)
-      for (const Vec3& v : *outline) corner = glm::min(corner, best.toGrid(v));
-    corner[best.axis] = 0.0;
-    best.pivot = best.toWorld(corner);
+    for (size_t i = 0; i < outlines.size(); ++i)
+      if (grids.turnOf[i] == static_cast<int>(t))
+        for (const Vec3& v : *outlines[i]) corner = glm::min(corner, turn.toGrid(v));
+    corner[turn.axis] = 0.0;
+    turn.pivot = turn.toWorld(corner);
   }
-  return best;
+  return grids;
 }
+
+GridTurn gridTurnOf(const Scene& scene) { return gridsOf(scene).principal(); }
+
+GridTurn gridTurnOf(const std::vector<const std::vector<Vec3>*>& outlines) { return gridsOf(outlines).principal(); }
 
 }  // namespace radmesh

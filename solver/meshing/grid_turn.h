@@ -1,8 +1,9 @@
 #pragma once
 // The meshing grid turned to follow a building drawn at an angle to the world axes. Architects'
-// models are often turned about the vertical (a site plan's north); on the world grid their walls
-// would be cut into patches stretched by 1 / cos of the angle and their floors into slivers along
-// the walls. The grid stays one global grid, only turned about one world axis.
+// models are often turned about the vertical (a site plan's north), or have wings at an angle to
+// each other; on the world grid such walls would be cut into patches stretched by 1 / cos of the
+// angle and floors into slivers along the walls. Each polygon is meshed on the world grid or on one
+// of a few turned ones, each turned about one world axis: the one most of its edges lie along.
 #include <vector>
 
 #include "solver/scene/scene.h"
@@ -12,7 +13,7 @@ namespace radmesh {
 struct GridTurn {
   int axis = 2;          // the world axis the grid is turned about
   double radians = 0.0;  // 0: the world grid itself, bit for bit
-  Vec3 pivot{0.0};       // the point the grid turns about: a grid corner, at the model's corner
+  Vec3 pivot{0.0};       // the point the grid turns about: a grid corner, at its polygons' corner
 
   bool turned() const { return radians != 0.0; }
   double degrees() const;
@@ -23,12 +24,30 @@ struct GridTurn {
   Vec3 directionToWorld(const Vec3& grid) const;
 };
 
-// The turn, about one world axis, of most of the length of the scene's edges square to that axis,
-// modulo a quarter turn. The world grid where at least half of that length already lies along the
-// world axes, where no one direction holds half of it, or where the edges along the turn are less
-// than a quarter of all the scene's edge length.
+// The grids of a model's polygons (outlines).
+struct Grids {
+  std::vector<GridTurn> turns;  // the turned ones; the world grid is not among them
+  std::vector<int> turnOf;      // per outline: an index into turns, or -1 for the world grid
+  std::vector<double> edgeM;    // per turn: the length of the edges of its outlines along it
+  double worldEdgeM = 0.0;      // the same for the outlines on the world grid
+
+  const GridTurn& of(size_t outline) const;
+  // The turn most of the model's edge length lies along, or none where the world grid's is more.
+  GridTurn principal() const;
+};
+
+// A turn is a direction about one world axis, modulo a quarter turn, along which (within half a
+// degree) lie at least a quarter of all the model's edge length, edges square to the axis; up to
+// four of them. An outline goes on the grid (world or turned) whose axes the most of its edge
+// length lies along, the world's on a tie, so a model along the axes keeps the world grid. A
+// turned grid's lines pass through the corner of its outlines' box in its frame, as the world
+// grid's pass through the origin, where models are often drawn from.
+Grids gridsOf(const Scene& scene);
+Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines);
+
+// The principal turn (Grids::principal) of a scene or of any outlines (a bake's triangles, the
+// viewer's faces).
 GridTurn gridTurnOf(const Scene& scene);
-// The same over any outlines: a bake's triangles, the viewer's faces.
 GridTurn gridTurnOf(const std::vector<const std::vector<Vec3>*>& outlines);
 
 }  // namespace radmesh

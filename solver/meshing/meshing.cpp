@@ -43,6 +43,7 @@ struct PolygonFrame {
 // One polygon cut into convex pieces, in its own frame, before slicing.
 struct PreparedPolygon {
   PolygonFrame frame;  // in the grid's frame: the world's unless the grid is turned
+  GridTurn turn;
   Vec3 worldNormal{0.0};
   Frame patchFrame;
   std::vector<std::vector<Vec2>> pieces;
@@ -75,6 +76,7 @@ PreparedPolygon prepare(const Scene& scene, size_t index, double cellM, const Gr
   const std::vector<Vec3>& vertices = turn.turned() ? turned : worldVertices;
   const Vec3 newell = turn.turned() ? newellNormal(vertices) : worldNewell;
   PreparedPolygon out;
+  out.turn = turn;
   out.worldNormal = worldNewell / length;
   PolygonFrame& f = out.frame;
   f.unitNormal = newell / glm::length(newell);
@@ -183,8 +185,9 @@ void startAtLowestVertex(std::vector<Vec2>& p) {
   std::rotate(p.begin(), std::min_element(p.begin(), p.end(), lower), p.end());
 }
 
-Patch makePatch(const PreparedPolygon& prepared, const GridTurn& turn, const std::vector<Vec2>& q, double area2d,
-                int material, int polygon) {
+Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, double area2d, int material,
+                int polygon) {
+  const GridTurn& turn = prepared.turn;
   const PolygonFrame& f = prepared.frame;
   Patch patch;
   patch.vertexCount = static_cast<int>(q.size());
@@ -207,12 +210,12 @@ Patch makePatch(const PreparedPolygon& prepared, const GridTurn& turn, const std
 
 // How many patches the cell makes, from above (cellEstimate), each polygon prepared for it;
 // `prepared` and `areaM2` (the pieces' projected area) are filled when given.
-double patchEstimate(const Scene& scene, double cellM, const GridTurn& turn,
+double patchEstimate(const Scene& scene, double cellM, const Grids& grids,
                      std::vector<PreparedPolygon>* prepared = nullptr, double* areaM2 = nullptr) {
   if (prepared) prepared->reserve(scene.polygons.size());
   double estimate = 0.0;
   for (size_t i = 0; i < scene.polygons.size(); ++i) {
-    PreparedPolygon p = prepare(scene, i, cellM, turn);
+    PreparedPolygon p = prepare(scene, i, cellM, grids.of(i));
     for (const auto& piece : p.pieces) {
       estimate += cellEstimate(piece, cellM, p.noiseM);
       if (areaM2) *areaM2 += signedArea(piece);
@@ -234,8 +237,7 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
     refuseCount(sceneAreaM2 / (cellM * cellM), cellM, maxPatches, sceneAreaM2);
   std::vector<PreparedPolygon> prepared;
   double areaM2 = 0.0;
-  const GridTurn turn = gridTurnOf(scene);
-  const double estimate = patchEstimate(scene, cellM, turn, &prepared, &areaM2);
+  const double estimate = patchEstimate(scene, cellM, gridsOf(scene), &prepared, &areaM2);
   // Refuse before slicing: a tiny cell must fail fast, not exhaust memory.
   if (!(estimate <= static_cast<double>(maxPatches))) refuseCount(estimate, cellM, maxPatches, areaM2);
 
@@ -253,7 +255,7 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
           if (!(area2d > p.sliverAreaM2)) continue;  // a zero-area sliver of clipping
           if (patches.size() >= maxPatches)
             refuseCount(std::max(estimate, maxPatches + 1.0), cellM, maxPatches, areaM2);
-          patches.push_back(makePatch(p, turn, q, area2d, scene.polygons[i].material, static_cast<int>(i)));
+          patches.push_back(makePatch(p, q, area2d, scene.polygons[i].material, static_cast<int>(i)));
         }
       }
     }
@@ -296,11 +298,11 @@ CellChoice chooseCell(const Scene& scene) {
     // building's walls: three times as many): grow the cell until the count itself fits.
     // The estimate is from above: "about" allows it a quarter over. Where the polygons alone are
     // most of the count, a larger cell stops helping: the cell stays where it did.
-    const GridTurn turn = gridTurnOf(scene);
-    double estimate = patchEstimate(scene, budgetCell, turn);
+    const Grids grids = gridsOf(scene);
+    double estimate = patchEstimate(scene, budgetCell, grids);
     for (int step = 0; step < 20 && estimate > 1.25 * kCellPatchBudget; ++step) {
       const double grown = budgetCell * std::min(2.0, estimate / kCellPatchBudget);
-      const double fewer = patchEstimate(scene, grown, turn);
+      const double fewer = patchEstimate(scene, grown, grids);
       if (fewer > 0.9 * estimate) break;
       budgetCell = grown;
       estimate = fewer;

@@ -32,8 +32,8 @@ void checkCell(double cellM);
 
 // Every polygon is cut by the planes x = k*cell, y = k*cell, z = k*cell that cross its face (the
 // two axes spanning its dominant plane) into convex pieces within one cell each, then into
-// triangles and convex quads. The grid is the world's, or turned to follow a model drawn at an
-// angle to the world axes (gridTurnOf, solver/meshing/grid_turn.h). Area, orientation and
+// triangles and convex quads. The grid is the world's, or turned to follow a model or a wing
+// drawn at an angle to the world axes (gridsOf, solver/meshing/grid_turn.h). Area, orientation and
 // material are kept. Throws OptionError for a cell that is not finite and positive, or that would
 // make more than `maxPatches` patches.
 std::vector<Patch> meshScene(const Scene& scene, double cellM = kDefaultCellM,

@@ -10,7 +10,7 @@ SceneSummary summarizeScene(const Scene& scene, const std::vector<Patch>& patche
   s.patches = patches.size();
   s.materials = scene.materials.size();
   s.cellM = cellM;
-  s.grid = gridTurnOf(scene);
+  s.grids = gridsOf(scene);
   s.boundsMin = Vec3(std::numeric_limits<double>::infinity());
   s.boundsMax = -s.boundsMin;
   for (const Polygon& p : scene.polygons) {

@@ -21,7 +21,7 @@ struct SceneSummary {
   double totalAreaM2 = 0.0;
   double emittedPowerW = 0.0;  // summed over RGB
   double cellM = 0.0;
-  GridTurn grid;  // the meshing grid's turn: none for a model along the axes
+  Grids grids;  // the meshing grids: the world's alone for a model along the axes
 };
 
 SceneSummary summarizeScene(const Scene& scene, const std::vector<Patch>& patches, double cellM);

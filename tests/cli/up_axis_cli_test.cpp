@@ -132,10 +132,15 @@ TEST(UpAxisCli, AModelAtAnAngleToTheAxesIsMeshedOnAGridTurnedWithIt) {
   const nlohmann::json turned = infoJson(roomMgf("room30.mgf", "30") + " --cell 0.381");
   EXPECT_EQ(along["grid_turn_degrees"], 0.0);
   EXPECT_NEAR(turned["grid_turn_degrees"].get<double>(), 30.0, 1e-9);
+  EXPECT_EQ(along["grid_turns"].size(), 0u);
+  ASSERT_EQ(turned["grid_turns"].size(), 1u);
+  EXPECT_EQ(turned["grid_turns"][0]["axis"], "z");
+  EXPECT_EQ(turned["grid_turns"][0]["polygons"], 5);  // the floor and the four walls
   // 11 x 8 floor cells, the same turned: the world grid cut it into slivers along the walls.
   EXPECT_EQ(along["patches"], turned["patches"]);
   const CommandRun text = radmesh("info " + roomMgf("room30.mgf", "30") + " --cell 0.381");
-  EXPECT_NE(text.output.find("\ngrid            turned 30 degrees about z"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("\ngrid            turned 30 degrees about z for all 5 polygons\n"), std::string::npos)
+      << text.output;
   EXPECT_EQ(radmesh("info office").output.find("\ngrid "), std::string::npos);
 }
 

@@ -113,9 +113,34 @@ TEST(GridTurn, OneTableAtAnAngleDoesNotTurnTheGridNorDoTheRoomsTurnedFromIt) {
   Scene rooms = builtinScene("two-rooms");
   rooms.polygons.push_back({table, 0, "table"});
   EXPECT_FALSE(gridTurnOf(rooms).turned());
+  EXPECT_TRUE(gridsOf(rooms).turns.empty());  // nor has the table a grid of its own
   // The rooms turned by 30 degrees, the table with them: the grid turns by the rooms' 30.
   turnAboutVertical(rooms, 30.0);
   EXPECT_NEAR(gridTurnOf(rooms).degrees(), 30.0, 1e-9);
+}
+
+// A building of two wings, one along the axes and one at 30 degrees to them: each is meshed on its
+// own grid, as it would be alone.
+TEST(GridTurn, EachWingOfABuildingIsMeshedOnItsOwnGrid) {
+  const Scene along = builtinScene("two-rooms");
+  const Scene wing = moved(turned(along, 30.0), Vec3(14.0, 3.0, 0.0));
+  Scene building = along;
+  building.polygons.insert(building.polygons.end(), wing.polygons.begin(), wing.polygons.end());
+  const Grids grids = gridsOf(building);
+  ASSERT_EQ(grids.turns.size(), 1u);
+  EXPECT_NEAR(grids.turns[0].degrees(), 30.0, 1e-9);
+  for (size_t i = 0; i < building.polygons.size(); ++i)
+    EXPECT_EQ(grids.turnOf[i], i < along.polygons.size() ? -1 : 0) << "polygon " << i;
+  const std::vector<Patch> patches = meshScene(building, kCellM);
+  const std::vector<Patch> first = meshScene(along, kCellM), second = meshScene(wing, kCellM);
+  ASSERT_EQ(patches.size(), first.size() + second.size());
+  for (size_t k = 0; k < patches.size(); ++k) {
+    const bool inFirst = k < first.size();
+    const Patch& alone = inFirst ? first[k] : second[k - first.size()];
+    ASSERT_EQ(patches[k].vertexCount, alone.vertexCount) << k;
+    for (int v = 0; v < alone.vertexCount; ++v) ASSERT_EQ(patches[k].vertices[v], alone.vertices[v]) << k;
+    EXPECT_EQ(patches[k].frame.u, alone.frame.u) << k;
+  }
 }
 
 TEST(GridTurn, AModelWithYUpTurnsAboutY) {
