@@ -83,7 +83,9 @@ SceneFrame alongItsPlan(const SceneFrame& frame) {
   std::vector<FrameFace> faces = *frame.faces;
   for (FrameFace& face : faces)
     for (Vec3& v : face.vertices) v = frame.planTurn.toGrid(v);
-  return frameOf(std::move(faces), frame.upAxis);
+  SceneFrame along = frameOf(std::move(faces), frame.upAxis);
+  along.planTurn = {};  // along its plan by construction: the camera placed in it turns no further
+  return along;
 }
 
 namespace {
