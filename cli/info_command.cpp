@@ -3,7 +3,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <ctime>
 
 #include "cli/counted.h"
@@ -126,7 +125,7 @@ nlohmann::json gridTurnsJson(const Grids& grids) {
   for (size_t t = 0; t < grids.turns.size(); ++t)
     list.push_back({{"axis", std::string(1, "xyz"[grids.turns[t].axis])},
                     {"degrees", grids.turns[t].degrees()},
-                    {"polygons", std::count(grids.turnOf.begin(), grids.turnOf.end(), static_cast<int>(t))}});
+                    {"polygons", grids.outlinesOn(t)}});
   return list;
 }
 
@@ -172,9 +171,9 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
   fmt::print("patches         {} (cell {:.4g} m)\n", s.patches, s.cellM);
   for (size_t t = 0; t < s.grids.turns.size(); ++t) {
     const GridTurn& turn = s.grids.turns[t];
-    const auto polygons = std::count(s.grids.turnOf.begin(), s.grids.turnOf.end(), static_cast<int>(t));
+    const size_t polygons = s.grids.outlinesOn(t);
     fmt::print("grid            turned {:.6g} degrees about {} for {}\n", turn.degrees(), "xyz"[turn.axis],
-               static_cast<size_t>(polygons) == s.polygons ? fmt::format("all {} polygons", polygons)
+               polygons == s.polygons ? fmt::format("all {} polygons", polygons)
                                                            : fmt::format("{} of {} polygons", polygons, s.polygons));
   }
   fmt::print("materials       {}\n", s.materials);

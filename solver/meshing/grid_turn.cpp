@@ -62,7 +62,7 @@ double heaviestDirection(const std::vector<Edge>& edges) {
 
 // The outline's edge length along the grid's axes: the turn's own axis, and the turned directions
 // square to it (the world grid: any of the world axes).
-double lengthAlong(const std::vector<Vec3>& outline, const GridTurn* turn, double quadrupled) {
+double lengthAlong(const std::vector<Vec3>& outline, const GridTurn* turn) {
   double sum = 0.0;
   for (size_t i = 0; i < outline.size(); ++i) {
     const Vec3 d = outline[(i + 1) % outline.size()] - outline[i];
@@ -72,36 +72,31 @@ double lengthAlong(const std::vector<Vec3>& outline, const GridTurn* turn, doubl
       if (alongAxis(d, length, 0) || alongAxis(d, length, 1) || alongAxis(d, length, 2)) sum += length;
     } else if (alongAxis(d, length, turn->axis) ||
                (squareTo(d, length, turn->axis) &&
-                std::abs(wrapped(quadrupledDirection(d, turn->axis) - quadrupled)) <= kAlongQuadrupled)) {
+                std::abs(wrapped(quadrupledDirection(d, turn->axis) - 4.0 * turn->radians)) <= kAlongQuadrupled)) {
       sum += length;
     }
   }
   return sum;
 }
 
+// A direction turned by `radians` about a world axis, counter-clockwise seen from its tip.
+Vec3 turnedAbout(const Vec3& d, int axis, double radians) {
+  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+  const double c = std::cos(radians), s = std::sin(radians);
+  Vec3 out;
+  out[axis] = d[axis];
+  out[a1] = c * d[a1] - s * d[a2];
+  out[a2] = s * d[a1] + c * d[a2];
+  return out;
+}
+
 }  // namespace
 
 double GridTurn::degrees() const { return radians * 180.0 / std::numbers::pi; }
 
-Vec3 GridTurn::directionToGrid(const Vec3& world) const {
-  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-  const double c = std::cos(radians), s = std::sin(radians);
-  Vec3 grid;
-  grid[axis] = world[axis];
-  grid[a1] = c * world[a1] + s * world[a2];
-  grid[a2] = -s * world[a1] + c * world[a2];
-  return grid;
-}
+Vec3 GridTurn::directionToGrid(const Vec3& world) const { return turnedAbout(world, axis, -radians); }
 
-Vec3 GridTurn::directionToWorld(const Vec3& grid) const {
-  const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-  const double c = std::cos(radians), s = std::sin(radians);
-  Vec3 world;
-  world[axis] = grid[axis];
-  world[a1] = c * grid[a1] - s * grid[a2];
-  world[a2] = s * grid[a1] + c * grid[a2];
-  return world;
-}
+Vec3 GridTurn::directionToWorld(const Vec3& grid) const { return turnedAbout(grid, axis, radians); }
 
 Vec3 GridTurn::toGrid(const Vec3& world) const { return directionToGrid(world - pivot); }
 
@@ -110,6 +105,10 @@ Vec3 GridTurn::toWorld(const Vec3& grid) const { return directionToWorld(grid) +
 const GridTurn& Grids::of(size_t outline) const {
   static const GridTurn world;
   return turnOf[outline] < 0 ? world : turns[turnOf[outline]];
+}
+
+size_t Grids::outlinesOn(size_t turn) const {
+  return static_cast<size_t>(std::count(turnOf.begin(), turnOf.end(), static_cast<int>(turn)));
 }
 
 GridTurn Grids::principal() const {
@@ -145,7 +144,6 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
     }
 
   // The turns, heaviest first, each taking its edges away from the next search.
-  std::vector<double> quadrupledOfTurn;
   Grids grids;
   for (int a = 0; a < 3; ++a)
     while (!edges[a].empty() && static_cast<int>(grids.turns.size()) < kMaxTurns) {
@@ -158,7 +156,6 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
       turn.axis = a;
       turn.radians = quadrupled / 4.0;
       grids.turns.push_back(turn);
-      quadrupledOfTurn.push_back(quadrupled);
       std::erase_if(edges[a], along);
     }
 
@@ -166,9 +163,9 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   grids.turnOf.assign(outlines.size(), -1);
   std::vector<double> edgeM(grids.turns.size(), 0.0);
   for (size_t i = 0; i < outlines.size(); ++i) {
-    double best = lengthAlong(*outlines[i], nullptr, 0.0);
+    double best = lengthAlong(*outlines[i], nullptr);
     for (size_t t = 0; t < grids.turns.size(); ++t) {
-      const double m = lengthAlong(*outlines[i], &grids.turns[t], quadrupledOfTurn[t]);
+      const double m = lengthAlong(*outlines[i], &grids.turns[t]);
       if (m > best) best = m, grids.turnOf[i] = static_cast<int>(t);
     }
     (grids.turnOf[i] < 0 ? grids.worldEdgeM : edgeM[grids.turnOf[i]]) += best;

@@ -32,6 +32,7 @@ struct Grids {
   double worldEdgeM = 0.0;      // the same for the outlines on the world grid
 
   const GridTurn& of(size_t outline) const;
+  size_t outlinesOn(size_t turn) const;  // how many outlines are meshed on turns[turn]
   // The turn most of the model's edge length lies along, or none where the world grid's is more.
   GridTurn principal() const;
 };
