@@ -119,13 +119,14 @@ void writePlan(const std::vector<Patch>& patches, const CellPartition& cells, in
 #endif
 }
 
-// Each turned grid: its axis, turn and how many polygons are meshed on it.
+// Each of the model's turned grids: its axis, turn and how many polygons are meshed on it.
 nlohmann::json gridTurnsJson(const Grids& grids) {
   nlohmann::json list = nlohmann::json::array();
   for (size_t t = 0; t < grids.turns.size(); ++t)
-    list.push_back({{"axis", std::string(1, "xyz"[grids.turns[t].axis])},
-                    {"degrees", grids.turns[t].degrees()},
-                    {"polygons", grids.outlinesOn(t)}});
+    if (!grids.turns[t].own)
+      list.push_back({{"axis", std::string(1, "xyz"[grids.turns[t].axis])},
+                      {"degrees", grids.turns[t].degrees()},
+                      {"polygons", grids.outlinesOn(t)}});
   return list;
 }
 
@@ -143,6 +144,7 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
           {"cell", s.cellM},
           {"grid_turn_degrees", s.grids.principal().degrees()},
           {"grid_turns", gridTurnsJson(s.grids)},
+          {"own_grid_polygons", s.grids.outlinesOnOwnGrids()},
           {"materials", s.materials},
           {"material_list", materials},
           {"emitters", s.emitterPolygons},
@@ -171,11 +173,15 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
   fmt::print("patches         {} (cell {:.4g} m)\n", s.patches, s.cellM);
   for (size_t t = 0; t < s.grids.turns.size(); ++t) {
     const GridTurn& turn = s.grids.turns[t];
+    if (turn.own) continue;
     const size_t polygons = s.grids.outlinesOn(t);
     fmt::print("grid            turned {:.6g} degrees about {} for {}\n", turn.degrees(), "xyz"[turn.axis],
                polygons == s.polygons ? fmt::format("all {} polygons", polygons)
                                                            : fmt::format("{} of {} polygons", polygons, s.polygons));
   }
+  if (const size_t own = s.grids.outlinesOnOwnGrids())
+    fmt::print("grid            its own for {} polygons along no other (the facets of a curve, furniture at an angle)\n",
+               own);
   fmt::print("materials       {}\n", s.materials);
   fmt::print("emitters        {} polygons, {} patches\n", s.emitterPolygons, s.emitterPatches);
   if (s.lights > 0) fmt::print("lights          {} (no patch: each shoots once, first)\n", s.lights);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace radmesh {
@@ -18,6 +19,8 @@ const double kAlongQuadrupled = 4.0 * kAlongRadians;
 // its edges on chairs at 15 degrees about a level axis).
 constexpr double kTurnShare = 0.25;
 constexpr int kMaxTurns = 4;
+// Directions an outline's own grid may take: those of its longest edges.
+constexpr size_t kOwnCandidates = 8;
 constexpr int kBins = 360;  // of the quadrupled direction: a quarter of a degree of direction each
 
 double wrapped(double angle) { return std::remainder(angle, 2.0 * std::numbers::pi); }
@@ -90,6 +93,56 @@ Vec3 turnedAbout(const Vec3& d, int axis, double radians) {
   return out;
 }
 
+// Along its axis a turned grid is the world's. Across it, its lines pass through the corner of its
+// outlines' box in its frame: outlines turned about any point mesh as themselves unturned with that
+// corner at the origin. The corner is found about the outlines' middle, so that site coordinates
+// keep their precision.
+void placePivot(GridTurn& turn, const std::vector<const std::vector<Vec3>*>& outlines) {
+  Vec3 low(INFINITY), high(-INFINITY);
+  for (const std::vector<Vec3>* outline : outlines)
+    for (const Vec3& v : *outline) low = glm::min(low, v), high = glm::max(high, v);
+  turn.pivot = (low + high) / 2.0;
+  turn.pivot[turn.axis] = 0.0;
+  Vec3 corner(INFINITY);
+  for (const std::vector<Vec3>* outline : outlines)
+    for (const Vec3& v : *outline) corner = glm::min(corner, turn.toGrid(v));
+  corner[turn.axis] = 0.0;
+  turn.pivot = turn.toWorld(corner);
+}
+
+// The outline's own grid: of the directions of its longest edges square to a world axis (not along
+// the world's), the one the most of its edge length lies along, where that is more than `than`.
+std::optional<GridTurn> ownGrid(const std::vector<Vec3>& outline, double than) {
+  struct Candidate {
+    double length;
+    GridTurn turn;
+  };
+  std::vector<Candidate> candidates;
+  for (size_t i = 0; i < outline.size(); ++i) {
+    const Vec3 d = outline[(i + 1) % outline.size()] - outline[i];
+    const double length = glm::length(d);
+    if (!(length > 0.0)) continue;
+    for (int a = 0; a < 3; ++a) {
+      if (!squareTo(d, length, a)) continue;
+      const double quadrupled = quadrupledDirection(d, a);
+      if (std::abs(quadrupled) > kAlongQuadrupled) candidates.push_back({length, {a, quadrupled / 4.0}});
+    }
+  }
+  const size_t kept = std::min(candidates.size(), kOwnCandidates);
+  std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(kept), candidates.end(),
+                    [](const Candidate& x, const Candidate& y) { return x.length > y.length; });
+  std::optional<GridTurn> best;
+  for (size_t c = 0; c < kept; ++c) {
+    const double m = lengthAlong(outline, &candidates[c].turn);
+    if (m > than) than = m, best = candidates[c].turn;
+  }
+  if (best) {
+    best->own = true;
+    placePivot(*best, {&outline});
+  }
+  return best;
+}
+
 }  // namespace
 
 double GridTurn::degrees() const { return radians * 180.0 / std::numbers::pi; }
@@ -111,11 +164,15 @@ size_t Grids::outlinesOn(size_t turn) const {
   return static_cast<size_t>(std::count(turnOf.begin(), turnOf.end(), static_cast<int>(turn)));
 }
 
+size_t Grids::outlinesOnOwnGrids() const {
+  return static_cast<size_t>(std::count_if(turns.begin(), turns.end(), [](const GridTurn& t) { return t.own; }));
+}
+
 GridTurn Grids::principal() const {
   GridTurn best;
   double bestM = worldEdgeM;
   for (size_t t = 0; t < turns.size(); ++t)
-    if (edgeM[t] > bestM) best = turns[t], bestM = edgeM[t];
+    if (!turns[t].own && edgeM[t] > bestM) best = turns[t], bestM = edgeM[t];
   return best;
 }
 
@@ -159,16 +216,24 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
       std::erase_if(edges[a], along);
     }
 
-  // Each outline on the grid most of its edge length lies along; turns no outline takes go.
+  // Each outline on the grid most of its edge length lies along, or on its own (ownGrid); turns
+  // no outline takes go.
+  const size_t modelTurns = grids.turns.size();
   grids.turnOf.assign(outlines.size(), -1);
-  std::vector<double> edgeM(grids.turns.size(), 0.0);
+  std::vector<double> edgeM(modelTurns, 0.0);
   for (size_t i = 0; i < outlines.size(); ++i) {
     double best = lengthAlong(*outlines[i], nullptr);
-    for (size_t t = 0; t < grids.turns.size(); ++t) {
+    for (size_t t = 0; t < modelTurns; ++t) {
       const double m = lengthAlong(*outlines[i], &grids.turns[t]);
       if (m > best) best = m, grids.turnOf[i] = static_cast<int>(t);
     }
-    (grids.turnOf[i] < 0 ? grids.worldEdgeM : edgeM[grids.turnOf[i]]) += best;
+    if (const std::optional<GridTurn> own = ownGrid(*outlines[i], best)) {
+      grids.turnOf[i] = static_cast<int>(grids.turns.size());
+      grids.turns.push_back(*own);
+      edgeM.push_back(lengthAlong(*outlines[i], &*own));
+    } else {
+      (grids.turnOf[i] < 0 ? grids.worldEdgeM : edgeM[grids.turnOf[i]]) += best;
+    }
   }
   std::vector<int> kept(grids.turns.size(), -1);
   std::vector<GridTurn> turns;
@@ -181,25 +246,12 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   grids.turns = std::move(turns);
   for (int& t : grids.turnOf) t = t < 0 ? -1 : kept[t];
 
-  // Along its axis a turned grid is the world's. Across it, its lines pass through the corner of
-  // its outlines' box in its frame: a model turned about any point meshes as itself unturned with
-  // that corner at the origin. The corner is found about the outlines' middle, so that site
-  // coordinates keep their precision.
-  for (size_t t = 0; t < grids.turns.size(); ++t) {
-    GridTurn& turn = grids.turns[t];
-    Vec3 low(INFINITY), high(-INFINITY);
-    for (size_t i = 0; i < outlines.size(); ++i)
-      if (grids.turnOf[i] == static_cast<int>(t))
-        for (const Vec3& v : *outlines[i]) low = glm::min(low, v), high = glm::max(high, v);
-    turn.pivot = (low + high) / 2.0;
-    turn.pivot[turn.axis] = 0.0;
-    Vec3 corner(INFINITY);
-    for (size_t i = 0; i < outlines.size(); ++i)
-      if (grids.turnOf[i] == static_cast<int>(t))
-        for (const Vec3& v : *outlines[i]) corner = glm::min(corner, turn.toGrid(v));
-    corner[turn.axis] = 0.0;
-    turn.pivot = turn.toWorld(corner);
-  }
+  // The model's turns' pivots (ownGrid placed the outlines' own).
+  std::vector<std::vector<const std::vector<Vec3>*>> on(grids.turns.size());
+  for (size_t i = 0; i < outlines.size(); ++i)
+    if (grids.turnOf[i] >= 0 && !grids.turns[grids.turnOf[i]].own) on[grids.turnOf[i]].push_back(outlines[i]);
+  for (size_t t = 0; t < grids.turns.size(); ++t)
+    if (!grids.turns[t].own) placePivot(grids.turns[t], on[t]);
   return grids;
 }
 

@@ -14,6 +14,7 @@ struct GridTurn {
   int axis = 2;          // the world axis the grid is turned about
   double radians = 0.0;  // 0: the world grid itself, bit for bit
   Vec3 pivot{0.0};       // the point the grid turns about: a grid corner, at its polygons' corner
+  bool own = false;      // one outline's own grid: it lies along none of the model's grids
 
   bool turned() const { return radians != 0.0; }
   double degrees() const;
@@ -26,13 +27,14 @@ struct GridTurn {
 
 // The grids of a model's polygons (outlines).
 struct Grids {
-  std::vector<GridTurn> turns;  // the turned ones; the world grid is not among them
+  std::vector<GridTurn> turns;  // the turned ones, the model's then the outlines' own; not the world's
   std::vector<int> turnOf;      // per outline: an index into turns, or -1 for the world grid
   std::vector<double> edgeM;    // per turn: the length of the edges of its outlines along it
   double worldEdgeM = 0.0;      // the same for the outlines on the world grid
 
   const GridTurn& of(size_t outline) const;
   size_t outlinesOn(size_t turn) const;  // how many outlines are meshed on turns[turn]
+  size_t outlinesOnOwnGrids() const;
   // The turn most of the model's edge length lies along, or none where the world grid's is more.
   GridTurn principal() const;
 };
@@ -43,6 +45,10 @@ struct Grids {
 // length lies along, the world's on a tie, so a model along the axes keeps the world grid. A
 // turned grid's lines pass through the corner of its outlines' box in its frame, as the world
 // grid's pass through the origin, where models are often drawn from.
+// An outline that lies along more of a direction of its own (about a world axis) than along the
+// grid it would go on gets its own grid, turned to that direction, its lines through its own
+// corner: the facets of a curved wall or a round column, a wing too small for a turn of the
+// model's, a chair at an angle. On the world grid they would be cut across into slivers.
 Grids gridsOf(const Scene& scene);
 Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines);
 

@@ -180,7 +180,7 @@ TEST(Cli, BenchCellsSolvesWithElementsWhenAsked) {
   EXPECT_EQ(info.output.find("more than this machine's limit"), std::string::npos) << info.output;
   // A count no solve takes (over 20 M on any machine) is flagged where it is counted.
   const CommandRun over = radmesh("info cornell --min-element 0.0003");
-  EXPECT_NE(over.output.find("elements        25690524 with --subdivide uniform --min-element 0.0003, more than "
+  EXPECT_NE(over.output.find("elements        24587020 with --subdivide uniform --min-element 0.0003, more than "
                              "this machine's limit of "),
             std::string::npos)
       << over.output;
@@ -566,7 +566,7 @@ TEST(Cli, BenchAccuracyScoresTheFinestSweptMeshAgainstAFinerReferenceCell) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   run = radmesh(sweep + " --reference-cell 0.05 --out-dir " + dir + " --json " + finer);
   ASSERT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("cell 0.05 m, 993 patches, not swept: the pictures' reference hemicube 64x64"),
+  EXPECT_NE(run.output.find("cell 0.05 m, 964 patches, not swept: the pictures' reference hemicube 64x64"),
             std::string::npos)
       << run.output;
   std::ifstream ownIn(own), finerIn(finer);
@@ -575,7 +575,7 @@ TEST(Cli, BenchAccuracyScoresTheFinestSweptMeshAgainstAFinerReferenceCell) {
   EXPECT_EQ(a["picture_reference"]["cell"].get<double>(), 0.1);
   EXPECT_EQ(a["references"][0]["image_rmse"].get<double>(), 0.0);
   EXPECT_EQ(b["picture_reference"]["cell"].get<double>(), 0.05);
-  EXPECT_EQ(b["picture_reference"]["patches"].get<int>(), 993);
+  EXPECT_EQ(b["picture_reference"]["patches"].get<int>(), 964);
   ASSERT_EQ(b["references"].size(), 2u);  // the swept meshes only
   EXPECT_EQ(b["references"][0]["cell"].get<double>(), 0.1);
   // The 0.1 m mesh's converged pictures are 5.4 levels from the 0.05 m mesh's, the 0.2 m mesh's 12.7.
@@ -1197,8 +1197,8 @@ TEST(Cli, PresetElementsShootsFromCoarserPatchesOntoElements) {
   EXPECT_EQ(j["until"], 1.0);
   EXPECT_EQ(j["until_unshot"], 0.01);
   EXPECT_LE(j["unshot_fraction"].get<double>(), 0.01);
-  EXPECT_EQ(j["patches"], 384);
-  EXPECT_EQ(j["elements"], 6898);
+  EXPECT_EQ(j["patches"], 343);
+  EXPECT_EQ(j["elements"], 6017);
   EXPECT_NEAR(j["min_element"].get<double>(), 0.0225, 1e-15);
   // --cell sets the patches, and the elements follow --min-element when given.
   run = radmesh("solve cornell --quiet --min-element 0.05 --preset elements --cell 0.1 --resolution 64 "
@@ -1206,7 +1206,7 @@ TEST(Cli, PresetElementsShootsFromCoarserPatchesOntoElements) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_EQ(run.output.find("min element"), std::string::npos) << run.output;
   j = nlohmann::json::parse(std::ifstream(stats));
-  EXPECT_EQ(j["patches"], 300);
+  EXPECT_EQ(j["patches"], 272);
   EXPECT_EQ(j["min_element"], 0.05);
   EXPECT_EQ(j["resolution"], 64);
   run = radmesh("solve cornell --quiet --subdivide off --preset elements --max-iterations 2 --stats " + stats);

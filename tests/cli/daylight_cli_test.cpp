@@ -138,7 +138,7 @@ TEST(Cli, WithoutCellTheCellFollowsTheScenesSizeAndCellWins) {
     EXPECT_EQ(run.exitCode, 0) << run.output;
     return nlohmann::json::parse(run.output);
   };
-  // The 0.55 m Cornell box: a sixteenth of its smallest extent, not the paper's 47 patches.
+  // The 0.55 m Cornell box: a sixteenth of its smallest extent, not the 40 patches of the paper's 15 inches.
   const auto chosen = info("cornell");
   EXPECT_NEAR(chosen["cell_m"].get<double>(), 0.5488 / 16.0, 1e-4) << chosen["cell_why"];
   EXPECT_EQ(chosen["cell"], chosen["cell_m"]);
@@ -146,7 +146,7 @@ TEST(Cli, WithoutCellTheCellFollowsTheScenesSizeAndCellWins) {
   EXPECT_GT(chosen["patches"].get<int>(), 1000);
   const auto given = info("cornell --cell 0.381");
   EXPECT_EQ(given["cell_m"], 0.381);
-  EXPECT_EQ(given["patches"], 47);
+  EXPECT_EQ(given["patches"], 40);
   // A room keeps the paper's 15 inches; solve says what it chose.
   EXPECT_EQ(info("office")["cell_m"], 0.381);
   const CommandRun solve = radmesh("solve cornell --max-iterations 1 --resolution 16 --quiet");

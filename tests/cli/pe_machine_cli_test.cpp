@@ -80,7 +80,7 @@ TEST(PeMachineCli, BadMachinesExit2NamingTheOptionAndTheFix) {
        "budget is 1024 bytes. Fix: give each PE more memory (a larger --pe-memory KB), spread the work over more PEs (a "
        "larger --pe-grid), or give it less to hold (a smaller --resolution or fewer --shooters)"},
       // Too many shooters at once for the PEs: the fix names the flag the user raised.
-      {"solve cornell --backend mesh --shooters 1910 --max-iterations 3 --quiet", "fewer --shooters"},
+      {"solve cornell --backend mesh --shooters 1846 --max-iterations 3 --quiet", "fewer --shooters"},
   };
   for (const Case& c : cases) {
     const CommandRun run = radmesh(c.arguments);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
@@ -100,23 +101,74 @@ TEST(GridTurn, AModelTurnedAboutAnyPointMeshesAsItselfUnturnedAtTheOrigin) {
     const std::vector<Patch> reference = meshScene(moved(quarterTurned, -corner), kCellM);
     test::expectValidPatches(reference, kCellM, "two-rooms, quarter turns");
     const std::vector<Patch> patches = meshScene(scene, kCellM);
-    test::expectValidPatches(patches, kCellM, "two-rooms turned", turn);
+    test::expectValidPatches(patches, kCellM, "two-rooms turned", scene);
     test::expectAreaKept(scene, patches, 1e-9, "two-rooms turned");
     const Vec3 shift = turnedAboutVertical(corner, left) + turnedAboutVertical(offset, degrees);
     expectSameMeshTurned(reference, patches, left, shift, 1e-11);
   }
 }
 
-TEST(GridTurn, OneTableAtAnAngleDoesNotTurnTheGridNorDoTheRoomsTurnedFromIt) {
-  // A table top at 20 degrees in the axis-aligned rooms: the world grid stays.
-  const std::vector<Vec3> table{{0.5, 0.5, 0.75}, {1.6, 0.9, 0.75}, {1.4, 1.46, 0.75}, {0.3, 1.06, 0.75}};
+// A 1.2 x 0.6 m rectangle at `degrees` about the vertical, its corner at `corner`.
+std::vector<Vec3> tableTop(const Vec3& corner, double degrees) {
+  std::vector<Vec3> top;
+  for (const Vec3& v : {Vec3(0, 0, 0), Vec3(1.2, 0, 0), Vec3(1.2, 0.6, 0), Vec3(0, 0.6, 0)})
+    top.push_back(corner + turnedAboutVertical(v, degrees));
+  return top;
+}
+
+TEST(GridTurn, ATableAtAnAngleGetsAGridOfItsOwnAndTheRoomsKeepTheWorlds) {
+  // A table top at 20 degrees in the axis-aligned rooms: the model's grid stays the world's, and the
+  // table is meshed as if along the axes, its corner at the origin: 4 x 2 cells, no slivers. On
+  // the world grid it made 15 patches, 2 of them under a tenth of a cell wide.
   Scene rooms = builtinScene("two-rooms");
-  rooms.polygons.push_back({table, 0, "table"});
+  const size_t roomPolygons = rooms.polygons.size();
+  rooms.polygons.push_back({tableTop({0.5, 0.5, 0.75}, 20.0), 0, "table"});
   EXPECT_FALSE(gridTurnOf(rooms).turned());
-  EXPECT_TRUE(gridsOf(rooms).turns.empty());  // nor has the table a grid of its own
-  // The rooms turned by 30 degrees, the table with them: the grid turns by the rooms' 30.
+  const Grids grids = gridsOf(rooms);
+  ASSERT_EQ(grids.turns.size(), 1u);
+  EXPECT_TRUE(grids.turns[0].own);
+  EXPECT_EQ(grids.outlinesOnOwnGrids(), 1u);
+  EXPECT_NEAR(grids.turns[0].degrees(), 20.0, 1e-9);
+  EXPECT_EQ(grids.turnOf[roomPolygons], 0);
+  for (size_t i = 0; i < roomPolygons; ++i) EXPECT_EQ(grids.turnOf[i], -1) << "polygon " << i;
+  const std::vector<Patch> patches = meshScene(rooms, kCellM);
+  test::expectValidPatches(patches, kCellM, "rooms and table", rooms);
+  test::expectAreaKept(rooms, patches, 1e-9, "rooms and table");
+  EXPECT_EQ(patches.size(), meshScene(builtinScene("two-rooms"), kCellM).size() + 8);
+  // The rooms turned by 30 degrees, the table with them: the model's grid turns by the rooms' 30.
   turnAboutVertical(rooms, 30.0);
   EXPECT_NEAR(gridTurnOf(rooms).degrees(), 30.0, 1e-9);
+}
+
+// A round column of 16 facets 0.2 m wide: each facet on a grid of its own is cut only at the
+// world's heights, into 7 strips from floor to 2.5 m. On the world grid the lines crossing the
+// facets cut them into 161 patches, not 112.
+TEST(GridTurn, EachFacetOfARoundColumnIsCutOnlyAcrossItsHeight) {
+  constexpr int kFacets = 16;
+  constexpr double kRadiusM = 0.5, kHeightM = 2.5;
+  Scene column = builtinScene("two-rooms");
+  const size_t roomPolygons = column.polygons.size();
+  const Vec3 centre(2.0, 1.5, 0.0);
+  for (int k = 0; k < kFacets; ++k) {
+    const auto at = [&](int i, double z) {
+      const double a = 2.0 * std::numbers::pi * (i + 0.1) / kFacets;
+      return centre + Vec3(kRadiusM * std::cos(a), kRadiusM * std::sin(a), z);
+    };
+    column.polygons.push_back({{at(k, 0.0), at(k + 1, 0.0), at(k + 1, kHeightM), at(k, kHeightM)}, 0, "column"});
+  }
+  const Grids grids = gridsOf(column);
+  EXPECT_EQ(grids.outlinesOnOwnGrids(), static_cast<size_t>(kFacets));
+  const std::vector<Patch> patches = meshScene(column, kCellM);
+  test::expectValidPatches(patches, kCellM, "column", column);
+  test::expectAreaKept(column, patches, 1e-9, "column");
+  std::vector<int> strips(kFacets, 0);
+  for (const Patch& p : patches)
+    if (p.polygon >= static_cast<int>(roomPolygons)) {
+      ++strips[p.polygon - roomPolygons];
+      EXPECT_NEAR(p.areaM2 / (2.0 * kRadiusM * std::sin(std::numbers::pi / kFacets)),
+                  p.centroid.z < 6 * kCellM ? kCellM : kHeightM - 6 * kCellM, 1e-9);
+    }
+  for (int k = 0; k < kFacets; ++k) EXPECT_EQ(strips[k], 7) << "facet " << k;
 }
 
 // A building of two wings, one along the axes and one at 30 degrees to them: each is meshed on its
@@ -161,7 +213,7 @@ TEST(GridTurn, ATurnedModelFarFromTheOriginMeshesAsAtTheOrigin) {
   const Vec3 site(512345.678, 5012345.678, 0.0);
   const Scene far = moved(turned(rooms, 30.0), site);
   const std::vector<Patch> patches = meshScene(far, kCellM);
-  test::expectValidPatches(patches, kCellM, "two-rooms turned, far out", gridTurnOf(far));
+  test::expectValidPatches(patches, kCellM, "two-rooms turned, far out", far);
   test::expectAreaKept(far, patches, 1e-9, "two-rooms turned, far out");
   expectSameMeshTurned(meshScene(rooms, kCellM), patches, 30.0, site, 1e-8);
 }

@@ -104,10 +104,19 @@ inline bool patchIsValid(const Patch& p, double cellM, const std::string& where,
   return ok;
 }
 
+// Each patch on the grid its polygon is meshed on (gridsOf), or on the world grid.
 inline void expectValidPatches(const std::vector<Patch>& patches, double cellM, const std::string& where,
-                               const GridTurn& turn = {}) {
+                               const Grids* grids = nullptr) {
+  static const GridTurn world;
   for (size_t i = 0; i < patches.size(); ++i)
-    if (!patchIsValid(patches[i], cellM, where + ", patch " + std::to_string(i), turn)) return;
+    if (!patchIsValid(patches[i], cellM, where + ", patch " + std::to_string(i),
+                      grids ? grids->of(static_cast<size_t>(patches[i].polygon)) : world))
+      return;
+}
+inline void expectValidPatches(const std::vector<Patch>& patches, double cellM, const std::string& where,
+                               const Scene& scene) {
+  const Grids grids = gridsOf(scene);
+  expectValidPatches(patches, cellM, where, &grids);
 }
 
 // Sum of patch areas per polygon equals the polygon's area to `relative`; each patch keeps the

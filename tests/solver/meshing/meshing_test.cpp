@@ -269,7 +269,7 @@ TEST(Meshing, RandomConvexPolygonsKeepAreaAndShape) {
     const double cell = r.uniform(0.1, 1.0);
     const auto patches = meshScene(s, cell);
     const std::string where = "convex trial " + std::to_string(trial);
-    expectValidPatches(patches, cell, where, gridTurnOf(s));
+    expectValidPatches(patches, cell, where, s);
     expectAreaKept(s, patches, 1e-9, where);
     if (HasFailure()) return;
   }
@@ -293,7 +293,7 @@ TEST(Meshing, RandomConcavePolygonsKeepAreaAndStayInside) {
     const double cell = r.uniform(0.15, 0.8);
     const auto patches = meshScene(s, cell);
     const std::string where = "concave trial " + std::to_string(trial);
-    expectValidPatches(patches, cell, where, gridTurnOf(s));
+    expectValidPatches(patches, cell, where, s);
     expectAreaKept(s, patches, 1e-9, where);
     for (const Patch& p : patches) ASSERT_TRUE(insidePolygon(polygon, p.centroid)) << where;
     for (size_t i = 0; i < outline.size(); ++i) {
@@ -369,7 +369,7 @@ TEST(Meshing, SharedMgfScenesMeshKeepingArea) {
     RADMESH_REQUIRE_SHARED(path, file);
     const Scene s = importMgf(path.string());
     const auto patches = meshScene(s);
-    expectValidPatches(patches, kDefaultCellM, file);
+    expectValidPatches(patches, kDefaultCellM, file, s);
     expectAreaKept(s, patches, 1e-9, file);
   }
 }

@@ -142,9 +142,9 @@ TEST(Checkpoint, UniformElementsOnTheMeshResumeBitwise) {
 }
 // The split tree, the elements' radiosity and all each patch shot are saved: the resumed solve
 // splits on as the straight one does.
-TEST(Checkpoint, AdaptiveElementsResumeBitwise) { expectResumeIsBitwiseStraight(Backend::Native, 3, 10, Subdivide::Adaptive); }
+TEST(Checkpoint, AdaptiveElementsResumeBitwise) { expectResumeIsBitwiseStraight(Backend::Native, 3, 16, Subdivide::Adaptive); }
 TEST(Checkpoint, AdaptiveElementsRegatheringEveryShotResumeBitwise) {
-  expectResumeIsBitwiseStraight(Backend::Native, 3, 10, Subdivide::Adaptive, true);
+  expectResumeIsBitwiseStraight(Backend::Native, 3, 16, Subdivide::Adaptive, true);
 }
 
 TEST(Checkpoint, WritesAtomicallyLeavingNoTemporaryFile) {
