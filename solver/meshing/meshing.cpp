@@ -149,17 +149,23 @@ void checkCell(double cellM) {
 
 namespace {
 
-void refuseCount(double patches, double cellM, size_t maxPatches, double areaM2) {
+void refuseCount(double patches, double cellM, size_t maxPatches, double areaM2, size_t polygons) {
   // Patch count goes as area / cell^2: the cell that would about meet the limit.
   const double limit = static_cast<double>(maxPatches);
   const double suggested =
       std::isfinite(patches) ? cellM * std::sqrt(patches / limit) * 1.1 : 2.0 * std::sqrt(areaM2 / limit);
   const std::string count =
       std::isfinite(patches) ? fmt::format("about {:.3g}", patches) : "uncountably many";
-  throw OptionError(
-      fmt::format("--cell {} m would cut the scene into {} patches, more than the limit of {}; use a larger "
-                  "--cell (about {:.3g} m or more)",
-                  cellM, count, maxPatches, suggested));
+  // Where the polygons alone are most of the limit, a larger cell fits only by making each polygon
+  // about one patch, which resolves no light on it.
+  const std::string fix =
+      static_cast<double>(polygons) > 0.5 * limit
+          ? fmt::format("its {} polygons alone are {:.0f} % of that, so a larger --cell (about {:.3g} m) fits only "
+                        "at about one patch a polygon; solve the model in parts instead (a wing or a floor a file)",
+                        polygons, 100.0 * static_cast<double>(polygons) / limit, suggested)
+          : fmt::format("use a larger --cell (about {:.3g} m or more)", suggested);
+  throw OptionError(fmt::format("the cell {:.4g} m would cut the scene into {} patches, more than the limit of {}; {}",
+                                cellM, count, maxPatches, fix));
 }
 
 // Drops repeated and collinear vertices (within noise): what is left turns strictly left.
@@ -234,12 +240,13 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
   double sceneAreaM2 = 0.0;
   for (const Polygon& polygon : scene.polygons) sceneAreaM2 += polygonArea(polygon.vertices);
   if (!(sceneAreaM2 / (cellM * cellM) <= static_cast<double>(maxPatches)))
-    refuseCount(sceneAreaM2 / (cellM * cellM), cellM, maxPatches, sceneAreaM2);
+    refuseCount(sceneAreaM2 / (cellM * cellM), cellM, maxPatches, sceneAreaM2, scene.polygons.size());
   std::vector<PreparedPolygon> prepared;
   double areaM2 = 0.0;
   const double estimate = patchEstimate(scene, cellM, gridsOf(scene), &prepared, &areaM2);
   // Refuse before slicing: a tiny cell must fail fast, not exhaust memory.
-  if (!(estimate <= static_cast<double>(maxPatches))) refuseCount(estimate, cellM, maxPatches, areaM2);
+  if (!(estimate <= static_cast<double>(maxPatches)))
+    refuseCount(estimate, cellM, maxPatches, areaM2, scene.polygons.size());
 
   std::vector<Patch> patches;
   patches.reserve(static_cast<size_t>(estimate));
@@ -254,7 +261,7 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
           const double area2d = signedArea(q);
           if (!(area2d > p.sliverAreaM2)) continue;  // a zero-area sliver of clipping
           if (patches.size() >= maxPatches)
-            refuseCount(std::max(estimate, maxPatches + 1.0), cellM, maxPatches, areaM2);
+            refuseCount(std::max(estimate, maxPatches + 1.0), cellM, maxPatches, areaM2, scene.polygons.size());
           patches.push_back(makePatch(p, q, area2d, scene.polygons[i].material, static_cast<int>(i)));
         }
       }

@@ -393,7 +393,7 @@ TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   // A cell too small to lay a grid at is refused as the cell, not blamed on a polygon.
   run = radmesh("info two-rooms --cell 1e-308");
   EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("--cell 1e-308 m would cut the scene into uncountably many patches"), std::string::npos)
+  EXPECT_NE(run.output.find("the cell 1e-308 m would cut the scene into uncountably many patches"), std::string::npos)
       << run.output;
   // info counts the elements --min-element would make: a length it cannot be is refused there too.
   for (const std::string value : {"nan", "-1", "inf"}) {

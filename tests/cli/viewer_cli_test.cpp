@@ -218,7 +218,7 @@ TEST(ViewerCli, TheSolvesRefusalsExit2AsSolvesDo) {
   ASSERT_EQ(radmesh("solve cornell --cell 0.2 --max-iterations 1 --quiet --checkpoint " + cornell).exitCode, 0);
   const std::pair<std::string, std::string> cases[] = {
       {"--cell 0", "--cell must be a finite grid size in metres greater than 0, got 0"},
-      {"--cell 1e-5", "--cell 1e-05 m would cut the scene into about 1.92e+10 patches"},
+      {"--cell 1e-5", "the cell 1e-05 m would cut the scene into about 1.92e+10 patches"},
       {"--cells auto --backend mesh", "--cells auto runs on the native back end"},
       {"--pe-grid 2x2", "PE (row 0, col 0) needs 55440 bytes of local memory"},
       {"--subdivide uniform --min-element 1e-6", "--min-element 1e-06 m would cut the 1846 patches"},

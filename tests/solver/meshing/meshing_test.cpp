@@ -407,6 +407,32 @@ TEST(Meshing, RefusesTooManyPatchesBeforeSlicing) {
   EXPECT_THROW(meshScene(square, 0.25, 15), OptionError);
 }
 
+// A model of more polygons than half the limit (building:100x100, 1.87 million against 2 million)
+// fits only at about a patch a polygon: the refusal says so, where a larger cell alone would
+// solve nothing worth seeing.
+TEST(Meshing, RefusingAModelOfTooManyPolygonsSaysALargerCellResolvesNothing) {
+  std::vector<std::vector<Vec3>> tiles;
+  for (int i = 0; i < 100; ++i) tiles.push_back(rectangleXY(i, 0, i + 1, 1));
+  const Scene s = sceneOf(tiles);
+  try {
+    meshScene(s, 0.5, 150);  // 400 patches
+    ADD_FAILURE() << "accepted 400 patches against a limit of 150";
+  } catch (const OptionError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the cell 0.5 m would cut the scene into about 400 patches, more than the limit of 150; "
+                           "its 100 polygons alone are 67 % of that, so a larger --cell (about 0.898 m) fits only at "
+                           "about one patch a polygon; solve the model in parts instead"),
+              std::string::npos)
+        << message;
+  }
+  try {
+    meshScene(s, 0.5, 399);  // 100 polygons are a quarter of it: a larger cell is the fix
+    ADD_FAILURE() << "accepted 400 patches against a limit of 399";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("use a larger --cell (about 0.551 m or more)"), std::string::npos) << e.what();
+  }
+}
+
 // An octagon inside one cell is one cell by estimate but three quads when fanned: the limit is
 // still enforced while slicing.
 TEST(Meshing, RefusesTooManyPatchesWhileSlicing) {
