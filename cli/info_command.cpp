@@ -180,8 +180,7 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
                                                            : fmt::format("{} of {} polygons", polygons, s.polygons));
   }
   if (const size_t own = s.grids.outlinesOnOwnGrids())
-    fmt::print("grid            its own for {} polygons along no other (the facets of a curve, furniture at an angle)\n",
-               own);
+    fmt::print("grid            its own for {} polygons, each at an angle to the model's grids\n", own);
   fmt::print("materials       {}\n", s.materials);
   fmt::print("emitters        {} polygons, {} patches\n", s.emitterPolygons, s.emitterPatches);
   if (s.lights > 0) fmt::print("lights          {} (no patch: each shoots once, first)\n", s.lights);
