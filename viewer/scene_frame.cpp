@@ -14,7 +14,9 @@ namespace {
 // The vertical side of the bounds least covered by walls facing in from it, if under half. A wall
 // is a face turned inward along the side's axis, wherever it stands: real walls are a little off
 // square (the Cornell box's), stand back from recessed doors and windows (the office's, by 0.3 m),
-// or close an L-shaped building's notch far from the side of its bounds.
+// or close an L-shaped building's notch far from the side of its bounds. Each covers its area
+// projected on the side, and faces up to 60 degrees off the axis count: the facets of a round
+// room's wall cover its side, where only those within 26 degrees covered 44 % of it.
 int openSide(const std::vector<FrameFace>& faces, const SceneFrame& frame) {
   const Vec3 extent = frame.boundsMax - frame.boundsMin;
   int best = -1;
@@ -27,7 +29,7 @@ int openSide(const std::vector<FrameFace>& faces, const SceneFrame& frame) {
       double covered = 0.0;
       for (const FrameFace& face : faces) {
         const Vec3 area = 0.5 * newellNormal(face.vertices);
-        if (inward * area[axis] >= 0.9 * glm::length(area)) covered += std::abs(area[axis]);
+        if (inward * area[axis] >= 0.5 * glm::length(area)) covered += std::abs(area[axis]);
       }
       const double coverage = sideArea > 0.0 ? covered / sideArea : 1.0;
       if (coverage < bestCoverage) {

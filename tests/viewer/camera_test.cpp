@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "solver/cells/find_cells.h"
 #include "solver/io/scene_loader.h"
@@ -256,9 +257,9 @@ TEST(WalkCamera, TurningAClosedSceneOntoYUpTurnsItsStartView) {
 
 // A closed L-shaped room whose plan misses the corner of its bounds where the start stands, by
 // more than the 4 m searched round it: a 12 x 12 m plan without its 6 x 8 m corner at the origin.
-std::vector<FrameFace> lShapedRoom() {
+// A closed room 2.7 m tall on a plan drawn counter-clockwise: floor, ceiling and walls facing in.
+std::vector<FrameFace> roomOn(const std::vector<glm::dvec2>& plan) {
   const double h = 2.7;
-  const std::vector<glm::dvec2> plan = {{6, 0}, {12, 0}, {12, 12}, {0, 12}, {0, 8}, {6, 8}};
   std::vector<FrameFace> faces(2);
   for (const glm::dvec2& p : plan) faces[0].vertices.push_back({p.x, p.y, 0.0});  // the floor, facing up
   for (auto p = plan.rbegin(); p != plan.rend(); ++p) faces[1].vertices.push_back({p->x, p->y, h});
@@ -269,6 +270,8 @@ std::vector<FrameFace> lShapedRoom() {
   return faces;
 }
 
+std::vector<FrameFace> lShapedRoom() { return roomOn({{6, 0}, {12, 0}, {12, 12}, {0, 12}, {0, 8}, {6, 8}}); }
+
 // It was taken for a model open on its notched sides and looked into from outside.
 TEST(WalkCamera, AnLShapedRoomStartsInsideNotAtTheCornerItMisses) {
   const SceneFrame frame = frameOf(lShapedRoom(), 2);
@@ -278,6 +281,26 @@ TEST(WalkCamera, AnLShapedRoomStartsInsideNotAtTheCornerItMisses) {
   const RenderView view = camera.view();
   EXPECT_TRUE(freeSpaceAt(frame, view.eye, 0.3)) << view.eye.x << " " << view.eye.y;
   EXPECT_NEAR(view.eye.z, 1.6, 1e-12);
+}
+
+// A round room's wall faces in from every side, but only a third of its facets face within 26
+// degrees of an axis: it was taken for open on a side and looked at from outside.
+TEST(WalkCamera, ARoundRoomStartsInside) {
+  for (const int sides : {24, 48, 96}) {
+    SCOPED_TRACE(sides);
+    std::vector<glm::dvec2> plan;
+    for (int k = 0; k < sides; ++k) {
+      const double a = 2.0 * std::numbers::pi * (k + 0.5) / sides;
+      plan.push_back({5.0 + 5.0 * std::cos(a), 5.0 + 5.0 * std::sin(a)});
+    }
+    const SceneFrame frame = frameOf(roomOn(plan), 2);
+    EXPECT_EQ(frame.openSide, -1);
+    const WalkCamera camera(frame);
+    EXPECT_FALSE(camera.looksInFromOutside());
+    const RenderView view = camera.view();
+    EXPECT_LT(glm::length(glm::dvec2(view.eye.x, view.eye.y) - glm::dvec2(5.0, 5.0)), 5.0);
+    EXPECT_TRUE(freeSpaceAt(frame, view.eye, 0.3)) << view.eye.x << " " << view.eye.y;
+  }
 }
 
 // A building drawn at an angle to the axes starts as it does drawn along them, turned: the corner of
