@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
     return code;
   };
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> arguments = radmesh::cli::decimalArguments(app, argc, argv);
+    app.parse(arguments);
   } catch (const CLI::ParseError& e) {
     // CLI11 prints the message (or the help) and gives each kind of usage error its own code;
     // every usage error exits 2, as radmesh's own option and scene errors do.

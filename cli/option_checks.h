@@ -5,8 +5,13 @@
 #include <array>
 #include <cstdio>
 #include <optional>
+#include <set>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
+
+#include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
 
@@ -73,6 +78,57 @@ inline std::string optionWithEmptyValue(int argc, char** argv) {
     if (arg.rfind("--", 0) == 0 && arg.back() == '=') return arg.substr(0, arg.size() - 1);
   }
   return "";
+}
+
+// The arguments with every whole-number option's value read as decimal. CLI11 converts whole
+// numbers with strtoll's base 0, so "--resolution 064" gave 52 (octal) and "0x10" 16; a leading
+// zero is dropped here, and another base is refused (OptionError) naming the option. The options
+// are those of `app` and of the subcommands the arguments name; values may be comma lists.
+// Returned in the reversed order app.parse(std::vector<std::string>&) takes.
+inline std::vector<std::string> decimalArguments(const CLI::App& app, int argc, char** argv) {
+  std::set<std::string> whole;
+  const auto collect = [&whole](const CLI::App& a) {
+    for (const CLI::Option* o : a.get_options())
+      if (o->get_type_name().rfind("INT", 0) == 0 || o->get_type_name().rfind("UINT", 0) == 0)
+        for (const std::string& name : o->get_lnames()) whole.insert("--" + name);
+  };
+  collect(app);
+  const CLI::App* current = &app;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  const auto decimal = [](const std::string& option, const std::string& value) {
+    std::string out, item;
+    std::stringstream items(value);
+    while (std::getline(items, item, ',')) {
+      const size_t digits = item.find_first_not_of("+-");
+      if (digits != std::string::npos && item.size() > digits + 1 && item[digits] == '0') {
+        if (item.find_first_not_of("0123456789", digits) != std::string::npos)
+          throw OptionError(option + ": " + value + " is not a whole number in decimal digits: give it in decimal");
+        const size_t first = std::min(item.find_first_not_of('0', digits), item.size() - 1);
+        item = item.substr(0, digits) + item.substr(first);
+      }
+      out += (out.empty() ? "" : ",") + item;
+    }
+    return value.empty() ? value : out;
+  };
+  for (size_t i = 0; i < args.size(); ++i) {
+    std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) {
+      for (const CLI::App* sub : current->get_subcommands({}))
+        if (sub->check_name(arg)) {
+          current = sub;
+          collect(*sub);
+        }
+      continue;
+    }
+    const size_t equals = arg.find('=');
+    const std::string name = arg.substr(0, equals);
+    if (!whole.count(name)) continue;
+    if (equals != std::string::npos)
+      arg = name + "=" + decimal(name, arg.substr(equals + 1));
+    else if (i + 1 < args.size())
+      args[i + 1] = decimal(name, args[i + 1]);
+  }
+  return {args.rbegin(), args.rend()};
 }
 
 }  // namespace radmesh::cli

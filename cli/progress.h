@@ -48,8 +48,9 @@ class Progress {
 double solveWithProgress(ProgressiveSolver& solver, bool quiet,
                          const std::function<void(double seconds)>& afterStep = {});
 
-// On stderr, when the solve stopped with more than kFarFromConvergedUnshot of the power unshot.
-void warnIfFarFromConverged(const Ledger& ledger);
+// On stderr, when the solve stopped with more than kFarFromConvergedUnshot of the power unshot,
+// saying what to change: --max-iterations where `iterations` reached it, else the stop.
+void warnIfFarFromConverged(const Ledger& ledger, const SolveOptions& options, long long iterations);
 // On stderr, each of lostLightWarnings (`sceneClosed`: isClosed of the scene).
 void warnIfLightLost(const Ledger& ledger, bool sceneClosed);
 

@@ -136,7 +136,7 @@ Solved solveScene(const RenderArgs& args) {
     std::unique_ptr<CellSolver> solver =
         makeCellSolver(scene, meshScene(scene, cell.cellM), options, {cell.cellM, args.flags.exchangeShots, args.flags.portalBins});
     printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
-    if (args.iterations == 0) warnIfFarFromConverged(solver->ledger());
+    if (args.iterations == 0) warnIfFarFromConverged(solver->ledger(), solver->options(), solver->iterations());
     warnIfLightLost(solver->ledger(), isClosed(scene));
     return solvedFrom(solver->elements().elements, solver->displayElementRadiosity());
   }
@@ -146,7 +146,7 @@ Solved solveScene(const RenderArgs& args) {
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
-  if (args.iterations == 0) warnIfFarFromConverged(solver.ledger());
+  if (args.iterations == 0) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size()));
   warnIfLightLost(solver.ledger(), isClosed(scene));
   return solvedFrom(solver.elements(), solver.displayElementRadiosity());
 }

@@ -128,7 +128,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
   }
   if (interrupted()) stopAfterInterrupt(args, fmt::format("round {}", solver->rounds()));
   printCellsSummary(*solver, seconds);
-  if (writes) warnIfFarFromConverged(solver->ledger()), warnIfLightLost(solver->ledger(), isClosed(scene));
+  if (writes) warnIfFarFromConverged(solver->ledger(), solver->options(), solver->iterations()), warnIfLightLost(solver->ledger(), isClosed(scene));
   if (!args.statsPath.empty()) {
     nlohmann::json stats = cellsStats(*solver, scene.source, seconds, resumedAt);
     if (ranks) stats["distributed"] = distributedStats(*solver, ranks->traffic());
@@ -205,7 +205,7 @@ void run(const SolveArgs& args, Processes* processes) {
   }
   if (interrupted()) stopAfterInterrupt(args, fmt::format("iteration {}", solver.history().size()));
   printSummary(solver, seconds, resumedAt);
-  if (writes) warnIfFarFromConverged(solver.ledger()), warnIfLightLost(solver.ledger(), isClosed(scene));
+  if (writes) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size())), warnIfLightLost(solver.ledger(), isClosed(scene));
 
   if (!args.statsPath.empty()) {
     nlohmann::json stats = solveStats(solver, scene.source, seconds, resumedAt);

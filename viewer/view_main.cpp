@@ -125,7 +125,8 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps or --frames)");
   try {
     try {
-      app.parse(argc, argv);  // an option's own check throws OptionError while parsing
+      std::vector<std::string> arguments = radmesh::cli::decimalArguments(app, argc, argv);
+      app.parse(arguments);  // an option's own check throws OptionError while parsing
     } catch (const CLI::ParseError& e) {
       // CLI11 prints the message (or the help); every usage error exits 2, as radmesh's do.
       return app.exit(e) == 0 ? 0 : 2;

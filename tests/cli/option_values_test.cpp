@@ -1,0 +1,72 @@
+// Option values read as the user wrote them, and warnings that name what the user set.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/cli/cli_run.h"
+
+namespace radmesh {
+namespace {
+
+nlohmann::json statsOf(const std::string& arguments) {
+  const std::string stats = tempPath("stats.json");
+  const CommandRun run = radmesh(arguments + " --quiet --stats " + stats);
+  EXPECT_EQ(run.exitCode, 0) << arguments << ": " << run.output;
+  return nlohmann::json::parse(std::ifstream(stats));
+}
+
+// CLI11 reads whole numbers with strtoll's base 0: 064 was octal 52, 0100 was 64.
+TEST(OptionValues, WholeNumbersAreDecimalWhateverTheirLeadingZeros) {
+  nlohmann::json j = statsOf("solve furnace --resolution 064 --max-iterations 0100");
+  EXPECT_EQ(j["resolution"], 64);
+  EXPECT_EQ(j["iterations"], 100);
+  j = statsOf("solve furnace --resolution=0128 --max-iterations=007");
+  EXPECT_EQ(j["resolution"], 128);
+  EXPECT_EQ(j["iterations"], 7);
+  // A list, and a scene whose name only looks like a number is left as it is.
+  const CommandRun bench = radmesh("bench solve furnace --projections plane --resolutions 016,032 --max-iterations 02");
+  EXPECT_EQ(bench.exitCode, 0) << bench.output;
+  EXPECT_NE(bench.output.find("\nplane          16    1 "), std::string::npos) << bench.output;
+  EXPECT_NE(bench.output.find("\nplane          32    1 "), std::string::npos) << bench.output;
+  EXPECT_NE(bench.output.find("            2+ "), std::string::npos) << bench.output;
+  const CommandRun scene = radmesh("info 007");
+  EXPECT_EQ(scene.exitCode, 2);
+  EXPECT_NE(scene.output.find("007"), std::string::npos) << scene.output;
+}
+
+TEST(OptionValues, WholeNumbersInAnotherBaseAreRefused) {
+  for (const std::string value : {"0x10", "0b11", "0o17", "00x1"}) {
+    const CommandRun run = radmesh("solve furnace --max-iterations 1 --resolution " + value);
+    EXPECT_EQ(run.exitCode, 2) << value << ": " << run.output;
+    EXPECT_NE(run.output.find("radmesh: error: --resolution: " + value +
+                              " is not a whole number in decimal digits: give it in decimal"),
+              std::string::npos)
+        << run.output;
+  }
+}
+
+// The warning said to stop on the unshot power, which was already the stop, when --max-iterations
+// had cut the solve short.
+TEST(OptionValues, AFarFromConvergedWarningNamesTheCapThatStoppedTheSolve) {
+  CommandRun run = radmesh("solve furnace --resolution 16 --max-iterations 20 --quiet");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("far from converged (docs/accuracy.md); --max-iterations 20 stopped it: raise it, or "
+                            "leave it out to stop on what is left (--until-unshot 0.01, the default)"),
+            std::string::npos)
+      << run.output;
+  run = radmesh("solve two-rooms --cells auto --cell 0.75 --resolution 16 --max-iterations 10 --quiet");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("--max-iterations 10 stopped it"), std::string::npos) << run.output;
+  run = radmesh("solve furnace --resolution 16 --until 0.5 --quiet");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("far from converged (docs/accuracy.md); stop on what is left instead: --until 1 "
+                            "--until-unshot 0.01 (the default)"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("--max-iterations"), std::string::npos) << run.output;
+}
+
+}  // namespace
+}  // namespace radmesh
