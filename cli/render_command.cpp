@@ -169,7 +169,6 @@ void run(const RenderArgs& args) {
                                   "projection has no pixels left), got {}", kMinFovDeg, args.fovDeg));
   checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
   checkOutputsDistinct(args.flags.scene, {{"--out", args.outPath}});  // a link named .png may lead to the scene
-  checkWritable("--out", args.outPath);  // before the solve, not after it
   std::optional<Solved> solved = readBakeToRender(args);
   if (!solved) solved = solveScene(args);
   const RenderView& view = solved->view;

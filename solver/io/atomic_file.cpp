@@ -32,9 +32,14 @@ TempFile createTempBeside(const std::string& path) {
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   TempFile temp{(folder / fmt::format("{}.tmp-{}-{}", target.filename().string(), ::getpid(), count++)).string()};
   temp.fd = ::open(temp.path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (temp.fd < 0 && errno == ENOENT)
-    throw std::runtime_error(fmt::format("the folder '{}' does not exist", folder.string()));
-  if (temp.fd < 0) throw failure(fmt::format("cannot make a file in the folder '{}'", folder.string()));
+  if (temp.fd < 0) {
+    const int reason = errno;
+    std::error_code ignored;  // a folder that is there but makes no file (/proc) is not said to be missing
+    if (reason == ENOENT && !fs::is_directory(folder, ignored))
+      throw std::runtime_error(fmt::format("the folder '{}' does not exist", folder.string()));
+    errno = reason;
+    throw failure(fmt::format("cannot make a file in the folder '{}'", folder.string()));
+  }
   return temp;
 }
 

@@ -19,6 +19,19 @@ bool hasExtension(const std::string& path, const std::string& extension) {
                                                 std::tolower(static_cast<unsigned char>(b)); });
 }
 
+namespace {
+
+void checkWritable(const std::string& option, const std::string& path) {
+  try {
+    checkWritableBeside(path);
+  } catch (const std::runtime_error& e) {
+    throw OptionError(fmt::format("{} '{}': cannot write there ({}): give a path in a writable folder with room",
+                                  option, path, e.what()));
+  }
+}
+
+}  // namespace
+
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
                      const std::string& what, bool makeFolder) {
   if (path.empty()) return;
@@ -28,22 +41,14 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
   if (std::filesystem::is_directory(path, error))
     throw OptionError(fmt::format("{} '{}' is a folder: give the path of a file in it", option, path));
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (folder.empty()) return;  // the current folder
-  if (makeFolder) return makeOutputFolder(option, folder.string());
-  if (!std::filesystem::is_directory(folder, error))
+  if (makeFolder) {
+    makeOutputFolder(option, folder.string());  // nothing to make for the current folder
+  } else if (!folder.empty() && !std::filesystem::is_directory(folder, error)) {
     throw OptionError(fmt::format("{} '{}': the folder '{}' does not exist: create it (mkdir -p {}) or give "
                                   "another path",
                                   option, path, folder.string(), folder.string()));
-}
-
-void checkWritable(const std::string& option, const std::string& path) {
-  if (path.empty()) return;
-  try {
-    checkWritableBeside(path);
-  } catch (const std::runtime_error& e) {
-    throw OptionError(fmt::format("{} '{}': cannot write there ({}): give a path in a writable folder with room",
-                                  option, path, e.what()));
   }
+  checkWritable(option, path);  // a folder that takes no file (read-only, full): now, not after the work
 }
 
 void makeOutputFolder(const std::string& option, const std::string& folder) {

@@ -11,15 +11,12 @@ namespace radmesh {
 bool hasExtension(const std::string& path, const std::string& extension);
 
 // Throws OptionError naming `option` and the fix when `path` does not end in `extension` (`what`
-// says what the file is, e.g. "a bake is glTF binary") or its folder does not exist. Empty: no file.
-// `makeFolder`: a missing folder is made now (bench accuracy's outputs) rather than refused.
+// says what the file is, e.g. "a bake is glTF binary"), its folder does not exist, or no file can
+// be written there (a folder without write permission, a file system that takes none: found by
+// making and removing a file beside it), before the work whose output it is, not after. Empty: no
+// file. `makeFolder`: a missing folder is made now (bench accuracy's outputs) rather than refused.
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
                      const std::string& what, bool makeFolder = false);
-
-// Throws OptionError naming `option` when no file can be written at `path` (a folder without
-// write permission, a file system that takes none), found by making and removing a file beside it:
-// before the work whose output it is, not after.
-void checkWritable(const std::string& option, const std::string& path);
 
 // Makes `folder` (and its parents) if missing, or throws OptionError naming `option` and why it
 // cannot be made: before the work whose outputs it holds, not after.

@@ -215,12 +215,11 @@ bool holdsSomethingElse(const std::string& path) {
 }
 
 void checkCheckpointWritable(const std::string& path) {
-  checkOutputPath("--checkpoint", path, "", "");  // a missing folder or a folder in its place, as for --out
   if (holdsSomethingElse(path))
     throw OptionError(fmt::format("--checkpoint '{}' is a file that is not a radmesh checkpoint: writing the "
                                   "checkpoint would replace it; give a new path, or a checkpoint's",
                                   path));
-  checkWritable("--checkpoint", path);
+  checkOutputPath("--checkpoint", path, "", "");  // a missing or unwritable folder, or a folder in its place
 }
 
 void resumeFromCheckpoint(const std::string& path, ProgressiveSolver& solver) {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "tests/cli/cli_run.h"
 
@@ -66,6 +67,25 @@ TEST(OptionValues, AFarFromConvergedWarningNamesTheCapThatStoppedTheSolve) {
             std::string::npos)
       << run.output;
   EXPECT_EQ(run.output.find("--max-iterations"), std::string::npos) << run.output;
+}
+
+// /proc takes no new file. Each output was found unwritable only when written, after the solve,
+// and exited 1; now before any work, exit 2, naming the option.
+TEST(OptionValues, EveryOutputIsFoundUnwritableBeforeTheWork) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"solve furnace --stats /proc/radmesh.json", "--stats '/proc/radmesh.json': cannot write there"},
+      {"solve furnace --out /proc/radmesh.glb", "--out '/proc/radmesh.glb': cannot write there"},
+      {"solve furnace --checkpoint /proc/radmesh.ckpt", "--checkpoint '/proc/radmesh.ckpt': cannot write there"},
+      {"info furnace --plan /proc/radmesh.png", "--plan '/proc/radmesh.png': cannot write there"},
+      {"bench solve furnace --json /proc/radmesh.json", "--json '/proc/radmesh.json': cannot write there"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find("radmesh: error: " + message), std::string::npos) << arguments << ": " << run.output;
+    EXPECT_EQ(run.output.find("does not exist"), std::string::npos) << arguments << ": " << run.output;
+    EXPECT_EQ(run.output.find("solved"), std::string::npos) << arguments << ": " << run.output;
+  }
 }
 
 }  // namespace
