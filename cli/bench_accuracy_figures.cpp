@@ -14,6 +14,7 @@
 
 #include "cli/bench.h"
 #include "cli/plot.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
 
@@ -278,7 +279,7 @@ std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std:
   const CsvTable points = readCsv(stem + ".csv", writer), traces = readCsv(stem + "-traces.csv", writer);
   // A header alone drew one plot and skipped the rest (the traces may be empty: a sweep of elements alone).
   if (points.rows.empty())
-    throw std::runtime_error(points.path + ": a header and no rows: nothing to draw (" + writer + " writes rows)");
+    throw OptionError(points.path + ": a header and no rows: nothing to draw (" + writer + " writes rows)");
   drawUnlessEmpty(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName,
                                   "relative RMS error of B - E", points, "error_at_99"),
                   stem + "-error-vs-time.png", drawn);

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "cli/output_file.h"
+#include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
 
@@ -38,7 +39,7 @@ std::vector<std::string> fields(const std::string& line) {
 
 const std::string& CsvTable::text(size_t row, const std::string& column) const {
   const auto it = std::find(columns.begin(), columns.end(), column);
-  if (it == columns.end()) throw std::runtime_error(fmt::format("{}: no column '{}'", path, column));
+  if (it == columns.end()) throw OptionError(fmt::format("{}: no column '{}'", path, column));
   return rows.at(row)[it - columns.begin()];
 }
 
@@ -48,10 +49,10 @@ double CsvTable::number(size_t row, const std::string& column) const {
   char* end = nullptr;
   const double value = std::strtod(field.c_str(), &end);
   if (field.empty() || *end != '\0')
-    throw std::runtime_error(
+    throw OptionError(
         fmt::format("{}, line {}: '{}' in column '{}' is not a number", path, line, field, column));
   if (!std::isfinite(value))  // a figure no measurement gives: drawn, it would vanish without a word
-    throw std::runtime_error(fmt::format("{}, line {}: '{}' in column '{}' is not a finite number", path, line,
+    throw OptionError(fmt::format("{}, line {}: '{}' in column '{}' is not a finite number", path, line,
                                          field, column));
   return value;
 }
@@ -59,21 +60,21 @@ double CsvTable::number(size_t row, const std::string& column) const {
 CsvTable readCsv(const std::string& path, const std::string& writtenBy) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
-    throw std::runtime_error(fmt::format("{}: is a folder, not a CSV file{}", path,
+    throw OptionError(fmt::format("{}: is a folder, not a CSV file{}", path,
                                          writtenBy.empty() ? "" : "; " + writtenBy + " writes it"));
   std::ifstream in(path);
   if (!in)
-    throw std::runtime_error(fmt::format("{}: cannot read ({}){}", path, std::strerror(errno),
+    throw OptionError(fmt::format("{}: cannot read ({}){}", path, std::strerror(errno),
                                          writtenBy.empty() ? "" : "; " + writtenBy + " writes it"));
   CsvTable table;
   table.path = path;
   std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(path + ": empty, expected a header line");
+  if (!std::getline(in, line)) throw OptionError(path + ": empty, expected a header line");
   if (line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // the byte-order mark some editors write
   table.columns = fields(line);
   for (size_t c = 0; c < table.columns.size(); ++c)
     if (std::count(table.columns.begin(), table.columns.begin() + c, table.columns[c]))
-      throw std::runtime_error(fmt::format("{}: column '{}' appears twice in the header", path, table.columns[c]));
+      throw OptionError(fmt::format("{}: column '{}' appears twice in the header", path, table.columns[c]));
   size_t lineNumber = 1;
   while (std::getline(in, line)) {
     ++lineNumber;
@@ -81,7 +82,7 @@ CsvTable readCsv(const std::string& path, const std::string& writtenBy) {
     table.rows.push_back(fields(line));
     table.lineOfRow.push_back(lineNumber);
     if (table.rows.back().size() != table.columns.size())
-      throw std::runtime_error(fmt::format("{}, line {}: {} fields under a header of {}", path, lineNumber,
+      throw OptionError(fmt::format("{}, line {}: {} fields under a header of {}", path, lineNumber,
                                            table.rows.back().size(), table.columns.size()));
   }
   return table;

@@ -49,14 +49,14 @@ CsvTable gatherStats(const PaperArgs& args) {
                  const std::string& mapping, int resolution) {
     const std::string path = fmt::format("{}/paper-{}-{}.json", args.statsDir, args.name, file);
     std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot read (docs/reproduce-paper.sh writes it)");
+    if (!in) throw OptionError(path + ": cannot read (docs/reproduce-paper.sh writes it)");
     try {
       const nlohmann::json stats = nlohmann::json::parse(in);
       const std::string n = std::to_string(stats.at("resolution").get<int>());
       const std::string wasBackend = stats.at("backend"), wasMapping = stats.value("mapping", "");
       if (wasBackend != backend || (backend == "mesh" && wasMapping != mapping) ||
           (resolution > 0 && n != std::to_string(resolution)))
-        throw std::runtime_error(fmt::format(
+        throw OptionError(fmt::format(
             "{}: the stats of a {} solve{} at {}, where its name says {}{}{} (fix: write it again with "
             "docs/reproduce-paper.sh)",
             path, wasBackend, wasBackend == "mesh" ? ", mapping " + wasMapping + "," : "", n, backend,
@@ -71,7 +71,7 @@ CsvTable gatherStats(const PaperArgs& args) {
                           std::to_string(i.at("reused_rows_total").get<long>())});
       }
     } catch (const nlohmann::json::exception& e) {
-      throw std::runtime_error(path + ": not the stats of `radmesh solve --stats`: " + e.what());
+      throw OptionError(path + ": not the stats of `radmesh solve --stats`: " + e.what());
     }
   };
   for (const std::string& m : kMappings)
@@ -86,7 +86,7 @@ std::vector<size_t> rowsOf(const CsvTable& t, const std::string& run, int resolu
   for (size_t row = 0; row < t.rows.size(); ++row)
     if (t.text(row, "run") == run && (resolution == 0 || t.number(row, "resolution") == resolution))
       rows.push_back(row);
-  if (rows.empty()) throw std::runtime_error(fmt::format("{}: no rows of run {} at {}", t.path, run, resolution));
+  if (rows.empty()) throw OptionError(fmt::format("{}: no rows of run {} at {}", t.path, run, resolution));
   return rows;
 }
 
@@ -206,12 +206,14 @@ void addPlotCommand(CLI::App& app) {
   cmd->add_option("--images", paper->imagesDir, "Folder of the PNGs")->required();
   cmd->callback([paper] {
     requireGnuplot();
-    makeOutputFolder("--images", paper->imagesDir);  // before any table
+    // The inputs first: one missing leaves no folder or file behind.
     if (!paper->statsDir.empty()) {  // --csv is written, not read: never over a stats file
+      const CsvTable gathered = gatherStats(*paper);
       checkOutputPath("--csv", paper->csv, ".csv", "the gathered figures are CSV", true);
-      writeCsv(paper->csv, gatherStats(*paper)), fmt::print("wrote {}\n", paper->csv);
+      writeCsv(paper->csv, gathered), fmt::print("wrote {}\n", paper->csv);
     }
     const CsvTable table = readCsv(paper->csv);
+    makeOutputFolder("--images", paper->imagesDir);  // before any table
     printTables(table, paper->name);
     drawFigures(table, *paper);
   });
@@ -239,6 +241,8 @@ void addPlotCommand(CLI::App& app) {
   scalingCmd->add_option("--png", *png, "Stem of the PNGs: STEM-speedup.png, STEM-bytes.png")->required();
   scalingCmd->callback([model, scaling, png] {
     requireGnuplot();
+    readCsv(*model);  // the inputs first: one missing leaves no folder
+    for (const std::string& csv : *scaling) readCsv(csv);
     makeOutputFolder("--png", std::filesystem::path(*png).parent_path().string());
     drawScalingFigures(*model, *scaling, *png);
   });

@@ -949,12 +949,12 @@ TEST(Cli, PlotPaperGathersTheStatsIntoOneCsvAndDrawsFromIt) {
   nan.replace(row + 1, std::string("hierarchical,64,1,0.5,").size(), "hierarchical,64,1,nan,");
   std::ofstream(csv) << nan;
   CommandRun run = radmesh("plot paper test --csv " + csv + " --images " + images);
-  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find(csv + ", line 2: 'nan' in column 'convergence' is not a finite number"), std::string::npos)
       << run.output;
   std::ofstream(csv) << "run,run" + text.substr(text.find(','));
   run = radmesh("plot paper test --csv " + csv + " --images " + images);
-  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find(csv + ": column 'run' appears twice in the header"), std::string::npos) << run.output;
 }
 
@@ -962,10 +962,10 @@ TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
   SKIP_WITHOUT_GNUPLOT();
   CommandRun run = radmesh("plot paper test --stats " + tempPath("none") + " --csv " + tempPath("p.csv") + " --images " +
                            tempPath("images"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("paper-test-hierarchical-64.json: cannot read"), std::string::npos) << run.output;
   run = radmesh("plot accuracy " + tempPath("nothing"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("nothing.csv: cannot read (No such file or directory); bench accuracy --out-dir DIR "
                             "--name NAME writes it"),
             std::string::npos)
@@ -973,22 +973,32 @@ TEST(Cli, PlotSaysWhichFileIsMissingOrWrong) {
   const std::string bad = tempPath("bad");
   std::ofstream(bad + ".csv") << "projection,ratio,seconds_to_99\nplane,3\n";
   run = radmesh("plot accuracy " + bad);
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("bad.csv, line 2: 2 fields under a header of 3"), std::string::npos) << run.output;
   std::ofstream(bad + ".csv") << "projection,ratio,seconds_to_99\n";
   std::ofstream(bad + "-traces.csv") << "projection,ratio,resolution,cell_m,iteration\n";
   run = radmesh("plot accuracy " + bad);
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("bad.csv: a header and no rows: nothing to draw"), std::string::npos) << run.output;
   // A folder where the CSV belongs, or a file where the PNGs' folder belongs, is named as such.
   const std::string folder = tempPath("folder.csv");
   std::filesystem::create_directories(folder);
   run = radmesh("plot paper test --csv " + folder + " --images " + tempPath("images"));
-  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find(folder + ": is a folder, not a CSV file"), std::string::npos) << run.output;
   run = radmesh("plot paper test --csv " + bad + ".csv --images " + bad + ".csv");
   EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find("--images '" + bad + ".csv': cannot make that folder"), std::string::npos) << run.output;
+  // A missing input leaves no folder behind: the inputs are read first.
+  const std::string images = tempPath("never"), plots = tempPath("never-plots");
+  run = radmesh("plot paper test --csv " + tempPath("none.csv") + " --images " + images);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  run = radmesh("plot scaling " + tempPath("none-model.csv") + " " + tempPath("none-ranks.csv") + " --png " + plots +
+                "/x");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("none-model.csv: cannot read"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(images));
+  EXPECT_FALSE(std::filesystem::exists(plots));
 }
 
 // Stats that are not what their names say, a run short of C = 0.95, and a --csv that would replace a
@@ -1007,7 +1017,7 @@ TEST(Cli, PlotPaperChecksTheStatsAgainstTheirNames) {
   const std::string cut = stats + "/paper-test-cut-and-stack-128.json";
   writePaperStats(cut, 128, "adaptive");
   run = radmesh(plot + csv);
-  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_EQ(run.exitCode, 2) << run.output;
   EXPECT_NE(run.output.find(cut + ": the stats of a mesh solve, mapping adaptive, at 128, where its name says mesh, "
                                   "mapping cut-and-stack at 128"),
             std::string::npos)
