@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "solver/io/file_signature.h"
+#include "solver/io/gltf_types.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -38,11 +39,6 @@ nlohmann::json lightsOf(const nlohmann::json& doc) {
       doc["extensions"].contains("KHR_lights_punctual") && doc["extensions"]["KHR_lights_punctual"].is_object())
     return doc["extensions"]["KHR_lights_punctual"].value("lights", nlohmann::json::array());
   return nlohmann::json::array();
-}
-
-std::string lightElement(const nlohmann::json& light, size_t index) {
-  return "KHR_lights_punctual light " + std::to_string(index) +
-         (light.contains("name") && light["name"].is_string() ? " '" + light["name"].get<std::string>() + "'" : "");
 }
 
 // Whether the JSON text nests arrays and objects deeper than `limit`, counting brackets outside strings.
@@ -224,45 +220,9 @@ nlohmann::json readGltfDocument(const std::string& path, const std::string& byte
   // A document that is no JSON has neither: tinygltf says what is wrong with it.
   checkVersion(path, bytes, doc);
   checkRequiredExtensions(path, doc);
+  checkGltfTypes(path, doc);  // before the URIs it checks are read
   checkExternalFiles(path, doc, warnings);
   return doc;
-}
-
-// tinygltf drops a light's property of the wrong type and keeps its default (an intensity of
-// "1000", a string, becomes 1 cd), and ignores a node's light that is no index: both are refused
-// here, naming the light or node.
-void checkGltfLightTypes(const std::string& path, const nlohmann::json& doc) {
-  const nlohmann::json lights = lightsOf(doc);
-  const auto refuse = [&](const std::string& element, const std::string& key, const nlohmann::json& value,
-                          const std::string& want) {
-    return SceneError(path, element, fmt::format("{} is {} ({}), not {}", key, value.dump(), value.type_name(), want),
-                      fmt::format("give {} as {}", key, want));
-  };
-  for (size_t i = 0; lights.is_array() && i < lights.size(); ++i) {
-    const nlohmann::json& light = lights[i];
-    if (!light.is_object()) continue;
-    for (const char* key : {"intensity", "range"})
-      if (light.contains(key) && !light[key].is_number()) throw refuse(lightElement(light, i), key, light[key], "a number");
-    if (light.contains("color") &&
-        !(light["color"].is_array() && std::all_of(light["color"].begin(), light["color"].end(),
-                                                    [](const nlohmann::json& c) { return c.is_number(); })))
-      throw refuse(lightElement(light, i), "color", light["color"], "3 numbers");
-    if (light.contains("spot") && light["spot"].is_object())
-      for (const char* key : {"innerConeAngle", "outerConeAngle"})
-        if (light["spot"].contains(key) && !light["spot"][key].is_number())
-          throw refuse(lightElement(light, i), std::string("spot.") + key, light["spot"][key], "a number of radians");
-  }
-  const auto nodes = doc.is_object() ? doc.find("nodes") : doc.end();
-  for (size_t n = 0; nodes != doc.end() && nodes->is_array() && n < nodes->size(); ++n) {
-    const nlohmann::json& node = (*nodes)[n];
-    if (!node.is_object() || !node.contains("extensions") || !node["extensions"].is_object() ||
-        !node["extensions"].contains("KHR_lights_punctual"))
-      continue;
-    const nlohmann::json& use = node["extensions"]["KHR_lights_punctual"];
-    if (!(use.is_object() && use.contains("light") && use["light"].is_number_unsigned()))
-      throw refuse("node " + std::to_string(n), "extensions.KHR_lights_punctual", use,
-                   "{\"light\": INDEX} with the index of one of the document's lights");
-  }
 }
 
 GltfDiagnosis diagnoseGltf(const std::string& bytes, const nlohmann::json& doc) {
@@ -286,12 +246,30 @@ GltfDiagnosis diagnoseGltf(const std::string& bytes, const nlohmann::json& doc) 
   const nlohmann::json lights = lightsOf(doc);
   for (size_t i = 0; lights.is_array() && i < lights.size(); ++i) {
     if (!lights[i].is_object()) continue;
-    const std::string element = lightElement(lights[i], i);
+    const std::string element = gltfElementLabel("KHR_lights_punctual light", i, lights[i]);
     if (!lights[i].contains("type") || !lights[i]["type"].is_string())
       return {element, "it has no type", "give it \"type\": \"point\", \"spot\" or \"directional\""};
     if (lights[i]["type"] == "spot" && !(lights[i].contains("spot") && lights[i]["spot"].is_object()))
       return {element, "a spot light without its \"spot\" object", "give it \"spot\": {\"outerConeAngle\": ...}"};
   }
+  // tinygltf refuses an index buffer or an image's bufferView that names nothing without naming the
+  // primitive or image. checkGltfTypes made both whole numbers.
+  const auto outOfRange = [&](const nlohmann::json& user, const char* key, const char* array) -> std::string {
+    const size_t count = doc.contains(array) ? doc[array].size() : 0;
+    if (!user.contains(key) || user[key].get<uint64_t>() < count) return "";
+    return fmt::format("{} {} names none of the file's {} {}", key, user[key].get<uint64_t>(), count, array);
+  };
+  const nlohmann::json none = nlohmann::json::array();
+  const nlohmann::json meshes = doc.is_object() ? doc.value("meshes", none) : none;
+  for (size_t m = 0; m < meshes.size(); ++m)
+    for (size_t p = 0; p < meshes[m].value("primitives", none).size(); ++p)
+      if (const std::string why = outOfRange(meshes[m]["primitives"][p], "indices", "accessors"); !why.empty())
+        return {gltfElementLabel("mesh", m, meshes[m]) + " primitive " + std::to_string(p), why,
+                "refer to an existing accessor (they count from 0)"};
+  const nlohmann::json images = doc.is_object() ? doc.value("images", none) : none;
+  for (size_t i = 0; i < images.size(); ++i)
+    if (const std::string why = outOfRange(images[i], "bufferView", "bufferViews"); !why.empty())
+      return {gltfElementLabel("image", i, images[i]), why, "refer to an existing bufferView (they count from 0)"};
   // radmesh uses no cameras, but tinygltf refuses a file with one it cannot read.
   const auto cameras = doc.find("cameras");
   for (size_t i = 0; cameras != doc.end() && cameras->is_array() && i < cameras->size(); ++i) {

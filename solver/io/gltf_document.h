@@ -1,6 +1,6 @@
 #pragma once
 // A glTF file's JSON as radmesh reads it beside tinygltf: what tinygltf does not check (nesting that
-// would overflow its parser, glTF 1.0, required extensions, the files URIs name, lights' types), and
+// would overflow its parser, glTF 1.0, required extensions, properties' types, the files URIs name), and
 // why tinygltf refused a file, which its own message seldom says.
 #include <nlohmann/json.hpp>
 
@@ -25,9 +25,6 @@ nlohmann::json readGltfDocument(const std::string& path, const std::string& byte
 // decodes a '+' as a space, as in a web form's query, where in a glTF URI (RFC 3986) it is a '+',
 // as other glTF readers take it.
 std::map<std::string, std::string> plusUriFiles(const std::string& path, const nlohmann::json& doc);
-
-// After tinygltf loaded the file: what it dropped or ignored for being of the wrong type.
-void checkGltfLightTypes(const std::string& path, const nlohmann::json& doc);
 
 // Why tinygltf refused the file: the element at fault, a detail beside tinygltf's message, the fix.
 struct GltfDiagnosis {

@@ -114,13 +114,9 @@ class TriangleCollector {
   int defaultMaterialUsers() const { return defaultMaterialUsers_; }
 
  private:
+  // The arrays' lengths were checked in the JSON (checkGltfTypes); an empty one is absent.
   glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& element) {
-    auto sizeError = [&](const char* field, size_t want, size_t got) {
-      return SceneError(file_, element, std::string(field) + " has " + std::to_string(got) + " numbers",
-                        "give " + std::string(field) + " exactly " + std::to_string(want) + " numbers");
-    };
     if (!n.matrix.empty()) {
-      if (n.matrix.size() != 16) throw sizeError("matrix", 16, n.matrix.size());
       // glTF 2.0 (5.25): a node's matrix is a translation, rotation and scale; its last row was
       // dropped unread, moving the geometry silently.
       if (n.matrix[3] != 0.0 || n.matrix[7] != 0.0 || n.matrix[11] != 0.0 || n.matrix[15] != 1.0)
@@ -132,18 +128,9 @@ class TriangleCollector {
       return glm::make_mat4(n.matrix.data());  // both column-major
     }
     glm::dmat4 m(1.0);
-    if (!n.translation.empty()) {
-      if (n.translation.size() != 3) throw sizeError("translation", 3, n.translation.size());
-      m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
-    }
-    if (!n.rotation.empty()) {
-      if (n.rotation.size() != 4) throw sizeError("rotation", 4, n.rotation.size());
-      m *= glm::mat4_cast(unitRotation(n.rotation, element));
-    }
-    if (!n.scale.empty()) {
-      if (n.scale.size() != 3) throw sizeError("scale", 3, n.scale.size());
-      m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
-    }
+    if (!n.translation.empty()) m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+    if (!n.rotation.empty()) m *= glm::mat4_cast(unitRotation(n.rotation, element));
+    if (!n.scale.empty()) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
     return m;
   }
 

@@ -35,12 +35,7 @@ Light gltfLight(const tinygltf::Model& model, int index, const glm::dmat4& world
   light.name = element;
   light.type = lightType(in.type, file, element);
   Rgb color(1.0);
-  if (!in.color.empty()) {
-    if (in.color.size() != 3)
-      throw SceneError(file, element, "has a color of " + std::to_string(in.color.size()) + " numbers",
-                       "give color as 3 linear RGB numbers");
-    color = Rgb(in.color[0], in.color[1], in.color[2]);
-  }
+  if (!in.color.empty()) color = Rgb(in.color[0], in.color[1], in.color[2]);  // 3 numbers: checkGltfTypes
   requireNonNegativeFactor(in.intensity, "intensity", file, element,
                            "give a finite intensity >= 0 (candela, or lux for a directional light)");
   for (int c = 0; c < 3; ++c)

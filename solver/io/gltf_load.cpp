@@ -111,10 +111,7 @@ tinygltf::Model loadGltfModel(const std::string& path, std::vector<std::string>*
   }
   appendWarnings(path, warning, warnings);
   // tinygltf may report an error yet return true (a bad optional part); trust only a clean load.
-  if (loaded && error.empty()) {
-    checkGltfLightTypes(path, doc);
-    return model;
-  }
+  if (loaded && error.empty()) return model;
   const GltfDiagnosis d = diagnoseGltf(bytes, doc);
   throw SceneError(path, d.element,
                    "could not be loaded (tinygltf: " + oneLine(error) + ")" +

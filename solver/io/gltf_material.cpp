@@ -65,10 +65,7 @@ std::string materialLabel(const tinygltf::Material& m, size_t index) {
 
 Rgb reflectance(const tinygltf::Model& model, const tinygltf::Material& m, const std::string& file,
                 const std::string& element, std::vector<std::string>* warnings) {
-  const std::vector<double>& factor = m.pbrMetallicRoughness.baseColorFactor;
-  if (factor.size() != 4)
-    throw SceneError(file, element, "baseColorFactor has " + std::to_string(factor.size()) + " values",
-                     "give baseColorFactor as 4 numbers (RGBA)");
+  const std::vector<double>& factor = m.pbrMetallicRoughness.baseColorFactor;  // 4 numbers: checkGltfTypes
   Rgb rho{factor[0], factor[1], factor[2]};
   for (int c = 0; c < 3; ++c)
     if (!(rho[c] >= 0.0 && rho[c] <= 1.0))
@@ -87,10 +84,7 @@ Rgb reflectance(const tinygltf::Model& model, const tinygltf::Material& m, const
 Rgb emittance(const tinygltf::Model& model, const tinygltf::Material& m, const std::string& file,
               const std::string& element, std::vector<std::string>* warnings) {
   Rgb e{0.0};
-  if (!m.emissiveFactor.empty()) {
-    if (m.emissiveFactor.size() != 3)
-      throw SceneError(file, element, "emissiveFactor has " + std::to_string(m.emissiveFactor.size()) + " values",
-                       "give emissiveFactor as 3 numbers (RGB)");
+  if (!m.emissiveFactor.empty()) {  // 3 numbers: checkGltfTypes
     e = Rgb(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
     for (int c = 0; c < 3; ++c)
       requireNonNegativeFactor(e[c], "emissiveFactor", file, element, "give emissiveFactor 3 numbers >= 0 (linear RGB)");
@@ -104,11 +98,7 @@ Rgb emittance(const tinygltf::Model& model, const tinygltf::Material& m, const s
   double strength = 1.0;
   const auto ext = m.extensions.find("KHR_materials_emissive_strength");
   if (ext != m.extensions.end() && ext->second.Has("emissiveStrength")) {
-    const tinygltf::Value& s = ext->second.Get("emissiveStrength");
-    if (!s.IsNumber())
-      throw SceneError(file, element, "KHR_materials_emissive_strength.emissiveStrength is not a number",
-                       "give emissiveStrength as a number (W/m^2 per unit emissiveFactor)");
-    strength = s.GetNumberAsDouble();
+    strength = ext->second.Get("emissiveStrength").GetNumberAsDouble();  // a number: checkGltfTypes
     requireNonNegativeFactor(strength, "KHR_materials_emissive_strength.emissiveStrength", file, element,
                              "give emissiveStrength a number >= 0 (W/m^2 per unit emissiveFactor)");
   }
