@@ -126,38 +126,45 @@ Rgb linearRgb(const Xyz& xyz) { return toRgb() * xyz; }
 
 double luminance(const Rgb& rgb) { return (toXyz() * rgb).y; }
 
-Rgb fitRgb(const Xyz& xyz, double y, double ceiling, bool* desaturated) {
-  if (desaturated) *desaturated = false;
+Rgb fitRgb(const Xyz& xyz, double y, double ceiling, ColorRepair* repair) {
+  if (repair) *repair = ColorRepair::kNone;
   if (!(y > 0.0)) return Rgb(0.0);
   Rgb unit = linearRgb(xyz / xyz.y);
   // Neutral to within what the matrices' rounding and white written to six digits (cxy 0.333333
   // 0.333333: 3e-6) leave: exactly grey, so that a grey scene is solved in one channel, not three.
   constexpr double kNeutral = 1e-5;
   if (glm::all(glm::lessThanEqual(glm::abs(unit - Rgb(1.0)), Rgb(kNeutral)))) unit = Rgb(1.0);
-  // Along unit(t) = 1 + t (unit - 1) luminance stays 1; take the largest t <= 1 that fits.
-  // A neutral colour's channels come out of the colour matrices 1 +- rounding: at a ceiling of y
-  // (rd 0.99) such a channel is not out of gamut, so excesses of rounding size are let through.
+  // Along unit(t) = 1 + t (unit - 1) luminance stays 1; take the largest t <= 1 that fits: no
+  // channel below 0 (the gamut) and none above the ceiling. A neutral colour's channels come out of
+  // the colour matrices 1 +- rounding: at a ceiling of y (rd 0.99) that is not an excess.
   constexpr double kRounding = 1e-12;
-  double t = 1.0;
+  double inGamut = 1.0;
+  double underCeiling = 1.0;
   for (int c = 0; c < 3; ++c) {
     const double d = unit[c] - 1.0;
-    if (d < 0.0) t = std::min(t, 1.0 / -d);
-    if (d > kRounding) t = std::min(t, (ceiling / y - 1.0) / d);
+    if (d < 0.0) inGamut = std::min(inGamut, 1.0 / -d);
+    if (d > kRounding) underCeiling = std::min(underCeiling, (ceiling / y - 1.0) / d);
   }
-  t = std::max(t, 0.0);
-  // A repair worth a warning changes a channel by more than a thousandth: white written to six
-  // digits (cxy 0.333333 0.333333) at rd 0.99 is not out of gamut, only rounded.
-  const Rgb change = (1.0 - t) * glm::abs(unit - Rgb(1.0));
-  if (desaturated) *desaturated = std::max({change.r, change.g, change.b}) > 1e-3;
+  const double t = std::max(std::min(inGamut, underCeiling), 0.0);
+  if (repair) {
+    // A repair worth a warning changes a channel by more than a thousandth (a primary's zero
+    // channels come out of the matrices as -1e-17).
+    const Rgb off = glm::abs(unit - Rgb(1.0));
+    const double spread = std::max({off.r, off.g, off.b});
+    if ((1.0 - inGamut) * spread > kWorthAWarning)
+      *repair = ColorRepair::kOutsideGamut;
+    else if ((1.0 - t) * spread > kWorthAWarning && spread > kNearNeutral)
+      *repair = ColorRepair::kTooSaturated;
+  }
   return y * (Rgb(1.0) + t * (unit - Rgb(1.0)));
 }
 
-Rgb mgfReflectance(double rd, const Xyz& xyz, bool* desaturated) {
-  return fitRgb(xyz, rd, std::max(rd, kHighestReflectance), desaturated);
+Rgb mgfReflectance(double rd, const Xyz& xyz, ColorRepair* repair) {
+  return fitRgb(xyz, rd, std::max(rd, kHighestReflectance), repair);
 }
 
-Rgb mgfEmittance(double ed, const Xyz& xyz, bool* desaturated) {
-  return fitRgb(xyz, ed / kWhiteEfficacyLmPerW, std::numeric_limits<double>::infinity(), desaturated);
+Rgb mgfEmittance(double ed, const Xyz& xyz, ColorRepair* repair) {
+  return fitRgb(xyz, ed / kWhiteEfficacyLmPerW, std::numeric_limits<double>::infinity(), repair);
 }
 
 }  // namespace radmesh

@@ -39,11 +39,25 @@ Xyz xyzFromTemperature(double kelvin);
 // cmix: colours (each at Y = 1) summed with weights that are relative luminances, scaled to Y = 1.
 Xyz mixColors(const std::vector<double>& weights, const std::vector<Xyz>& colors);
 
+// What fitting a colour into RGB did that is worth a warning. A repair that changes no channel by
+// more than kWorthAWarning (of the luminance) is none: rounding, or white written to a few digits.
+enum class ColorRepair {
+  kNone,
+  kOutsideGamut,  // a channel was below 0: the colour lies outside the Rec. 709 gamut
+  kTooSaturated,  // in the gamut, but a channel passed the ceiling at this reflectance
+};
+inline constexpr double kWorthAWarning = 1e-3;
+// A colour whose channels at luminance 1 all lie within this of 1 is near-neutral: a white
+// (cxy 0.333 0.333, D65 0.3127 0.3290, D50, the off-white paint of the MGF specification). At a
+// high rd (0.99) one of its channels passes the ceiling; it is desaturated there too, but only
+// toward the grey it nearly is: no warning, at any rd MGF allows.
+inline constexpr double kNearNeutral = 0.25;
+
 // rho for `rd` in [0, 1) of colour `xyz`: luminance rd, channels in [0, max(rd,
 // kHighestReflectance)] (where a saturated colour pushes one up, it stops there).
-Rgb mgfReflectance(double rd, const Xyz& xyz, bool* desaturated);
+Rgb mgfReflectance(double rd, const Xyz& xyz, ColorRepair* repair);
 // E in W/m^2 for `ed` lm/m^2 of colour `xyz`: channels >= 0, luminance ed / 179.
-Rgb mgfEmittance(double ed, const Xyz& xyz, bool* desaturated);
+Rgb mgfEmittance(double ed, const Xyz& xyz, ColorRepair* repair);
 
 // Linear RGB (Rec. 709 primaries, white E) of a colour; may be negative outside that gamut.
 Rgb linearRgb(const Xyz& xyz);
@@ -52,8 +66,8 @@ Rgb linearRgb(const Xyz& xyz);
 double luminance(const Rgb& rgb);
 
 // Colour `xyz` at luminance `y`, desaturated toward the grey of the same luminance as little as
-// needed so that every channel lies in [0, ceiling] (ceiling >= y). Sets *desaturated when it had
-// to: colours outside the RGB gamut, or too bright in one channel for a reflectance.
-Rgb fitRgb(const Xyz& xyz, double y, double ceiling, bool* desaturated);
+// needed so that every channel lies in [0, ceiling] (ceiling >= y). Sets *repair to what it had to
+// do, when worth a warning (see ColorRepair).
+Rgb fitRgb(const Xyz& xyz, double y, double ceiling, ColorRepair* repair);
 
 }  // namespace radmesh

@@ -24,19 +24,32 @@ Vec3 vector3(const MgfEntity& e, const std::string& what) {
   return {v[0], v[1], v[2]};
 }
 
+// Argument `i` of `e`, a fraction of light (rd, td, rs, ts): MGF's reference parser refuses one
+// outside [0, 1] as illegal (MG_EILL), and so does radmesh.
+double checkFraction(const MgfEntity& e, size_t i, const std::string& what) {
+  const std::string& k = e.words[0];
+  const double value = parseMgfNumber(e.words[i], what);
+  if (value < 0.0 || value > 1.0)
+    throw MgfError(fmt::format("{} {} is {}", what, e.words[i],
+                               value < 0.0 ? "negative" : "above 1 (more light than falls on the surface)"),
+                   fmt::format("write {} as a fraction of the light, from 0 up to 1 (50% is 0.5)", k));
+  return value;
+}
+
 // Material entities radmesh reads and checks but cannot represent, and why.
 struct IgnoredEntity {
   const char* keyword;
   size_t arguments;
   const char* usage;
+  const char* fraction;  // what the first argument is, when it is a fraction of light
   const char* why;
 };
 constexpr IgnoredEntity kIgnoredEntities[] = {
-    {"rs", 2, "rs rho_s alpha_r", "specular reflectance, radmesh surfaces are ideal diffusers"},
-    {"ts", 2, "ts tau_s alpha_t", "specular transmittance, radmesh surfaces are opaque"},
-    {"td", 1, "td tau_d", "diffuse transmittance, radmesh surfaces are opaque"},
-    {"ir", 2, "ir n_real n_imag", "index of refraction, radmesh surfaces are opaque"},
-    {"sides", 1, "sides {1|2}",
+    {"rs", 2, "rs rho_s alpha_r", "specular reflectance", "specular reflectance, radmesh surfaces are ideal diffusers"},
+    {"ts", 2, "ts tau_s alpha_t", "specular transmittance", "specular transmittance, radmesh surfaces are opaque"},
+    {"td", 1, "td tau_d", "diffuse transmittance", "diffuse transmittance, radmesh surfaces are opaque"},
+    {"ir", 2, "ir n_real n_imag", nullptr, "index of refraction, radmesh surfaces are opaque"},
+    {"sides", 1, "sides {1|2}", nullptr,
      "radmesh surfaces are one-sided: they emit and receive on their right-hand-rule front"},
 };
 
@@ -118,13 +131,12 @@ bool MgfContexts::handle(const MgfEntity& e) {
     materials_.select(e, MgfMaterial{});
   } else if (k == "rd") {
     requireMgfArguments(e, 1, 1, "rd rho_d");
-    const double rd = parseMgfNumber(e.words[1], "rho_d");
-    if (rd < 0.0)
-      throw MgfError("diffuse reflectance " + e.words[1] + " is negative", "give rd a value from 0 up to 1");
-    // rho = 1 would never let light die out; files in the wild write `rd 1` for white.
-    if (rd >= 1.0)
-      notes_.push_back(fmt::format("rd of 1 or more lowered to {} (a reflectance of 1 never lets light die out)",
-                                     kHighestReflectance));
+    const double rd = checkFraction(e, 1, "diffuse reflectance");
+    // MGF allows rd 1 and files in the wild write it for white, but rho = 1 would never let light
+    // die out: lowered, as in every reader.
+    if (rd == 1.0)
+      notes_.push_back(fmt::format("rd 1 lowered to {} (a reflectance of 1 never lets light die out)",
+                                   kHighestReflectance));
     material.rd = std::min(rd, kHighestReflectance);
     material.rdColor = color;
   } else if (k == "ed") {
@@ -156,8 +168,10 @@ bool MgfContexts::ignore(const MgfEntity& e) {
     requireMgfArguments(e, ignored.arguments, ignored.arguments, ignored.usage);
     if (k == "sides" && e.words[1] != "1" && e.words[1] != "2")
       throw MgfError("sides must be 1 or 2", "write sides 1 or sides 2");
-    for (size_t i = 1; i < e.words.size(); ++i)
-      // A fraction of light or a roughness below 0 is a broken file, as a negative rd is.
+    // Their fractions of light lie in [0, 1] and roughnesses are >= 0, or MGF's reference parser
+    // refuses the file (MG_EILL): so does radmesh, though it keeps none of them.
+    if (ignored.fraction) checkFraction(e, 1, ignored.fraction);
+    for (size_t i = ignored.fraction ? 2 : 1; i < e.words.size(); ++i)
       if (const double value = parseMgfNumber(e.words[i], k + " value"); value < 0.0 && k != "ir")
         throw MgfError(fmt::format("{} value {} is negative", k, e.words[i]), fmt::format("give {} values >= 0", k));
     notes_.push_back(k + " ignored: " + ignored.why);

@@ -38,7 +38,7 @@ class MgfContexts {
   const MgfVertex& vertex(const std::string& name) const;  // throws MgfError when undefined
   const MgfMaterial& material() const { return *materials_.current; }
   const std::string& materialName() const { return materials_.currentName; }  // "" if unnamed
-  // What the last handle() repaired (a reflectance of 1 or more, an impossible chromaticity) or
+  // What the last handle() repaired (rd 1, an impossible chromaticity) or
   // passed over (a specular reflectance), as MGF's reference parser does: one message per kind, for
   // the caller to count and report.
   std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }

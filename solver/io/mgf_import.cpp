@@ -195,9 +195,8 @@ void MgfInterpreter::luminaire(const MgfEntity& e) {
       std::reverse(face.begin(), face.end());
       for (Vec3& v : face) v.z = lum.heightM / 2.0;
     }
-    bool desaturated = false;
     const std::string name = fmt::format("ies {} ({})", target.filename().string(), up ? "up" : "down");
-    scene_.materials.push_back({name, Rgb(0.0), mgfEmittance(lumens / area, kMgfNeutral, &desaturated)});
+    scene_.materials.push_back({name, Rgb(0.0), mgfEmittance(lumens / area, kMgfNeutral, nullptr)});
     emit({face}, e, static_cast<int>(scene_.materials.size()) - 1);
   }
   if (transformed) popTransform();
@@ -348,19 +347,22 @@ void MgfInterpreter::emit(const MgfPolygons& polygons, const MgfEntity& e, int m
 int MgfInterpreter::currentMaterial(const MgfEntity& e) {
   const MgfMaterial& m = contexts_.material();
   const std::string name = contexts_.materialName().empty() ? "(unnamed)" : contexts_.materialName();
-  bool rhoDesaturated = false;
-  bool emittanceDesaturated = false;
-  const Rgb rho = mgfReflectance(m.rd, m.rdColor, &rhoDesaturated);
-  const Rgb emittance = mgfEmittance(m.ed, m.edColor, &emittanceDesaturated);
+  ColorRepair rhoRepair = ColorRepair::kNone;
+  ColorRepair emittanceRepair = ColorRepair::kNone;
+  const Rgb rho = mgfReflectance(m.rd, m.rdColor, &rhoRepair);
+  const Rgb emittance = mgfEmittance(m.ed, m.edColor, &emittanceRepair);
   // A material redefined after use becomes a second scene material ("name #2").
   std::vector<int>& sameName = materialsByName_[name];
   for (int i : sameName)
     if (scene_.materials[i].rho == rho && scene_.materials[i].emittance == emittance) return i;
   const std::string unique = sameName.empty() ? name : name + " #" + std::to_string(sameName.size() + 1);
-  if (rhoDesaturated || emittanceDesaturated)
-    warnings_.push_back(scene_.source + ": " + where(e.line) + ": material '" + unique +
-                        "': its colour lies outside the Rec. 709 gamut (or is too bright in one "
-                        "channel for a reflectance); desaturated toward grey, keeping its luminance");
+  const std::string material = scene_.source + ": " + where(e.line) + ": material '" + unique + "': its colour ";
+  if (rhoRepair == ColorRepair::kOutsideGamut || emittanceRepair == ColorRepair::kOutsideGamut)
+    warnings_.push_back(material + "lies outside the Rec. 709 gamut; desaturated toward grey, keeping its luminance");
+  else if (rhoRepair == ColorRepair::kTooSaturated)
+    warnings_.push_back(material + fmt::format("is too saturated for rd {:g}: a channel would pass {:g}; desaturated "
+                                               "toward grey, keeping its luminance",
+                                               m.rd, kHighestReflectance));
   sameName.push_back(static_cast<int>(scene_.materials.size()));
   scene_.materials.push_back({unique, rho, emittance});
   return sameName.back();

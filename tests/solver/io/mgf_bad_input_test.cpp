@@ -89,12 +89,11 @@ TEST(MgfBadInput, WrongArgumentCountShowsTheRightForm) {
   EXPECT_NE(r.what.find("cyl v1 radius v2"), std::string::npos) << r.what;
 }
 
-// Fractions of light and roughness below 0 are broken files, as a negative rd is, though radmesh
-// reads no transmittance or specular term.
-TEST(MgfBadInput, NegativeTransmittanceSpecularOrSpectrumIsRefused) {
+// A roughness or a spectrum below 0 is a broken file, as a negative rd is, though radmesh reads no
+// transmittance or specular term.
+TEST(MgfBadInput, NegativeRoughnessOrSpectrumIsRefused) {
   TempDir dir;
-  for (const auto& [entity, says] : {std::pair{"td -0.6", "td value -0.6 is negative (fix: give td values >= 0)"},
-                                     std::pair{"rs -0.5 0.1", "rs value -0.5 is negative"},
+  for (const auto& [entity, says] : {std::pair{"rs 0.5 -0.1", "rs value -0.1 is negative (fix: give rs values >= 0)"},
                                      std::pair{"ts 0.2 -0.1", "ts value -0.1 is negative"},
                                      std::pair{"c\n cspec 400 700 -1 1 -1", "spectrum value -1 is negative"}}) {
     const std::string path = test::writeMgf(dir, "scene.mgf", std::string("m grey =\n ") + entity + "\n rd 0.5\n");
@@ -103,6 +102,44 @@ TEST(MgfBadInput, NegativeTransmittanceSpecularOrSpectrumIsRefused) {
       ADD_FAILURE() << entity << " was accepted";
     } catch (const SceneError& e) {
       EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(MgfBadInput, DiffuseReflectanceAboveOneIsRefused) {
+  expectRefused("mgf_rd_above_one.mgf", "line 5: rd",
+                "diffuse reflectance 5 is above 1 (more light than falls on the surface) (fix: write rd as a "
+                "fraction of the light, from 0 up to 1 (50% is 0.5))");
+}
+
+// MGF's reference parser refuses rd, td, rs and ts outside [0, 1] (MG_EILL): so does radmesh, in
+// the entities it keeps nothing of too, where they had been passed over with a note (rd 5 had been
+// lowered to 0.99). rd 1 is legal: lowered, with a warning (MgfRepair.*).
+TEST(MgfBadInput, FractionsOfLightOutsideZeroToOneAreRefused) {
+  const auto fix = [](const std::string& k) {
+    return "(fix: write " + k + " as a fraction of the light, from 0 up to 1 (50% is 0.5))";
+  };
+  const std::string above = " is above 1 (more light than falls on the surface) ";
+  const struct {
+    std::string entity, says;
+  } cases[] = {
+      {"rd 5", "rd: diffuse reflectance 5" + above + fix("rd")},
+      {"rd 1.0001", "rd: diffuse reflectance 1.0001" + above + fix("rd")},
+      {"rd -0.5", "rd: diffuse reflectance -0.5 is negative " + fix("rd")},
+      {"rs 5 0.1", "rs: specular reflectance 5" + above + fix("rs")},
+      {"rs -0.5 0.1", "rs: specular reflectance -0.5 is negative " + fix("rs")},
+      {"td 5", "td: diffuse transmittance 5" + above + fix("td")},
+      {"td -0.6", "td: diffuse transmittance -0.6 is negative " + fix("td")},
+      {"ts 1.5 0", "ts: specular transmittance 1.5" + above + fix("ts")},
+  };
+  TempDir dir;
+  for (const auto& c : cases) {
+    const std::string path = test::writeMgf(dir, "scene.mgf", "m grey =\n rd 0.5\n " + c.entity + "\n");
+    try {
+      importMgf(path);
+      ADD_FAILURE() << c.entity << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": line 3: " + c.says);
     }
   }
 }

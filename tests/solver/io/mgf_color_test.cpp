@@ -78,9 +78,9 @@ TEST(MgfColor, MixingPrimariesByTheirLuminanceWeightsGivesWhite) {
 
 TEST(MgfColor, OutOfGamutReflectanceIsDesaturatedKeepingLuminance) {
   // corridor.mgf's red door: cxy 0.75 0.10 lies outside the spectral locus.
-  bool desaturated = false;
-  const Rgb rho = mgfReflectance(0.29, xyzFromChromaticity(0.75, 0.10), &desaturated);
-  EXPECT_TRUE(desaturated);
+  ColorRepair repair = ColorRepair::kNone;
+  const Rgb rho = mgfReflectance(0.29, xyzFromChromaticity(0.75, 0.10), &repair);
+  EXPECT_EQ(repair, ColorRepair::kOutsideGamut);
   EXPECT_NEAR(luminance(rho), 0.29, 1e-12);
   for (int c = 0; c < 3; ++c) {
     EXPECT_GE(rho[c], 0.0);
@@ -89,17 +89,17 @@ TEST(MgfColor, OutOfGamutReflectanceIsDesaturatedKeepingLuminance) {
   // Desaturated no further than needed: a channel sits on a bound.
   EXPECT_TRUE(std::abs(std::max({rho.r, rho.g, rho.b}) - kHighestReflectance) < 1e-12 ||
               std::abs(std::min({rho.r, rho.g, rho.b})) < 1e-12);
-  const Rgb grey = mgfReflectance(0.5, kMgfNeutral, &desaturated);
-  EXPECT_FALSE(desaturated);
+  const Rgb grey = mgfReflectance(0.5, kMgfNeutral, &repair);
+  EXPECT_EQ(repair, ColorRepair::kNone);
   EXPECT_NEAR(glm::length(grey - Rgb(0.5)), 0.0, 1e-12);
 }
 
 // rd 0.99 puts the ceiling at the luminance itself: a neutral colour's channels, 1 up to rounding,
 // must not count as outside the gamut (they did, and --strict refused the file).
 TEST(MgfColor, NeutralAtTheHighestReflectanceIsNotDesaturated) {
-  bool desaturated = true;
-  const Rgb rho = mgfReflectance(kHighestReflectance, kMgfNeutral, &desaturated);
-  EXPECT_FALSE(desaturated);
+  ColorRepair repair = ColorRepair::kTooSaturated;
+  const Rgb rho = mgfReflectance(kHighestReflectance, kMgfNeutral, &repair);
+  EXPECT_EQ(repair, ColorRepair::kNone);
   EXPECT_NEAR(glm::length(rho - Rgb(kHighestReflectance)), 0.0, 1e-12);
   const std::string face = "v a =\n p 0 0 0\nv b =\n p 1 0 0\nv c =\n p 0 1 0\n";
   std::vector<std::string> warnings;
@@ -115,10 +115,53 @@ TEST(MgfColor, NeutralAtTheHighestReflectanceIsNotDesaturated) {
       << warnings[0];
 }
 
+// MGF's white to three digits (cxy 0.333 0.333: blue 1.0035 at luminance 1) and D65 at rd 0.99 had
+// a channel past the ceiling and warned "outside the Rec. 709 gamut" (--strict refused the file). A
+// near-neutral colour never warns at any rd MGF allows; a saturated one still does.
+TEST(MgfColor, NearNeutralColoursNeverWarnAtAnyLegalReflectance) {
+  const std::string face = "v a =\n p 0 0 0\nv b =\n p 1 0 0\nv c =\n p 0 1 0\nf a b c\n";
+  for (const std::string white : {"0.333 0.333", "0.3127 0.3290", "0.3457 0.3585", "0.337 0.337", "0.3632 0.3420"}) {
+    for (const double rd : {0.5, 0.9, 0.95, 0.99, 1.0}) {
+      std::vector<std::string> warnings;
+      const Scene s =
+          test::importMgfText(fmt::format("m white =\n  c\n    cxy {}\n  rd {}\n", white, rd) + face, &warnings);
+      ASSERT_EQ(warnings.size(), rd == 1.0 ? 1u : 0u)
+          << white << " rd " << rd << ": " << (warnings.empty() ? "" : warnings.back());
+      if (rd == 1.0) EXPECT_NE(warnings[0].find("rd 1 lowered to 0.99"), std::string::npos) << warnings[0];
+      const Rgb rho = s.materials.at(0).rho;
+      EXPECT_NEAR(luminance(rho), std::min(rd, kHighestReflectance), 1e-12) << white << " rd " << rd;
+      EXPECT_LE(std::max({rho.r, rho.g, rho.b}), kHighestReflectance + 1e-12) << white << " rd " << rd;
+      EXPECT_GE(std::min({rho.r, rho.g, rho.b}), 0.0) << white << " rd " << rd;
+    }
+  }
+  ColorRepair repair = ColorRepair::kOutsideGamut;
+  mgfReflectance(kHighestReflectance, xyzFromChromaticity(0.3127, 0.3290), &repair);
+  EXPECT_EQ(repair, ColorRepair::kNone);
+  // The one warning for a material `name` of colour `cxy` at `rd`, from its first face, line 11.
+  const auto onlyWarning = [&](const std::string& name, const std::string& cxy, const std::string& rd) {
+    std::vector<std::string> warnings;
+    test::importMgfText("m " + name + " =\n  c\n    cxy " + cxy + "\n  rd " + rd + "\n" + face, &warnings);
+    EXPECT_EQ(warnings.size(), 1u);
+    return warnings.empty() ? std::string() : warnings[0];
+  };
+  // The red primary lies in the gamut, but at rd 0.5 its red channel would be 1.95.
+  const std::string red = onlyWarning("red", "0.64 0.33", "0.5");
+  EXPECT_NE(red.find("scene.mgf: line 11: material 'red': its colour is too saturated for rd 0.5: a channel would "
+                     "pass 0.99; desaturated toward grey, keeping its luminance"),
+            std::string::npos)
+      << red;
+  // corridor.mgf's door lies outside the gamut, at any rd.
+  const std::string door = onlyWarning("door", "0.75 0.10", "0.29");
+  EXPECT_NE(door.find("scene.mgf: line 11: material 'door': its colour lies outside the Rec. 709 gamut; desaturated "
+                      "toward grey, keeping its luminance"),
+            std::string::npos)
+      << door;
+}
+
 TEST(MgfColor, EmittanceIsLumensOver179PerChannel) {
-  bool desaturated = true;
-  const Rgb e = mgfEmittance(179.0 * 4.0, kMgfNeutral, &desaturated);
-  EXPECT_FALSE(desaturated);
+  ColorRepair repair = ColorRepair::kOutsideGamut;
+  const Rgb e = mgfEmittance(179.0 * 4.0, kMgfNeutral, &repair);
+  EXPECT_EQ(repair, ColorRepair::kNone);
   EXPECT_NEAR(glm::length(e - Rgb(4.0)), 0.0, 1e-12);
 }
 

@@ -1,0 +1,84 @@
+// MGF material values from the command line: what MGF's reference parser refuses (rd, rs, td
+// outside [0, 1]) is refused with exit 2 naming the file, line, entity and fix; rd 1 is repaired
+// with a warning; a near-neutral white at rd 0.99 opens even under --strict.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "tests/cli/cli_run.h"
+
+namespace radmesh {
+namespace {
+
+// A closed 2 m box lit by a ceiling panel; its walls are `material` (the lines after `m white =`).
+std::string box(const std::string& name, const std::string& material) {
+  const std::string path = tempPath(name);
+  std::ofstream(path) << "m white =\n" << material
+                      << "v p0 =\n p 0 0 0\nv p1 =\n p 2 0 0\nv p2 =\n p 2 2 0\nv p3 =\n p 0 2 0\n"
+                         "v p4 =\n p 0 0 2\nv p5 =\n p 2 0 2\nv p6 =\n p 2 2 2\nv p7 =\n p 0 2 2\n"
+                         "f p0 p1 p2 p3\nf p4 p7 p6 p5\nf p0 p4 p5 p1\nf p1 p5 p6 p2\nf p2 p6 p7 p3\nf p3 p7 p4 p0\n"
+                         "m light =\n c\n ed 100\nv l0 =\n p 0.8 0.8 1.99\nv l1 =\n p 1.2 0.8 1.99\n"
+                         "v l2 =\n p 1.2 1.2 1.99\nv l3 =\n p 0.8 1.2 1.99\nf l0 l3 l2 l1\n";
+  return path;
+}
+
+TEST(MgfValuesCli, FractionsOfLightAboveOneAreRefused) {
+  const struct {
+    std::string name, material, says;
+  } cases[] = {
+      {"rd5.mgf", " c\n rd 5\n",
+       ": line 3: rd: diffuse reflectance 5 is above 1 (more light than falls on the surface) (fix: write rd as a "
+       "fraction of the light, from 0 up to 1 (50% is 0.5))"},
+      {"rs5.mgf", " c\n rd 0.5\n rs 5 0.1\n",
+       ": line 4: rs: specular reflectance 5 is above 1 (more light than falls on the surface) (fix: write rs as a "
+       "fraction of the light, from 0 up to 1 (50% is 0.5))"},
+      {"td5.mgf", " c\n rd 0.5\n td 5\n",
+       ": line 4: td: diffuse transmittance 5 is above 1 (more light than falls on the surface) (fix: write td as a "
+       "fraction of the light, from 0 up to 1 (50% is 0.5))"},
+      {"td-neg.mgf", " c\n rd 0.5\n td -0.2\n",
+       ": line 4: td: diffuse transmittance -0.2 is negative (fix: write td as a fraction of the light, from 0 up "
+       "to 1 (50% is 0.5))"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = box(c.name, c.material);
+    const CommandRun run = radmesh("info " + path);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(run.output, "radmesh: error: " + path + c.says + "\n");
+  }
+}
+
+TEST(MgfValuesCli, ReflectanceOfOneIsLoweredWithAWarning) {
+  const std::string path = box("rd1.mgf", " c\n  cxy 0.333 0.333\n rd 1.0\n");
+  CommandRun run = radmesh("info " + path);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("radmesh: warning: " + path +
+                            ": line 4: rd 1 lowered to 0.99 (a reflectance of 1 never lets light die out)\n"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("gamut"), std::string::npos) << run.output;
+  run = radmesh("info --strict " + path);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--strict: needed 1 kind(s) of repair"), std::string::npos) << run.output;
+}
+
+// MGF's white to three digits and D65 at rd 0.99 had warned "outside the Rec. 709 gamut", and
+// --strict refused the reference scenes' own white.
+TEST(MgfValuesCli, NearNeutralWhiteAtTheHighestReflectanceOpensUnderStrict) {
+  for (const std::string white : {"0.333 0.333", "0.3127 0.3290"}) {
+    const std::string path = box("white.mgf", " c\n  cxy " + white + "\n rd 0.99\n");
+    const CommandRun run = radmesh("info --strict " + path);
+    EXPECT_EQ(run.exitCode, 0) << white << ": " << run.output;
+    EXPECT_EQ(run.output.find("warning"), std::string::npos) << white << ": " << run.output;
+  }
+  const std::string path = box("red.mgf", " c\n  cxy 0.75 0.10\n rd 0.99\n");
+  const CommandRun run = radmesh("info --strict " + path);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("  " + path + ": line 21: material 'white': its colour lies outside the Rec. 709 "
+                            "gamut; desaturated toward grey, keeping its luminance (fix: fix the file, or drop --strict"),
+            std::string::npos)
+      << run.output;
+}
+
+}  // namespace
+}  // namespace radmesh
