@@ -127,7 +127,9 @@ TEST(MgfColor, NearNeutralColoursNeverWarnAtAnyLegalReflectance) {
           test::importMgfText(fmt::format("m white =\n  c\n    cxy {}\n  rd {}\n", white, rd) + face, &warnings);
       ASSERT_EQ(warnings.size(), rd == 1.0 ? 1u : 0u)
           << white << " rd " << rd << ": " << (warnings.empty() ? "" : warnings.back());
-      if (rd == 1.0) EXPECT_NE(warnings[0].find("rd 1 lowered to 0.99"), std::string::npos) << warnings[0];
+      if (rd == 1.0) {
+        EXPECT_NE(warnings[0].find("rd 1 lowered to 0.99"), std::string::npos) << warnings[0];
+      }
       const Rgb rho = s.materials.at(0).rho;
       EXPECT_NEAR(luminance(rho), std::min(rd, kHighestReflectance), 1e-12) << white << " rd " << rd;
       EXPECT_LE(std::max({rho.r, rho.g, rho.b}), kHighestReflectance + 1e-12) << white << " rd " << rd;
