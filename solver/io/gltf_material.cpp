@@ -69,13 +69,13 @@ Rgb reflectance(const tinygltf::Model& model, const tinygltf::Material& m, const
   Rgb rho{factor[0], factor[1], factor[2]};
   for (int c = 0; c < 3; ++c)
     if (!(rho[c] >= 0.0 && rho[c] <= 1.0))
-      throw SceneError(file, element, "baseColorFactor " + std::to_string(rho[c]) + " is outside [0, 1]",
+      throw SceneError(file, element, fmt::format("baseColorFactor {:g} is outside [0, 1]", rho[c]),
                        "give each baseColorFactor channel a value from 0 to 1");
   rho *= textureAverage(model, m.pbrMetallicRoughness.baseColorTexture, file, element, "baseColorTexture", warnings);
   if (rho.r > kHighestReflectance || rho.g > kHighestReflectance || rho.b > kHighestReflectance) {
     warn(warnings, file, element,
-         "reflectance above " + std::to_string(kHighestReflectance) +
-             " lowered to it (radiosity cannot converge with a reflectance of 1)");
+         fmt::format("reflectance above {:g} lowered to it (radiosity cannot converge with a reflectance of 1)",
+                     kHighestReflectance));
     rho = glm::min(rho, Rgb(kHighestReflectance));
   }
   return rho;

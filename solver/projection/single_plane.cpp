@@ -31,6 +31,11 @@ ProjectionSurface makeSinglePlane(int resolution, double ratio) {
   ProjectionSurface surface;
   addFace(surface, singlePlaneFace(resolution, ratio), singlePlaneDeltaFormFactor);
   const double closedForm = singlePlaneCapturedFraction(ratio);
+  // A plane that misses nearly every shot solves nothing: the ledger would book it all as lost.
+  if (!(closedForm >= kLeastCapturedFraction))
+    throw OptionError(fmt::format("--ratio {}: the plane catches {:.2g}% of each shot, so the solve would lose nearly "
+                                  "all its light; give --ratio 0.1 or more (3, the paper's, catches {:.1f}%)",
+                                  ratio, 100.0 * closedForm, 100.0 * singlePlaneCapturedFraction(3.0)));
   scaleToCapturedFraction(surface, closedForm);
   // Pixels wide against the plane's height sample the form factor at their centres too coarsely:
   // scaling the table to the closed form would keep the total and put the light in the wrong places.

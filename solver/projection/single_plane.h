@@ -17,8 +17,10 @@ double singlePlaneDeltaFormFactor(double x, double y, double pixelArea);
 ProjectionFace singlePlaneFace(int resolution, double ratio);
 
 // Throws OptionError naming --ratio and --resolution when the pixels' delta form factors sum to
-// more than kPlaneSamplingTolerance away from the closed form: pixels too wide to sample it.
+// more than kPlaneSamplingTolerance away from the closed form: pixels too wide to sample it; and
+// naming --ratio when the plane catches under kLeastCapturedFraction of a shot (r below 0.089).
 inline constexpr double kPlaneSamplingTolerance = 0.01;
+inline constexpr double kLeastCapturedFraction = 0.01;
 ProjectionSurface makeSinglePlane(int resolution, double ratio);
 
 }  // namespace radmesh

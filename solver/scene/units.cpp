@@ -30,7 +30,7 @@ std::string unitsNote(const Scene& scene) {
   const Vec3 extent = high - low;
   const double across = std::max({extent.x, extent.y, extent.z});
   if (!(across > kLargestBuildingM)) return "";
-  return fmt::format("the model is {:.0f} m across, read in metres; if its coordinates are in millimetres, "
+  return fmt::format("the model is {:.6g} m across, read in metres; if its coordinates are in millimetres, "
                      "centimetres, inches or feet, give --units mm, cm, in or ft (the cell, the eye height and the "
                      "walking pace are in metres)", across);
 }

@@ -43,6 +43,22 @@ TEST(SinglePlane, PixelsTooCoarseToSampleTheFormFactorAreRefused) {
   }
 }
 
+// A plane so small it catches under 1 % of a shot loses nearly all the light (--ratio 1e-9 caught
+// 1e-18 of it and solved on, booking all as lost). Refused; 0.1, catching 1.26 %, is not.
+TEST(SinglePlane, APlaneThatCatchesNearlyNothingIsRefused) {
+  EXPECT_NEAR(makeSinglePlane(32, 0.1).capturedFraction, 0.012565, 1e-6);
+  for (const double ratio : {0.08, 1e-3, 1e-9}) {
+    try {
+      makeSinglePlane(32, ratio);
+      ADD_FAILURE() << "ratio " << ratio << " was accepted";
+    } catch (const OptionError& e) {
+      EXPECT_NE(std::string(e.what()).find("so the solve would lose nearly all its light; give --ratio 0.1 or more"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(SinglePlane, TableSumConvergesToTheClosedFormAsResolutionGrows) {
   const double exact = singlePlaneCapturedFraction(3.0);
   double previous = 1.0;
