@@ -77,6 +77,8 @@ glm::ivec2 pictureSize(const std::string& text, std::size_t memoryBytes) {
 }
 
 constexpr double kMinFovDeg = 0.01;
+// At 178 degrees a 1 m box showed black bands down both sides of the picture; 170 shows none.
+constexpr double kMaxFovDeg = 170.0;
 
 // The start view of the walkthrough, moved by --camera / --look / --fov: chosen (or refused) from
 // the scene's frame before a solve, not after it.
@@ -164,9 +166,11 @@ std::optional<Solved> readBakeToRender(const RenderArgs& args) {
 
 void run(const RenderArgs& args) {
   const glm::ivec2 size = pictureSize(args.size, usableMemoryBytes());
-  if (!(args.fovDeg >= kMinFovDeg && args.fovDeg < 180.0))
-    throw OptionError(fmt::format("--fov must be at least {} and below 180 degrees (narrower, the picture's single-precision "
-                                  "projection has no pixels left), got {}", kMinFovDeg, args.fovDeg));
+  if (!(args.fovDeg >= kMinFovDeg && args.fovDeg <= kMaxFovDeg))
+    throw OptionError(fmt::format("--fov must be from {} to {} degrees (narrower, the picture's single-precision "
+                                  "projection has no pixels left; wider, the walls beside the eye fall before its "
+                                  "near plane and the picture's sides go black), got {}",
+                                  kMinFovDeg, kMaxFovDeg, args.fovDeg));
   checkOutputPath("--out", args.outPath, ".png", "the picture is PNG");
   checkOutputsDistinct(args.flags.scene, {{"--out", args.outPath}});  // a link named .png may lead to the scene
   std::optional<Solved> solved = readBakeToRender(args);

@@ -777,7 +777,10 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--exposure 1e308", "--exposure 1e+308 is out of range"},
       {"--exposure -161", "--exposure -161 is out of range: give stops from -160 to 160"},
       {"--effects some", "--effects"},
-      {"--fov 1e-308", "--fov must be at least 0.01 and below 180 degrees"},
+      {"--fov 1e-308", "--fov must be from 0.01 to 170 degrees"},
+      {"--fov 178", "--fov must be from 0.01 to 170 degrees (narrower, the picture's single-precision projection has no "
+                    "pixels left; wider, the walls beside the eye fall before its near plane and the picture's sides "
+                    "go black), got 178"},
       {"--camera 1e308,0,0", "--camera/--look: too far apart to aim the camera"},
   };
   for (const auto& [options, named] : cases) {
