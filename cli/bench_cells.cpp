@@ -171,8 +171,7 @@ SolveOptions solveOptions(const BenchCellsArgs& args) {
   return o;
 }
 
-nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const BenchCellsArgs& args) {
-  const Scene scene = loadScene(name);
+nlohmann::json benchScene(const Scene& scene, const SolveOptions& o, const BenchCellsArgs& args) {
   const std::vector<Patch> patches = meshScene(scene, args.cellM);
   const CellPartition partition = findCells(scene, patches);
   if (args.focusCell < 0 || static_cast<size_t>(args.focusCell) >= partition.cells.size())  // before any solve
@@ -225,7 +224,8 @@ nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const 
   const CellsRun parallel = runCells(scene, patches, partition, two, args);
   const bool identical = parallel.radiosity == one.radiosity;
   fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%   {:.2f}x on 2 threads (wall against wall), {}\n",
-             "cells, 2 threads", parallel.seconds, parallel.wallSeconds, parallel.iterations,
+             "cells, 2 threads", parallel.seconds, parallel.wallSeconds,
+             iterationsText(parallel.iterations, parallel.unshotFraction <= o.untilUnshot),
              100.0 * parallel.unshotFraction, one.wallSeconds / parallel.wallSeconds,
              identical ? "bitwise identical" : "DIFFERENT RESULTS");
   const FocusRun focus = printFocus(focusRun(scene, patches, partition, o, args), args);
@@ -252,10 +252,13 @@ nlohmann::json benchScene(const std::string& name, const SolveOptions& o, const 
 
 nlohmann::json benchCells(const BenchCellsArgs& args) {
   const SolveOptions o = solveOptions(args);
+  // Every scene read before the first is solved: a misspelt last one is found now, not after the rest.
+  std::vector<Scene> loaded;
+  for (const std::string& name : args.scenes) loaded.push_back(loadScene(name));
   fmt::print("seconds: one thread, the solving thread's CPU time; two threads, wall time; the speed-up on two "
              "threads is wall time against wall time\n");
   nlohmann::json scenes = nlohmann::json::array();
-  for (const std::string& name : args.scenes) scenes.push_back(benchScene(name, o, args));
+  for (const Scene& scene : loaded) scenes.push_back(benchScene(scene, o, args));
   return {{"projection", args.projection}, {"resolution", args.resolution}, {"until_unshot", args.untilUnshot},
           {"subdivide", args.subdivide}, {"min_element", args.minElementM}, {"cache_mb", args.cacheMb},
           {"exchange_shots", args.exchangeShots}, {"portal_bins", args.portalBins}, {"scenes", scenes}};

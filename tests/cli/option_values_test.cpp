@@ -88,5 +88,21 @@ TEST(OptionValues, EveryOutputIsFoundUnwritableBeforeTheWork) {
   }
 }
 
+// bench cells solved the first scene in full before it found the second missing.
+TEST(OptionValues, ABenchOfSeveralScenesReadsThemAllBeforeSolvingAny) {
+  const std::string bench = "bench cells two-rooms --resolution 16 --cell 0.75 --max-iterations 20 --skip-whole";
+  CommandRun run = radmesh(bench + " " + tempPath("nosuch.mgf"));
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("nosuch.mgf: no such file"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("cells, 1 thread"), std::string::npos) << run.output;
+  // Each row cut short by --max-iterations carries its "+", the two-thread one too.
+  run = radmesh(bench);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("cells, 1 thread "), std::string::npos) << run.output;
+  const size_t two = run.output.find("cells, 2 threads ");
+  ASSERT_NE(two, std::string::npos) << run.output;
+  EXPECT_NE(run.output.substr(two, run.output.find('\n', two) - two).find("+ "), std::string::npos) << run.output;
+}
+
 }  // namespace
 }  // namespace radmesh
