@@ -152,6 +152,13 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
     return o;
   };
   // Every setting is checked before any is timed: a refusal comes first, not after minutes of rows.
+  // The lists first, so that a refusal names the flag given (--resolutions, not --resolution).
+  for (int n : args.resolutions) checkResolution(n, "--resolutions");
+  for (const std::string& projection : projections)  // with cells, their refusal of the mesh comes first
+    if (!cells && backend == Backend::Mesh && parseProjection(projection) != Projection::Plane)
+      throw OptionError(fmt::format("--backend mesh runs the paper's single plane; --projections {} is native only: "
+                                    "give --projections plane or --backend native",
+                                    projection));
   for (const std::string& projection : projections)
     for (int n : args.resolutions)
       for (int k : args.shooters) optionsOf(projection, n, k);

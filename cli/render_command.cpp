@@ -106,7 +106,11 @@ RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
                                        ? fmt::format(" (without --look, the scene's centre {:.4g},{:.4g},{:.4g})",
                                                      view.look.x, view.look.y, view.look.z)
                                        : "";
-    throw OptionError(fmt::format("--camera/--look/--fov: {}{}", e.what(), centreText));
+    // Named as given: the view's own flags, or the walkthrough's start where none is.
+    std::string given = std::string(args.camera ? "/--camera" : "") + (args.look ? "/--look" : "") +
+                        (args.fovDeg != RenderArgs{}.fovDeg ? "/--fov" : "");
+    given = given.empty() ? "the walkthrough's start" : given.substr(1);
+    throw OptionError(fmt::format("{}: {}{}", given, e.what(), centreText));
   }
   return view;
 }

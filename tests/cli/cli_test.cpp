@@ -770,7 +770,8 @@ TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
       {"--size 640", "--size"},
       {"--fov 180", "--fov"},
       {"--camera 1,2", "--camera"},
-      {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2", "--camera/--look/--fov"},
+      {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2", "radmesh: error: --camera/--look: "},  // not --fov, not given
+      {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2 --fov 90", "radmesh: error: --camera/--look/--fov: "},
       {"--camera 0.27799999713897705,0.274399995803833,0.27959999442100525", "(without --look, the scene's centre 0.278,0.2744,0.2796)"},
       {"--look nan,0,0", "--look"},
       {"--exposure nan", "--exposure nan is out of range"},

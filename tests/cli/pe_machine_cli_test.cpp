@@ -61,8 +61,14 @@ TEST(PeMachineCli, BenchSolveOnTheMeshTimesThePlaneAndRefusesTheHemicubeFirst) {
   for (const auto& row : rows) EXPECT_EQ(row["projection"], "plane");
   run = radmesh("bench solve cornell --backend mesh --projections plane,hemicube --resolutions 64 --max-iterations 2");
   EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("--projection hemicube is native only"), std::string::npos) << run.output;
+  // It names the bench's own flags: --projection is not one of them.
+  EXPECT_NE(run.output.find("--projections hemicube is native only: give --projections plane or --backend native"),
+            std::string::npos)
+      << run.output;
   EXPECT_EQ(run.output.find("ms/iteration"), std::string::npos) << run.output;
+  run = radmesh("bench solve cornell --resolutions 64,8 --max-iterations 2");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--resolutions 8 is out of range"), std::string::npos) << run.output;
 }
 
 TEST(PeMachineCli, BadMachinesExit2NamingTheOptionAndTheFix) {
