@@ -158,8 +158,15 @@ nlohmann::json toJson(const SceneSummary& s, const Scene& scene) {
 
 void printBounds(const Vec3& low, const Vec3& high) {
   const Vec3 size = high - low;
-  fmt::print("bounding box    ({:.4g}, {:.4g}, {:.4g}) .. ({:.4g}, {:.4g}, {:.4g}) m, size {:.4g} x {:.4g} x {:.4g} m\n",
-             low.x, low.y, low.z, high.x, high.y, high.z, size.x, size.y, size.z);
+  // Digits down to the millimetre, at least four: at site coordinates (5e6 m) four made both corners
+  // of a building read (5e+05, 5e+06, 0).
+  const Vec3 far = glm::max(glm::abs(low), glm::abs(high));
+  const double farthest = std::max({far.x, far.y, far.z});
+  const int digits = std::clamp(static_cast<int>(std::ceil(std::log10(farthest / 0.001 + 1.0))), 4, 15);
+  fmt::print("bounding box    ({:.{}g}, {:.{}g}, {:.{}g}) .. ({:.{}g}, {:.{}g}, {:.{}g}) m, size {:.4g} x {:.4g} x "
+             "{:.4g} m\n",
+             low.x, digits, low.y, digits, low.z, digits, high.x, digits, high.y, digits, high.z, digits, size.x,
+             size.y, size.z);
 }
 
 void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings,

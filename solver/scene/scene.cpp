@@ -196,11 +196,33 @@ void validateLight(const Scene& scene, const Light& light) {
                      "give 0 <= innerConeAngle < outerConeAngle <= pi/2");
 }
 
+// A model far from the origin for its size keeps too few digits of its own coordinates: 1e12 m out,
+// a 2 m box is known to 1e-4 m and its emitted power came out 0.02 % off, without a word. At site
+// coordinates (5e6 m) a 5 m building is known to 2e-10 of its size, fifty times finer than asked.
+constexpr double kLeastCoordinatePrecision = 1e-8;  // of the model's size
+
+void validatePrecision(const Scene& scene) {
+  const BoundingBox box = boundingBox(scene.polygons);
+  const Vec3 extent = box.high - box.low;
+  const double size = std::max({extent.x, extent.y, extent.z});
+  const Vec3 far = glm::max(glm::abs(box.low), glm::abs(box.high));
+  const double farthest = std::max({far.x, far.y, far.z});
+  const double knownTo = farthest * std::numeric_limits<double>::epsilon();
+  if (!(knownTo <= kLeastCoordinatePrecision * size))
+    throw SceneError(scene.source, "",
+                     fmt::format("lies {:.3g} m from the origin, where a coordinate is known to {:.2g} m only, {:.2g} "
+                                 "of the model's {:.4g} m size",
+                                 farthest, knownTo, size > 0.0 ? knownTo / size : 1.0, size),
+                     "move the model near the origin (MGF: xf -t; glTF: the root node's translation), or give its "
+                     "coordinates from a point on the site");
+}
+
 }  // namespace
 
 void validateGeometry(const Scene& scene) {
   if (scene.polygons.empty())
     throw SceneError(scene.source, "", "contains no polygons", "check that the file holds surfaces");
+  validatePrecision(scene);
   for (const Material& m : scene.materials) validateMaterial(scene, m);
   for (size_t i = 0; i < scene.polygons.size(); ++i) validatePolygon(scene, i);
   validateLights(scene);

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "tests/cli/cli_run.h"
+#include "tests/test_paths.h"
 
 namespace radmesh {
 namespace {
@@ -102,6 +103,17 @@ TEST(OptionValues, ABenchOfSeveralScenesReadsThemAllBeforeSolvingAny) {
   const size_t two = run.output.find("cells, 2 threads ");
   ASSERT_NE(two, std::string::npos) << run.output;
   EXPECT_NE(run.output.substr(two, run.output.find('\n', two) - two).find("+ "), std::string::npos) << run.output;
+}
+
+// At site coordinates the bounds printed four digits: both corners of a room read (5e+05, 5e+06, 0).
+TEST(OptionValues, InfoPrintsSiteCoordinatesToTheMillimetre) {
+  const std::string site = tempPath("site.mgf");
+  std::ofstream(site) << "xf -t 512345.678 5012345.678 0\ni " << test::dataPath("daylight/room_one_window.mgf").string()
+                      << "\nxf\n";
+  const CommandRun run = radmesh("info " + site + " --sky 10000");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("bounding box    (512345.678, 5012345.678, 0) .. ("), std::string::npos) << run.output;
+  EXPECT_NE(radmesh("info office").output.find("bounding box    (-0.15, 0, 0) .. (7.2, 5.7, 2.7) m"), std::string::npos);
 }
 
 }  // namespace
