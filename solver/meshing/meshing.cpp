@@ -149,20 +149,34 @@ void checkCell(double cellM) {
 
 namespace {
 
+// The cell at which about `patches` at `cellM` fall to 90 % of the limit, by the estimate's own
+// shape: a piece's cells are its area / cell^2 plus its sides / cell plus one, so the count goes as
+// area / c^2 + sides / c + pieces, with the sides found from the count at cellM. Not a number where
+// the pieces alone pass 90 % of the limit.
+double fittingCell(double patches, double cellM, double limit, double areaM2, double pieces) {
+  const double sides = std::max(0.0, (patches - areaM2 / (cellM * cellM) - pieces) * cellM);
+  const double room = 0.9 * limit - pieces;
+  if (!(room > 0.0)) return NAN;
+  // area x^2 + sides x - room = 0, x = 1 / c: the positive root.
+  const double x = 2.0 * room / (sides + std::sqrt(sides * sides + 4.0 * areaM2 * room));
+  return std::max(1.0 / x, cellM);
+}
+
 void refuseCount(double patches, double cellM, size_t maxPatches, double areaM2, size_t polygons) {
-  // Patch count goes as area / cell^2: the cell that would about meet the limit.
   const double limit = static_cast<double>(maxPatches);
-  const double suggested =
-      std::isfinite(patches) ? cellM * std::sqrt(patches / limit) * 1.1 : 2.0 * std::sqrt(areaM2 / limit);
   const std::string count =
       std::isfinite(patches) ? fmt::format("about {:.3g}", patches) : "uncountably many";
+  const double pieces = static_cast<double>(polygons);
+  const double suggested = std::isfinite(patches) ? fittingCell(patches, cellM, limit, areaM2, pieces)
+                                                  : 2.0 * std::sqrt(areaM2 / limit);
   // Where the polygons alone are most of the limit, a larger cell fits only by making each polygon
   // about one patch, which resolves no light on it.
   const std::string fix =
-      static_cast<double>(polygons) > 0.5 * limit
-          ? fmt::format("its {} polygons alone are {:.0f} % of that, so a larger --cell (about {:.3g} m) fits only "
-                        "at about one patch a polygon; solve the model in parts instead (a wing or a floor a file)",
-                        polygons, 100.0 * static_cast<double>(polygons) / limit, suggested)
+      !(pieces <= 0.5 * limit) || !std::isfinite(suggested)
+          ? fmt::format("its {} polygons alone are {:.0f} % of the limit, so no cell leaves them more than about one "
+                        "patch each; solve a smaller model (a wing or a floor a file; building:COLSxROWS with fewer "
+                        "rooms)",
+                        polygons, 100.0 * pieces / limit)
           : fmt::format("use a larger --cell (about {:.3g} m or more)", suggested);
   throw OptionError(fmt::format("the cell {:.4g} m would cut the scene into {} patches, more than the limit of {}; {}",
                                 cellM, count, maxPatches, fix));
