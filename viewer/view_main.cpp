@@ -14,6 +14,7 @@
 #include "cli/scene_input.h"
 #include "cli/solve_flags.h"
 #include "solver/io/output_path.h"
+#include "solver/meshing/meshing.h"
 #include "solver/radiosity/cell_solver.h"
 #include "solver/radiosity/checkpoint.h"
 #include "solver/scene/scene_error.h"
@@ -132,6 +133,7 @@ int main(int argc, char** argv) {
       return app.exit(e) == 0 ? 0 : 2;
     }
     args.cellGiven = cell->count() > 0;
+    if (args.cellGiven) radmesh::checkCell(args.setup.cellM);  // before the window, as the other options
     args.elementsPreset = presetGiven->count() > 0 && preset == radmesh::Preset::Elements && minElement->count() == 0;
     if (sky->count() > 0) radmesh::checkSkyLux(args.daylight.skyLux);
     args.daylight.sky = radmesh::parseSkyModel(skyModel);

@@ -97,6 +97,11 @@ TEST(ViewerCli, SizesAndUsageErrorsAreRefusedBeforeAWindowOpens) {
     const CommandRun run = runCommand(viewerPath() + " cornell " + flags);
     EXPECT_EQ(run.exitCode, 2) << flags << ": " << run.output;
   }
+  // With no display to open a window on: --cell is refused first (the solve refused it in the window).
+  const CommandRun cell = runCommand("env -u DISPLAY " + viewerPath() + " cornell --cell 0");
+  EXPECT_EQ(cell.exitCode, 2) << cell.output;
+  EXPECT_EQ(cell.output, "radmesh-view: error: --cell must be a finite grid size in metres greater than 0, got 0; use "
+                         "e.g. --cell 0.381 (15 inches, the paper's grid)\n");
   EXPECT_EQ(runCommand(viewerPath() + " --help").exitCode, 0);
   // The viewer's 0 threads leaves a core to drawing, and says so.
   const CommandRun threads = runCommand(viewerPath() + " cornell --threads -1");
@@ -217,7 +222,6 @@ TEST(ViewerCli, TheSolvesRefusalsExit2AsSolvesDo) {
   ASSERT_EQ(radmesh("solve furnace --max-iterations 1 --quiet --checkpoint " + furnace).exitCode, 0);
   ASSERT_EQ(radmesh("solve cornell --cell 0.2 --max-iterations 1 --quiet --checkpoint " + cornell).exitCode, 0);
   const std::pair<std::string, std::string> cases[] = {
-      {"--cell 0", "--cell must be a finite grid size in metres greater than 0, got 0"},
       {"--cell 1e-5", "the cell 1e-05 m would cut the scene into about 1.92e+10 patches"},
       {"--cells auto --backend mesh", "--cells auto runs on the native back end"},
       {"--pe-grid 2x2", "PE (row 0, col 0) needs 55440 bytes of local memory"},
