@@ -155,10 +155,7 @@ Vec3 GridTurn::toGrid(const Vec3& world) const { return directionToGrid(world - 
 
 Vec3 GridTurn::toWorld(const Vec3& grid) const { return directionToWorld(grid) + pivot; }
 
-const GridTurn& Grids::of(size_t outline) const {
-  static const GridTurn world;
-  return turnOf[outline] < 0 ? world : turns[turnOf[outline]];
-}
+const GridTurn& Grids::of(size_t outline) const { return turnOf[outline] < 0 ? world : turns[turnOf[outline]]; }
 
 size_t Grids::outlinesOn(size_t turn) const {
   return static_cast<size_t>(std::count(turnOf.begin(), turnOf.end(), static_cast<int>(turn)));
@@ -252,6 +249,15 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
     if (grids.turnOf[i] >= 0 && !grids.turns[grids.turnOf[i]].own) on[grids.turnOf[i]].push_back(outlines[i]);
   for (size_t t = 0; t < grids.turns.size(); ++t)
     if (!grids.turns[t].own) placePivot(grids.turns[t], on[t]);
+
+  // Far: the origin lies beyond the model's box grown by its size on every side.
+  Vec3 low(INFINITY), high(-INFINITY);
+  for (const std::vector<Vec3>* outline : outlines)
+    for (const Vec3& v : *outline) low = glm::min(low, v), high = glm::max(high, v);
+  const Vec3 size = high - low;
+  const double grown = std::max({size.x, size.y, size.z});
+  if (!outlines.empty() && glm::any(glm::greaterThan(low - grown, Vec3(0.0)) || glm::lessThan(high + grown, Vec3(0.0))))
+    grids.world.pivot = low;
   return grids;
 }
 

@@ -17,6 +17,7 @@ struct GridTurn {
   bool own = false;      // one outline's own grid: it lies along none of the model's grids
 
   bool turned() const { return radians != 0.0; }
+  bool moved() const { return turned() || pivot != Vec3(0.0); }  // its lines off the world's
   double degrees() const;
   Vec3 toGrid(const Vec3& world) const;
   Vec3 toWorld(const Vec3& grid) const;
@@ -27,6 +28,7 @@ struct GridTurn {
 
 // The grids of a model's polygons (outlines).
 struct Grids {
+  GridTurn world;               // the world grid: through the origin, or a far model's corner
   std::vector<GridTurn> turns;  // the turned ones, the model's then the outlines' own; not the world's
   std::vector<int> turnOf;      // per outline: an index into turns, or -1 for the world grid
   std::vector<double> edgeM;    // per turn: the length of the edges of its outlines along it
@@ -45,6 +47,8 @@ struct Grids {
 // length lies along, the world's on a tie, so a model along the axes keeps the world grid. A
 // turned grid's lines pass through the corner of its outlines' box in its frame, as the world
 // grid's pass through the origin, where models are often drawn from.
+// A model far from the origin (site coordinates) has the world grid's lines through the corner of
+// its box, as a turned grid's, so that where it sits does not change its mesh.
 // An outline that lies along more of a direction of its own (about a world axis) than along the
 // grid it would go on gets its own grid, turned to that direction, its lines through its own
 // corner: the facets of a curved wall or a round column, a wing too small for a turn of the

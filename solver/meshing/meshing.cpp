@@ -71,9 +71,9 @@ PreparedPolygon prepare(const Scene& scene, size_t index, double cellM, const Gr
     throw SceneError(scene.source, describe(scene, index), "has zero or non-finite area",
                      "remove the polygon or fix its vertices");
   std::vector<Vec3> turned;
-  if (turn.turned())
+  if (turn.moved())
     for (const Vec3& p : worldVertices) turned.push_back(turn.toGrid(p));
-  const std::vector<Vec3>& vertices = turn.turned() ? turned : worldVertices;
+  const std::vector<Vec3>& vertices = turn.moved() ? turned : worldVertices;
   const Vec3 newell = turn.turned() ? newellNormal(vertices) : worldNewell;
   PreparedPolygon out;
   out.turn = turn;
@@ -215,7 +215,7 @@ Patch makePatch(const PreparedPolygon& prepared, const std::vector<Vec2>& q, dou
   for (size_t i = 1; i + 1 < q.size(); ++i)
     centroid += cross2(q[i] - q[0], q[i + 1] - q[0]) * (q[0] + q[i] + q[i + 1]) / 3.0;
   centroid = centroid / (2.0 * area2d);
-  const auto world = [&](const Vec2& p) { return turn.turned() ? turn.toWorld(f.lift(p)) : f.lift(p); };
+  const auto world = [&](const Vec2& p) { return turn.moved() ? turn.toWorld(f.lift(p)) : f.lift(p); };
   for (size_t i = 0; i < q.size(); ++i) patch.vertices[i] = world(q[i]);
   // Lifting onto the plane and turning are affine, so they carry the area centroid along; areas
   // grow by 1 / cos of the angle between the normal and the dropped axis.

@@ -78,7 +78,7 @@ inline bool patchIsValid(const Patch& p, double cellM, const std::string& where,
   // either of its tied axes as dominant. The grid's axes, where it is turned.
   std::vector<Vec3> g = v;
   Vec3 normal = p.normal;
-  if (turn.turned()) {
+  if (turn.moved()) {
     for (Vec3& a : g) a = turn.toGrid(a);
     normal = turn.directionToGrid(p.normal);
   }

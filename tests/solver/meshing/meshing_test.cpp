@@ -1,3 +1,4 @@
+#include "solver/meshing/grid_turn.h"
 #include "solver/meshing/meshing.h"
 
 #include <gtest/gtest.h>
@@ -212,23 +213,31 @@ TEST(Meshing, QuadMeshesTheSameFromAnyStartingVertex) {
 
 // A slanted polygon 1e5 m from the origin (a whole number of cells) meshes into the same
 // patches, shifted, as at the origin.
+// Far from the origin (site coordinates) the world grid's lines pass through the model's corner, as
+// they pass through the origin a model is drawn from: the far polygon meshes as the near one moved
+// so that its corner is at the origin, to rounding. Grid lines through the far origin cut it
+// wherever it happened to lie.
 TEST(Meshing, FarFromTheOriginMeshesLikeAtTheOrigin) {
   const std::vector<Vec3> near{
       {0.3, 0.1, 0.2}, {2.7, 0.45, 1.1}, {2.2, 1.9, 1.7}, {0.55, 2.35, 0.9}, {0.1, 1.3, 0.5}};
+  Vec3 corner(INFINITY);
+  for (const Vec3& v : near) corner = glm::min(corner, v);
   const Vec3 shift(1e5, -1e5, 1e5);
-  std::vector<Vec3> far;
-  for (const Vec3& v : near) far.push_back(v + shift);
-  const Scene sNear = sceneOf({near}), sFar = sceneOf({far});
-  const auto a = meshScene(sNear, 0.25), b = meshScene(sFar, 0.25);
+  std::vector<Vec3> atOrigin, far;
+  for (const Vec3& v : near) atOrigin.push_back(v - corner), far.push_back(v + shift);
+  const Scene sOrigin = sceneOf({atOrigin}), sFar = sceneOf({far});
+  EXPECT_FALSE(gridsOf(sOrigin).world.moved());
+  EXPECT_TRUE(gridsOf(sFar).world.moved());
+  const auto a = meshScene(sOrigin, 0.25), b = meshScene(sFar, 0.25);
   ASSERT_EQ(a.size(), b.size());
   ASSERT_GT(a.size(), 40u);
   for (size_t i = 0; i < a.size(); ++i) {
     ASSERT_EQ(a[i].vertexCount, b[i].vertexCount) << i;
     // To 1e-9 of the polygon: far out, the input itself is only known to ~1e-11 m.
     EXPECT_NEAR(a[i].areaM2, b[i].areaM2, 1e-9 * polygonArea(near)) << i;
-    EXPECT_LT(glm::length(a[i].centroid + shift - b[i].centroid), 1e-9) << i;
+    EXPECT_LT(glm::length(a[i].centroid + corner + shift - b[i].centroid), 1e-9) << i;
   }
-  expectValidPatches(b, 0.25, "far polygon");
+  expectValidPatches(b, 0.25, "far polygon", sFar);
   expectAreaKept(sFar, b, 1e-9, "far polygon");
 }
 
