@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace radmesh {
@@ -93,14 +94,20 @@ Vec3 turnedAbout(const Vec3& d, int axis, double radians) {
   return out;
 }
 
+// The corners of the outlines' box.
+std::pair<Vec3, Vec3> boxOf(const std::vector<const std::vector<Vec3>*>& outlines) {
+  Vec3 low(INFINITY), high(-INFINITY);
+  for (const std::vector<Vec3>* outline : outlines)
+    for (const Vec3& v : *outline) low = glm::min(low, v), high = glm::max(high, v);
+  return {low, high};
+}
+
 // Along its axis a turned grid is the world's. Across it, its lines pass through the corner of its
 // outlines' box in its frame: outlines turned about any point mesh as themselves unturned with that
 // corner at the origin. The corner is found about the outlines' middle, so that site coordinates
 // keep their precision.
 void placePivot(GridTurn& turn, const std::vector<const std::vector<Vec3>*>& outlines) {
-  Vec3 low(INFINITY), high(-INFINITY);
-  for (const std::vector<Vec3>* outline : outlines)
-    for (const Vec3& v : *outline) low = glm::min(low, v), high = glm::max(high, v);
+  const auto [low, high] = boxOf(outlines);
   turn.pivot = (low + high) / 2.0;
   turn.pivot[turn.axis] = 0.0;
   Vec3 corner(INFINITY);
@@ -251,9 +258,7 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
     if (!grids.turns[t].own) placePivot(grids.turns[t], on[t]);
 
   // Far: the origin lies beyond the model's box grown by its size on every side.
-  Vec3 low(INFINITY), high(-INFINITY);
-  for (const std::vector<Vec3>* outline : outlines)
-    for (const Vec3& v : *outline) low = glm::min(low, v), high = glm::max(high, v);
+  const auto [low, high] = boxOf(outlines);
   const Vec3 size = high - low;
   const double grown = std::max({size.x, size.y, size.z});
   if (!outlines.empty() && glm::any(glm::greaterThan(low - grown, Vec3(0.0)) || glm::lessThan(high + grown, Vec3(0.0))))
