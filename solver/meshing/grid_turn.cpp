@@ -64,25 +64,6 @@ double heaviestDirection(const std::vector<Edge>& edges) {
   return wrapped(centre + offset / near);
 }
 
-// The outline's edge length along the grid's axes: the turn's own axis, and the turned directions
-// square to it (the world grid: any of the world axes).
-double lengthAlong(const std::vector<Vec3>& outline, const GridTurn* turn) {
-  double sum = 0.0;
-  for (size_t i = 0; i < outline.size(); ++i) {
-    const Vec3 d = outline[(i + 1) % outline.size()] - outline[i];
-    const double length = glm::length(d);
-    if (!(length > 0.0)) continue;
-    if (!turn) {
-      if (alongAxis(d, length, 0) || alongAxis(d, length, 1) || alongAxis(d, length, 2)) sum += length;
-    } else if (alongAxis(d, length, turn->axis) ||
-               (squareTo(d, length, turn->axis) &&
-                std::abs(wrapped(quadrupledDirection(d, turn->axis) - 4.0 * turn->radians)) <= kAlongQuadrupled)) {
-      sum += length;
-    }
-  }
-  return sum;
-}
-
 // A direction turned by `radians` about a world axis, counter-clockwise seen from its tip.
 Vec3 turnedAbout(const Vec3& d, int axis, double radians) {
   const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
@@ -94,6 +75,30 @@ Vec3 turnedAbout(const Vec3& d, int axis, double radians) {
   return out;
 }
 
+// The outline's edge length along the grid's axes: the turn's own axis, and the turned directions
+// square to it (the world grid: any of the world axes). A tilted grid's are the axis it tilts about
+// and the tilted directions, in its turned frame.
+double lengthAlong(const std::vector<Vec3>& outline, const GridTurn* turn) {
+  const bool tilted = turn && turn->tiltRadians != 0.0;
+  const int axis = !turn ? 0 : tilted ? turn->tiltAxis : turn->axis;
+  const double radians = !turn ? 0.0 : tilted ? turn->tiltRadians : turn->radians;
+  double sum = 0.0;
+  for (size_t i = 0; i < outline.size(); ++i) {
+    const Vec3 world = outline[(i + 1) % outline.size()] - outline[i];
+    const double length = glm::length(world);
+    if (!(length > 0.0)) continue;
+    const Vec3 d = tilted ? turnedAbout(world, turn->axis, -turn->radians) : world;
+    if (!turn) {
+      if (alongAxis(d, length, 0) || alongAxis(d, length, 1) || alongAxis(d, length, 2)) sum += length;
+    } else if (alongAxis(d, length, axis) ||
+               (squareTo(d, length, axis) &&
+                std::abs(wrapped(quadrupledDirection(d, axis) - 4.0 * radians)) <= kAlongQuadrupled)) {
+      sum += length;
+    }
+  }
+  return sum;
+}
+
 // The corners of the outlines' box.
 std::pair<Vec3, Vec3> boxOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   Vec3 low(INFINITY), high(-INFINITY);
@@ -102,24 +107,46 @@ std::pair<Vec3, Vec3> boxOf(const std::vector<const std::vector<Vec3>*>& outline
   return {low, high};
 }
 
-// Along its axis a turned grid is the world's. Across it, its lines pass through the corner of its
-// outlines' box in its frame: outlines turned about any point mesh as themselves unturned with that
-// corner at the origin. The corner is found about the outlines' middle, so that site coordinates
-// keep their precision.
-void placePivot(GridTurn& turn, const std::vector<const std::vector<Vec3>*>& outlines) {
+// Along the axis it turns about a turned grid keeps the lines of the grid it turns from (`from`'s
+// pivot: the world's, or for a tilted grid the turned one's). Across it, its lines pass through the
+// corner of its outlines' box in its frame: outlines turned about any point mesh as themselves
+// unturned with that corner at the origin. The corner is found about the outlines' middle, so that
+// site coordinates keep their precision.
+void placePivot(GridTurn& turn, const std::vector<const std::vector<Vec3>*>& outlines, const Vec3& from = Vec3(0.0)) {
+  const int kept = turn.tiltRadians != 0.0 ? turn.tiltAxis : turn.axis;
   const auto [low, high] = boxOf(outlines);
   turn.pivot = (low + high) / 2.0;
-  turn.pivot[turn.axis] = 0.0;
   Vec3 corner(INFINITY);
   for (const std::vector<Vec3>* outline : outlines)
     for (const Vec3& v : *outline) corner = glm::min(corner, turn.toGrid(v));
-  corner[turn.axis] = 0.0;
+  corner[kept] = turn.toGrid(from)[kept];
   turn.pivot = turn.toWorld(corner);
 }
 
-// The outline's own grid: of the directions of its longest edges square to a world axis (not along
-// the world's), the one the most of its edge length lies along, where that is more than `than`.
-std::optional<GridTurn> ownGrid(const std::vector<Vec3>& outline, double than) {
+// The grid `base` tilted about one of its axes so that the outline lies flat on it, where its
+// normal is square to that axis and along none of base's.
+std::optional<GridTurn> tiltedFlat(const std::vector<Vec3>& outline, const GridTurn& base) {
+  const Vec3 normal = base.directionToGrid(newellNormal(outline));
+  const double length = glm::length(normal);
+  if (!(length > 0.0)) return std::nullopt;
+  for (int a = 0; a < 3; ++a) {
+    if (!squareTo(normal, length, a)) continue;
+    const double quadrupled = quadrupledDirection(normal, a);
+    if (std::abs(quadrupled) <= kAlongQuadrupled) return std::nullopt;  // flat on base already
+    GridTurn turn;
+    turn.axis = base.turned() ? base.axis : a;
+    turn.radians = base.turned() ? base.radians : quadrupled / 4.0;
+    if (base.turned()) turn.tiltAxis = a, turn.tiltRadians = quadrupled / 4.0;
+    return turn;
+  }
+  return std::nullopt;
+}
+
+// The outline's own grid, where it lies along more of it than `than` (along base, the grid it would
+// go on): base tilted so that the outline lies flat on it, where it lies along as much of that;
+// or of the directions of its longest edges square to a world axis (not along the world's), the
+// one the most of its edge length lies along.
+std::optional<GridTurn> ownGrid(const std::vector<Vec3>& outline, double than, const GridTurn& base) {
   struct Candidate {
     double length;
     GridTurn turn;
@@ -138,15 +165,16 @@ std::optional<GridTurn> ownGrid(const std::vector<Vec3>& outline, double than) {
   const size_t kept = std::min(candidates.size(), kOwnCandidates);
   std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(kept), candidates.end(),
                     [](const Candidate& x, const Candidate& y) { return x.length > y.length; });
-  std::optional<GridTurn> best;
+  std::optional<GridTurn> best = tiltedFlat(outline, base);
+  if (best && lengthAlong(outline, &*best) >= than)
+    than = lengthAlong(outline, &*best);
+  else
+    best.reset();
   for (size_t c = 0; c < kept; ++c) {
     const double m = lengthAlong(outline, &candidates[c].turn);
     if (m > than) than = m, best = candidates[c].turn;
   }
-  if (best) {
-    best->own = true;
-    placePivot(*best, {&outline});
-  }
+  if (best) best->own = true;
   return best;
 }
 
@@ -154,9 +182,13 @@ std::optional<GridTurn> ownGrid(const std::vector<Vec3>& outline, double than) {
 
 double GridTurn::degrees() const { return radians * 180.0 / std::numbers::pi; }
 
-Vec3 GridTurn::directionToGrid(const Vec3& world) const { return turnedAbout(world, axis, -radians); }
+Vec3 GridTurn::directionToGrid(const Vec3& world) const {
+  return turnedAbout(turnedAbout(world, axis, -radians), tiltAxis, -tiltRadians);
+}
 
-Vec3 GridTurn::directionToWorld(const Vec3& grid) const { return turnedAbout(grid, axis, radians); }
+Vec3 GridTurn::directionToWorld(const Vec3& grid) const {
+  return turnedAbout(turnedAbout(grid, tiltAxis, tiltRadians), axis, radians);
+}
 
 Vec3 GridTurn::toGrid(const Vec3& world) const { return directionToGrid(world - pivot); }
 
@@ -225,13 +257,16 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   const size_t modelTurns = grids.turns.size();
   grids.turnOf.assign(outlines.size(), -1);
   std::vector<double> edgeM(modelTurns, 0.0);
+  std::vector<int> ownBase;  // per own grid from modelTurns on: the model's turn it tilts from, or -1
   for (size_t i = 0; i < outlines.size(); ++i) {
     double best = lengthAlong(*outlines[i], nullptr);
     for (size_t t = 0; t < modelTurns; ++t) {
       const double m = lengthAlong(*outlines[i], &grids.turns[t]);
       if (m > best) best = m, grids.turnOf[i] = static_cast<int>(t);
     }
-    if (const std::optional<GridTurn> own = ownGrid(*outlines[i], best)) {
+    const GridTurn& base = grids.turnOf[i] < 0 ? grids.world : grids.turns[grids.turnOf[i]];
+    if (const std::optional<GridTurn> own = ownGrid(*outlines[i], best, base)) {
+      ownBase.push_back(grids.turnOf[i]);
       grids.turnOf[i] = static_cast<int>(grids.turns.size());
       grids.turns.push_back(*own);
       edgeM.push_back(lengthAlong(*outlines[i], &*own));
@@ -242,7 +277,7 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   std::vector<int> kept(grids.turns.size(), -1);
   std::vector<GridTurn> turns;
   for (size_t t = 0; t < grids.turns.size(); ++t)
-    if (edgeM[t] > 0.0) {
+    if (edgeM[t] > 0.0 || grids.turns[t].own) {  // an own grid has its outline, along it or not
       kept[t] = static_cast<int>(turns.size());
       turns.push_back(grids.turns[t]);
       grids.edgeM.push_back(edgeM[t]);
@@ -250,12 +285,19 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   grids.turns = std::move(turns);
   for (int& t : grids.turnOf) t = t < 0 ? -1 : kept[t];
 
-  // The model's turns' pivots (ownGrid placed the outlines' own).
+  // The pivots: the model's turns' first, since a grid tilted from one keeps its lines along the
+  // axis it tilts about.
   std::vector<std::vector<const std::vector<Vec3>*>> on(grids.turns.size());
   for (size_t i = 0; i < outlines.size(); ++i)
-    if (grids.turnOf[i] >= 0 && !grids.turns[grids.turnOf[i]].own) on[grids.turnOf[i]].push_back(outlines[i]);
+    if (grids.turnOf[i] >= 0) on[grids.turnOf[i]].push_back(outlines[i]);
   for (size_t t = 0; t < grids.turns.size(); ++t)
     if (!grids.turns[t].own) placePivot(grids.turns[t], on[t]);
+  for (size_t t = 0, own = 0; t < grids.turns.size(); ++t) {
+    if (!grids.turns[t].own) continue;
+    const int base = ownBase[own++];
+    const bool tiltedFromTurn = grids.turns[t].tiltRadians != 0.0 && base >= 0 && kept[base] >= 0;
+    placePivot(grids.turns[t], on[t], tiltedFromTurn ? grids.turns[kept[base]].pivot : Vec3(0.0));
+  }
 
   // Far: the origin lies beyond the model's box grown by its size on every side.
   const auto [low, high] = boxOf(outlines);

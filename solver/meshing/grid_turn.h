@@ -13,10 +13,14 @@ namespace radmesh {
 struct GridTurn {
   int axis = 2;          // the world axis the grid is turned about
   double radians = 0.0;  // 0: the world grid itself, bit for bit
+  // Then tilted about one of the turned grid's own axes: an outline's own grid only, where its plane
+  // is tilted to the grid it lies along (a roof's slope on a building turned in plan).
+  int tiltAxis = 0;
+  double tiltRadians = 0.0;
   Vec3 pivot{0.0};       // the point the grid turns about: a grid corner, at its polygons' corner
   bool own = false;      // one outline's own grid: it lies along none of the model's grids
 
-  bool turned() const { return radians != 0.0; }
+  bool turned() const { return radians != 0.0 || tiltRadians != 0.0; }
   bool moved() const { return turned() || pivot != Vec3(0.0); }  // its lines off the world's
   double degrees() const;
   Vec3 toGrid(const Vec3& world) const;
@@ -53,6 +57,9 @@ struct Grids {
 // grid it would go on gets its own grid, turned to that direction, its lines through its own
 // corner: the facets of a curved wall or a round column, a wing too small for a turn of the
 // model's, a chair at an angle. On the world grid they would be cut across into slivers.
+// So does an outline whose plane is tilted about one axis of the grid it would go on (a roof's
+// slope, a ramp), as much along it or more: its grid is tilted with it, so that it lies flat on
+// it. On the grid below, its patches would be 1 / cos(pitch) long up the slope.
 Grids gridsOf(const Scene& scene);
 Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines);
 

@@ -233,6 +233,73 @@ TEST(GridTurn, AWingTooSmallForATurnOfTheModelsIsMeshedAsWellAsAlone) {
   EXPECT_LE(slivers(patches, along), slivers(alone, 0));
 }
 
+// A house 3.75 x 3 m with walls 2.5 m high under a gable roof pitched 36.87 degrees (rise 1.125 m
+// over 1.5 m): each slope is 3.75 x 1.875 m, 10 x 5 cells of 0.375 m. Its corner at the origin.
+constexpr double kRoofCellM = 0.375;
+Scene gableHouse() {
+  const double w = 3.75, d = 3.0, h = 2.5, top = h + 1.125;
+  Scene house;
+  house.materials.push_back({});
+  const auto add = [&](std::vector<Vec3> outline, const char* name) { house.polygons.push_back({outline, 0, name}); };
+  add({{0, 0, 0}, {0, d, 0}, {w, d, 0}, {w, 0, 0}}, "floor");
+  add({{0, 0, 0}, {w, 0, 0}, {w, 0, h}, {0, 0, h}}, "front");
+  add({{w, d, 0}, {0, d, 0}, {0, d, h}, {w, d, h}}, "back");
+  add({{0, d, 0}, {0, 0, 0}, {0, 0, h}, {0, d / 2, top}, {0, d, h}}, "west gable");
+  add({{w, 0, 0}, {w, d, 0}, {w, d, h}, {w, d / 2, top}, {w, 0, h}}, "east gable");
+  add({{0, 0, h}, {w, 0, h}, {w, d / 2, top}, {0, d / 2, top}}, "south slope");
+  add({{w, d, h}, {0, d, h}, {0, d / 2, top}, {w, d / 2, top}}, "north slope");
+  return house;
+}
+
+// A roof slope lies flat on a grid of its own, tilted with it, so it is cut into 0.375 m squares;
+// on the grid below it, its patches were 1 / cos(36.87 degrees) = 1.25 times as long up the slope
+// (40 of them a slope, not 50). The house turned 17 degrees in plan, where its walls' grid is
+// turned and the slopes' grids are tilted from that one, meshes as along the axes.
+TEST(GridTurn, ARoofSlopeIsCutIntoSquaresOnAHouseTurnedInPlan) {
+  const Scene along = gableHouse();
+  const std::vector<Patch> reference = meshScene(along, kRoofCellM);
+  test::expectValidPatches(reference, kRoofCellM, "house", along);
+  for (const int slope : {5, 6}) {
+    EXPECT_EQ(std::count_if(reference.begin(), reference.end(), [&](const Patch& p) { return p.polygon == slope; }), 50);
+    for (const Patch& p : reference)
+      if (p.polygon == slope) {
+        ASSERT_NEAR(p.areaM2, kRoofCellM * kRoofCellM, 1e-12);
+      }
+  }
+  const Vec3 site(20.0, -7.0, 0.0);
+  const Scene scene = moved(turned(along, 17.0), site);
+  const Grids grids = gridsOf(scene);
+  ASSERT_NEAR(grids.principal().degrees(), 17.0, 1e-9);
+  EXPECT_EQ(grids.outlinesOnOwnGrids(), 2u);
+  const std::vector<Patch> patches = meshScene(scene, kRoofCellM);
+  test::expectValidPatches(patches, kRoofCellM, "house turned", scene);
+  test::expectAreaKept(scene, patches, 1e-9, "house turned");
+  expectSameMeshTurned(reference, patches, 17.0, site, 1e-10);
+}
+
+// A hip roof's end: a trapezoid whose sloping sides follow no grid, along the axes. Its plane
+// is tilted about x, so it is cut on a grid tilted with it: no patch longer than a cell up the
+// slope (0.469 m on the world grid).
+TEST(GridTurn, AHipRoofsEndIsCutOnAGridTiltedWithIt) {
+  Scene house = gableHouse();
+  const double h = 2.5, top = h + 1.125;
+  house.polygons.push_back({{{0, 0, h}, {3.75, 0, h}, {2.25, 1.5, top}, {1.5, 1.5, top}}, 0, "hip end"});
+  const int hip = static_cast<int>(house.polygons.size()) - 1;
+  const Grids grids = gridsOf(house);
+  EXPECT_TRUE(grids.of(hip).own);
+  const std::vector<Patch> patches = meshScene(house, kRoofCellM);
+  test::expectValidPatches(patches, kRoofCellM, "hip end", house);
+  test::expectAreaKept(house, patches, 1e-9, "hip end");
+  const Vec3 upSlope(0.0, 0.8, 0.6);
+  for (const Patch& p : patches) {
+    if (p.polygon != hip) continue;
+    double low = INFINITY, high = -INFINITY;
+    for (int k = 0; k < p.vertexCount; ++k)
+      low = std::min(low, glm::dot(p.vertices[k], upSlope)), high = std::max(high, glm::dot(p.vertices[k], upSlope));
+    EXPECT_LE(high - low, kRoofCellM + 1e-9);
+  }
+}
+
 TEST(GridTurn, AModelWithYUpTurnsAboutY) {
   Scene scene = turned(builtinScene("two-rooms"), 25.0);
   for (Polygon& p : scene.polygons)
