@@ -8,6 +8,7 @@
 #include <map>
 #include <tuple>
 
+#include "solver/geometry/point_grid.h"
 #include "solver/geometry/polygon_triangulate.h"
 
 namespace radmesh {
@@ -75,6 +76,52 @@ bool insidePolygon(const std::vector<Vec3>& vertices, const Vec3& normal, const 
   return inside;
 }
 
+// Whether a stretch of edge lies on another polygon's face (in its plane, inside it): a column or a
+// partition wall standing on a floor that runs on past it. The face seals it; no light leaves there.
+// Three points along it are tested, each on any face, so a floor in pieces seals it too.
+class FaceSeal {
+ public:
+  FaceSeal(const Scene& scene, double tolerance)
+      : scene_(scene), tolerance_(tolerance), faces_(std::max(sceneDiagonal(scene) / kBucketsAcross, 1e-9)) {
+    for (size_t f = 0; f < scene.polygons.size(); ++f) {
+      Vec3 low(INFINITY), high(-INFINITY);
+      for (const Vec3& v : scene.polygons[f].vertices) low = glm::min(low, v), high = glm::max(high, v);
+      const Vec3 n = newellNormal(scene.polygons[f].vertices);
+      const double length = glm::length(n);
+      normals_.push_back(length > 0.0 ? n / length : Vec3(0.0));
+      if (length > 0.0) faces_.insert(low - tolerance, high + tolerance, static_cast<int>(f));
+    }
+  }
+  bool seals(const BoundarySegment& s) const {
+    return std::all_of(kAlong.begin(), kAlong.end(),
+                       [&](double t) { return onAFace(s.a + t * (s.b - s.a), s.polygon); });
+  }
+
+ private:
+  static constexpr std::array<double, 3> kAlong{0.25, 0.5, 0.75};
+  static constexpr double kBucketsAcross = 64.0;  // of the scene's diagonal
+  // On a face other than `own`, inside it and clear of its edges (on an edge, the edges decide).
+  bool onAFace(const Vec3& point, size_t own) const {
+    return faces_.anyInBox(point, point, [&](int f) {
+      const std::vector<Vec3>& v = scene_.polygons[f].vertices;
+      const Vec3& normal = normals_[f];
+      if (static_cast<size_t>(f) == own || !(std::abs(glm::dot(point - v[0], normal)) <= tolerance_) ||
+          !insidePolygon(v, normal, point))
+        return false;
+      for (size_t k = 0; k < v.size(); ++k) {
+        const Vec3 a = v[k], d = v[(k + 1) % v.size()] - a;
+        const double t = std::clamp(glm::dot(point - a, d) / std::max(glm::dot(d, d), 1e-300), 0.0, 1.0);
+        if (!(glm::length(point - (a + t * d)) > tolerance_)) return false;
+      }
+      return true;
+    });
+  }
+  const Scene& scene_;
+  double tolerance_;
+  std::vector<Vec3> normals_;
+  PointGrid faces_;
+};
+
 std::string describeLoop(const std::vector<Vec3>& loop) {
   Vec3 mean(0.0);
   for (const Vec3& v : loop) mean += v;
@@ -126,14 +173,18 @@ double sceneDiagonal(const Scene& scene) {
 
 std::vector<BoundarySegment> boundarySegments(const Scene& scene, double tolerance) {
   std::map<LineKey, std::vector<BoundarySegment>> lines;
-  for (const Polygon& polygon : scene.polygons) {
-    const auto& v = polygon.vertices;
+  for (size_t p = 0; p < scene.polygons.size(); ++p) {
+    const auto& v = scene.polygons[p].vertices;
     for (size_t k = 0; k < v.size(); ++k) {
       const Vec3 a = v[k], b = v[(k + 1) % v.size()];
-      if (glm::length(b - a) > tolerance) lines[lineKey(a, b, tolerance)].push_back({a, b});
+      if (glm::length(b - a) > tolerance) lines[lineKey(a, b, tolerance)].push_back({a, b, p});
     }
   }
   std::vector<BoundarySegment> open;
+  const FaceSeal faces(scene, tolerance);
+  const auto keep = [&](const BoundarySegment& s) {
+    if (!faces.seals(s)) open.push_back(s);
+  };
   for (const auto& [key, edges] : lines) {
     for (size_t i = 0; i < edges.size(); ++i) {
       const BoundarySegment& e = edges[i];
@@ -151,10 +202,10 @@ std::vector<BoundarySegment> boundarySegments(const Scene& scene, double toleran
       double reached = 0.0;
       for (const auto& [s, t] : cover) {
         if (reached >= length - tolerance) break;
-        if (s > reached + tolerance) open.push_back({at(reached), at(std::min(s, length))});
+        if (s > reached + tolerance) keep({at(reached), at(std::min(s, length)), e.polygon});
         reached = std::max(reached, t);
       }
-      if (reached < length - tolerance) open.push_back({at(reached), e.b});
+      if (reached < length - tolerance) keep({at(reached), e.b, e.polygon});
     }
   }
   return open;

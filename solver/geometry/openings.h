@@ -12,11 +12,13 @@ namespace radmesh {
 // A stretch of one polygon's edge, in that polygon's direction, that no other edge lies along.
 struct BoundarySegment {
   Vec3 a, b;
+  size_t polygon = 0;  // whose edge it is
 };
 
 // Every such stretch. Collinear edges of other polygons cover an edge piecewise, so T-junctions
 // (a wall cut into pieces around a window) leave no boundary where the pieces meet their
-// neighbours. Edges within `tolerance` (metres) of each other count as one line.
+// neighbours; another polygon's face covers the stretch that lies on it (a column standing on a
+// floor). Edges within `tolerance` (metres) of each other count as one line.
 std::vector<BoundarySegment> boundarySegments(const Scene& scene, double tolerance);
 
 // The length of the scene's bounding-box diagonal, which tolerances are relative to.

@@ -1,8 +1,9 @@
 #pragma once
 // Points hashed into cubic buckets of one size, looked up by box: the welding of coincident corners
 // (buckets the size of the tolerance) and the search for points on patch edges (buckets the size
-// of an edge) in solver/bake/display_radiosity.cpp; and the elements sharing an edge
-// across polygons in solver/radiosity/adaptive_split.cpp.
+// of an edge) in solver/bake/display_radiosity.cpp; the elements sharing an edge
+// across polygons in solver/radiosity/adaptive_split.cpp; and, by their boxes, the faces an open
+// edge may lie on in solver/geometry/openings.cpp.
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -18,6 +19,13 @@ class PointGrid {
   explicit PointGrid(double bucketM) : bucket_(bucketM) {}
 
   void insert(const Vec3& position, int item) { buckets_[keyOf(position)].push_back(item); }
+  // An item with an extent (a face's box) goes in every bucket its box meets.
+  void insert(const Vec3& lo, const Vec3& hi, int item) {
+    const Key a = keyOf(lo), b = keyOf(hi);
+    for (std::int64_t x = a.x; x <= b.x; ++x)
+      for (std::int64_t y = a.y; y <= b.y; ++y)
+        for (std::int64_t z = a.z; z <= b.z; ++z) buckets_[Key{x, y, z}].push_back(item);
+  }
 
   // Calls visit(item) for the items of every bucket that meets the box lo..hi, until it returns true.
   // Returns whether one did.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "solver/geometry/openings.h"
 #include "solver/meshing/meshing.h"
 
 namespace radmesh {
@@ -93,6 +94,33 @@ Scene tessellatedBox(int n, int dent = -1, double depth = 0.0) {
       }
   }
   return s;
+}
+
+// A column's sides standing on the floor of the unit room, from `bottom` up to `top`, capped by
+// neither end; and a partition wall from wall to wall at x = 0.8.
+void addColumnAndPartition(Scene& s, double bottom, double top) {
+  const Vec3 c[4] = {{0.2, 0.2, 0}, {0.4, 0.2, 0}, {0.4, 0.4, 0}, {0.2, 0.4, 0}};
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 a = c[k], b = c[(k + 1) % 4];
+    s.polygons.push_back({{a + Vec3(0, 0, bottom), b + Vec3(0, 0, bottom), b + Vec3(0, 0, top), a + Vec3(0, 0, top)}, 0,
+                          "column"});
+  }
+  s.polygons.push_back({{{0.8, 0, 0}, {0.8, 1, 0}, {0.8, 1, 1}, {0.8, 0, 1}}, 0, "partition"});
+}
+
+// Their edges end on the floor, the ceiling and the walls, inside those faces, which close them:
+// no light leaves there. A column hanging short of the floor leaves its foot open.
+TEST(EffectsPlan, AColumnAndAPartitionStandingOnFacesLeaveTheRoomClosed) {
+  Scene standing = greyFurnace();
+  addColumnAndPartition(standing, 0.0, 1.0);
+  EXPECT_TRUE(isClosed(standing));
+  EXPECT_FALSE(planEffects(standing).escape);
+  Scene hanging = greyFurnace();
+  addColumnAndPartition(hanging, 0.5, 1.0);
+  EXPECT_FALSE(isClosed(hanging));
+  double open = 0.0;
+  for (const BoundarySegment& b : boundarySegments(hanging, 1e-9)) open += glm::length(b.b - b.a);
+  EXPECT_NEAR(open, 0.8, 1e-12);  // the column's foot
 }
 
 TEST(EffectsPlan, ABoxExportedAsThousandsOfQuadsIsAConvexEnclosureUnlessAQuadLeavesTheFloor) {
