@@ -101,13 +101,12 @@ bool MgfContexts::handle(const MgfEntity& e) {
     requireMgfArguments(e, 2, 2, "cxy x y");
     double x = parseMgfNumber(e.words[1], "x");
     double y = parseMgfNumber(e.words[2], "y");
-    if (x < 0.0 || y <= 0.0 || x + y > 1.0) {  // outside the diagram: onto its nearest edge
-      x = std::max(x, 0.0);
-      y = std::max(y, 1e-6);
-      const double sum = std::max(x + y, 1.0);
-      x /= sum;
-      y /= sum;
-      notes_.push_back("cxy outside the chromaticity diagram (x >= 0, y > 0, x + y <= 1) clipped into it");
+    // MGF's reference parser refuses x < 0, y < 0 or x + y > 1 (MG_EILL), as xyzFromChromaticity
+    // does. y = 0 it accepts, though no colour of luminance 1 lies there: raised just above it.
+    if (y == 0.0 && x >= 0.0 && x <= 1.0) {
+      y = 1e-6;
+      x = std::min(x, 1.0 - y);
+      notes_.push_back(fmt::format("cxy y 0 (light of no luminance, which rd and ed cannot scale) raised to {:g}", y));
     }
     color = xyzFromChromaticity(x, y);
   } else if (k == "cspec") {

@@ -1,6 +1,7 @@
 // MGF material values from the command line: what MGF's reference parser refuses (rd, rs, td
-// outside [0, 1]) is refused with exit 2 naming the file, line, entity and fix; rd 1 is repaired
-// with a warning; a near-neutral white at rd 0.99 opens even under --strict.
+// outside [0, 1], cxy outside the chromaticity diagram) is refused with exit 2 naming the file,
+// line, entity and fix; rd 1 and cxy's y 0 are repaired with a warning; a near-neutral white at
+// rd 0.99 opens even under --strict.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -46,6 +47,29 @@ TEST(MgfValuesCli, FractionsOfLightAboveOneAreRefused) {
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_EQ(run.output, "radmesh: error: " + path + c.says + "\n");
   }
+}
+
+// MGF's reference parser refuses a chromaticity outside the diagram, which radmesh had clipped
+// into it with a warning; y = 0, which it opens, is raised with a warning.
+TEST(MgfValuesCli, ChromaticityOutsideTheDiagramIsRefused) {
+  const std::string needs = " is impossible (needs x >= 0, y > 0, x + y <= 1) (fix: give CIE 1931 x y of a real "
+                            "colour, e.g. cxy 0.333 0.333 for white)\n";
+  for (const auto& [xy, shown] : {std::pair{"0.7 0.5", "(0.7, 0.5)"}, std::pair{"-0.1 0.3", "(-0.1, 0.3)"},
+                                  std::pair{"0.3 -0.1", "(0.3, -0.1)"}, std::pair{"1.5 0", "(1.5, 0)"}}) {
+    const std::string path = box("cxy.mgf", std::string(" c\n  cxy ") + xy + "\n rd 0.5\n");
+    const CommandRun run = radmesh("info " + path);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(run.output, "radmesh: error: " + path + ": line 3: cxy: chromaticity " + shown + needs);
+  }
+  const std::string path = box("cxy-y0.mgf", " c\n  cxy 0.5 0\n rd 0.5\n");
+  CommandRun run = radmesh("info " + path);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("radmesh: warning: " + path +
+                            ": line 3: cxy y 0 (light of no luminance, which rd and ed cannot scale) raised to 1e-06\n"),
+            std::string::npos)
+      << run.output;
+  run = radmesh("info --strict " + path);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
 }
 
 TEST(MgfValuesCli, ReflectanceOfOneIsLoweredWithAWarning) {
