@@ -167,6 +167,11 @@ bool MgfContexts::ignore(const MgfEntity& e) {
     requireMgfArguments(e, ignored.arguments, ignored.arguments, ignored.usage);
     if (k == "sides" && e.words[1] != "1" && e.words[1] != "2")
       throw MgfError("sides must be 1 or 2", "write sides 1 or sides 2");
+    // The reference parser refuses a real index of refraction up to 1e-6 (its FTINY) as illegal;
+    // the imaginary part, absorption, may be any number.
+    if (k == "ir" && !(parseMgfNumber(e.words[1], "n_real") > 1e-6))
+      throw MgfError(fmt::format("real index of refraction {} is not above 1e-6", e.words[1]),
+                     "give ir the refractive index, then the absorption, e.g. ir 1.5 0 for glass");
     // Their fractions of light lie in [0, 1] and roughnesses are >= 0, or MGF's reference parser
     // refuses the file (MG_EILL): so does radmesh, though it keeps none of them.
     if (ignored.fraction) checkFraction(e, 1, ignored.fraction);
