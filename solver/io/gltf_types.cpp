@@ -35,31 +35,44 @@ struct Rule {
   bool required = false;  // refused when missing too, where tinygltf would ignore the absence
 };
 
+// Every element below but a primitive is one of glTF's "child of root" properties, whose optional
+// name is a string: the Khronos validator reports `"name": 5` as a type mismatch.
+constexpr Rule kName{"name", Kind::String};
+
 // The properties radmesh reads, per element.
-constexpr Rule kAccessor[] = {{"bufferView", Kind::Index}, {"byteOffset", Kind::Size},  {"componentType", Kind::Size},
-                              {"count", Kind::Size},       {"type", Kind::String},      {"normalized", Kind::Boolean}};
+constexpr Rule kAccessor[] = {kName,
+                              {"bufferView", Kind::Index},
+                              {"byteOffset", Kind::Size},
+                              {"componentType", Kind::Size},
+                              {"count", Kind::Size},
+                              {"type", Kind::String},
+                              {"normalized", Kind::Boolean}};
 constexpr Rule kBufferView[] = {
-    {"buffer", Kind::Index}, {"byteOffset", Kind::Size}, {"byteLength", Kind::Size}, {"byteStride", Kind::Size}};
-constexpr Rule kBuffer[] = {{"byteLength", Kind::Size}, {"uri", Kind::String}};
-constexpr Rule kImage[] = {{"uri", Kind::String}, {"bufferView", Kind::Index}, {"mimeType", Kind::String}};
-constexpr Rule kTexture[] = {{"source", Kind::Index}};
-constexpr Rule kMaterial[] = {{"pbrMetallicRoughness.baseColorFactor", Kind::Numbers, 4},
+    kName, {"buffer", Kind::Index}, {"byteOffset", Kind::Size}, {"byteLength", Kind::Size}, {"byteStride", Kind::Size}};
+constexpr Rule kBuffer[] = {kName, {"byteLength", Kind::Size}, {"uri", Kind::String}};
+constexpr Rule kImage[] = {kName, {"uri", Kind::String}, {"bufferView", Kind::Index}, {"mimeType", Kind::String}};
+constexpr Rule kTexture[] = {kName, {"source", Kind::Index}};
+constexpr Rule kMaterial[] = {kName,
+                              {"pbrMetallicRoughness.baseColorFactor", Kind::Numbers, 4},
                               {"pbrMetallicRoughness.baseColorTexture.index", Kind::Index},
                               {"emissiveFactor", Kind::Numbers, 3},
                               {"emissiveTexture.index", Kind::Index},
                               {"doubleSided", Kind::Boolean},
                               {"extensions.KHR_materials_emissive_strength.emissiveStrength", Kind::Number}};
+constexpr Rule kMesh[] = {kName};
 constexpr Rule kPrimitive[] = {
     {"attributes", Kind::IndexMap}, {"indices", Kind::Index}, {"material", Kind::Index}, {"mode", Kind::Index}};
-constexpr Rule kNode[] = {{"mesh", Kind::Index},
+constexpr Rule kNode[] = {kName,
+                          {"mesh", Kind::Index},
                           {"children", Kind::Indices},
                           {"translation", Kind::Numbers, 3},
                           {"rotation", Kind::Numbers, 4},
                           {"scale", Kind::Numbers, 3},
                           {"matrix", Kind::Numbers, 16},
                           {"extensions.KHR_lights_punctual.light", Kind::Index, 0, true}};
-constexpr Rule kScene[] = {{"nodes", Kind::Indices}};
-constexpr Rule kLight[] = {{"type", Kind::String},
+constexpr Rule kScene[] = {kName, {"nodes", Kind::Indices}};
+constexpr Rule kLight[] = {kName,
+                           {"type", Kind::String},
                            {"intensity", Kind::Number},
                            {"range", Kind::Number},
                            {"color", Kind::Numbers, 3},
@@ -83,7 +96,7 @@ constexpr Elements kElements[] = {{"accessors", "accessor", kAccessor},
                                   {"images", "image", kImage},
                                   {"textures", "texture", kTexture},
                                   {"materials", "material", kMaterial},
-                                  {"meshes", "mesh", {}, kPrimitives},
+                                  {"meshes", "mesh", kMesh, kPrimitives},
                                   {"nodes", "node", kNode},
                                   {"scenes", "scene", kScene},
                                   {"extensions.KHR_lights_punctual.lights", "KHR_lights_punctual light", kLight}};

@@ -95,9 +95,11 @@ Xyz xyzFromSpectrum(double minNm, double maxNm, const std::vector<double>& sampl
 }
 
 Xyz xyzFromTemperature(double kelvin) {
-  if (!(kelvin > 0.0))
-    throw MgfError(fmt::format("colour temperature {:g} K is not positive", kelvin),
-                   "give cct a temperature in kelvin, e.g. cct 3000");
+  // MGF's reference parser refuses a black body below 1000 K (MG_EILL) and sets no upper bound.
+  constexpr double kCoolestKelvin = 1000.0;
+  if (!(kelvin >= kCoolestKelvin))
+    throw MgfError(fmt::format("colour temperature {:g} K is below {:g} K", kelvin, kCoolestKelvin),
+                   fmt::format("give cct a temperature in kelvin from {:g} up, e.g. cct 3000", kCoolestKelvin));
   // Planck's law up to the constant factor kelvin / c2 (c2, the second radiation constant, in nm K):
   // nm^-4 x / (e^x - 1) with x = c2 / (nm kelvin) stays finite however hot the body, tending to
   // Rayleigh-Jeans' nm^-4 where x underflows.

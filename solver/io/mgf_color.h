@@ -33,7 +33,7 @@ Xyz xyzFromChromaticity(double x, double y);
 // scaled to Y = 1; throws MgfError for fewer than two samples or no visible light.
 Xyz xyzFromSpectrum(double minNm, double maxNm, const std::vector<double>& samples);
 
-// A black body at `kelvin` (cct), scaled to Y = 1.
+// A black body at `kelvin` (cct), scaled to Y = 1; throws MgfError below 1000 K.
 Xyz xyzFromTemperature(double kelvin);
 
 // cmix: colours (each at Y = 1) summed with weights that are relative luminances, scaled to Y = 1.

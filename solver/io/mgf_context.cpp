@@ -101,13 +101,12 @@ bool MgfContexts::handle(const MgfEntity& e) {
     requireMgfArguments(e, 2, 2, "cxy x y");
     double x = parseMgfNumber(e.words[1], "x");
     double y = parseMgfNumber(e.words[2], "y");
-    if (x < 0.0 || y <= 0.0 || x + y > 1.0) {  // outside the diagram: onto its nearest edge
-      x = std::max(x, 0.0);
-      y = std::max(y, 1e-6);
-      const double sum = std::max(x + y, 1.0);
-      x /= sum;
-      y /= sum;
-      notes_.push_back("cxy outside the chromaticity diagram (x >= 0, y > 0, x + y <= 1) clipped into it");
+    // MGF's reference parser refuses x < 0, y < 0 or x + y > 1 (MG_EILL), as xyzFromChromaticity
+    // does. y = 0 it accepts, though no colour of luminance 1 lies there: raised just above it.
+    if (y == 0.0 && x >= 0.0 && x <= 1.0) {
+      y = 1e-6;
+      x = std::min(x, 1.0 - y);
+      notes_.push_back(fmt::format("cxy y 0 (light of no luminance, which rd and ed cannot scale) raised to {:g}", y));
     }
     color = xyzFromChromaticity(x, y);
   } else if (k == "cspec") {
@@ -168,6 +167,11 @@ bool MgfContexts::ignore(const MgfEntity& e) {
     requireMgfArguments(e, ignored.arguments, ignored.arguments, ignored.usage);
     if (k == "sides" && e.words[1] != "1" && e.words[1] != "2")
       throw MgfError("sides must be 1 or 2", "write sides 1 or sides 2");
+    // The reference parser refuses a real index of refraction up to 1e-6 (its FTINY) as illegal;
+    // the imaginary part, absorption, may be any number.
+    if (k == "ir" && !(parseMgfNumber(e.words[1], "n_real") > 1e-6))
+      throw MgfError(fmt::format("real index of refraction {} is not above 1e-6", e.words[1]),
+                     "give ir the refractive index, then the absorption, e.g. ir 1.5 0 for glass");
     // Their fractions of light lie in [0, 1] and roughnesses are >= 0, or MGF's reference parser
     // refuses the file (MG_EILL): so does radmesh, though it keeps none of them.
     if (ignored.fraction) checkFraction(e, 1, ignored.fraction);

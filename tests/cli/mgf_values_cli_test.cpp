@@ -1,6 +1,7 @@
 // MGF material values from the command line: what MGF's reference parser refuses (rd, rs, td
-// outside [0, 1]) is refused with exit 2 naming the file, line, entity and fix; rd 1 is repaired
-// with a warning; a near-neutral white at rd 0.99 opens even under --strict.
+// outside [0, 1], cxy outside the chromaticity diagram, cct below 1000 K, ir's index up to 1e-6) is
+// refused with exit 2 naming the file, line, entity and fix; rd 1 and cxy's y 0 are repaired with a
+// warning; a near-neutral white at rd 0.99 opens even under --strict.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -23,6 +24,27 @@ std::string box(const std::string& name, const std::string& material) {
   return path;
 }
 
+// `radmesh info` of box(name, material) exits 2 with `radmesh: error: PATH` and `says`.
+void expectInfoRefused(const std::string& name, const std::string& material, const std::string& says) {
+  const std::string path = box(name, material);
+  const CommandRun run = radmesh("info " + path);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_EQ(run.output, "radmesh: error: " + path + says + "\n");
+}
+
+// `radmesh info` of `path` opens it with `warning` (after the path), and refuses it under --strict
+// for `kinds` kinds of repair; returns what the first run printed.
+std::string expectInfoRepaired(const std::string& path, const std::string& warning, int kinds) {
+  const CommandRun run = radmesh("info " + path);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("radmesh: warning: " + path + warning + "\n"), std::string::npos) << run.output;
+  const CommandRun strict = radmesh("info --strict " + path);
+  EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  EXPECT_NE(strict.output.find("--strict: needed " + std::to_string(kinds) + " kind(s) of repair"), std::string::npos)
+      << strict.output;
+  return run.output;
+}
+
 TEST(MgfValuesCli, FractionsOfLightAboveOneAreRefused) {
   const struct {
     std::string name, material, says;
@@ -40,26 +62,39 @@ TEST(MgfValuesCli, FractionsOfLightAboveOneAreRefused) {
        ": line 4: td: diffuse transmittance -0.2 is negative (fix: write td as a fraction of the light, from 0 up "
        "to 1 (50% is 0.5))"},
   };
-  for (const auto& c : cases) {
-    const std::string path = box(c.name, c.material);
-    const CommandRun run = radmesh("info " + path);
-    EXPECT_EQ(run.exitCode, 2) << run.output;
-    EXPECT_EQ(run.output, "radmesh: error: " + path + c.says + "\n");
-  }
+  for (const auto& c : cases) expectInfoRefused(c.name, c.material, c.says);
+}
+
+// MGF's reference parser refuses a chromaticity outside the diagram, which radmesh had clipped
+// into it with a warning; y = 0, which it opens, is raised with a warning.
+TEST(MgfValuesCli, ChromaticityOutsideTheDiagramIsRefused) {
+  const std::string needs = " is impossible (needs x >= 0, y > 0, x + y <= 1) (fix: give CIE 1931 x y of a real "
+                            "colour, e.g. cxy 0.333 0.333 for white)";
+  for (const auto& [xy, shown] : {std::pair{"0.7 0.5", "(0.7, 0.5)"}, std::pair{"-0.1 0.3", "(-0.1, 0.3)"},
+                                  std::pair{"0.3 -0.1", "(0.3, -0.1)"}, std::pair{"1.5 0", "(1.5, 0)"}})
+    expectInfoRefused("cxy.mgf", std::string(" c\n  cxy ") + xy + "\n rd 0.5\n",
+                      std::string(": line 3: cxy: chromaticity ") + shown + needs);
+  // Its second repair: the colour lies outside the Rec. 709 gamut.
+  expectInfoRepaired(box("cxy-y0.mgf", " c\n  cxy 0.5 0\n rd 0.5\n"),
+                     ": line 3: cxy y 0 (light of no luminance, which rd and ed cannot scale) raised to 1e-06", 2);
+}
+
+// Below what MGF's reference parser reads, a colour temperature or an index of refraction had
+// opened: refused, exit 2.
+TEST(MgfValuesCli, ColourTemperatureAndIndexOfRefractionBelowTheReferenceRangeAreRefused) {
+  expectInfoRefused("cct.mgf", " c\n  cct 500\n rd 0.5\n",
+                    ": line 3: cct: colour temperature 500 K is below 1000 K (fix: give cct a temperature in kelvin "
+                    "from 1000 up, e.g. cct 3000)");
+  expectInfoRefused("ir.mgf", " c\n rd 0.5\n ir -1 0\n",
+                    ": line 4: ir: real index of refraction -1 is not above 1e-6 (fix: give ir the refractive "
+                    "index, then the absorption, e.g. ir 1.5 0 for glass)");
 }
 
 TEST(MgfValuesCli, ReflectanceOfOneIsLoweredWithAWarning) {
-  const std::string path = box("rd1.mgf", " c\n  cxy 0.333 0.333\n rd 1.0\n");
-  CommandRun run = radmesh("info " + path);
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("radmesh: warning: " + path +
-                            ": line 4: rd 1 lowered to 0.99 (a reflectance of 1 never lets light die out)\n"),
-            std::string::npos)
-      << run.output;
-  EXPECT_EQ(run.output.find("gamut"), std::string::npos) << run.output;
-  run = radmesh("info --strict " + path);
-  EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("--strict: needed 1 kind(s) of repair"), std::string::npos) << run.output;
+  const std::string output = expectInfoRepaired(
+      box("rd1.mgf", " c\n  cxy 0.333 0.333\n rd 1.0\n"),
+      ": line 4: rd 1 lowered to 0.99 (a reflectance of 1 never lets light die out)", 1);
+  EXPECT_EQ(output.find("gamut"), std::string::npos) << output;
 }
 
 // MGF's white to three digits and D65 at rd 0.99 had warned "outside the Rec. 709 gamut", and

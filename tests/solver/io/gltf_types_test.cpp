@@ -88,6 +88,8 @@ TEST(GltfTypes, TheRoomLoadsWithItsIndexBufferAndTransforms) {
   // Integers written as floats where numbers are wanted are numbers all the same.
   doc["nodes"][0]["translation"] = {1.0, 0, 0};
   doc["materials"][1]["emissiveFactor"] = {1.0, 1, 1};
+  // glTF's schema gives a primitive no name: one of any type is none of radmesh's business.
+  doc["meshes"][0]["primitives"][0]["name"] = 5;
   scene = importGltf(writeDocument(dir, "moved.gltf", doc));
   ASSERT_EQ(scene.polygons.size(), 7u);
   double lowestX = 1e9;
@@ -152,6 +154,14 @@ TEST(GltfTypes, APropertyOfTheWrongTypeIsRefusedNamingItsElement) {
       {[](json& d) { d["materials"][0]["doubleSided"] = "yes"; },
        "material 0 'wall' | doubleSided is \"yes\" (string), not true or false (fix: give doubleSided as true or "
        "false)"},
+      // The name every element but a primitive may have (tinygltf dropped a name that is no string).
+      {[](json& d) { d["nodes"][0]["name"] = 5; },
+       "node 0 | name is 5 (number), not a string (fix: give name as a string)"},
+      {[](json& d) { d["meshes"][1]["name"] = json::object(); }, "mesh 1 | name is {} (object), not a string"},
+      {[](json& d) { d["materials"][0]["name"] = json::array({"wall"}); },
+       "material 0 | name is [\"wall\"] (array), not a string"},
+      {[](json& d) { d["accessors"][0]["name"] = true; }, "accessor 0 | name is true (boolean), not a string"},
+      {[](json& d) { d["scenes"][0]["name"] = nullptr; }, "scene 0 | name is null (null), not a string"},
       // An object on the way to a property, and the document's arrays of elements.
       {[](json& d) { d["materials"][0]["pbrMetallicRoughness"] = 5; },
        "material 0 'wall' | pbrMetallicRoughness is 5 (number), not an object (fix: give pbrMetallicRoughness as an "

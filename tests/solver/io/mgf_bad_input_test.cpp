@@ -2,8 +2,10 @@
 // entity at fault, the problem and a fix, and never a crash or a hang.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "solver/io/mgf_import.h"
 #include "solver/scene/scene_error.h"
@@ -40,6 +42,21 @@ void expectRefused(const std::string& name, const std::string& element, const st
   EXPECT_EQ(r.file, test::dataPath("bad/" + name).string());
   EXPECT_EQ(r.element, element);
   EXPECT_NE(r.what.find(problem), std::string::npos) << r.what;
+}
+
+// What importMgf says, after the file's name, of a file of `m grey =` and then `material`.
+std::string materialRefusal(const std::string& material) {
+  TempDir dir;
+  const std::string path = test::writeMgf(dir, "scene.mgf", "m grey =\n" + material);
+  try {
+    importMgf(path);
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.substr(0, path.size() + 2), path + ": ");
+    return what.substr(std::min(what.size(), path.size() + 2));
+  }
+  ADD_FAILURE() << material << " was accepted";
+  return {};
 }
 
 TEST(MgfBadInput, MissingIncludeNamesTheIncludeLine) {
@@ -132,16 +149,25 @@ TEST(MgfBadInput, FractionsOfLightOutsideZeroToOneAreRefused) {
       {"td -0.6", "td: diffuse transmittance -0.6 is negative " + fix("td")},
       {"ts 1.5 0", "ts: specular transmittance 1.5" + above + fix("ts")},
   };
-  TempDir dir;
-  for (const auto& c : cases) {
-    const std::string path = test::writeMgf(dir, "scene.mgf", "m grey =\n rd 0.5\n " + c.entity + "\n");
-    try {
-      importMgf(path);
-      ADD_FAILURE() << c.entity << " was accepted";
-    } catch (const SceneError& e) {
-      EXPECT_EQ(std::string(e.what()), path + ": line 3: " + c.says);
-    }
-  }
+  for (const auto& c : cases) EXPECT_EQ(materialRefusal(" rd 0.5\n " + c.entity + "\n"), "line 3: " + c.says);
+}
+
+// MGF's reference parser refuses a black body below 1000 K and a real index of refraction up to
+// 1e-6 (MG_EILL), which radmesh had read; an absorption (ir's second number) may be any number.
+TEST(MgfBadInput, ColourTemperatureAndIndexOfRefractionBelowTheReferenceRangeAreRefused) {
+  EXPECT_EQ(materialRefusal(" c\n cct 999\n"),
+            "line 3: cct: colour temperature 999 K is below 1000 K (fix: give cct a temperature in kelvin from 1000 "
+            "up, e.g. cct 3000)");
+  const std::string notAbove = " is not above 1e-6 (fix: give ir the refractive index, then the absorption, e.g. ir "
+                            "1.5 0 for glass)";
+  for (const std::string n : {"0", "-1.5", "1e-6"})
+    EXPECT_EQ(materialRefusal(" ir " + n + " 0\n"), "line 2: ir: real index of refraction " + n + notAbove);
+  std::vector<std::string> warnings;
+  test::importMgfText("m grey =\n c\n cct 1000\n ir 1.5 -0.2\n ir 2e-6 0\n rd 0.5\n", &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("line 4: ir ignored: index of refraction, radmesh surfaces are opaque (2 times)"),
+            std::string::npos)
+      << warnings[0];
 }
 
 TEST(MgfBadInput, IncludeCycleIsRefusedWithoutHanging) {
@@ -187,7 +213,7 @@ TEST(MgfBadInput, ContextAndCountErrorsNameTheirLine) {
       {"o a\no\no\n", "line 3: o", "o ends an object, but none is open"},
       {"c red =\n  cxy 0.64 0.33\nc mix =\n  cmix 1 red 1 blue\n", "line 4: cmix", "c 'blue' is not defined"},
       {"c odd =\n  cspec 900 1000 1 1\n", "line 2: cspec", "gives no visible light"},
-      {"c hot =\n  cct -5\n", "line 2: cct", "is not positive"},
+      {"c hot =\n  cct -5\n", "line 2: cct", "is below 1000 K"},
       {"sides 3\n", "line 1: sides", "sides must be 1 or 2"},
       {"m x =\n  rd -0.5\n", "line 2: rd", "diffuse reflectance -0.5 is negative"},
       {"m x = nosuch\n", "line 1: m", "m 'nosuch' is not defined"},
@@ -232,7 +258,7 @@ TEST(MgfBadInput, MessagesStayReadableForExtremeOrBinaryWords) {
   EXPECT_EQ(tiny.polygons.size(), 1u);
   const std::map<std::string, std::string> cases = {
       {"c\n  cmix 1e308 r 1e308 r\n", "the cmix weights add up past the largest number"},
-      {"c\n  cct -1e300\n", "colour temperature -1e+300 K is not positive"},
+      {"c\n  cct -1e300\n", "colour temperature -1e+300 K is below 1000 K"},
       {std::string("v e =\n  p 1 ") + '\0' + "2 0\n", "coordinate '\\02' is not a number"},
   };
   for (const auto& [text, problem] : cases) {

@@ -2,6 +2,7 @@
 // and luminance-preserving gamut fitting.
 #include "solver/io/mgf_color.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,8 +63,22 @@ TEST(MgfColor, SpectraGoThroughTheStandardObserver) {
   EXPECT_NEAR(hottest.x, 0.2399, 3e-3);
   EXPECT_NEAR(hottest.y, 0.2342, 3e-3);
   EXPECT_NEAR(glm::distance(hottest, chromaticity(xyzFromTemperature(1e12))), 0.0, 1e-6);
-  EXPECT_THROW(xyzFromTemperature(1.0), MgfError);  // 1 K: nothing in 360-830 nm
   EXPECT_THROW(xyzFromSpectrum(900, 1000, {1, 1}), MgfError);  // infrared: no luminance
+}
+
+// MGF's reference parser refuses a black body below 1000 K (MG_EILL), which radmesh had read down
+// to the temperature that leaves no visible light; it sets no upper bound.
+TEST(MgfColor, BlackBodiesBelow1000KAreRefused) {
+  EXPECT_DOUBLE_EQ(xyzFromTemperature(1000.0).y, 1.0);
+  for (const double kelvin : {999.9, 1.0, 0.0, -5.0}) {
+    try {
+      xyzFromTemperature(kelvin);
+      ADD_FAILURE() << kelvin << " K was accepted";
+    } catch (const MgfError& e) {
+      EXPECT_EQ(std::string(e.what()), fmt::format("colour temperature {:g} K is below 1000 K", kelvin));
+      EXPECT_EQ(e.fix(), "give cct a temperature in kelvin from 1000 up, e.g. cct 3000");
+    }
+  }
 }
 
 TEST(MgfColor, MixingPrimariesByTheirLuminanceWeightsGivesWhite) {
