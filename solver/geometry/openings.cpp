@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <tuple>
 
 #include "solver/geometry/point_grid.h"
 #include "solver/geometry/polygon_triangulate.h"
@@ -15,16 +14,43 @@ namespace radmesh {
 
 namespace {
 
-// An edge's supporting line, canonical up to sign and rounded to a tolerance, so that collinear
-// edges of different polygons fall into one bucket.
-using LineKey = std::tuple<long long, long long, long long, long long, long long, long long>;
+// An edge's supporting line, canonical up to sign, in steps of a tolerance: its direction (steps of
+// 1e-6) and its point nearest `centre` (steps of the tolerance), the scene's middle, so that site
+// coordinates do not magnify the rounding of the direction into the point.
+using LineCoordinates = std::array<double, 6>;
+using LineKey = std::array<long long, 6>;
 
-LineKey lineKey(const Vec3& a, const Vec3& b, double tolerance) {
+LineCoordinates lineCoordinates(const Vec3& a, const Vec3& b, const Vec3& centre, double tolerance) {
   Vec3 d = glm::normalize(b - a);
-  if (d.x < 0 || (d.x == 0 && (d.y < 0 || (d.y == 0 && d.z < 0)))) d = -d;
-  const Vec3 foot = a - glm::dot(a, d) * d;  // the line's point nearest the origin
-  auto q = [](double x, double step) { return static_cast<long long>(std::llround(x / step)); };
-  return {q(d.x, 1e-6), q(d.y, 1e-6), q(d.z, 1e-6), q(foot.x, tolerance), q(foot.y, tolerance), q(foot.z, tolerance)};
+  // The sign of the first component well clear of 0, which rounding cannot flip.
+  const int k = std::abs(d.x) > 0.3 ? 0 : std::abs(d.y) > 0.3 ? 1 : 2;
+  if (d[k] < 0.0) d = -d;
+  const Vec3 foot = (a - centre) - glm::dot(a - centre, d) * d;
+  return {d.x / 1e-6, d.y / 1e-6, d.z / 1e-6, foot.x / tolerance, foot.y / tolerance, foot.z / tolerance};
+}
+
+LineKey lineKey(const LineCoordinates& c) {
+  LineKey key;
+  for (size_t i = 0; i < c.size(); ++i) key[i] = std::llround(c[i]);
+  return key;
+}
+
+// The keys of every line within a quarter step of these coordinates: a collinear edge whose
+// rounding carried it across a step's boundary is in one of them.
+std::vector<LineKey> nearKeys(const LineCoordinates& c) {
+  std::vector<LineKey> keys{LineKey{}};
+  for (size_t i = 0; i < c.size(); ++i) {
+    const long long low = std::llround(c[i] - 0.25), high = std::llround(c[i] + 0.25);
+    const size_t n = keys.size();
+    for (size_t k = 0; k < n; ++k) {
+      keys[k][i] = low;
+      if (high != low) {
+        keys.push_back(keys[k]);
+        keys.back()[i] = high;
+      }
+    }
+  }
+  return keys;
 }
 
 // Points within a tolerance of one another get one index (the first such point stands for all).
@@ -172,40 +198,64 @@ double sceneDiagonal(const Scene& scene) {
 }
 
 std::vector<BoundarySegment> boundarySegments(const Scene& scene, double tolerance) {
-  std::map<LineKey, std::vector<BoundarySegment>> lines;
+  const auto [low, high] = boundingBox(scene.polygons);
+  const Vec3 centre = (low + high) / 2.0;
+  struct Line {
+    std::vector<BoundarySegment> edges;
+    std::vector<LineCoordinates> coordinates;  // each edge's own
+  };
+  std::map<LineKey, Line> lines;
   for (size_t p = 0; p < scene.polygons.size(); ++p) {
     const auto& v = scene.polygons[p].vertices;
     for (size_t k = 0; k < v.size(); ++k) {
       const Vec3 a = v[k], b = v[(k + 1) % v.size()];
-      if (glm::length(b - a) > tolerance) lines[lineKey(a, b, tolerance)].push_back({a, b, p});
+      if (!(glm::length(b - a) > tolerance)) continue;
+      const LineCoordinates c = lineCoordinates(a, b, centre, tolerance);
+      Line& line = lines[lineKey(c)];
+      line.edges.push_back({a, b, p});
+      line.coordinates.push_back(c);
     }
   }
   std::vector<BoundarySegment> open;
   const FaceSeal faces(scene, tolerance);
-  const auto keep = [&](const BoundarySegment& s) {
-    if (!faces.seals(s)) open.push_back(s);
-  };
-  for (const auto& [key, edges] : lines) {
-    for (size_t i = 0; i < edges.size(); ++i) {
-      const BoundarySegment& e = edges[i];
+  for (const auto& [key, line] : lines) {
+    for (size_t i = 0; i < line.edges.size(); ++i) {
+      const BoundarySegment& e = line.edges[i];
       const Vec3 d = glm::normalize(e.b - e.a);
       const double length = glm::length(e.b - e.a);
       auto at = [&](double s) { return s <= 0.0 ? e.a : s >= length ? e.b : e.a + s * d; };
+      // What the edges of a line cover of e (but e itself), then what they leave uncovered.
       std::vector<std::pair<double, double>> cover;
-      for (size_t j = 0; j < edges.size(); ++j) {
-        if (j == i) continue;
-        double s = glm::dot(edges[j].a - e.a, d), t = glm::dot(edges[j].b - e.a, d);
-        if (s > t) std::swap(s, t);
-        cover.emplace_back(s, t);
+      const auto gather = [&](const Line& other) {
+        for (const BoundarySegment& f : other.edges) {
+          if (&f == &e) continue;
+          double s = glm::dot(f.a - e.a, d), t = glm::dot(f.b - e.a, d);
+          if (s > t) std::swap(s, t);
+          cover.emplace_back(s, t);
+        }
+      };
+      const auto uncovered = [&] {
+        std::sort(cover.begin(), cover.end());
+        std::vector<BoundarySegment> left;
+        double reached = 0.0;
+        for (const auto& [s, t] : cover) {
+          if (reached >= length - tolerance) break;
+          if (s > reached + tolerance) left.push_back({at(reached), at(std::min(s, length)), e.polygon});
+          reached = std::max(reached, t);
+        }
+        if (reached < length - tolerance) left.push_back({at(reached), e.b, e.polygon});
+        return left;
+      };
+      // Its own line's edges cover most edges; the lines a quarter step away only the rest.
+      gather(line);
+      std::vector<BoundarySegment> left = uncovered();
+      if (!left.empty()) {
+        for (const LineKey& near : nearKeys(line.coordinates[i]))
+          if (const auto found = lines.find(near); near != key && found != lines.end()) gather(found->second);
+        left = uncovered();
       }
-      std::sort(cover.begin(), cover.end());
-      double reached = 0.0;
-      for (const auto& [s, t] : cover) {
-        if (reached >= length - tolerance) break;
-        if (s > reached + tolerance) keep({at(reached), at(std::min(s, length)), e.polygon});
-        reached = std::max(reached, t);
-      }
-      if (reached < length - tolerance) keep({at(reached), e.b, e.polygon});
+      for (const BoundarySegment& stretch : left)
+        if (!faces.seals(stretch)) open.push_back(stretch);
     }
   }
   return open;

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "solver/geometry/openings.h"
+#include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
+#include "tests/solver/turned_scene.h"
 
 namespace radmesh {
 namespace {
@@ -121,6 +123,22 @@ TEST(EffectsPlan, AColumnAndAPartitionStandingOnFacesLeaveTheRoomClosed) {
   double open = 0.0;
   for (const BoundarySegment& b : boundarySegments(hanging, 1e-9)) open += glm::length(b.b - b.a);
   EXPECT_NEAR(open, 0.8, 1e-12);  // the column's foot
+}
+
+// two-rooms (closed, with T-junctions where its walls meet the door's frame) turned and moved to
+// site coordinates is as closed as at the origin. Its lines' keys were taken about the origin,
+// where 5e6 m magnified the rounding of an edge's direction past the tolerance: every such turned
+// model had open edges from 1e4 m out.
+TEST(EffectsPlan, ATurnedModelAtSiteCoordinatesIsAsClosedAsAtTheOrigin) {
+  for (const double degrees : {0.0, 17.0, 30.0, 45.0})
+    for (const Vec3& site : {Vec3(0.0), Vec3(1e4, 1e5, 0.0), Vec3(512345.678, 5012345.678, 13.3)}) {
+      Scene s = builtinScene("two-rooms");
+      test::turnAboutVertical(s, degrees);
+      for (Polygon& p : s.polygons)
+        for (Vec3& v : p.vertices) v += site;
+      EXPECT_TRUE(boundarySegments(s, 1e-7 * sceneDiagonal(s)).empty()) << degrees << " degrees at " << site.x;
+      EXPECT_TRUE(isClosed(s)) << degrees << " degrees at " << site.x;
+    }
 }
 
 TEST(EffectsPlan, ABoxExportedAsThousandsOfQuadsIsAConvexEnclosureUnlessAQuadLeavesTheFloor) {
