@@ -70,6 +70,18 @@ TEST(OptionValues, AWholeNumberPastTheRangeIsOutOfRange) {
   EXPECT_NE(notANumber.output.find("--resolution: 12x is not a whole number"), std::string::npos) << notANumber.output;
 }
 
+// --cell-groups without --cells (or --plan, which finds the cells too) was ignored without a word.
+TEST(OptionValues, CellGroupsWithoutCellsIsRefused) {
+  CommandRun run = radmesh("info two-rooms --cell-groups join");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_EQ(run.output, "radmesh: error: --cell-groups requires --cells (or --plan): it shapes the cells they find; "
+                        "add --cells, or leave --cell-groups out\n");
+  run = radmesh("info two-rooms --cells --cell-groups join");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  run = radmesh("info two-rooms --cell-groups join --plan " + tempPath("plan.png"));
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+}
+
 // The warning said to stop on the unshot power, which was already the stop, when --max-iterations
 // had cut the solve short.
 TEST(OptionValues, AFarFromConvergedWarningNamesTheCapThatStoppedTheSolve) {
