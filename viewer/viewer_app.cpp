@@ -19,6 +19,7 @@
 #include "viewer/camera.h"
 #include "viewer/cell_visibility.h"
 #include "viewer/exposure.h"
+#include "viewer/frame_report.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"
 #include "viewer/renderer.h"
@@ -83,32 +84,6 @@ class FrameStats {
                 p.frames / std::max(p.seconds, 1e-9), 1e3 * p.seconds / p.frames);
   }
   Phase solving_, idle_;
-};
-
-// --frames N: each frame's time, and the part of it spent taking in the solver's snapshots.
-class FrameReport {
- public:
-  void add(double frameSeconds, double feedSeconds) {
-    frames_.push_back(frameSeconds);
-    feeds_.push_back(feedSeconds);
-  }
-  long frames() const { return static_cast<long>(frames_.size()); }
-  void print() const {
-    if (frames_.empty()) return;
-    std::vector<double> f = frames_, feed = feeds_;
-    std::sort(f.begin(), f.end());
-    std::sort(feed.begin(), feed.end());
-    double sum = 0.0;
-    for (double s : f) sum += s;
-    const long slow = std::count_if(f.begin(), f.end(), [](double s) { return s > 1.0 / 30.0; });
-    std::printf("radmesh-view: %zu frames with the mesh: lowest %.1f fps (%.1f ms), median %.1f fps (%.1f ms), "
-                "mean %.1f fps, %ld under 30 fps; taking in snapshots: median %.2f ms, longest %.1f ms a frame\n",
-                f.size(), 1.0 / f.back(), 1e3 * f.back(), 1.0 / f[f.size() / 2], 1e3 * f[f.size() / 2],
-                double(f.size()) / sum, slow, 1e3 * feed[feed.size() / 2], 1e3 * feed.back());
-  }
-
- private:
-  std::vector<double> frames_, feeds_;
 };
 
 // What the window shows: a solve converging on its own thread, or a bake.
@@ -367,7 +342,7 @@ int runViewer(const ViewerArgs& args) {
   }
 
   stats.print(window.framebufferSize(), viewing->shown->state());
-  report.print();
+  if (const std::string summary = report.summary(); !summary.empty()) std::printf("radmesh-view: %s\n", summary.c_str());
   return exitCode;
 }
 
