@@ -260,6 +260,10 @@ void addInfoCommand(CLI::App& app) {
          "make the cells of one group one cell)")
       ->check(CLI::IsMember({"name", "join"}));
   cmd->callback([args, cmd] {
+    // As CLI11's needs() refuses a flag that would shape nothing; --plan finds the cells too.
+    if (cmd->count("--cell-groups") > 0 && !args->cells && args->planPath.empty())
+      throw OptionError("--cell-groups requires --cells (or --plan): it shapes the cells they find; add --cells, or "
+                        "leave --cell-groups out");
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
     checkOutputsDistinct(args->scene, {{"--plan", args->planPath}});
     checkMinElement(args->minElementM);

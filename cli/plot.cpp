@@ -13,10 +13,18 @@ namespace radmesh::cli {
 
 namespace {
 
+// A gnuplot string of any text (a --name's quotes, a path's): double-quoted, its backslashes,
+// double quotes and control characters escaped. Single quotes' doubling ('') failed on two in a row.
 std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
+  std::string out = "\"";
+  for (char c : text)
+    if (c == '\\' || c == '"')
+      out += std::string{'\\', c};
+    else if (static_cast<unsigned char>(c) < 0x20)
+      out += fmt::format("\\{:03o}", static_cast<unsigned char>(c));
+    else
+      out += c;
+  return out + "\"";
 }
 
 // "set xrange [...]" around a single value, for data spread over none: gnuplot would otherwise warn

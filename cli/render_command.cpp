@@ -232,11 +232,10 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option_function<double>(
       "--exposure",
       [args](double ev) {
-        // As far as any automatic exposure it reports goes (a bake's floats span 2^-149 to 2^128,
-        // a solve's light 1e-30 to 1e32 W/m^2), so that it can be given back; beyond, a typo.
-        if (!(std::abs(ev) <= 160.0))
-          throw OptionError(fmt::format("--exposure {} is out of range: give stops from -160 to 160, e.g. -2 "
-                                        "(or leave it out: automatic)", ev));
+        // As far as any automatic exposure it reports goes, so that it can be given back; beyond, a typo.
+        if (!(std::abs(ev) <= kMaxExposureStops))
+          throw OptionError(fmt::format("--exposure {} is out of range: give stops from {} to {}, e.g. -2 "
+                                        "(or leave it out: automatic)", ev, -kMaxExposureStops, kMaxExposureStops));
         args->exposureEv = ev;
       },
       "Exposure in stops: shown value = B x 2^EV, white at 1 (default: automatic)");

@@ -3,6 +3,8 @@
 // required" name neither what was wrong nor what to give. Shared by radmesh and radmesh-view.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,6 +65,23 @@ inline ValueKind kindOfValue(const CLI::Option* option) {
   return {"a list of " + one + "s", one + "s separated by commas"};
 }
 
+// The item of `value` (a comma list, as CLI11 gives it) that an int cannot hold, when every item is a
+// whole number in decimal digits, or "": such a value is out of range, not "not a whole number".
+// Every whole-number option of radmesh's is an int.
+inline std::string outOfIntRange(const std::string& value) {
+  std::string item, outside;
+  std::stringstream items(value);
+  while (std::getline(items, item, ',')) {
+    const std::size_t digits = item.starts_with('+') || item.starts_with('-') ? 1 : 0;
+    if (item.size() == digits || item.find_first_not_of("0123456789", digits) != std::string::npos) return "";
+    // Leading zeros are gone (decimalArguments): more than 10 digits is past any int.
+    if (outside.empty() && (item.size() - digits > 10 || std::stoll(item) < std::numeric_limits<int>::min() ||
+                            std::stoll(item) > std::numeric_limits<int>::max()))
+      outside = item;
+  }
+  return outside;
+}
+
 inline std::string between(const std::string& text, const std::string& after, const std::string& before) {
   const std::size_t start = text.find(after);
   if (start == std::string::npos) return "";
@@ -91,7 +110,13 @@ inline auto usageFailure(const std::string& program) {
     } else if (const std::string name = between(what, "Could not convert: ", " = "); !name.empty()) {
       const CLI::Option* option = command->get_option_no_throw(name);
       const ValueKind kind = kindOfValue(option);
-      message = name + ": " + between(what, " = ", "") + " is not " + kind.noun + ": give " + kind.give + " (" + help + ")";
+      const std::string value = between(what, " = ", "");
+      if (const std::string outside = outOfIntRange(value); !outside.empty() && kind.noun.find("whole number") != std::string::npos)
+        message = name + ": " + outside + " is out of range: a whole number here is from " +
+                  std::to_string(std::numeric_limits<int>::min()) + " to " +
+                  std::to_string(std::numeric_limits<int>::max()) + " (" + help + " says what " + name + " takes)";
+      else
+        message = name + ": " + value + " is not " + kind.noun + ": give " + kind.give + " (" + help + ")";
     } else if (what.find(" required ") != std::string::npos && what.find(" missing") != std::string::npos) {
       const std::string name = what.substr(0, what.find(':'));
       const CLI::Option* option = command->get_option_no_throw(name);

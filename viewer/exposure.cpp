@@ -1,6 +1,7 @@
 #include "viewer/exposure.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -40,7 +41,8 @@ double autoExposure(const DisplayMesh& mesh, const std::vector<Rgb>& vertexB) {
   }
   // Early in a solve most of the area is still dark: fall back to the brightest triangle.
   if (reference <= 0.0) reference = lit.back().first;
-  return reference > 0.0 ? kShownAs / reference : 1.0;
+  if (!(reference > 0.0)) return 1.0;
+  return std::clamp(kShownAs / reference, std::exp2(-kMaxExposureStops), std::exp2(kMaxExposureStops));
 }
 
 }  // namespace radmesh

@@ -102,40 +102,45 @@ void SolverThread::Run::focusOn(const std::optional<Vec3>& eye, int upAxis) {
   focus = cell;
 }
 
+std::unique_ptr<SolverThread::Run> SolverThread::makeRun(const SolveSetup& setup, std::uint64_t generation,
+                                                        const std::string& resumePath,
+                                                        const std::optional<Vec3>& eye) {
+  auto run = std::make_unique<Run>();
+  run->setup = setup;
+  run->setup.options.formFactorCacheBytes = formFactorCacheBytes(setup.options.backend, setup.cacheMb);
+  defaultMinElement(run->setup.options, setup.cellM);
+  run->generation = generation;
+  std::vector<Patch> patches = meshScene(scene_, setup.cellM);
+  run->summary = summarizeScene(scene_, patches, setup.cellM);
+  run->sceneClosed = isClosed(scene_);
+  if (setup.cells) {
+    requireCellsOptions(setup.options);
+    run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
+    run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, run->setup.options,
+                                              CellSolveSettings{setup.cellM, setup.exchangeShots, setup.portalBins});
+    run->focusOn(eye, scene_.upAxis);
+  } else {
+    run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), run->setup.options);
+  }
+  if (!resumePath.empty() && run->solver) {
+    resumeFromCheckpoint(resumePath, *run->solver);
+    for (const IterationRecord& record : run->solver->history()) run->add(record);
+    run->checkpointMessage = "resumed from " + resumePath;
+  } else if (!resumePath.empty()) {
+    resumeCellsFromCheckpoint(resumePath, scene_, *run->cells);
+    // Where it stands, from the start: the panel said 0 iterations until the next round. (The
+    // rounds before are not saved: the curve starts here.)
+    run->addRound(0.0);
+    run->checkpointMessage = "resumed from " + resumePath + " after round " + std::to_string(run->cells->rounds());
+  }
+  run->buildMesh();
+  return run;
+}
+
 std::unique_ptr<SolverThread::Run> SolverThread::startRun(const SolveSetup& setup, std::uint64_t generation,
-                                                         const std::string& resumePath,
                                                          const std::optional<Vec3>& eye) {
   try {
-    auto run = std::make_unique<Run>();
-    run->setup = setup;
-    run->setup.options.formFactorCacheBytes = formFactorCacheBytes(setup.options.backend, setup.cacheMb);
-    defaultMinElement(run->setup.options, setup.cellM);
-    run->generation = generation;
-    std::vector<Patch> patches = meshScene(scene_, setup.cellM);
-    run->summary = summarizeScene(scene_, patches, setup.cellM);
-    run->sceneClosed = isClosed(scene_);
-    if (setup.cells) {
-      requireCellsOptions(setup.options);
-      run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
-      run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, run->setup.options,
-                                                CellSolveSettings{setup.cellM, setup.exchangeShots, setup.portalBins});
-      run->focusOn(eye, scene_.upAxis);
-    } else {
-      run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), run->setup.options);
-    }
-    if (!resumePath.empty() && run->solver) {
-      resumeFromCheckpoint(resumePath, *run->solver);
-      for (const IterationRecord& record : run->solver->history()) run->add(record);
-      run->checkpointMessage = "resumed from " + resumePath;
-    } else if (!resumePath.empty()) {
-      resumeCellsFromCheckpoint(resumePath, scene_, *run->cells);
-      // Where it stands, from the start: the panel said 0 iterations until the next round. (The
-      // rounds before are not saved: the curve starts here.)
-      run->addRound(0.0);
-      run->checkpointMessage = "resumed from " + resumePath + " after round " + std::to_string(run->cells->rounds());
-    }
-    run->buildMesh();
-    return run;
+    return makeRun(setup, generation, "", eye);
   } catch (const std::exception& e) {
     publishFailure(setup, e);
     return nullptr;

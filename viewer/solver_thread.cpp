@@ -30,8 +30,11 @@ SolverThread::SolverThread(Scene scene, const SolveSetup& setup, bool playing, s
     : scene_(std::move(scene)),
       playing_(playing),
       pendingSteps_(std::max(0, steps)),
-      pendingSetup_(setup),
-      pendingResume_(std::move(resumePath)) {
+      pendingSetup_(setup) {
+  if (!resumePath.empty()) {
+    resumed_ = makeRun(setup, ++generation_, resumePath, std::nullopt);
+    restartPending_ = false;
+  }
   auto first = std::make_shared<SolverSnapshot>();
   first->setup = setup;
   first->playing = playing;
@@ -125,12 +128,13 @@ void SolverThread::loop() {
   // Drawing comes first: on a machine with fewer free cores than threads, the window keeps its
   // frame rate and the solve (with the pool threads it starts, which inherit this) takes the rest.
   setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kSolverNice);
-  std::unique_ptr<Run> run;
+  std::unique_ptr<Run> run = std::move(resumed_);
+  if (run) publish(*run);
   Clock::time_point lastPublish{};
   for (;;) {
     enum class Work { Restart, StoppingRule, Checkpoint, Step, ItemBuffer } work = Work::Step;
     SolveSetup setup;
-    std::string resumePath, checkpointPath;
+    std::string checkpointPath;
     std::uint64_t generation = 0;
     std::optional<Vec3> eye;
     {
@@ -154,7 +158,6 @@ void SolverThread::loop() {
         restartPending_ = false;
         stoppingRulePending_ = false;  // the new setup carries it
         setup = pendingSetup_;
-        resumePath = std::exchange(pendingResume_, {});
         generation = ++generation_;
       } else if (stoppingRulePending_) {
         work = Work::StoppingRule;
@@ -171,7 +174,7 @@ void SolverThread::loop() {
     }
 
     if (work == Work::Restart) {
-      run = startRun(setup, generation, resumePath, eye);
+      run = startRun(setup, generation, eye);
       if (run) publish(*run);
       lastPublish = Clock::now();
       continue;

@@ -18,7 +18,8 @@ class SolverThread {
  public:
   // Meshes and starts solving at once (playing) or waits for a command (paused), or takes `steps`
   // iterations and pauses; with a checkpoint (solver/radiosity/checkpoint.h), the first solve goes
-  // on from it.
+  // on from it, made here on the caller's thread: a checkpoint that cannot be read or is of another
+  // solve throws its SceneError (as radmesh solve --resume refuses it) before anything runs.
   SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath = {}, int steps = 0);
   ~SolverThread();  // stops after the iteration under way and joins
   SolverThread(const SolverThread&) = delete;
@@ -47,9 +48,12 @@ class SolverThread {
  private:
   struct Run;  // the solver and what the thread accumulates across its iterations (solver_run.h)
   void loop();
-  // Null: failed. With a resume path, goes on from that checkpoint.
-  std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation, const std::string& resumePath,
-                                const std::optional<Vec3>& eye);
+  // With a resume path, goes on from that checkpoint. Throws what meshing, the solver or the
+  // checkpoint refuses.
+  std::unique_ptr<Run> makeRun(const SolveSetup& setup, std::uint64_t generation, const std::string& resumePath,
+                               const std::optional<Vec3>& eye);
+  // makeRun on the solver thread: null, its failure published, when it throws.
+  std::unique_ptr<Run> startRun(const SolveSetup& setup, std::uint64_t generation, const std::optional<Vec3>& eye);
   void save(Run& run, const std::string& path);
   void refreshItemBuffer(Run& run, bool finished);
   static std::shared_ptr<const CellsProgress> cellsProgress(const Run& run);
@@ -67,7 +71,7 @@ class SolverThread {
   bool itemBufferWanted_ = false;
   std::optional<Vec3> eye_;
   SolveSetup pendingSetup_;
-  std::string pendingResume_;      // for the first run only: a restart solves from scratch
+  std::unique_ptr<Run> resumed_;  // the first run, made from the checkpoint by the constructor
   std::optional<std::string> pendingCheckpoint_;  // where to save, once the iteration under way is done
   std::uint64_t generation_ = 0;
   std::shared_ptr<const SolverSnapshot> latest_;

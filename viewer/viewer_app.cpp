@@ -19,6 +19,7 @@
 #include "viewer/camera.h"
 #include "viewer/cell_visibility.h"
 #include "viewer/exposure.h"
+#include "viewer/frame_report.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"
 #include "viewer/renderer.h"
@@ -85,32 +86,6 @@ class FrameStats {
   Phase solving_, idle_;
 };
 
-// --frames N: each frame's time, and the part of it spent taking in the solver's snapshots.
-class FrameReport {
- public:
-  void add(double frameSeconds, double feedSeconds) {
-    frames_.push_back(frameSeconds);
-    feeds_.push_back(feedSeconds);
-  }
-  long frames() const { return static_cast<long>(frames_.size()); }
-  void print() const {
-    if (frames_.empty()) return;
-    std::vector<double> f = frames_, feed = feeds_;
-    std::sort(f.begin(), f.end());
-    std::sort(feed.begin(), feed.end());
-    double sum = 0.0;
-    for (double s : f) sum += s;
-    const long slow = std::count_if(f.begin(), f.end(), [](double s) { return s > 1.0 / 30.0; });
-    std::printf("radmesh-view: %zu frames with the mesh: lowest %.1f fps (%.1f ms), median %.1f fps (%.1f ms), "
-                "mean %.1f fps, %ld under 30 fps; taking in snapshots: median %.2f ms, longest %.1f ms a frame\n",
-                f.size(), 1.0 / f.back(), 1e3 * f.back(), 1.0 / f[f.size() / 2], 1e3 * f[f.size() / 2],
-                double(f.size()) / sum, slow, 1e3 * feed[feed.size() / 2], 1e3 * feed.back());
-  }
-
- private:
-  std::vector<double> frames_, feeds_;
-};
-
 // What the window shows: a solve converging on its own thread, or a bake.
 class Shown {
  public:
@@ -137,8 +112,8 @@ class ShownSolve : public Shown {
   void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) override {
     solver_.setEye(camera.view().eye);
     feed_.show(solver_.latest(), renderer, view);
-    // Said in the terminal too, once each: a bad --cell or --resume is found on the solver thread,
-    // after the window opened (--steps and --frames say it as they exit).
+    // Said in the terminal too, once each: a --cell too fine for the scene is found on the solver
+    // thread, after the window opened (--steps and --frames say it as they exit).
     if (const std::string& error = feed_.shown().error; !reportsAtExit_ && !error.empty() && error != printedError_) {
       std::fprintf(stderr, "radmesh-view: the solve failed: %s\n", error.c_str());
       printedError_ = error;
@@ -244,16 +219,25 @@ void printMessages(const ViewedFile& file) {
   for (const std::string& note : file.notes) std::printf("radmesh-view: %s\n", note.c_str());
 }
 
-// One file in the window: what it shows, the walk through it, its panel and the renderer of its
-// mesh (GL objects: made with the window's context current). Opening another file makes them anew.
-struct Viewing {
-  Viewing(ViewedFile file, const ViewerArgs& args)
-      : camera(sceneFrame(file.scene)), panel(file.setup, args.firstTab, args.checkpoint) {
+// What a file shows and where the walk starts, made before any window: a solve's --resume
+// checkpoint is read and checked by then, and refused as radmesh solve refuses it.
+struct Opened {
+  Opened(ViewedFile file, const ViewerArgs& args) : camera(sceneFrame(file.scene)), setup(file.setup) {
     if (file.bake)
       shown = std::make_unique<ShownBake>(file.path, std::move(*file.bake));
     else
       shown = std::make_unique<ShownSolve>(std::move(file.scene), file.setup, args);
   }
+  WalkCamera camera;
+  SolveSetup setup;
+  std::unique_ptr<Shown> shown;
+};
+
+// One file in the window: what it shows, the walk through it, its panel and the renderer of its
+// mesh (GL objects: made with the window's context current). Opening another file makes them anew.
+struct Viewing {
+  Viewing(Opened opened, const ViewerArgs& args)
+      : camera(opened.camera), shown(std::move(opened.shown)), panel(opened.setup, args.firstTab, args.checkpoint) {}
   WalkCamera camera;
   std::unique_ptr<Shown> shown;
   Panel panel;
@@ -274,13 +258,15 @@ int runViewer(const ViewerArgs& args) {
     for (const std::string& flag : args.solveFlags)
       std::fprintf(stderr, "radmesh-view: warning: %s does not apply: %s is a bake, already solved (it applies to scenes)\n",
                    flag.c_str(), args.scene.c_str());
-  WindowContext window("radmesh-view: " + file.scene.source, args.windowSize);
+  const std::string title = "radmesh-view: " + file.scene.source;
+  Opened first(std::move(file), args);
+  WindowContext window(title, args.windowSize);
   ImGuiLayer imgui(window.window());
   std::optional<std::string> dropped;
   glfwSetWindowUserPointer(window.window(), &dropped);
   glfwSetDropCallback(window.window(), keepDroppedPath);
   const bool smokeTest = args.steps > 0;
-  auto viewing = std::make_unique<Viewing>(std::move(file), args);
+  auto viewing = std::make_unique<Viewing>(std::move(first), args);
   // Files opened later start from scratch and run until told: the launch's checkpoint and smoke test were its own.
   ViewerArgs later = args;
   later.resume.clear();
@@ -307,7 +293,7 @@ int runViewer(const ViewerArgs& args) {
       const std::string message = fmt::format("opened {}{}", opened.scene.source,
                                               opened.warnings.empty() ? "" : fmt::format(" ({} warnings: see the terminal)", opened.warnings.size()));
       viewing.reset();  // its solver thread stops before the next one starts
-      viewing = std::make_unique<Viewing>(std::move(opened), later);
+      viewing = std::make_unique<Viewing>(Opened(std::move(opened), later), later);
       viewing->panel.setOpenMessage(path, message, false);
       view.autoExposure = true;
     } catch (const std::exception& e) {
@@ -367,7 +353,7 @@ int runViewer(const ViewerArgs& args) {
   }
 
   stats.print(window.framebufferSize(), viewing->shown->state());
-  report.print();
+  if (const std::string summary = report.summary(); !summary.empty()) std::printf("radmesh-view: %s\n", summary.c_str());
   return exitCode;
 }
 

@@ -65,12 +65,13 @@ bool nestsDeeperThan(std::string_view json, int limit) {
 // 2.0. The GLB header's version and asset.version's major number must both say 2.
 void checkVersion(const std::string& path, const std::string& bytes, const nlohmann::json& doc) {
   const std::string fix = "re-export the model as glTF 2.0";
-  if (isGlb(bytes) && bytes.size() >= 8 && littleEndian32(bytes, 4) != 2)
-    throw SceneError(path, "GLB container",
-                     fmt::format("its header says version {}, not 2: glTF 1.0's binary format, which radmesh does not "
-                                 "read",
-                                 littleEndian32(bytes, 4)),
-                     fix);
+  if (isGlb(bytes) && bytes.size() >= 8)
+    if (const uint32_t glb = littleEndian32(bytes, 4); glb != 2)
+      throw SceneError(path, "GLB container",
+                       fmt::format("its header says version {}, not 2: {}, which radmesh does not read", glb,
+                                   glb == 1 ? "glTF 1.0's binary format"
+                                            : "a GLB version that does not exist (2 is glTF 2.0's, 1 was glTF 1.0's)"),
+                       fix);
   if (!doc.is_object() || !doc.contains("asset") || !doc["asset"].is_object() || !doc["asset"].contains("version") ||
       !doc["asset"]["version"].is_string())
     return;  // tinygltf refuses a missing version

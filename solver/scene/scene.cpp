@@ -111,17 +111,23 @@ std::string describe(const Scene& scene, size_t index) {
   return "polygon " + std::to_string(index) + (p.origin.empty() ? "" : " (" + p.origin + ")");
 }
 
-// What an emitter sends, past kMaxEmitted: refused, for every format alike.
+// What an emitter sends, past kMaxEmitted or above 0 but under kMinEmitted: refused, for every format alike.
 void requireTrustedEmission(double emitted, const char* unit, const std::string& file, const std::string& element,
                             const char* what) {
+  const std::string units = "MGF's ed is in lm/m^2, glTF's emission in W/m^2, a glTF light's intensity in candela "
+                            "(lux for a directional light)";
   if (emitted > kMaxEmitted)
     throw SceneError(file, element,
                      fmt::format("emits {:g} {}, more than the {:g} {} radmesh trusts (no real light comes near; a "
                                  "solve would overflow the bake's radiosities)",
                                  emitted, unit, kMaxEmitted, unit),
-                     fmt::format("lower its {} to a real light's: MGF's ed is in lm/m^2, glTF's emission in W/m^2, "
-                                 "a glTF light's intensity in candela (lux for a directional light)",
-                                 what));
+                     fmt::format("lower its {} to a real light's: {}", what, units));
+  if (emitted > 0.0 && emitted < kMinEmitted)
+    throw SceneError(file, element,
+                     fmt::format("emits {:g} {}, less than the {:g} {} radmesh trusts (no real light comes near; a "
+                                 "solve's radiosities would fall below what the bake's floats hold: a black picture)",
+                                 emitted, unit, kMinEmitted, unit),
+                     fmt::format("raise its {} to a real light's, or make it 0 if it is no light: {}", what, units));
 }
 
 void validateMaterial(const Scene& scene, const Material& m) {

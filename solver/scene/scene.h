@@ -34,6 +34,9 @@ inline bool withinCoordinateBound(const Vec3& p) {
 // light's power in W. Beyond it (no real light comes within twenty orders of it) a solve carries
 // the number into radiosities that a bake's 32-bit floats cannot hold.
 inline constexpr double kMaxEmitted = 1e30;
+// The least an emitter may send above nothing, in the same units: below it a solve's radiosities
+// fall under what a bake's 32-bit floats hold (1e-38 and less), and its picture comes out black.
+inline constexpr double kMinEmitted = 1e-30;
 
 struct Material {
   std::string name;
@@ -97,8 +100,9 @@ std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n);
 
 // Throws SceneError for input that cannot be solved: no polygons, NaN or infinite coordinates,
 // fewer than 3 vertices, zero area, non-planar polygons, rho outside [0,1), negative or non-finite
-// emittance or one past kMaxEmitted, a material index out of range, a light with a non-finite or
-// negative intensity or a power past kMaxEmitted, a zero direction or cone angles outside
+// emittance or one past kMaxEmitted (or above 0 but under kMinEmitted), a material index out of range,
+// a light with a non-finite or negative intensity or a power past kMaxEmitted (or above 0 but under
+// kMinEmitted), a zero direction or cone angles outside
 // 0 <= inner < outer <= pi/2.
 void validateGeometry(const Scene& scene);
 // The same, and no emitter at all, neither an emitting material nor a light (the message points to

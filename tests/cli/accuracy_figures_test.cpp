@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <regex>
 
 #include "cli/bench_accuracy_figures.h"
 #include "cli/plot.h"
@@ -55,6 +57,20 @@ TEST(AccuracyFigures, LabelsStayInsideTheFrameAndOffEachOther) {
   EXPECT_EQ(commands[0], "set label \"a\" at 2,5 left offset 1,0.5 font ',9'");
   EXPECT_EQ(commands[1], "set label \"b\" at 2,5 left offset 1,-1 font ',9'");
   EXPECT_EQ(commands[2], "set label \"256², cell 0.381\" at 95,5 right offset -1,0.5 font ',9'");
+}
+
+// A --name of quotes ('' broke the gnuplot script: "unexpected or unrecognized token"), a
+// backslash or a line break is drawn into its figures' titles and file names as given.
+TEST(AccuracyFigures, ANameOfQuotesIsDrawn) {
+  if (!gnuplotInstalled()) GTEST_SKIP() << "gnuplot is not installed (apt-get install gnuplot-nox)";
+  const std::string dir = std::filesystem::path(tempPath("figures.png")).parent_path().string();
+  for (const std::string name : {"''", "it's \"q\" \\ \nnext"}) {
+    const CommandRun run = radmesh("bench accuracy furnace --cells 0.5 --projections hemicube --resolutions 16 "
+                                   "--reference-resolution 32 --out-dir " + dir + " --name '" +
+                                   std::regex_replace(name, std::regex("'"), "'\\''") + "'");
+    EXPECT_EQ(run.exitCode, 0) << name << ": " << run.output;
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + name + "-error-vs-time.png")) << name << ": " << run.output;
+  }
 }
 
 #ifdef RADMESH_HAS_VIEWER

@@ -90,6 +90,22 @@ TEST(MgfValuesCli, ColourTemperatureAndIndexOfRefractionBelowTheReferenceRangeAr
                     "index, then the absorption, e.g. ir 1.5 0 for glass)");
 }
 
+// ed 1e-45 solved without a word into a bake whose float radiosities were all 0: a black picture.
+// Light under the floats' reach is refused, naming the file, the material and the fix.
+TEST(MgfValuesCli, LightTooFaintForTheBakeIsRefused) {
+  const std::string path = box("faint.mgf", " c\n rd 0.5\n ed 1e-45\n");
+  for (const std::string command : {"info ", "solve "}) {
+    const CommandRun run = radmesh(command + path);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(run.output, "radmesh: error: " + path +
+                              ": material 'white': emits 5.58659e-48 W/m^2, less than the 1e-30 W/m^2 radmesh trusts "
+                              "(no real light comes near; a solve's radiosities would fall below what the bake's "
+                              "floats hold: a black picture) (fix: raise its emittance to a real light's, or make it 0 "
+                              "if it is no light: MGF's ed is in lm/m^2, glTF's emission in W/m^2, a glTF light's "
+                              "intensity in candela (lux for a directional light))\n");
+  }
+}
+
 TEST(MgfValuesCli, ReflectanceOfOneIsLoweredWithAWarning) {
   const std::string output = expectInfoRepaired(
       box("rd1.mgf", " c\n  cxy 0.333 0.333\n rd 1.0\n"),

@@ -49,6 +49,39 @@ TEST(OptionValues, WholeNumbersInAnotherBaseAreRefused) {
   }
 }
 
+// A whole number too large for the option was "not a whole number"; it is out of range, and the
+// range is said, for a list's item too, and in radmesh-view's words alike (cli/usage_failure.h).
+TEST(OptionValues, AWholeNumberPastTheRangeIsOutOfRange) {
+  const std::string range = " is out of range: a whole number here is from -2147483648 to 2147483647 (radmesh ";
+  const std::pair<std::string, std::string> cases[] = {
+      {"solve office --resolution 99999999999",
+       "--resolution: 99999999999" + range + "solve --help says what --resolution takes)"},
+      {"solve office --max-iterations=-2147483649",
+       "--max-iterations: -2147483649" + range + "solve --help says what --max-iterations takes)"},
+      {"bench solve office --resolutions 64,99999999999",
+       "--resolutions: 99999999999" + range + "bench solve --help says what --resolutions takes)"}};
+  for (const auto& [arguments, says] : cases) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_EQ(run.output, "radmesh: error: " + says + "\n") << arguments;
+  }
+  const CommandRun notANumber = radmesh("solve office --resolution 12x");
+  EXPECT_EQ(notANumber.exitCode, 2);
+  EXPECT_NE(notANumber.output.find("--resolution: 12x is not a whole number"), std::string::npos) << notANumber.output;
+}
+
+// --cell-groups without --cells (or --plan, which finds the cells too) was ignored without a word.
+TEST(OptionValues, CellGroupsWithoutCellsIsRefused) {
+  CommandRun run = radmesh("info two-rooms --cell-groups join");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_EQ(run.output, "radmesh: error: --cell-groups requires --cells (or --plan): it shapes the cells they find; "
+                        "add --cells, or leave --cell-groups out\n");
+  run = radmesh("info two-rooms --cells --cell-groups join");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  run = radmesh("info two-rooms --cell-groups join --plan " + tempPath("plan.png"));
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+}
+
 // The warning said to stop on the unshot power, which was already the stop, when --max-iterations
 // had cut the solve short.
 TEST(OptionValues, AFarFromConvergedWarningNamesTheCapThatStoppedTheSolve) {

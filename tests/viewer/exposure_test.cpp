@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "solver/io/mgf_color.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
@@ -51,6 +53,18 @@ TEST(Exposure, IsOneWhenNothingIsLit) {
   std::vector<Rgb> b;
   addTriangle(mesh, b, 0.0, 1.0, 0.0);
   EXPECT_DOUBLE_EQ(autoExposure(mesh, b), 1.0);
+}
+
+// A solve's doubles reach far below a float's: 1e-300 W/m^2 made it +1010 EV (radmesh render said
+// so, and --exposure refused it back). It stops at kMaxExposureStops either way.
+TEST(Exposure, StaysWithinTheStopsRenderTakes) {
+  for (const auto& [luminance, stops] : {std::pair{1e-300, kMaxExposureStops}, std::pair{1e300, -kMaxExposureStops},
+                                         std::pair{1e-40, std::log2(0.7 / 1e-40)}}) {
+    DisplayMesh mesh;
+    std::vector<Rgb> b;
+    addTriangle(mesh, b, 0.0, 1.0, luminance);
+    EXPECT_DOUBLE_EQ(std::log2(autoExposure(mesh, b)), stops) << luminance;
+  }
 }
 
 // Fraction of the pixels of `image` at the ceiling value in some channel.
