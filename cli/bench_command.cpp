@@ -104,7 +104,7 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("scene", args->scene, "Scene name or file")->capture_default_str();
   addUpOption(cmd, args->up);
   addUnitsOption(cmd, args->metresPerUnit);
-  cmd->add_option("--name", args->name, "File stem of the outputs (default: the scene's)");
+  cmd->add_option("--name", args->name, "File stem of the outputs (default: the scene's)")->check(kFileStem);
   cmd->add_option("--out-dir", args->outDir, "Write the CSV (NAME.csv, NAME-traces.csv) and the PNG plots here");
   cmd->add_option("--json", *json, "Also write every figure, with the traces of every iteration, as JSON");
   addDaylightFlags(cmd, args->daylight);

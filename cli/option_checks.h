@@ -44,6 +44,15 @@ inline std::optional<std::array<int, 2>> parseSize(const std::string& text, int 
   return size;
 }
 
+// A name the outputs take as their file stem (NAME.csv beside NAME-traces.csv in --out-dir): one
+// file name, not a path ("a/b" had written into a folder a/), and not "." or "..".
+inline const CLI::Validator kFileStem(
+    [](std::string& text) -> std::string {
+      if (!text.empty() && text != "." && text != ".." && text.find('/') == std::string::npos) return {};
+      return "'" + text + "' is not a file name: give a name without '/' (the outputs go to --out-dir)";
+    },
+    "STEM");
+
 inline const CLI::Validator kPositive = numberAbove(0.0);
 inline const CLI::Validator kNonNegative = numberAbove(0.0, true);
 

@@ -21,10 +21,10 @@ SkyModel parseSkyModel(const std::string& text) {
 }
 
 void checkSkyLux(double lux) {
-  if (!(lux > 0.0 && lux <= kSunAboveTheAtmosphereLux))
-    throw OptionError(fmt::format("--sky must be the sky's horizontal illuminance in lux, above 0 and at most {}, the "
-                                  "sun's above the atmosphere (e.g. 10000, an overcast day), not {}",
-                                  kSunAboveTheAtmosphereLux, lux));
+  if (!(lux >= kDimmestLux && lux <= kSunAboveTheAtmosphereLux))
+    throw OptionError(fmt::format("--sky must be the sky's horizontal illuminance in lux, at least {} and at most {}, "
+                                  "the sun's above the atmosphere (e.g. 10000, an overcast day), not {}",
+                                  kDimmestLux, kSunAboveTheAtmosphereLux, lux));
 }
 
 double skyIlluminanceLux(SkyModel model, double horizontalLux, double cosTilt) {

@@ -20,10 +20,10 @@ Light sunLight(double azimuthDeg, double elevationDeg, double lux, const Compass
                                   elevationDeg, elevationDeg > 90.0 ? "past overhead" : "not above the horizon"));
   if (!std::isfinite(azimuthDeg))
     throw OptionError("--sun azimuth must be a number of degrees clockwise from north (0 north, 90 east)");
-  if (!(lux > 0.0 && lux <= kSunAboveTheAtmosphereLux))
-    throw OptionError(fmt::format("--sun illuminance {} lux must be above 0 and at most {}, the sun's above the "
+  if (!(lux >= kDimmestLux && lux <= kSunAboveTheAtmosphereLux))
+    throw OptionError(fmt::format("--sun illuminance {} lux must be at least {} and at most {}, the sun's above the "
                                   "atmosphere: e.g. {} for clear-sky direct sun",
-                                  lux, kSunAboveTheAtmosphereLux, kClearSkySunLux));
+                                  lux, kDimmestLux, kSunAboveTheAtmosphereLux, kClearSkySunLux));
   const double azimuth = std::fmod(azimuthDeg, 360.0) * std::numbers::pi / 180.0;  // 1e308 degrees is a direction too
   const double elevation = elevationDeg * std::numbers::pi / 180.0;
   const Vec3 east = glm::cross(compass.north, compass.up);

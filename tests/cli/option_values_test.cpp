@@ -82,6 +82,15 @@ TEST(OptionValues, CellGroupsWithoutCellsIsRefused) {
   EXPECT_EQ(run.exitCode, 0) << run.output;
 }
 
+// bench accuracy --name a/b wrote its outputs into a folder a/; "." made files named "..csv".
+TEST(OptionValues, ABenchNameThatIsNoFileNameIsRefused) {
+  for (const char* name : {"a/b", ".", ".."}) {
+    const CommandRun run = radmesh(std::string("bench accuracy furnace --quick --name ") + name);
+    EXPECT_EQ(run.exitCode, 2) << name << ": " << run.output;
+    EXPECT_NE(run.output.find("is not a file name: give a name without '/'"), std::string::npos) << run.output;
+  }
+}
+
 // The warning said to stop on the unshot power, which was already the stop, when --max-iterations
 // had cut the solve short.
 TEST(OptionValues, AFarFromConvergedWarningNamesTheCapThatStoppedTheSolve) {

@@ -25,7 +25,7 @@ TEST(Sun, AzimuthIsClockwiseFromNorthAndElevationAboveTheHorizon) {
 }
 
 TEST(Sun, ImpossibleValuesAreRefusedNamingTheOption) {
-  for (const char* bad : {"10,0", "10,-5", "10,91", "a,45", "10", "10,45,0", "10,45,nan", "10,45,inf", "10,45,133001", "10,45,1e308", "", "10,45,1,2", "10,,45"}) {
+  for (const char* bad : {"10,0", "10,-5", "10,91", "a,45", "10", "10,45,0", "10,45,1e-40", "10,45,nan", "10,45,inf", "10,45,133001", "10,45,1e308", "", "10,45,1,2", "10,,45"}) {
     try {
       parseSun(bad);
       ADD_FAILURE() << "--sun " << bad << " accepted";
