@@ -166,10 +166,13 @@ std::optional<GridTurn> ownGrid(const std::vector<Vec3>& outline, double than, c
   std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(kept), candidates.end(),
                     [](const Candidate& x, const Candidate& y) { return x.length > y.length; });
   std::optional<GridTurn> best = tiltedFlat(outline, base);
-  if (best && lengthAlong(outline, &*best) >= than)
-    than = lengthAlong(outline, &*best);
-  else
-    best.reset();
+  if (best) {
+    const double m = lengthAlong(outline, &*best);
+    if (m >= than)
+      than = m;
+    else
+      best.reset();
+  }
   for (size_t c = 0; c < kept; ++c) {
     const double m = lengthAlong(outline, &candidates[c].turn);
     if (m > than) than = m, best = candidates[c].turn;
@@ -257,7 +260,6 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
   const size_t modelTurns = grids.turns.size();
   grids.turnOf.assign(outlines.size(), -1);
   std::vector<double> edgeM(modelTurns, 0.0);
-  std::vector<int> ownBase;  // per own grid from modelTurns on: the model's turn it tilts from, or -1
   for (size_t i = 0; i < outlines.size(); ++i) {
     double best = lengthAlong(*outlines[i], nullptr);
     for (size_t t = 0; t < modelTurns; ++t) {
@@ -266,7 +268,6 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
     }
     const GridTurn& base = grids.turnOf[i] < 0 ? grids.world : grids.turns[grids.turnOf[i]];
     if (const std::optional<GridTurn> own = ownGrid(*outlines[i], best, base)) {
-      ownBase.push_back(grids.turnOf[i]);
       grids.turnOf[i] = static_cast<int>(grids.turns.size());
       grids.turns.push_back(*own);
       edgeM.push_back(lengthAlong(*outlines[i], &*own));
@@ -292,11 +293,14 @@ Grids gridsOf(const std::vector<const std::vector<Vec3>*>& outlines) {
     if (grids.turnOf[i] >= 0) on[grids.turnOf[i]].push_back(outlines[i]);
   for (size_t t = 0; t < grids.turns.size(); ++t)
     if (!grids.turns[t].own) placePivot(grids.turns[t], on[t]);
-  for (size_t t = 0, own = 0; t < grids.turns.size(); ++t) {
-    if (!grids.turns[t].own) continue;
-    const int base = ownBase[own++];
-    const bool tiltedFromTurn = grids.turns[t].tiltRadians != 0.0 && base >= 0 && kept[base] >= 0;
-    placePivot(grids.turns[t], on[t], tiltedFromTurn ? grids.turns[kept[base]].pivot : Vec3(0.0));
+  for (size_t t = 0; t < grids.turns.size(); ++t) {
+    GridTurn& own = grids.turns[t];
+    if (!own.own) continue;
+    // A tilted grid's turn is its model turn's, copied (tiltedFlat).
+    const auto from = std::find_if(grids.turns.begin(), grids.turns.end(), [&](const GridTurn& m) {
+      return !m.own && own.tiltRadians != 0.0 && m.axis == own.axis && m.radians == own.radians;
+    });
+    placePivot(own, on[t], from != grids.turns.end() ? from->pivot : Vec3(0.0));
   }
 
   // Far: the origin lies beyond the model's box grown by its size on every side.
