@@ -43,8 +43,6 @@ struct CellsRun {
   std::vector<Rgb> radiosity;
 };
 
-double wallSeconds() { return benchSeconds(2); }
-
 CellsRun runCells(const Scene& scene, const std::vector<Patch>& patches, const CellPartition& partition,
                   SolveOptions o, const BenchCellsArgs& args) {
   const double start = benchSeconds(o.threads), wallStart = wallSeconds();

@@ -43,10 +43,6 @@ struct Timing {
   RunShape shape = {};
 };
 
-double wallSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 // Solves until `until` (or the cap), timing every iteration; the median is robust to the noise of
 // a shared machine.
 Timing timeSolve(const Scene& scene, const std::vector<Patch>& patches, SolveOptions options, int maxIterations) {

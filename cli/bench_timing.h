@@ -15,11 +15,12 @@ inline double threadCpuSeconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// One thread: the solve's own CPU time. More: wall time, the only clock that sees every thread.
-inline double benchSeconds(int threads) {
-  return threads == 1 ? threadCpuSeconds()
-                      : std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+inline double wallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
+
+// One thread: the solve's own CPU time. More: wall time, the only clock that sees every thread.
+inline double benchSeconds(int threads) { return threads == 1 ? threadCpuSeconds() : wallSeconds(); }
 
 inline double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());

@@ -61,7 +61,7 @@ std::vector<CellFigures> cellFigures(const Scene& scene, const std::vector<Patch
     ++f.patches;
     f.areaM2 += patches[i].areaM2;
     f.emitters += m.emits() ? 1 : 0;
-    f.emittedW += patches[i].areaM2 * (m.emittance.r + m.emittance.g + m.emittance.b);
+    f.emittedW += patches[i].areaM2 * channelSum(m.emittance);
   }
   return out;
 }

@@ -2,15 +2,12 @@
 
 #include <array>
 #include <cmath>
-#include <limits>
 
 #include "solver/meshing/occluders.h"
 
 namespace radmesh {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The cell on x's side of the portal's plane where x is within `reach` of the portal (the rectangle
 // findPortals makes, grown by reach in its plane), else -1; -1 as well in the plane itself.

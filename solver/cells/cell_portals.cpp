@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -14,8 +13,6 @@
 namespace radmesh {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Where two cells touch: the face between voxel `low` and its +axis neighbour.
 struct Contact {

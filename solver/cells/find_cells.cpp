@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <tuple>
 
@@ -23,7 +22,6 @@ namespace {
 constexpr double kCutRadiusM = 0.6;  // openings less than about twice this wide are cut: doors, windows
 constexpr double kVoxelM = kCutRadiusM / 4;
 constexpr double kMaxVoxels = 24e6;  // bounds the memory at about 6 bytes a voxel
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 constexpr int kOutsideHandicap = 6;  // layers: where cell and outside meet moves 3 voxels outward
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "solver/scene/scene.h"
@@ -11,6 +12,9 @@
 namespace radmesh {
 
 using Index3 = std::array<int, 3>;
+
+// The start of running minima and maxima, here and in the files of solver/cells/ that use the grid.
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct VoxelGrid {
   Vec3 origin{0.0};

@@ -9,6 +9,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "solver/geometry/edge_key.h"
+
 namespace radmesh {
 
 namespace {
@@ -108,19 +110,15 @@ double sceneExtent(const std::vector<Polygon>& input) {
   return extent > 0.0 && std::isfinite(extent) ? extent : 1.0;
 }
 
-uint64_t edgeKey(int from, int to) {
-  return (static_cast<uint64_t>(static_cast<uint32_t>(from)) << 32) | static_cast<uint32_t>(to);
-}
-
 // A region grown from one triangle; it stays a topological disk, so its boundary is one loop.
 struct Region {
   std::unordered_set<uint64_t> boundary;  // directed edges, counter-clockwise
   std::unordered_set<int> vertices;
 };
 
-class Merger {
+class RegionMerger {
  public:
-  Merger(const std::vector<Polygon>& input, MergeReport& report)
+  RegionMerger(const std::vector<Polygon>& input, MergeReport& report)
       : input_(input),
         report_(report),
         extent_(sceneExtent(input)),
@@ -167,7 +165,7 @@ class Merger {
       const int id = static_cast<int>(triangles_.size());
       for (int e = 0; e < 3; ++e) {
         const int from = t.corner[e], to = t.corner[(e + 1) % 3];
-        edges_[edgeKey(std::min(from, to), std::max(from, to))].push_back(id);
+        edges_[directedEdgeKey(std::min(from, to), std::max(from, to))].push_back(id);
       }
       triangles_.push_back(t);
     }
@@ -178,7 +176,7 @@ class Merger {
   // windings (a manifold, consistently oriented edge); -1 otherwise.
   int across(int t, int e) const {
     const int from = triangles_[t].corner[e], to = triangles_[t].corner[(e + 1) % 3];
-    const std::vector<int>& sharing = edges_.at(edgeKey(std::min(from, to), std::max(from, to)));
+    const std::vector<int>& sharing = edges_.at(directedEdgeKey(std::min(from, to), std::max(from, to)));
     if (sharing.size() != 2) return -1;
     const int other = sharing[0] == t ? sharing[1] : sharing[0];
     const auto& c = triangles_[other].corner;
@@ -201,7 +199,7 @@ class Merger {
     int shared = 0, opposite = -1;
     for (int e = 0; e < 3; ++e) {
       const int from = t.corner[e], to = t.corner[(e + 1) % 3];
-      if (r.boundary.count(edgeKey(to, from))) {
+      if (r.boundary.count(directedEdgeKey(to, from))) {
         ++shared;
         opposite = t.corner[(e + 2) % 3];
       }
@@ -213,7 +211,7 @@ class Merger {
   static void add(Region& r, const Triangle& t) {
     for (int e = 0; e < 3; ++e) {
       const int from = t.corner[e], to = t.corner[(e + 1) % 3];
-      if (!r.boundary.erase(edgeKey(to, from))) r.boundary.insert(edgeKey(from, to));
+      if (!r.boundary.erase(directedEdgeKey(to, from))) r.boundary.insert(directedEdgeKey(from, to));
       r.vertices.insert(from);
     }
   }
@@ -296,7 +294,7 @@ std::vector<Polygon> mergeCoplanarTriangles(const std::vector<Polygon>& triangle
   MergeReport local;
   MergeReport& r = report ? *report : local;
   r = MergeReport{};
-  return Merger(triangles, r).run();
+  return RegionMerger(triangles, r).run();
 }
 
 }  // namespace radmesh

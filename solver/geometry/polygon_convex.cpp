@@ -8,6 +8,7 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "solver/geometry/edge_key.h"
 #include "solver/geometry/polygon_triangulate.h"
 
 namespace radmesh {
@@ -32,27 +33,22 @@ bool isConvex(const std::vector<Vec2>& ccw, double noiseM) {
 
 namespace {
 
-using Edge = std::uint64_t;
-Edge edgeKey(int from, int to) {
-  return (static_cast<Edge>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
-}
-
 // Hertel–Mehlhorn: drop each diagonal whose removal leaves both of its ends convex. Pieces are
 // index cycles; `owner` maps each directed edge to the piece that has it.
-class Merger {
+class DiagonalMerger {
  public:
-  Merger(const std::vector<Vec2>& p, double noiseM) : p_(p), noise_(noiseM) {}
+  DiagonalMerger(const std::vector<Vec2>& p, double noiseM) : p_(p), noise_(noiseM) {}
 
   std::vector<std::vector<int>> run(const std::vector<std::array<int, 3>>& triangles) {
     for (const auto& t : triangles) {
       pieces_.push_back({t[0], t[1], t[2]});
       for (int k = 0; k < 3; ++k)
-        owner_[edgeKey(t[k], t[(k + 1) % 3])] = static_cast<int>(pieces_.size()) - 1;
+        owner_[directedEdgeKey(t[k], t[(k + 1) % 3])] = static_cast<int>(pieces_.size()) - 1;
     }
     std::vector<std::pair<int, int>> diagonals;
     for (const auto& [key, piece] : owner_) {
       const int from = static_cast<int>(key >> 32), to = static_cast<int>(key & 0xffffffffu);
-      if (from < to && owner_.count(edgeKey(to, from))) diagonals.emplace_back(from, to);
+      if (from < to && owner_.count(directedEdgeKey(to, from))) diagonals.emplace_back(from, to);
     }
     // Long diagonals first: removing them tends to leave fat pieces. Ties by index: deterministic.
     std::sort(diagonals.begin(), diagonals.end(), [&](const auto& x, const auto& y) {
@@ -71,7 +67,7 @@ class Merger {
   // Piece a holds edge i->j, piece b holds j->i; their union, without the diagonal, runs
   // j .. i through a and then i .. j through b.
   void tryMerge(int i, int j) {
-    const int a = owner_.at(edgeKey(i, j)), b = owner_.at(edgeKey(j, i));
+    const int a = owner_.at(directedEdgeKey(i, j)), b = owner_.at(directedEdgeKey(j, i));
     std::vector<int> merged = rotatedToStart(pieces_[a], j);       // j, ..., i
     const std::vector<int> fromB = rotatedToStart(pieces_[b], i);  // i, b1, ..., bk, j
     const size_t sizeA = merged.size();
@@ -81,10 +77,10 @@ class Merger {
       return sideOfLine(p_[merged[(at + n - 1) % n]], p_[merged[(at + 1) % n]], p_[merged[at]]) <= noise_;
     };
     if (!notReflex(sizeA - 1) || !notReflex(0)) return;
-    owner_.erase(edgeKey(i, j));
-    owner_.erase(edgeKey(j, i));
+    owner_.erase(directedEdgeKey(i, j));
+    owner_.erase(directedEdgeKey(j, i));
     for (size_t k = 0; k < merged.size(); ++k) {
-      const Edge key = edgeKey(merged[k], merged[(k + 1) % merged.size()]);
+      const std::uint64_t key = directedEdgeKey(merged[k], merged[(k + 1) % merged.size()]);
       if (owner_.count(key)) owner_[key] = a;
     }
     pieces_[a] = std::move(merged);
@@ -100,13 +96,13 @@ class Merger {
   const std::vector<Vec2>& p_;
   double noise_;
   std::vector<std::vector<int>> pieces_;
-  std::unordered_map<Edge, int> owner_;
+  std::unordered_map<std::uint64_t, int> owner_;
 };
 
 }  // namespace
 
 std::vector<std::vector<Vec2>> convexPieces(const std::vector<Vec2>& ccw, double noiseM) {
-  const auto cycles = Merger(ccw, noiseM).run(triangulatePolygon(ccw, noiseM));
+  const auto cycles = DiagonalMerger(ccw, noiseM).run(triangulatePolygon(ccw, noiseM));
   std::vector<std::vector<Vec2>> pieces;
   for (const auto& cycle : cycles) {
     std::vector<Vec2>& piece = pieces.emplace_back();

@@ -12,8 +12,6 @@
 namespace radmesh {
 namespace cell_state {
 
-inline double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
-
 // Power reaching `patch` of `cell` moves, at the next exchange, to `twinPatch` of `twinCell`.
 struct PortalLink {
   int cell = 0;

@@ -16,7 +16,7 @@
 namespace radmesh {
 namespace solver_state {
 
-inline double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
+using radmesh::channelSum;
 
 // With colour off (a grey scene) one channel stands for three: `double` holds it, and these give
 // bitwise what the three equal channels of an Rgb would (a + a + a rounds as 3a does).

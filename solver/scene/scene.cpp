@@ -184,8 +184,7 @@ void validateLight(const Scene& scene, const Light& light) {
                      "has a negative, NaN or infinite intensity (" + std::to_string(light.intensity.r) + ", " +
                          std::to_string(light.intensity.g) + ", " + std::to_string(light.intensity.b) + ")",
                      "give the light a finite, non-negative intensity and colour");
-  const Rgb power = lightPower(scene, light);
-  requireTrustedEmission(power.r + power.g + power.b, "W", scene.source, light.name, "intensity");
+  requireTrustedEmission(channelSum(lightPower(scene, light)), "W", scene.source, light.name, "intensity");
   if (light.type != LightType::Directional && !finite(light.position))
     throw SceneError(scene.source, light.name, "has a NaN or infinite position",
                      "give its node a finite transform");
@@ -258,11 +257,10 @@ double emittedPowerW(const Scene& scene) {
   double power = 0.0;
   for (const Polygon& p : scene.polygons) {
     const Rgb& e = scene.materials.at(p.material).emittance;
-    power += polygonArea(p.vertices) * (e.r + e.g + e.b);
+    power += polygonArea(p.vertices) * channelSum(e);
   }
   for (const Light& light : scene.lights) {
-    const Rgb p = lightPower(scene, light);
-    power += p.r + p.g + p.b;
+    power += channelSum(lightPower(scene, light));
   }
   return power;
 }

@@ -13,6 +13,8 @@ namespace radmesh {
 
 using Vec3 = glm::dvec3;
 using Rgb = glm::dvec3;  // linear RGB, one value per channel
+// The ledger, the shooting order and the stopping rule weigh power summed over the channels.
+inline double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
 
 // Photometric to radiometric, in every reader and option that takes lumens, candela or lux (MGF's
 // `ed`, IES luminaires, glTF lights, --sun): 179 lm/W, the luminous efficacy of equal-energy white
