@@ -229,7 +229,7 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
                             {"clock", args.threads == 1 ? "thread cpu" : "wall"}, {"until", args.until},
                             {"cache_mb", args.cacheMb}, {"rows", rows}, {"scaling", scaling}};
   if (ranks) result["ranks"] = ranks->size();
-  if (!args.csvStem.empty() && ranks->rank() == 0) {
+  if (ranks && !args.csvStem.empty() && ranks->rank() == 0) {  // the stem needs ranks (refused above)
     writeCsv(args.csvStem + "-ranks.csv", ranksCsv);
     writeCsv(args.csvStem + "-model.csv", modelCsv);
     fmt::print("wrote {0}-ranks.csv, {0}-model.csv\n", args.csvStem);

@@ -46,6 +46,7 @@ std::vector<std::string> addSkyEmitters(Scene& scene, const Daylight& daylight) 
   const OpeningSearch search = findOpenings(scene);
   const double clearance = 1e-7 * sceneDiagonal(scene);
   NoteTally skipped = search.skipped;
+  const SceneRays rays(scene);
   std::vector<Polygon> emitters;
   double areaM2 = 0.0, powerW = 0.0;
   for (const OpeningPolygon& opening : search.openings) {
@@ -53,7 +54,7 @@ std::vector<std::string> addSkyEmitters(Scene& scene, const Daylight& daylight) 
     const std::string where = fmt::format("the opening around ({:.4g}, {:.4g}, {:.4g})", opening.inside.x,
                                           opening.inside.y, opening.inside.z);
     // The outside of a model (the rim of a shell standing on no floor) looks out into the model.
-    if (rayHitsScene(scene, opening.inside, out, clearance)) {
+    if (rays.hits(opening.inside, out, clearance)) {
       skipped.add("onto the model", where + " looks out onto the model itself, not the sky: no daylight there");
       continue;
     }

@@ -19,6 +19,16 @@ namespace {
 
 bool grey(const Rgb& c) { return c.r == c.g && c.g == c.b; }
 
+struct Closure {
+  size_t openStretches = 0;  // edges no other edge or face closes
+  bool closed = true;        // no light can leave
+};
+
+Closure closure(const Scene& scene) {
+  const std::vector<BoundarySegment> open = boundarySegments(scene, 1e-7 * sceneDiagonal(scene));
+  return {open.size(), !lightCanLeave(scene, open)};
+}
+
 }  // namespace
 
 bool isConvexEnclosure(const Scene& scene) {
@@ -63,9 +73,7 @@ void checkAnalyticSeesNoShadows(const Scene& scene, Projection projection) {
                                 scene.source));
 }
 
-bool isClosed(const Scene& scene) {
-  return boundarySegments(scene, 1e-7 * sceneDiagonal(scene)).empty();
-}
+bool isClosed(const Scene& scene) { return closure(scene).closed; }
 
 EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, EffectsMode mode) {
   const bool forceAll = mode == EffectsMode::All;
@@ -90,11 +98,18 @@ EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, E
   const std::string interreflectionWhy = black ? "every reflectance is zero: direct light only, one shot per emitter"
                                                : "some surface reflects: light bounces";
 
-  const bool closed = isClosed(scene);
+  const auto [openStretches, closed] = closure(scene);
   plan.escape = !closed;
-  const std::string escapeWhy = closed ? "the surface is closed: no light can leave the scene (what slips through seams "
-                                         "between patches by rounding is still booked as escaped)"
-                                       : "the surface has open edges: light leaving through openings is accounted";
+  const std::string escapeWhy =
+      !closed ? (openStretches > 0 ? "the surface has open edges: light leaving through openings is accounted"
+                                   : "some face looks out of the model: light leaving it is accounted")
+      : openStretches == 0
+          ? "the surface is closed: no light can leave the scene (what slips through seams between patches by "
+            "rounding is still booked as escaped)"
+          : fmt::format("the surface is closed around the {} open edges it has (no ray from them or from a face "
+                        "leaves the scene): no light can leave (what slips through seams between patches by "
+                        "rounding is still booked as escaped)",
+                        openStretches);
 
   plan.nearReceivers = findNearFieldReceivers(patches);
   size_t pairs = 0, shooters = 0;

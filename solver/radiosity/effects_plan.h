@@ -36,7 +36,9 @@ EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, E
 // convex region from inside, so no patch can hide another from any point of the surface.
 bool isConvexEnclosure(const Scene& scene);
 
-// True when every polygon edge is covered by edges of other polygons (a watertight surface).
+// True when no light can leave the scene: every polygon edge is covered by edges of other polygons
+// or lies on another's face (a watertight surface), or the edges that are not lie inside closed
+// surfaces, and no face looks out of them (lightCanLeave, solver/geometry/openings.h).
 bool isClosed(const Scene& scene);
 
 // Throws OptionError for --projection analytic on a scene that is not a convex enclosure: its form

@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "solver/geometry/openings.h"
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
+#include "solver/meshing/occluders.h"
 #include "tests/solver/turned_scene.h"
 
 namespace radmesh {
@@ -111,7 +114,7 @@ void addColumnAndPartition(Scene& s, double bottom, double top) {
 }
 
 // Their edges end on the floor, the ceiling and the walls, inside those faces, which close them:
-// no light leaves there. A column hanging short of the floor leaves its foot open.
+// no light leaves there. A column hanging short of the floor leaves its foot open, inside the room.
 TEST(EffectsPlan, AColumnAndAPartitionStandingOnFacesLeaveTheRoomClosed) {
   Scene standing = greyFurnace();
   addColumnAndPartition(standing, 0.0, 1.0);
@@ -119,16 +122,73 @@ TEST(EffectsPlan, AColumnAndAPartitionStandingOnFacesLeaveTheRoomClosed) {
   EXPECT_FALSE(planEffects(standing).escape);
   Scene hanging = greyFurnace();
   addColumnAndPartition(hanging, 0.5, 1.0);
-  EXPECT_FALSE(isClosed(hanging));
   double open = 0.0;
   for (const BoundarySegment& b : boundarySegments(hanging, 1e-9)) open += glm::length(b.b - b.a);
   EXPECT_NEAR(open, 0.8, 1e-12);  // the column's foot
+  EXPECT_TRUE(isClosed(hanging));  // but inside the room: the next test
 }
 
-// two-rooms (closed, with T-junctions where its walls meet the door's frame) turned and moved to
-// site coordinates is as closed as at the origin. Its lines' keys were taken about the origin,
-// where 5e6 m magnified the rounding of an edge's direction past the tolerance: every such turned
-// model had open edges from 1e4 m out.
+// Open edges inside closed surfaces let no light out: a lamp's quad hanging under the ceiling of a
+// closed room leaves it closed, where the same quad over the room, or under it with the room's lid
+// off, leaves the scene open. Every ray from the quad's edges meets the room in the first case; some
+// in 32 directions meet nothing in the others.
+TEST(EffectsPlan, ALampsQuadHangingInAClosedRoomLeavesItClosed) {
+  const auto withQuadAt = [](Scene s, double z) {
+    s.polygons.push_back({{{0.4, 0.4, z}, {0.4, 0.6, z}, {0.6, 0.6, z}, {0.6, 0.4, z}}, 0, "lamp"});
+    return s;
+  };
+  const Scene inside = withQuadAt(greyFurnace(), 0.9);
+  EXPECT_EQ(boundarySegments(inside, 1e-9).size(), 4u);
+  EXPECT_TRUE(isClosed(inside));
+  const EffectsPlan plan = planEffects(inside);
+  EXPECT_FALSE(plan.escape);
+  EXPECT_NE(plan.effects[4].reason.find("closed around the 4 open edges"), std::string::npos) << plan.effects[4].reason;
+  EXPECT_FALSE(isClosed(withQuadAt(greyFurnace(), 1.5)));
+  Scene lidless;
+  lidless.materials.push_back({"grey", Rgb(0.5), Rgb(1.0)});
+  addBox(lidless, Vec3(0), 1.0, true, 0, /*withTop=*/false);
+  EXPECT_FALSE(isClosed(withQuadAt(lidless, 0.9)));
+  EXPECT_TRUE(planEffects(withQuadAt(lidless, 0.9)).escape);
+}
+
+// A watertight block with nothing around it is closed by its edges, but its faces look out into
+// empty space: light leaves. Inside a room, the same block's faces look at the room's walls.
+TEST(EffectsPlan, ASolidBlockAloneLetsLightOutAndInsideARoomDoesNot) {
+  Scene block;
+  block.materials.push_back({"grey", Rgb(0.5), Rgb(1.0)});
+  addBox(block, Vec3(0.4), 0.2, false, 0);
+  EXPECT_TRUE(boundarySegments(block, 1e-9).empty());
+  EXPECT_FALSE(isClosed(block));
+  const EffectsPlan plan = planEffects(block);
+  EXPECT_TRUE(plan.escape);
+  EXPECT_NE(plan.effects[4].reason.find("some face looks out"), std::string::npos) << plan.effects[4].reason;
+  Scene room = greyFurnace();
+  addBox(room, Vec3(0.4), 0.2, false, 0);
+  EXPECT_TRUE(isClosed(room));
+}
+
+// The rays' buckets give the answer of the exact visibility the solver's shadow tests use (every
+// patch the segment to 100 m away might cross, through their hierarchy), on the office from points
+// all over it, and around it, in directions all around.
+TEST(SceneRays, AnswerAsTheSolversExactVisibilityDoes) {
+  const Scene office = builtinScene("office");
+  const SceneRays rays(office);
+  const std::vector<Patch> patches = meshScene(office, 0.5);
+  const Occluders occluders(patches);  // keeps a pointer to them
+  int hits = 0, misses = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 o(-1.0 + 9.35 * std::fmod(i * 0.618034, 1.0), -1.0 + 7.7 * std::fmod(i * 0.414214, 1.0),
+                 -1.0 + 4.7 * std::fmod(i * 0.732051, 1.0));
+    const double z = 1.0 - (i + 0.5) / 1000.0, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = i * 2.399963;
+    const Vec3 d(r * std::cos(phi), r * std::sin(phi), z);
+    const bool blocked = occluders.segmentBlocked(o, o + 100.0 * d, -1, -1);
+    EXPECT_EQ(rays.hits(o, d, 0.0), blocked) << i;
+    (blocked ? hits : misses) += 1;
+  }
+  EXPECT_GT(hits, 1000);  // both answers are asked for
+  EXPECT_GT(misses, 100);
+}
+
 TEST(EffectsPlan, ATurnedModelAtSiteCoordinatesIsAsClosedAsAtTheOrigin) {
   for (const double degrees : {0.0, 17.0, 30.0, 45.0})
     for (const Vec3& site : {Vec3(0.0), Vec3(1e4, 1e5, 0.0), Vec3(512345.678, 5012345.678, 13.3)}) {
