@@ -325,7 +325,12 @@ SceneRays::SceneRays(const Scene& scene) : scene_(scene), lo_(std::numeric_limit
     const std::vector<Vec3>& v = scene.polygons[i].vertices;
     Vec3 lo(v[0]), hi(v[0]);
     for (const Vec3& p : v) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    grid_.insert(lo, hi, static_cast<int>(i));
+    // A polygon across much of the scene would fill thousands of buckets: every ray tests it instead.
+    const Vec3 span = glm::floor(hi / bucket_) - glm::floor(lo / bucket_) + 1.0;
+    if (span.x * span.y * span.z > 4096.0)
+      large_.push_back(static_cast<int>(i));
+    else
+      grid_.insert(lo, hi, static_cast<int>(i));
     normals_.push_back(newellNormal(v));
     lo_ = glm::min(lo_, lo - bucket_), hi_ = glm::max(hi_, hi + bucket_);
   }
@@ -351,6 +356,7 @@ bool SceneRays::hits(const Vec3& origin, const Vec3& direction, double fromM, in
     const double t = glm::dot(p.vertices[0] - origin, n) / along;
     return t > fromM && insidePolygon(p.vertices, n, origin + t * direction);
   };
+  if (std::any_of(large_.begin(), large_.end(), meets)) return true;
   for (double t = near; t < far; t += bucket_) {
     const Vec3 a = origin + t * direction, b = origin + std::min(t + bucket_, far) * direction;
     if (grid_.anyInBox(glm::min(a, b), glm::max(a, b), meets)) return true;
@@ -378,6 +384,7 @@ bool lightCanLeave(const Scene& scene, const std::vector<BoundarySegment>& open)
   for (size_t i = 0; i < scene.polygons.size(); ++i) {
     const std::vector<Vec3>& v = scene.polygons[i].vertices;
     const Vec3 n = newellNormal(v);
+    if (n == Vec3(0.0)) continue;  // no area, no front
     for (size_t k = 1; k + 1 < v.size(); ++k) {
       const Vec3 inside = (v[0] + v[k] + v[k + 1]) / 3.0;
       if (!insidePolygon(v, n, inside)) continue;

@@ -58,6 +58,7 @@ class SceneRays {
   Vec3 lo_{0.0}, hi_{0.0};     // the polygons' box, grown by a bucket
   double bucket_ = 1.0;
   PointGrid grid_;
+  std::vector<int> large_;  // polygons too large for the buckets
 };
 
 // Whether light can leave the scene: some ray meets no polygon, from the middle of one of the `open`
