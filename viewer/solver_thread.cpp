@@ -26,13 +26,15 @@ constexpr auto kItemBufferInterval = std::chrono::milliseconds(500);
 
 }  // namespace
 
-SolverThread::SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath, int steps)
+SolverThread::SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath, int steps,
+                           std::optional<Vec3> eye)
     : scene_(std::move(scene)),
       playing_(playing),
       pendingSteps_(std::max(0, steps)),
+      eye_(eye),
       pendingSetup_(setup) {
   if (!resumePath.empty()) {
-    resumed_ = makeRun(setup, ++generation_, resumePath, std::nullopt);
+    resumed_ = makeRun(setup, ++generation_, resumePath, eye_);
     restartPending_ = false;
   }
   auto first = std::make_shared<SolverSnapshot>();

@@ -20,7 +20,9 @@ class SolverThread {
   // iterations and pauses; with a checkpoint (solver/radiosity/checkpoint.h), the first solve goes
   // on from it, made here on the caller's thread: a checkpoint that cannot be read or is of another
   // solve throws its SceneError (as radmesh solve --resume refuses it) before anything runs.
-  SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath = {}, int steps = 0);
+  // `eye`, where the camera starts (setEye), lets a resumed cells solve know its focus from the start.
+  SolverThread(Scene scene, const SolveSetup& setup, bool playing, std::string resumePath = {}, int steps = 0,
+               std::optional<Vec3> eye = std::nullopt);
   ~SolverThread();  // stops after the iteration under way and joins
   SolverThread(const SolverThread&) = delete;
   SolverThread& operator=(const SolverThread&) = delete;

@@ -107,8 +107,9 @@ class Shown {
 
 class ShownSolve : public Shown {
  public:
-  ShownSolve(Scene scene, const SolveSetup& setup, const ViewerArgs& args)
-      : smokeTest_(args.steps > 0), reportsAtExit_(args.steps > 0 || args.frames > 0), solver_(std::move(scene), setup, !smokeTest_, args.resume, args.steps) {}
+  ShownSolve(Scene scene, const SolveSetup& setup, const ViewerArgs& args, const Vec3& eye)
+      : smokeTest_(args.steps > 0), reportsAtExit_(args.steps > 0 || args.frames > 0),
+        solver_(std::move(scene), setup, !smokeTest_, args.resume, args.steps, eye) {}
   void feed(Renderer& renderer, ViewSettings& view, WalkCamera& camera) override {
     solver_.setEye(camera.view().eye);
     feed_.show(solver_.latest(), renderer, view);
@@ -226,7 +227,7 @@ struct Opened {
     if (file.bake)
       shown = std::make_unique<ShownBake>(file.path, std::move(*file.bake));
     else
-      shown = std::make_unique<ShownSolve>(std::move(file.scene), file.setup, args);
+      shown = std::make_unique<ShownSolve>(std::move(file.scene), file.setup, args, camera.view().eye);
   }
   WalkCamera camera;
   SolveSetup setup;

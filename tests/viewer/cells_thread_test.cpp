@@ -164,7 +164,8 @@ TEST(CellsSolverThread, ACellsSolveOnTheMeshBackEndIsRefusedWithTheFix) {
 }
 
 // A resumed cells solve shows where it stood from its first snapshot: 16 iterations in round 1 of
-// building:1x1 (it said 0 until the next round), and that point of the curve.
+// building:1x1 (it said 0 until the next round), that point of the curve, and the camera's room as
+// its focus (none until the next round, when the run was made before the window had an eye).
 TEST(CellsSolverThread, AResumedCellsSolveShowsTheRestoredIterations) {
   const auto dir = std::filesystem::temp_directory_path() / ("radmesh-cells-resume-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -178,10 +179,12 @@ TEST(CellsSolverThread, AResumedCellsSolveShowsTheRestoredIterations) {
   first.saveCheckpoint(path);
   waitFor(first, [](const SolverSnapshot& s) { return s.checkpointMessage.starts_with("saved"); });
 
-  SolverThread reopened(scene, setup, false, path);
+  SolverThread reopened(scene, setup, false, path, 0, eyeIn(scene, "r0c0"));
   const Snapshot resumed = waitFor(reopened, [](const SolverSnapshot& s) { return s.mesh || !s.error.empty(); });
   ASSERT_EQ(resumed->error, "");
   EXPECT_EQ(resumed->cells->rounds, 1);
+  EXPECT_EQ(resumed->cells->focus, cellNamed(*resumed->cells, "r0c0"));
+  EXPECT_TRUE(resumed->cells->eyeInFocus);
   EXPECT_EQ(resumed->iteration(), saved->iteration());
   EXPECT_GT(resumed->iteration(), 0);
   ASSERT_EQ(resumed->curve.size(), 1u);
