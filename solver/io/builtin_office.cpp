@@ -17,17 +17,17 @@ namespace {
 // bookcases with books, filing cabinets, a round meeting table and a whiteboard. Furniture stands
 // on the floor with its bottom faces left out, and keeps clear of the walls (or, where it touches
 // one, leaves out the face against it), so that no two surfaces overlap in one plane.
-constexpr double kRoomX = 7.2, kRoomY = 5.4, kRoomZ = 2.7;
+constexpr double kOfficeX = 7.2, kOfficeY = 5.4, kOfficeZ = 2.7;
 constexpr double kDeskZ = 0.72, kTopM = 0.03;  // desk height and top thickness
 
-struct Materials {
+struct OfficeMaterials {
   int wall, ceiling, floor, light, door, frame, glass, oak, beech, fabric, steel, cabinet, board, cork,
       screen;
   int book[4];
 };
 
-Materials addMaterials(SceneBuilder& b) {
-  Materials m{};
+OfficeMaterials addOfficeMaterials(SceneBuilder& b) {
+  OfficeMaterials m{};
   m.wall = b.addMaterial(interior::kWallPaint);
   m.ceiling = b.addMaterial(interior::kCeilingTile);
   m.floor = b.addMaterial(interior::kCarpet);
@@ -50,7 +50,7 @@ Materials addMaterials(SceneBuilder& b) {
   return m;
 }
 
-void addShell(SceneBuilder& b, const Materials& m) {
+void addShell(SceneBuilder& b, const OfficeMaterials& m) {
   std::vector<Opening> openings;
   openings.push_back({kXMin, {0, 3.9, 0}, {0, 4.8, 2.1}, 0.15, m.frame, m.door, "door"});
   for (double x0 : {1.5, 4.2})
@@ -58,11 +58,11 @@ void addShell(SceneBuilder& b, const Materials& m) {
   for (double x : {1.2, 3.0, 4.8})
     for (double y : {1.5, 3.6})
       openings.push_back({kZMax, {x, y, 0}, {x + 1.2, y + 0.6, 0}, 0.0, -1, m.light, "light"});
-  b.addRoom({0, 0, 0}, {kRoomX, kRoomY, kRoomZ}, {m.floor, m.ceiling, m.wall}, openings, "office");
+  b.addRoom({0, 0, 0}, {kOfficeX, kOfficeY, kOfficeZ}, {m.floor, m.ceiling, m.wall}, openings, "office");
 }
 
 // A chair whose seat is centred at (x, y), its back on `backSide` (kXMin, kXMax, kYMin or kYMax).
-void addChair(SceneBuilder& b, const Materials& m, double x, double y, Side backSide) {
+void addChair(SceneBuilder& b, const OfficeMaterials& m, double x, double y, Side backSide) {
   const double h = 0.23, leg = 0.04, seatZ = 0.42;
   for (double dx : {-1.0, 1.0})
     for (double dy : {-1.0, 1.0}) {
@@ -91,7 +91,7 @@ void addChair(SceneBuilder& b, const Materials& m, double x, double y, Side back
 
 // A desk x0..x1, y0..y1 on two end panels with a modesty panel on the side `back` (kYMin/kYMax),
 // a monitor and a keyboard.
-void addDesk(SceneBuilder& b, const Materials& m, double x0, double y0, double x1, double y1, Side back) {
+void addDesk(SceneBuilder& b, const OfficeMaterials& m, double x0, double y0, double x1, double y1, Side back) {
   b.addBox({x0, y0, kDeskZ}, {x1, y1, kDeskZ + kTopM}, m.oak, "desk top");
   for (double px : {x0 + 0.02, x1 - 0.05})
     b.addBox({px, y0 + 0.02, 0}, {px + 0.03, y1 - 0.02, kDeskZ}, m.oak, "desk panel", kZMin | kZMax);
@@ -108,8 +108,8 @@ void addDesk(SceneBuilder& b, const Materials& m, double x0, double y0, double x
 }
 
 // The L-shaped corner desk in the south-east corner: a concave top on three panels.
-void addCornerDesk(SceneBuilder& b, const Materials& m) {
-  const double e = kRoomX - 0.05, s = 0.05;
+void addCornerDesk(SceneBuilder& b, const OfficeMaterials& m) {
+  const double e = kOfficeX - 0.05, s = 0.05;
   b.addPrism({{5.0, s}, {e, s}, {e, 2.3}, {e - 0.75, 2.3}, {e - 0.75, s + 0.75}, {5.0, s + 0.75}}, kDeskZ,
              kDeskZ + kTopM, m.oak, "corner desk top");
   b.addBox({5.02, s + 0.02, 0}, {5.05, s + 0.73, kDeskZ}, m.oak, "corner desk panel", kZMin | kZMax);
@@ -120,7 +120,7 @@ void addCornerDesk(SceneBuilder& b, const Materials& m) {
 }
 
 // A bookcase against the south wall (a 2 cm gap behind it), x0 .. x0 + 0.9, with books.
-void addBookcase(SceneBuilder& b, const Materials& m, double x0) {
+void addBookcase(SceneBuilder& b, const OfficeMaterials& m, double x0) {
   const double x1 = x0 + 0.9, y0 = 0.02, y1 = y0 + 0.35, h = 2.0, t = 0.02;
   for (double px : {x0, x1 - t})
     b.addBox({px, y0, 0}, {px + t, y1, h}, m.beech, "bookcase side", kZMin | kZMax);
@@ -146,7 +146,7 @@ void addBookcase(SceneBuilder& b, const Materials& m, double x0) {
 }
 
 // A four-drawer filing cabinet against the west wall (2 cm gap), y0 .. y0 + 0.5.
-void addCabinet(SceneBuilder& b, const Materials& m, double y0) {
+void addCabinet(SceneBuilder& b, const OfficeMaterials& m, double y0) {
   const double x0 = 0.02, x1 = 0.64, y1 = y0 + 0.5;
   b.addBox({x0, y0, 0}, {x1, y1, 1.32}, m.cabinet, "filing cabinet", kZMin);
   for (int d = 0; d < 4; ++d) {
@@ -156,8 +156,8 @@ void addCabinet(SceneBuilder& b, const Materials& m, double y0) {
 }
 
 // A low cupboard against the east wall (2 cm gap) with two doors and a printer on it.
-void addCredenza(SceneBuilder& b, const Materials& m) {
-  const double x1 = kRoomX - 0.02, x0 = x1 - 0.45, y0 = 2.8, y1 = 4.6, h = 0.75;
+void addCredenza(SceneBuilder& b, const OfficeMaterials& m) {
+  const double x1 = kOfficeX - 0.02, x0 = x1 - 0.45, y0 = 2.8, y1 = 4.6, h = 0.75;
   b.addBox({x0, y0, 0}, {x1, y1, h}, m.beech, "credenza", kZMin);
   const double mid = 0.5 * (y0 + y1);
   for (auto [d0, d1] : {std::pair{y0 + 0.02, mid - 0.01}, std::pair{mid + 0.01, y1 - 0.02}})
@@ -174,7 +174,7 @@ std::vector<Vec2> regularPolygon(Vec2 centre, double radius, int sides) {
   return out;
 }
 
-void addRoundTable(SceneBuilder& b, const Materials& m, Vec2 c) {
+void addRoundTable(SceneBuilder& b, const OfficeMaterials& m, Vec2 c) {
   b.addPrism(regularPolygon(c, 0.55, 16), kDeskZ, kDeskZ + kTopM, m.oak, "round table top");
   b.addPrism(regularPolygon(c, 0.05, 8), 0.04, kDeskZ, m.steel, "round table column", kZMin | kZMax);
   b.addPrism(regularPolygon(c, 0.3, 8), 0.0, 0.04, m.steel, "round table foot", kZMin);
@@ -184,7 +184,7 @@ void addRoundTable(SceneBuilder& b, const Materials& m, Vec2 c) {
 
 Scene officeScene() {
   SceneBuilder b("office");
-  const Materials m = addMaterials(b);
+  const OfficeMaterials m = addOfficeMaterials(b);
   addShell(b, m);
   // Two desks under the windows, their users facing north.
   for (double x0 : {1.5, 4.2}) {

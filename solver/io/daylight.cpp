@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "solver/geometry/openings.h"
+#include "solver/geometry/scene_rays.h"
 #include "solver/io/mgf_color.h"
 #include "solver/scene/scene_error.h"
 #include "solver/scene/sun.h"

@@ -11,6 +11,7 @@
 
 #include "solver/formfactors/near_field.h"
 #include "solver/geometry/openings.h"
+#include "solver/geometry/scene_rays.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {

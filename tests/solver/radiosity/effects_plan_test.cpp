@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/geometry/openings.h"
+#include "solver/geometry/scene_rays.h"
 #include "solver/io/builtin_scenes.h"
 #include "solver/meshing/meshing.h"
 #include "solver/meshing/occluders.h"
