@@ -202,8 +202,7 @@ void printBake(const std::string& path, const Bake& bake, bool json) {
   BoundingBox box = boundingBox(bake.mesh.positions);
   if (bake.mesh.positions.empty()) box = {Vec3(0.0), Vec3(0.0)};
   const Vec3 low = box.low, high = box.high;
-  double area = 0.0;
-  for (const Polygon& t : triangles) area += polygonArea(t.vertices);
+  const double area = totalArea(triangles);
   const std::string up = upAxisName(bake.upAxis);
   const std::string by = bake.fromRadmesh ? "radmesh" : "another tool";
   if (json) {

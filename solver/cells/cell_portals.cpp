@@ -138,7 +138,7 @@ struct ContactExtent {
 
 // The contact faces across `axis` (-1: all of them) in the frame: each face a voxel square whose
 // corners bound it.
-ContactExtent extentOf(const VoxelGrid& g, const std::vector<Contact>& contacts, int axis, const PlaneFrame& frame) {
+ContactExtent contactExtent(const VoxelGrid& g, const std::vector<Contact>& contacts, int axis, const PlaneFrame& frame) {
   ContactExtent e;
   double cSum = 0.0;
   int count = 0;
@@ -257,7 +257,7 @@ Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vect
   const int axis = int(std::max_element(perAxis.begin(), perAxis.end()) - perAxis.begin());
   const double reachM = (radius + 2) * g.voxel;
   PlaneFrame frame = axisFrame(axis);
-  const ContactExtent main = extentOf(g, contacts, axis, frame);
+  const ContactExtent main = contactExtent(g, contacts, axis, frame);
   std::optional<std::pair<double, Rect>> best = smallestOpening(polys, frame, main, reachM, 1.5 * g.voxel);
   if (!best && glm::length(aToB) > 0.0) {
     Vec3 nearLo(kInf), nearHi(-kInf);
@@ -269,7 +269,7 @@ Portal portalFor(const VoxelGrid& g, const ScenePolygons& polys, const std::vect
     nearHi += Vec3(reachM);
     for (const Vec3& n : obliqueNormals(polys, glm::normalize(aToB), nearLo, nearHi)) {
       const PlaneFrame oblique = obliqueFrame(n);
-      const ContactExtent all = extentOf(g, contacts, -1, oblique);
+      const ContactExtent all = contactExtent(g, contacts, -1, oblique);
       const auto found = smallestOpening(polys, oblique, all, reachM, 2.5 * g.voxel);
       if (found && (!best || found->second.area() < best->second.area())) best = found, frame = oblique;
     }

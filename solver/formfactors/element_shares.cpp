@@ -11,7 +11,7 @@ namespace radmesh {
 
 namespace {
 
-constexpr int kChunkPatches = 64;
+constexpr int kShareChunkPatches = 64;
 
 // Where an element lands on the projection surface: the pixel centres it covers, how many of them
 // show its patch `item`, and whether it reaches any face's window at all.
@@ -109,9 +109,9 @@ void shareAmongElements(const ProjectedShot& shot, double nearDepth, const Patch
   const int count = static_cast<int>(elements.first.size()) - 1;
   elementFormFactors.assign(elements.elements.size(), 0.0);
   elementSeenFromFront.assign(elements.elements.size(), 0);
-  pool.parallelFor((count + kChunkPatches - 1) / kChunkPatches, [&](int chunk, int) {
+  pool.parallelFor((count + kShareChunkPatches - 1) / kShareChunkPatches, [&](int chunk, int) {
     std::vector<double> weight;
-    for (int p = chunk * kChunkPatches; p < std::min(count, (chunk + 1) * kChunkPatches); ++p) {
+    for (int p = chunk * kShareChunkPatches; p < std::min(count, (chunk + 1) * kShareChunkPatches); ++p) {
       const int begin = elements.first[p], end = elements.first[p + 1];
       const char front = patches.seenFromFront[p];
       std::fill(elementSeenFromFront.begin() + begin, elementSeenFromFront.begin() + end, front);

@@ -26,10 +26,8 @@ constexpr double kDegenerateAreaRatio = 1e-10;
 // A model spans at most this many of its typical triangles, as far as the tolerances are concerned.
 constexpr double kExtentPerMedianEdge = 1000.0;
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 bool isMergeable(const Polygon& p) {
-  return p.vertices.size() == 3 && std::all_of(p.vertices.begin(), p.vertices.end(), finite);
+  return p.vertices.size() == 3 && std::all_of(p.vertices.begin(), p.vertices.end(), isFinite);
 }
 
 // Welds positions that coincide within a tolerance: a hash grid with cells of the tolerance's

@@ -82,15 +82,15 @@ constexpr Rule kDocument[] = {{"asset.version", Kind::String}, {"scene", Kind::I
 
 // An array of elements: its key (in the document, or in each element of the array whose `within`
 // lists it), what its elements are called in messages, and their rules.
-struct Elements {
+struct NamedArrays {
   std::string_view array;
   std::string_view label;
   std::span<const Rule> rules;
-  std::span<const Elements> within = {};  // arrays inside each element
+  std::span<const NamedArrays> within = {};  // arrays inside each element
 };
 
-constexpr Elements kPrimitives[] = {{"primitives", "primitive", kPrimitive}};
-constexpr Elements kElements[] = {{"accessors", "accessor", kAccessor},
+constexpr NamedArrays kPrimitives[] = {{"primitives", "primitive", kPrimitive}};
+constexpr NamedArrays kNamedArrays[] = {{"accessors", "accessor", kAccessor},
                                   {"bufferViews", "bufferView", kBufferView},
                                   {"buffers", "buffer", kBuffer},
                                   {"images", "image", kImage},
@@ -177,7 +177,7 @@ void checkRules(const std::string& path, const std::string& element, const json&
 }
 
 // The array `elements` names in `parent` (the document, or one of its elements, labelled `owner`).
-void checkElements(const std::string& path, const std::string& owner, const json& parent, const Elements& elements) {
+void checkNamedArrays(const std::string& path, const std::string& owner, const json& parent, const NamedArrays& elements) {
   const Rule array{elements.array, Kind::Objects};
   const json* list = member(path, owner, parent, array);
   if (!list) return;
@@ -185,7 +185,7 @@ void checkElements(const std::string& path, const std::string& owner, const json
   for (size_t i = 0; i < list->size(); ++i) {
     const std::string label = (owner.empty() ? "" : owner + " ") + gltfElementLabel(elements.label, i, (*list)[i]);
     checkRules(path, label, (*list)[i], elements.rules);
-    for (const Elements& inner : elements.within) checkElements(path, label, (*list)[i], inner);
+    for (const NamedArrays& inner : elements.within) checkNamedArrays(path, label, (*list)[i], inner);
   }
 }
 
@@ -199,7 +199,7 @@ std::string gltfElementLabel(std::string_view kind, size_t index, const json& el
 void checkGltfTypes(const std::string& path, const json& doc) {
   if (!doc.is_object()) return;
   checkRules(path, "", doc, kDocument);
-  for (const Elements& elements : kElements) checkElements(path, "", doc, elements);
+  for (const NamedArrays& elements : kNamedArrays) checkNamedArrays(path, "", doc, elements);
 }
 
 }  // namespace radmesh

@@ -51,11 +51,6 @@ struct PreparedPolygon {
   double sliverAreaM2 = 0.0;  // projected area below which a piece is a clipping sliver
 };
 
-std::string describe(const Scene& scene, size_t index) {
-  const std::string& origin = scene.polygons[index].origin;
-  return "polygon " + std::to_string(index) + (origin.empty() ? "" : " (" + origin + ")");
-}
-
 // The projection frame of section 1.5: n is the normal, u the world axis least aligned with it,
 // projected into the plane (deterministic, and the same for every patch of a polygon).
 Frame frameFor(const Vec3& normal) {
@@ -68,7 +63,7 @@ PreparedPolygon prepare(const Scene& scene, size_t index, double cellM, const Gr
   const Vec3 worldNewell = newellNormal(worldVertices);
   const double length = glm::length(worldNewell);
   if (worldVertices.size() < 3 || !(length > 0.0) || !std::isfinite(length))
-    throw SceneError(scene.source, describe(scene, index), "has zero or non-finite area",
+    throw SceneError(scene.source, polygonName(scene, index), "has zero or non-finite area",
                      "remove the polygon or fix its vertices");
   std::vector<Vec3> turned;
   if (turn.moved())
@@ -116,7 +111,7 @@ PreparedPolygon prepare(const Scene& scene, size_t index, double cellM, const Gr
   std::string crossing;
   out.pieces = convexCover(points, out.noiseM, crossing);
   if (!crossing.empty())
-    throw SceneError(scene.source, describe(scene, index), "crosses or overlaps itself (" + crossing + ")",
+    throw SceneError(scene.source, polygonName(scene, index), "crosses or overlaps itself (" + crossing + ")",
                      "split it into simple polygons");
   return out;
 }
@@ -251,8 +246,7 @@ std::vector<Patch> meshScene(const Scene& scene, double cellM, size_t maxPatches
   checkCell(cellM);
   // A cell holds at most cell^2 of area: a cell so small that the area alone passes the limit is
   // refused before the polygons are laid on its grid, where coordinates over it would overflow.
-  double sceneAreaM2 = 0.0;
-  for (const Polygon& polygon : scene.polygons) sceneAreaM2 += polygonArea(polygon.vertices);
+  const double sceneAreaM2 = totalArea(scene.polygons);
   if (!(sceneAreaM2 / (cellM * cellM) <= static_cast<double>(maxPatches)))
     refuseCount(sceneAreaM2 / (cellM * cellM), cellM, maxPatches, sceneAreaM2, scene.polygons.size());
   std::vector<PreparedPolygon> prepared;

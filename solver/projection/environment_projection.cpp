@@ -8,7 +8,7 @@ namespace radmesh {
 namespace {
 
 constexpr int kBandRows = 16;       // rows of pixels per task
-constexpr int kChunkPatches = 256;  // patches per set-up task
+constexpr int kSetupChunkPatches = 256;  // patches per set-up task
 
 }  // namespace
 
@@ -42,7 +42,7 @@ void EnvironmentProjection::patchesChanged() {
   seenFromFront_.assign(n, 0);
   facesReached_.assign(n, 0);
   for (Band& band : bands_) band.setups.clear();  // they point into chunkSetups_
-  chunkSetups_.assign((n + kChunkPatches - 1) / kChunkPatches,
+  chunkSetups_.assign((n + kSetupChunkPatches - 1) / kSetupChunkPatches,
                       std::vector<std::vector<PolygonSetup>>(surface_->faces.size()));
 }
 
@@ -64,8 +64,8 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
     auto& out = chunkSetups_[chunk];
     for (auto& faceSetups : out) faceSetups.clear();
     ScreenPolygon screen;
-    const int end = std::min(n, (chunk + 1) * kChunkPatches);
-    for (int j = chunk * kChunkPatches; j < end; ++j) {
+    const int end = std::min(n, (chunk + 1) * kSetupChunkPatches);
+    for (int j = chunk * kSetupChunkPatches; j < end; ++j) {
       projectedArea_[j] = 0.0;
       projectedWidth_[j] = 0.0;
       seenFromFront_[j] = 0;

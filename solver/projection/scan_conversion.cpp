@@ -6,11 +6,11 @@
 #include <numeric>
 #include <tuple>
 
+#include "solver/geometry/polygon_2d.h"
+
 namespace radmesh {
 
 namespace {
-
-double cross2(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 // The one formula every pixel decision goes through, so spans and single pixels agree bit for bit.
 inline bool inside(const EdgeFunction& e, double cx, double cy) {

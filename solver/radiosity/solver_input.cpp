@@ -12,7 +12,7 @@ namespace radmesh {
 namespace {
 
 void requireFinite(const Scene& scene, const std::string& element, const char* what, const Vec3& v) {
-  if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
+  if (!isFinite(v))
     throw SceneError(scene.source, element, fmt::format("has a NaN or infinite {} ({}, {}, {})", what, v.x, v.y, v.z),
                      "give every vertex finite coordinates in metres");
 }
@@ -35,8 +35,7 @@ void validateSolverInput(const Scene& scene, const std::vector<Patch>& patches) 
   }
   for (size_t i = 0; i < scene.polygons.size(); ++i) {
     const Polygon& polygon = scene.polygons[i];
-    const std::string element =
-        fmt::format("polygon {}", i) + (polygon.origin.empty() ? "" : " (" + polygon.origin + ")");
+    const std::string element = polygonName(scene, i);
     for (const Vec3& v : polygon.vertices) requireFinite(scene, element, "vertex", v);
   }
   for (size_t i = 0; i < patches.size(); ++i) {

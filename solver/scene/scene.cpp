@@ -29,6 +29,12 @@ double polygonArea(const std::vector<Vec3>& vertices) {
   return 0.5 * glm::length(newellNormal(vertices));
 }
 
+double totalArea(const std::vector<Polygon>& polygons) {
+  double area = 0.0;
+  for (const Polygon& p : polygons) area += polygonArea(p.vertices);
+  return area;
+}
+
 bool hasZeroArea(const std::vector<Vec3>& vertices) {
   if (vertices.empty()) return true;
   const double area = polygonArea(vertices);
@@ -102,14 +108,12 @@ Rgb lightPower(const Scene& scene, const Light& light) {
   return Rgb(0.0);
 }
 
-namespace {
-
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-std::string describe(const Scene& scene, size_t index) {
+std::string polygonName(const Scene& scene, size_t index) {
   const Polygon& p = scene.polygons[index];
   return "polygon " + std::to_string(index) + (p.origin.empty() ? "" : " (" + p.origin + ")");
 }
+
+namespace {
 
 // What an emitter sends, past kMaxEmitted or above 0 but under kMinEmitted: refused, for every format alike.
 void requireTrustedEmission(double emitted, const char* unit, const std::string& file, const std::string& element,
@@ -148,7 +152,7 @@ void validateMaterial(const Scene& scene, const Material& m) {
 
 void validatePolygon(const Scene& scene, size_t index) {
   const Polygon& p = scene.polygons[index];
-  const std::string element = describe(scene, index);
+  const std::string element = polygonName(scene, index);
   if (p.vertices.size() < 3)
     throw SceneError(scene.source, element, "has fewer than 3 vertices",
                      "remove the polygon or give it at least 3 vertices");
@@ -156,7 +160,7 @@ void validatePolygon(const Scene& scene, size_t index) {
     throw SceneError(scene.source, element, "refers to a material that does not exist",
                      "give the polygon a defined material");
   for (const Vec3& v : p.vertices)
-    if (!finite(v))
+    if (!isFinite(v))
       throw SceneError(scene.source, element, "has a NaN or infinite coordinate",
                        "give every vertex finite coordinates in metres");
   if (hasZeroArea(p.vertices))
@@ -176,7 +180,7 @@ void validatePolygon(const Scene& scene, size_t index) {
                      "split it into triangles or flatten it");
 }
 
-bool finiteNonNegative(const Rgb& c) { return finite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0; }
+bool finiteNonNegative(const Rgb& c) { return isFinite(c) && c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0; }
 
 void validateLight(const Scene& scene, const Light& light) {
   if (!finiteNonNegative(light.intensity))
@@ -185,11 +189,11 @@ void validateLight(const Scene& scene, const Light& light) {
                          std::to_string(light.intensity.g) + ", " + std::to_string(light.intensity.b) + ")",
                      "give the light a finite, non-negative intensity and colour");
   requireTrustedEmission(channelSum(lightPower(scene, light)), "W", scene.source, light.name, "intensity");
-  if (light.type != LightType::Directional && !finite(light.position))
+  if (light.type != LightType::Directional && !isFinite(light.position))
     throw SceneError(scene.source, light.name, "has a NaN or infinite position",
                      "give its node a finite transform");
   if (light.type != LightType::Point &&
-      !(finite(light.direction) && std::abs(glm::length(light.direction) - 1.0) < 1e-9))
+      !(isFinite(light.direction) && std::abs(glm::length(light.direction) - 1.0) < 1e-9))
     throw SceneError(scene.source, light.name, "has no direction (zero, NaN or not a unit vector)",
                      "give its node a rotation, not a zero scale");
   if (light.type == LightType::Spot &&

@@ -15,6 +15,7 @@ using Vec3 = glm::dvec3;
 using Rgb = glm::dvec3;  // linear RGB, one value per channel
 // The ledger, the shooting order and the stopping rule weigh power summed over the channels.
 inline double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
+inline bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Photometric to radiometric, in every reader and option that takes lumens, candela or lux (MGF's
 // `ed`, IES luminaires, glTF lights, --sun): 179 lm/W, the luminous efficacy of equal-energy white
@@ -93,6 +94,8 @@ BoundingBox boundingBox(const std::vector<Vec3>& points);
 // Newell's normal: its length is twice the polygon's area, robust for non-convex polygons.
 Vec3 newellNormal(const std::vector<Vec3>& vertices);
 double polygonArea(const std::vector<Vec3>& vertices);
+// The polygons' areas summed.
+double totalArea(const std::vector<Polygon>& polygons);
 // No area for the polygon's own size (its vertices collinear or repeated): validateScene refuses it.
 bool hasZeroArea(const std::vector<Vec3>& vertices);
 
@@ -107,6 +110,8 @@ std::pair<Vec3, Vec3> perpendicularAxes(const Vec3& n);
 // kMinEmitted), a zero direction or cone angles outside
 // 0 <= inner < outer <= pi/2.
 void validateGeometry(const Scene& scene);
+// How messages name a scene polygon: "polygon N", and where it came from when known.
+std::string polygonName(const Scene& scene, size_t index);
 // The same, and no emitter at all, neither an emitting material nor a light (the message points to
 // daylight).
 void validateScene(const Scene& scene);

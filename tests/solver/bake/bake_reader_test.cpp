@@ -147,9 +147,7 @@ TEST(BakeReader, AnotherToolsBakeIsItsColouredTrianglesInWorldSpace) {
   EXPECT_EQ(bake->vertexB[0], Rgb(1.0, 128.0 / 255.0, 0.0));  // normalized bytes; alpha dropped
   EXPECT_EQ(bake->mesh.normals[6], Vec3(0, 0, 1));
   EXPECT_EQ(bake->vertexB[6], Rgb(0.2, 0.4, 0.8));
-  double area = 0.0;
-  for (const Polygon& t : bakeScene(*bake, path).polygons) area += polygonArea(t.vertices);
-  EXPECT_DOUBLE_EQ(area, 8.0);
+  EXPECT_DOUBLE_EQ(totalArea(bakeScene(*bake, path).polygons), 8.0);
 }
 
 TEST(BakeReader, VertexColoursWithALightOrWithAnUncolouredPrimitiveAreAScene) {

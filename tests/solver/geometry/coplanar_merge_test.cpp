@@ -108,9 +108,7 @@ TEST(CoplanarMerge, AStrayFarTriangleDoesNotWeldTheModelTogether) {
   EXPECT_EQ(report.degenerateDropped, 0u);
   ASSERT_EQ(out.size(), 3u);
   EXPECT_EQ(out[0].vertices, kQuad);
-  double area = 0.0;
-  for (const Polygon& p : out) area += polygonArea(p.vertices);
-  EXPECT_NEAR(area, 2.0 + 2.0 + 0.5, 1e-9);
+  EXPECT_NEAR(totalArea(out), 2.0 + 2.0 + 0.5, 1e-9);
 }
 
 TEST(CoplanarMerge, VertexInTheMiddleOfAnEdgeIsRemoved) {

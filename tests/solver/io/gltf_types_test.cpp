@@ -58,12 +58,6 @@ std::string repeated(const std::string& text, int times) {
   return out;
 }
 
-double totalArea(const Scene& scene) {
-  double area = 0.0;
-  for (const Polygon& p : scene.polygons) area += polygonArea(p.vertices);
-  return area;
-}
-
 // What importGltf says of the file: its element, then its message after the file's name.
 std::string typeRefusal(const std::string& path) {
   try {
@@ -84,7 +78,7 @@ TEST(GltfTypes, TheRoomLoadsWithItsIndexBufferAndTransforms) {
   json doc = roomDocument(dir);
   Scene scene = importGltf(writeDocument(dir, "room.gltf", doc));
   EXPECT_EQ(scene.polygons.size(), 7u);  // six walls and the lamp
-  EXPECT_NEAR(totalArea(scene), 24.16, 1e-6);  // the lamp's corners are floats
+  EXPECT_NEAR(totalArea(scene.polygons), 24.16, 1e-6);  // the lamp's corners are floats
   // Integers written as floats where numbers are wanted are numbers all the same.
   doc["nodes"][0]["translation"] = {1.0, 0, 0};
   doc["materials"][1]["emissiveFactor"] = {1.0, 1, 1};

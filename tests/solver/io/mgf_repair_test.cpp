@@ -43,7 +43,7 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 TEST(MgfRepair, UnknownEntitiesAreCountedAndSkipped) {
   const Repaired r = repaired("mgf_unknown_entity.mgf");
   ASSERT_EQ(r.scene.polygons.size(), 1u);
-  EXPECT_DOUBLE_EQ(test::totalArea(r.scene), 1.0);
+  EXPECT_DOUBLE_EQ(totalArea(r.scene.polygons), 1.0);
   ASSERT_EQ(r.warnings.size(), 2u);
   const std::string sphere = warningWith(r, "unknown entity 'sphere' skipped");
   EXPECT_TRUE(contains(sphere, "mgf_unknown_entity.mgf: line 13:")) << sphere;
@@ -75,7 +75,7 @@ TEST(MgfRepair, AFaceAFifthOffItsPlaneIsTriangulated) {
   // Split along one diagonal or the other; either way the triangles use the face's own corners.
   const double alongAc = polygonArea({a, b, c}) + polygonArea({a, c, d});
   const double alongBd = polygonArea({a, b, d}) + polygonArea({b, c, d});
-  const double area = test::totalArea(r.scene);
+  const double area = totalArea(r.scene.polygons);
   EXPECT_TRUE(std::abs(area - alongAc) < 1e-12 || std::abs(area - alongBd) < 1e-12) << area;
   for (const Polygon& p : r.scene.polygons) EXPECT_EQ(p.vertices.size(), 3u);
   EXPECT_TRUE(contains(warningWith(r, "f split into triangles"), "line 13:"));
@@ -84,7 +84,7 @@ TEST(MgfRepair, AFaceAFifthOffItsPlaneIsTriangulated) {
 TEST(MgfRepair, FacesThatCannotBeBuiltAreSkippedByName) {
   const Repaired r = repaired("mgf_undefined_vertex.mgf");
   ASSERT_EQ(r.scene.polygons.size(), 1u);
-  EXPECT_DOUBLE_EQ(test::totalArea(r.scene), 0.5);
+  EXPECT_DOUBLE_EQ(totalArea(r.scene.polygons), 0.5);
   ASSERT_EQ(r.warnings.size(), 3u);
   EXPECT_TRUE(contains(warningWith(r, "f skipped: v 'c' is not defined"), "line 14:"));
   EXPECT_TRUE(contains(warningWith(r, "f skipped: the face has fewer than 3 distinct vertices"), "line 15:"));
@@ -97,7 +97,7 @@ TEST(MgfRepair, FacesThatCannotBeBuiltAreSkippedByName) {
 TEST(MgfRepair, FlatFacesThatCrossThemselvesAreSkippedByName) {
   const Repaired r = repaired("mgf_crossing_faces.mgf");
   ASSERT_EQ(r.scene.polygons.size(), 1u);
-  EXPECT_NEAR(test::totalArea(r.scene), 1.6 * 1.6, 1e-12);
+  EXPECT_NEAR(totalArea(r.scene.polygons), 1.6 * 1.6, 1e-12);
   ASSERT_EQ(r.warnings.size(), 2u);
   EXPECT_TRUE(contains(warningWith(r, "f skipped: its outline crosses itself (its convex parts cover"), "line 15:"));
   EXPECT_TRUE(contains(warningWith(r, "f skipped: it has no area (its vertices are collinear, or its outline "

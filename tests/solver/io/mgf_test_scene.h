@@ -26,12 +26,6 @@ inline Scene importMgfText(const std::string& text, std::vector<std::string>* wa
   return importMgf(writeMgf(dir, "scene.mgf", text), warnings);
 }
 
-inline double totalArea(const Scene& s) {
-  double area = 0.0;
-  for (const Polygon& p : s.polygons) area += polygonArea(p.vertices);
-  return area;
-}
-
 // A material with a light and a unit square face, in the plane z = 0, facing +z.
 inline const std::string kUnitSquare =
     "m light =\n  ed 100\n"

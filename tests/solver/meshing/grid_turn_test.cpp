@@ -17,7 +17,7 @@ namespace {
 using test::turnAboutVertical;
 using test::turnedAboutVertical;
 
-constexpr double kCellM = 0.381;
+constexpr double kTurnCellM = 0.381;
 
 Scene moved(Scene scene, const Vec3& by) {
   for (Polygon& p : scene.polygons)
@@ -99,10 +99,10 @@ TEST(GridTurn, AModelTurnedAboutAnyPointMeshesAsItselfUnturnedAtTheOrigin) {
     // So the model lies in the grid as itself turned by the quarter turns, its corner at the origin.
     const Scene quarterTurned = turned(rooms, degrees - left);
     const Vec3 corner = planCorner(quarterTurned);
-    const std::vector<Patch> reference = meshScene(moved(quarterTurned, -corner), kCellM);
-    test::expectValidPatches(reference, kCellM, "two-rooms, quarter turns");
-    const std::vector<Patch> patches = meshScene(scene, kCellM);
-    test::expectValidPatches(patches, kCellM, "two-rooms turned", scene);
+    const std::vector<Patch> reference = meshScene(moved(quarterTurned, -corner), kTurnCellM);
+    test::expectValidPatches(reference, kTurnCellM, "two-rooms, quarter turns");
+    const std::vector<Patch> patches = meshScene(scene, kTurnCellM);
+    test::expectValidPatches(patches, kTurnCellM, "two-rooms turned", scene);
     test::expectAreaKept(scene, patches, 1e-9, "two-rooms turned");
     const Vec3 shift = turnedAboutVertical(corner, left) + turnedAboutVertical(offset, degrees);
     expectSameMeshTurned(reference, patches, left, shift, 1e-11);
@@ -132,10 +132,10 @@ TEST(GridTurn, ATableAtAnAngleGetsAGridOfItsOwnAndTheRoomsKeepTheWorlds) {
   EXPECT_NEAR(grids.turns[0].degrees(), 20.0, 1e-9);
   EXPECT_EQ(grids.turnOf[roomPolygons], 0);
   for (size_t i = 0; i < roomPolygons; ++i) EXPECT_EQ(grids.turnOf[i], -1) << "polygon " << i;
-  const std::vector<Patch> patches = meshScene(rooms, kCellM);
-  test::expectValidPatches(patches, kCellM, "rooms and table", rooms);
+  const std::vector<Patch> patches = meshScene(rooms, kTurnCellM);
+  test::expectValidPatches(patches, kTurnCellM, "rooms and table", rooms);
   test::expectAreaKept(rooms, patches, 1e-9, "rooms and table");
-  EXPECT_EQ(patches.size(), meshScene(builtinScene("two-rooms"), kCellM).size() + 8);
+  EXPECT_EQ(patches.size(), meshScene(builtinScene("two-rooms"), kTurnCellM).size() + 8);
   // The rooms turned by 30 degrees, the table with them: the model's grid turns by the rooms' 30.
   turnAboutVertical(rooms, 30.0);
   EXPECT_NEAR(gridTurnOf(rooms).degrees(), 30.0, 1e-9);
@@ -159,15 +159,15 @@ TEST(GridTurn, EachFacetOfARoundColumnIsCutOnlyAcrossItsHeight) {
   }
   const Grids grids = gridsOf(column);
   EXPECT_EQ(grids.outlinesOnOwnGrids(), static_cast<size_t>(kFacets));
-  const std::vector<Patch> patches = meshScene(column, kCellM);
-  test::expectValidPatches(patches, kCellM, "column", column);
+  const std::vector<Patch> patches = meshScene(column, kTurnCellM);
+  test::expectValidPatches(patches, kTurnCellM, "column", column);
   test::expectAreaKept(column, patches, 1e-9, "column");
   std::vector<int> strips(kFacets, 0);
   for (const Patch& p : patches)
     if (p.polygon >= static_cast<int>(roomPolygons)) {
       ++strips[p.polygon - roomPolygons];
       EXPECT_NEAR(p.areaM2 / (2.0 * kRadiusM * std::sin(std::numbers::pi / kFacets)),
-                  p.centroid.z < 6 * kCellM ? kCellM : kHeightM - 6 * kCellM, 1e-9);
+                  p.centroid.z < 6 * kTurnCellM ? kTurnCellM : kHeightM - 6 * kTurnCellM, 1e-9);
     }
   for (int k = 0; k < kFacets; ++k) EXPECT_EQ(strips[k], 7) << "facet " << k;
 }
@@ -184,8 +184,8 @@ TEST(GridTurn, EachWingOfABuildingIsMeshedOnItsOwnGrid) {
   EXPECT_NEAR(grids.turns[0].degrees(), 30.0, 1e-9);
   for (size_t i = 0; i < building.polygons.size(); ++i)
     EXPECT_EQ(grids.turnOf[i], i < along.polygons.size() ? -1 : 0) << "polygon " << i;
-  const std::vector<Patch> patches = meshScene(building, kCellM);
-  const std::vector<Patch> first = meshScene(along, kCellM), second = meshScene(wing, kCellM);
+  const std::vector<Patch> patches = meshScene(building, kTurnCellM);
+  const std::vector<Patch> first = meshScene(along, kTurnCellM), second = meshScene(wing, kTurnCellM);
   ASSERT_EQ(patches.size(), first.size() + second.size());
   for (size_t k = 0; k < patches.size(); ++k) {
     const bool inFirst = k < first.size();
@@ -202,7 +202,7 @@ long slivers(const std::vector<Patch>& patches, int fromPolygon) {
     double longest = 0.0;
     for (int k = 0; k < p.vertexCount; ++k)
       longest = std::max(longest, glm::length(p.vertices[(k + 1) % p.vertexCount] - p.vertices[k]));
-    return p.polygon >= fromPolygon && p.areaM2 / longest < 0.1 * kCellM;
+    return p.polygon >= fromPolygon && p.areaM2 / longest < 0.1 * kTurnCellM;
   });
 }
 
@@ -223,12 +223,12 @@ TEST(GridTurn, AWingTooSmallForATurnOfTheModelsIsMeshedAsWellAsAlone) {
   const Grids grids = gridsOf(building);
   EXPECT_FALSE(grids.principal().turned());
   EXPECT_EQ(grids.outlinesOnOwnGrids(), wing.polygons.size());
-  const std::vector<Patch> patches = meshScene(building, kCellM);
-  test::expectValidPatches(patches, kCellM, "four blocks and a wing", building);
+  const std::vector<Patch> patches = meshScene(building, kTurnCellM);
+  test::expectValidPatches(patches, kTurnCellM, "four blocks and a wing", building);
   test::expectAreaKept(building, patches, 1e-9, "four blocks and a wing");
   const long onWing =
       std::count_if(patches.begin(), patches.end(), [&](const Patch& p) { return p.polygon >= along; });
-  const std::vector<Patch> alone = meshScene(wing, kCellM);
+  const std::vector<Patch> alone = meshScene(wing, kTurnCellM);
   EXPECT_LE(onWing, static_cast<long>(alone.size()));
   EXPECT_LE(slivers(patches, along), slivers(alone, 0));
 }
@@ -307,8 +307,8 @@ TEST(GridTurn, AModelWithYUpTurnsAboutY) {
   const GridTurn turn = gridTurnOf(scene);
   EXPECT_EQ(turn.axis, 1);
   EXPECT_NEAR(std::abs(turn.degrees()), 25.0, 1e-9);
-  const std::vector<Patch> patches = meshScene(scene, kCellM);
-  EXPECT_EQ(patches.size(), meshScene(builtinScene("two-rooms"), kCellM).size());
+  const std::vector<Patch> patches = meshScene(scene, kTurnCellM);
+  EXPECT_EQ(patches.size(), meshScene(builtinScene("two-rooms"), kTurnCellM).size());
   test::expectAreaKept(scene, patches, 1e-9, "two-rooms, y up, turned");
 }
 
@@ -317,10 +317,10 @@ TEST(GridTurn, ATurnedModelFarFromTheOriginMeshesAsAtTheOrigin) {
   const Scene rooms = builtinScene("two-rooms");
   const Vec3 site(512345.678, 5012345.678, 0.0);
   const Scene far = moved(turned(rooms, 30.0), site);
-  const std::vector<Patch> patches = meshScene(far, kCellM);
-  test::expectValidPatches(patches, kCellM, "two-rooms turned, far out", far);
+  const std::vector<Patch> patches = meshScene(far, kTurnCellM);
+  test::expectValidPatches(patches, kTurnCellM, "two-rooms turned, far out", far);
   test::expectAreaKept(far, patches, 1e-9, "two-rooms turned, far out");
-  expectSameMeshTurned(meshScene(rooms, kCellM), patches, 30.0, site, 1e-8);
+  expectSameMeshTurned(meshScene(rooms, kTurnCellM), patches, 30.0, site, 1e-8);
 }
 
 }  // namespace
