@@ -153,7 +153,7 @@ Solved solveScene(const RenderArgs& args) {
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
   if (args.iterations == 0) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size()));
-  warnIfLightLost(solver.ledger(), isClosed(scene));
+  warnIfLightLost(solver.ledger(), solver.effectsPlan().closed);
   return solvedFrom(solver.elements(), solver.displayElementRadiosity());
 }
 

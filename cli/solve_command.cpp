@@ -205,7 +205,7 @@ void run(const SolveArgs& args, Processes* processes) {
   }
   if (interrupted()) stopAfterInterrupt(args, fmt::format("iteration {}", solver.history().size()));
   printSummary(solver, seconds, resumedAt);
-  if (writes) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size())), warnIfLightLost(solver.ledger(), isClosed(scene));
+  if (writes) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size())), warnIfLightLost(solver.ledger(), solver.effectsPlan().closed);
 
   if (!args.statsPath.empty()) {
     nlohmann::json stats = solveStats(solver, scene.source, seconds, resumedAt);

@@ -29,6 +29,11 @@ run_ctest() {
   ctest --test-dir "$1" -j"$jobs" --output-on-failure --timeout 600
 }
 
+# First, as it takes two minutes: a name two files of a target both define breaks the unity build
+# only when a batch puts them together; here every pair meets.
+echo "== build-one-batch: every target as one unity batch, syntax only"
+time bash scripts/check-one-batch.sh build-one-batch
+
 # Leak checks off because Mesa's llvmpipe keeps its JIT caches until exit.
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # -O1 -g1, as the sanitizers' docs suggest: a third less to build than -O2 -g, the same line numbers in reports.

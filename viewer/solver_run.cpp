@@ -112,8 +112,8 @@ std::unique_ptr<SolverThread::Run> SolverThread::makeRun(const SolveSetup& setup
   run->generation = generation;
   std::vector<Patch> patches = meshScene(scene_, setup.cellM);
   run->summary = summarizeScene(scene_, patches, setup.cellM);
-  run->sceneClosed = isClosed(scene_);
   if (setup.cells) {
+    run->sceneClosed = isClosed(scene_);
     requireCellsOptions(setup.options);
     run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
     run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, run->setup.options,
@@ -121,6 +121,7 @@ std::unique_ptr<SolverThread::Run> SolverThread::makeRun(const SolveSetup& setup
     run->focusOn(eye, scene_.upAxis);
   } else {
     run->solver = std::make_unique<ProgressiveSolver>(scene_, std::move(patches), run->setup.options);
+    run->sceneClosed = run->solver->effectsPlan().closed;
   }
   if (!resumePath.empty() && run->solver) {
     resumeFromCheckpoint(resumePath, *run->solver);

@@ -100,17 +100,18 @@ EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, E
                                                : "some surface reflects: light bounces";
 
   const auto [openStretches, closed] = closure(scene);
+  plan.closed = closed;
   plan.escape = !closed;
+  const std::string closedAround =
+      openStretches == 0 ? "the surface is closed"
+                         : fmt::format("the surface is closed around the {} open edges it has (no ray from them or "
+                                       "from a face leaves the scene)",
+                                       openStretches);
   const std::string escapeWhy =
       !closed ? (openStretches > 0 ? "the surface has open edges: light leaving through openings is accounted"
                                    : "some face looks out of the model: light leaving it is accounted")
-      : openStretches == 0
-          ? "the surface is closed: no light can leave the scene (what slips through seams between patches by "
-            "rounding is still booked as escaped)"
-          : fmt::format("the surface is closed around the {} open edges it has (no ray from them or from a face "
-                        "leaves the scene): no light can leave (what slips through seams between patches by "
-                        "rounding is still booked as escaped)",
-                        openStretches);
+              : closedAround + ": no light can leave the scene (what slips through seams between patches by "
+                               "rounding is still booked as escaped)";
 
   plan.nearReceivers = findNearFieldReceivers(patches);
   size_t pairs = 0, shooters = 0;

@@ -23,6 +23,7 @@ struct EffectsPlan {
   bool nearField = true;        // off: no receiver closer to a shooter than the shooter's size
   bool escape = true;           // off: the scene is closed, no light can leave it (what hits nothing
                                 //   through seams between patches is booked as escaped all the same)
+  bool closed = true;           // isClosed, as found whatever the mode (--effects all turns escape on)
   std::vector<Effect> effects;  // the five above with their reasons, in that order
   // Per shooter patch, the receivers in its near field (solver/formfactors/near_field.h), whatever the mode.
   std::vector<std::vector<int>> nearReceivers;
@@ -38,7 +39,8 @@ bool isConvexEnclosure(const Scene& scene);
 
 // True when no light can leave the scene: every polygon edge is covered by edges of other polygons
 // or lies on another's face (a watertight surface), or the edges that are not lie inside closed
-// surfaces, and no face looks out of them (lightCanLeave, solver/geometry/openings.h).
+// surfaces, and no face looks out of them (lightCanLeave, solver/geometry/scene_rays.h). Casts rays:
+// where a solver is at hand, its EffectsPlan::closed has the answer.
 bool isClosed(const Scene& scene);
 
 // Throws OptionError for --projection analytic on a scene that is not a convex enclosure: its form

@@ -221,6 +221,10 @@ TEST(EffectsPlan, ColourAndBlackMaterialsAreDetectedAndAllForcesEverything) {
   plan = planEffects(s, EffectsMode::All);
   EXPECT_TRUE(plan.occlusion && plan.colour && plan.interreflection && plan.escape && plan.nearField);
   EXPECT_NE(plan.effects[2].reason.find("forced"), std::string::npos);
+  // Forcing escape on leaves what the rays found: the lost-light warnings read it from the plan.
+  EXPECT_TRUE(plan.closed);
+  addBox(s, Vec3(3), 1.0, false, 0);  // a block outside the room looks out
+  EXPECT_FALSE(planEffects(s).closed);
 }
 
 }  // namespace
