@@ -113,8 +113,8 @@ std::unique_ptr<SolverThread::Run> SolverThread::makeRun(const SolveSetup& setup
   std::vector<Patch> patches = meshScene(scene_, setup.cellM);
   run->summary = summarizeScene(scene_, patches, setup.cellM);
   if (setup.cells) {
-    run->sceneClosed = isClosed(scene_);
     requireCellsOptions(setup.options);
+    run->sceneClosed = isClosed(scene_);  // the cells' plans are each cell's
     run->partition = std::make_shared<const CellPartition>(findCells(scene_, patches));
     run->cells = std::make_unique<CellSolver>(scene_, std::move(patches), *run->partition, run->setup.options,
                                               CellSolveSettings{setup.cellM, setup.exchangeShots, setup.portalBins});
