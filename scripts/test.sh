@@ -29,7 +29,7 @@ run_ctest() {
   ctest --test-dir "$1" -j"$jobs" --output-on-failure --timeout 600
 }
 
-# First, as it takes two minutes: a name two files of a target both define breaks the unity build
+# First, as it takes about a minute: a name two files of a target both define breaks the unity build
 # only when a batch puts them together; here every pair meets.
 echo "== build-one-batch: every target as one unity batch, syntax only"
 time bash scripts/check-one-batch.sh build-one-batch

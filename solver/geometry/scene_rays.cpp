@@ -16,8 +16,7 @@ SceneRays::SceneRays(const Scene& scene) : scene_(scene), lo_(std::numeric_limit
   normals_.reserve(scene.polygons.size());
   for (size_t i = 0; i < scene.polygons.size(); ++i) {
     const std::vector<Vec3>& v = scene.polygons[i].vertices;
-    Vec3 lo(v[0]), hi(v[0]);
-    for (const Vec3& p : v) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const auto [lo, hi] = boundingBox(v);
     // A polygon across much of the scene would fill thousands of buckets: every ray tests it instead.
     const Vec3 span = glm::floor(hi / bucket_) - glm::floor(lo / bucket_) + 1.0;
     if (span.x * span.y * span.z > 4096.0)
