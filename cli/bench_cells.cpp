@@ -26,7 +26,7 @@ std::vector<double> reflectedPerCell(const Scene& scene, const std::vector<Patch
     const int c = partition.cellOfPatch[j];
     if (c == kOutsideCell) continue;
     const Rgb e = scene.materials[patches[j].material].emittance;
-    weighted[c] += (b[j].r + b[j].g + b[j].b - e.r - e.g - e.b) * patches[j].areaM2;
+    weighted[c] += (channelSum(b[j]) - channelSum(e)) * patches[j].areaM2;
     area[c] += patches[j].areaM2;
   }
   for (size_t c = 0; c < weighted.size(); ++c) weighted[c] = area[c] > 0.0 ? weighted[c] / area[c] : 0.0;
