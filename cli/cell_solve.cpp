@@ -65,6 +65,7 @@ void printCellsSummary(const CellSolver& solver, double seconds) {
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} (with what waits on portals) + not captured "
              "{:.6g} + escaped {:.6g}  (imbalance {:.1e}); {:.6g} W crossed portals\n",
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance(), portalTransfers);
+  if (const std::string outside = lightOutsideSentence(l); !outside.empty()) fmt::print("        {}\n", outside);
 }
 
 nlohmann::json cellsStats(const CellSolver& solver, const std::string& scene, double seconds, int resumedAt) {

@@ -73,6 +73,7 @@ void printSummary(const ProgressiveSolver& solver, double seconds, size_t resume
   fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
              "  (imbalance {:.1e})\n",
              l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
+  if (const std::string outside = lightOutsideSentence(l); !outside.empty()) fmt::print("        {}\n", outside);
   if (solver.options().formFactorCacheBytes == 0) return;
   size_t shots = 0, hits = 0;
   for (const IterationRecord& r : solver.history()) shots += r.shooters.size(), hits += static_cast<size_t>(r.cacheHits);

@@ -54,6 +54,8 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
     line("unshot", l.unshot);
     line("not captured", l.notCaptured);
     line("escaped", l.escaped);
+    // Part of escaped and of the back faces' share: a light's power on the model's outside (the sun on a roof).
+    if (l.lightOutside > 0.0) line("  never came in", l.lightOutside);
     ImGui::EndTable();
   }
   if (l.emitted > 0.0) ImGui::Text("imbalance %.1e", l.imbalance());

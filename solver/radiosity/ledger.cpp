@@ -45,6 +45,13 @@ std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
   return warnings;
 }
 
+std::string lightOutsideSentence(const Ledger& l) {
+  if (!(l.lightOutside > 0.0 && l.input() > 0.0)) return "";
+  return fmt::format("of it, {:.6g} W ({:.1f}%) is the lights' that fell on the model's outside or past it and never "
+                     "came in; the unshot fraction is of the {:.6g} W that did",
+                     l.lightOutside, 100.0 * l.lightOutside / l.input(), l.input() - l.lightOutside);
+}
+
 double Ledger::unshotFraction() const {
   const double cameIn = input() - lightOutside;
   return cameIn > 0.0 ? unshot / cameIn : 0.0;

@@ -42,6 +42,10 @@ inline constexpr double kLedgerTolerance = 1e-9;
 // surface than the projection resolves sends all its light past it), or the single plane missed
 // more than kPlaneMissed of it (its 8.3 % a shot, compounded by interreflection). Empty: none.
 std::vector<std::string> lostLightWarnings(const Ledger& ledger, bool sceneClosed);
+// The sentence a solve prints under its ledger when lights sent power onto the model's outside or
+// past it (the sun on a roof): that power is in `emitted` but never came in, and the unshot fraction
+// is of the rest. Empty when none did.
+std::string lightOutsideSentence(const Ledger& ledger);
 inline constexpr double kLostInClosedScene = 0.01;
 inline constexpr double kLostInOpenScene = 0.9;
 inline constexpr double kPlaneMissed = 0.10;

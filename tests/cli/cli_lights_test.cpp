@@ -55,6 +55,31 @@ void expectCellsBalance(const nlohmann::json& j) {
   EXPECT_LE(received, emitted * (1 + 1e-12));
 }
 
+// The Cornell box under a sun at the zenith: the ceiling's back takes the beam over the box's
+// footprint, which is emitted but never comes in. The summary says so under the ledger, with the
+// ledger's figure, on both solve paths; without the sun it says nothing of it.
+TEST(CliLights, TheSunOnTheModelsOutsideIsSaidUnderTheLedger) {
+  for (const std::string cells : {"off", "auto"}) {
+    const std::string stats = tempPath("outside-" + cells + ".json");
+    const CommandRun run = radmesh("solve cornell --sun 0,90 --cell 0.1 --resolution 32 --max-iterations 3 --quiet --cells " +
+                                   cells + " --stats " + stats);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const auto l = nlohmann::json::parse(std::ifstream(stats))["ledger"];
+    const double outside = l["light_outside"].get<double>(), emitted = l["emitted"].get<double>();
+    EXPECT_GT(outside, 0.99 * emitted);  // the lamp inside is under 1.5 W of it
+    const size_t at = run.output.find("of it, ");
+    ASSERT_NE(at, std::string::npos) << run.output;
+    EXPECT_NEAR(std::stod(run.output.substr(at + 7)), outside, 1e-5 * outside) << run.output;
+    EXPECT_NE(run.output.find("is the lights' that fell on the model's outside or past it and never came in; the unshot "
+                              "fraction is of the "),
+              std::string::npos)
+        << run.output;
+  }
+  const CommandRun dark = radmesh("solve cornell --cell 0.1 --resolution 32 --max-iterations 3 --quiet");
+  ASSERT_EQ(dark.exitCode, 0) << dark.output;
+  EXPECT_EQ(dark.output.find("never came in"), std::string::npos) << dark.output;
+}
+
 // --cells auto with lights: a KHR point light in a closed box (one cell), the sun on a building.
 TEST(CliLights, CellsAutoSolvesLightsAndTheLedgerBalances) {
   const std::string box = test::dataPath("lights/point_box.gltf").string();
