@@ -139,9 +139,9 @@ void warnIfFarFromConverged(const Ledger& ledger, const SolveOptions& options, l
                         options.maxIterations)
           : "stop on what is left instead: --until 1 --until-unshot 0.01 (the default)";
   fmt::print(stderr,
-             "radmesh: warning: the solve stopped with {:.1f}% of the emitted power unshot, so its reflected light is "
-             "far from converged (docs/accuracy.md); {}\n",
-             100.0 * unshot, fix);
+             "radmesh: warning: the solve stopped with {:.1f}% of {} unshot, so its reflected light is far from "
+             "converged (docs/accuracy.md); {}\n",
+             100.0 * unshot, ledger.unshotBasis(), fix);
 }
 
 }  // namespace radmesh::cli

@@ -183,9 +183,10 @@ void Panel::drawStateAndCommands(const SolverSnapshot& snapshot, SolverThread& s
   else
     ImGui::Text("%s: iteration %d", state, snapshot.iteration());
   if (o.untilUnshot > 0.0)
-    ImGui::Text("unshot power: %.2f%% of the emitted (until %.2f%%)", 100.0 * unshot, 100.0 * o.untilUnshot);
+    ImGui::TextWrapped("unshot: %.2f%% (until %.2f%%) of %s", 100.0 * unshot, 100.0 * o.untilUnshot,
+                       snapshot.ledger.unshotBasis());
   else
-    ImGui::Text("unshot power: %.2f%% of the emitted", 100.0 * unshot);
+    ImGui::TextWrapped("unshot: %.2f%% of %s", 100.0 * unshot, snapshot.ledger.unshotBasis());
   if (snapshot.cells)
     drawCellsState(*snapshot.cells);
   else if (o.until < 1.0)

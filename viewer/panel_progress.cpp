@@ -49,13 +49,13 @@ void Panel::drawProgress(const SolverSnapshot& snapshot) {
       ImGui::Text("%.2f %%", watts * share);
     };
     line("emitted", l.emitted);
+    // A light's power on the model's outside (the sun on a roof): part of escaped and of the back faces' share.
+    if (l.lightOutside > 0.0) line("  never came in", l.lightOutside);
     line("absorbed", l.absorbed);
     line("  by back faces", l.absorbedByBackFaces);
     line("unshot", l.unshot);
     line("not captured", l.notCaptured);
     line("escaped", l.escaped);
-    // Part of escaped and of the back faces' share: a light's power on the model's outside (the sun on a roof).
-    if (l.lightOutside > 0.0) line("  never came in", l.lightOutside);
     ImGui::EndTable();
   }
   if (l.emitted > 0.0) ImGui::Text("imbalance %.1e", l.imbalance());

@@ -52,6 +52,10 @@ std::string lightOutsideSentence(const Ledger& l) {
                      l.lightOutside, 100.0 * l.lightOutside / l.input(), l.input() - l.lightOutside);
 }
 
+const char* Ledger::unshotBasis() const {
+  return lightOutside > 0.0 ? "the power that came in" : "the emitted power";
+}
+
 double Ledger::unshotFraction() const {
   const double cameIn = input() - lightOutside;
   return cameIn > 0.0 ? unshot / cameIn : 0.0;
