@@ -70,7 +70,8 @@ class Corners {
     }
     const Vec2 size = hi - lo_;
     const int n = std::max(distinctPoints, 1);
-    // Cells no longer than the box over n, so that a thin box gets a row of them, not one.
+    // Square cells of the box's area over n, but no smaller than its longer side over n: a thin box
+    // gets a row of at most n + 1 of them, not n² tiny ones.
     cell_ = std::max(std::sqrt(size.x * size.y / n), std::max(size.x, size.y) / n);
     if (!(cell_ > 0.0)) cell_ = 1.0;  // every point the same
     const auto across = [&](double extent) { return extent / cell_ < n ? static_cast<int>(extent / cell_) + 1 : n + 1; };
