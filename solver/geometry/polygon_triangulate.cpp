@@ -103,16 +103,14 @@ class Corners {
   }
 
   // Calls visit(corner, count) for every corner whose point lies within `margin` of the triangle t
-  // and within `clip` of its box (and for some others near it), until one returns true. Returns
-  // whether one did.
+  // and in the box lo..hi (and for some others near it), until one returns true. Returns whether
+  // one did.
   template <class Visit>
-  bool anyNear(const std::array<Vec2, 3>& t, double margin, double clip, Visit&& visit) const {
-    const Vec2 lo = glm::min(t[0], glm::min(t[1], t[2])) - clip;
-    const Vec2 hi = glm::max(t[0], glm::max(t[1], t[2])) + clip;
+  bool anyNear(const std::array<Vec2, 3>& t, double margin, const Vec2& lo, const Vec2& hi, Visit&& visit) const {
+    const double inf = std::numeric_limits<double>::infinity();
     const int rowLo = rowOf(lo.y), rowHi = rowOf(hi.y);
     for (int row = rowLo; row <= rowHi; ++row) {
       // The row's slab; the grid's first and last rows also hold the points beyond it.
-      const double inf = std::numeric_limits<double>::infinity();
       const double y0 = row == 0 ? -inf : lo_.y + row * cell_;
       const double y1 = row == rows_ - 1 ? inf : lo_.y + (row + 1) * cell_;
       const auto [x0, x1] = xExtent(t, y0 - margin, y1 + margin);
@@ -246,7 +244,7 @@ class EarClipper {
     const Vec2 lo = glm::min(t[0], glm::min(t[1], t[2])) - noise_;
     const Vec2 hi = glm::max(t[0], glm::max(t[1], t[2])) + noise_;
     const std::array<Corners::Corner, 3> own{cornerOf(ia), cornerOf(i), cornerOf(ic)};
-    return corners_.anyNear(t, reach(t), noise_, [&](const Corners::Corner& corner, int count) {
+    return corners_.anyNear(t, reach(t), lo, hi, [&](const Corners::Corner& corner, int count) {
       const Vec2& q = p_[corner[1]];
       if (q.x < lo.x || q.y < lo.y || q.x > hi.x || q.y > hi.y) return false;
       return count > std::count(own.begin(), own.end(), corner) && blocks(t, q, p_[corner[0]], p_[corner[2]]);

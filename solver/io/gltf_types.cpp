@@ -91,15 +91,15 @@ struct NamedArrays {
 
 constexpr NamedArrays kPrimitives[] = {{"primitives", "primitive", kPrimitive}};
 constexpr NamedArrays kNamedArrays[] = {{"accessors", "accessor", kAccessor},
-                                  {"bufferViews", "bufferView", kBufferView},
-                                  {"buffers", "buffer", kBuffer},
-                                  {"images", "image", kImage},
-                                  {"textures", "texture", kTexture},
-                                  {"materials", "material", kMaterial},
-                                  {"meshes", "mesh", kMesh, kPrimitives},
-                                  {"nodes", "node", kNode},
-                                  {"scenes", "scene", kScene},
-                                  {"extensions.KHR_lights_punctual.lights", "KHR_lights_punctual light", kLight}};
+                                        {"bufferViews", "bufferView", kBufferView},
+                                        {"buffers", "buffer", kBuffer},
+                                        {"images", "image", kImage},
+                                        {"textures", "texture", kTexture},
+                                        {"materials", "material", kMaterial},
+                                        {"meshes", "mesh", kMesh, kPrimitives},
+                                        {"nodes", "node", kNode},
+                                        {"scenes", "scene", kScene},
+                                        {"extensions.KHR_lights_punctual.lights", "KHR_lights_punctual light", kLight}};
 
 bool wholeNumber(const json& v, uint64_t most) { return v.is_number_unsigned() && v.get<uint64_t>() <= most; }
 bool isIndex(const json& v) { return wholeNumber(v, std::numeric_limits<int>::max()); }

@@ -7,7 +7,7 @@ namespace radmesh {
 
 namespace {
 
-constexpr int kBandRows = 16;       // rows of pixels per task
+constexpr int kBandRows = 16;            // rows of pixels per task
 constexpr int kSetupChunkPatches = 256;  // patches per set-up task
 
 }  // namespace

@@ -62,7 +62,7 @@ std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const
     total += weight[c];
     budget += std::ldexp(static_cast<double>(settings.exchangeShots), -d);
   }
-  const double thresholdW = options.untilUnshot * (building.input() - building.lightOutside) / n;
+  const double thresholdW = options.untilUnshot * building.cameIn() / n;
   const int strongest = static_cast<int>(std::max_element(weight.begin(), weight.end()) - weight.begin());
   std::vector<int> shots(n, 0);
   for (int c = 0; c < n; ++c) {

@@ -23,7 +23,7 @@ std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
   // The lights' power that fell outside the model (the sun on a building's outside) is no loss in
   // an open scene: only what entered is weighed there.
   const double neverEntered = l.lightOutside / l.input();
-  const double entered = l.input() - l.lightOutside;
+  const double entered = l.cameIn();
   const double leftAfterEntering = entered > 0.0 ? std::max(0.0, l.escaped - l.lightOutside) / entered : 0.0;
   // Nothing at all came in: every radiosity is zero, whatever the scene.
   if (!sceneClosed && neverEntered > 1.0 - 1e-9) {
@@ -49,16 +49,18 @@ std::string lightOutsideSentence(const Ledger& l) {
   if (!(l.lightOutside > 0.0 && l.input() > 0.0)) return "";
   return fmt::format("of it, {:.6g} W ({:.1f}%) is the lights' that fell on the model's outside or past it and never "
                      "came in; the unshot fraction is of the {:.6g} W that did",
-                     l.lightOutside, 100.0 * l.lightOutside / l.input(), l.input() - l.lightOutside);
+                     l.lightOutside, 100.0 * l.lightOutside / l.input(), l.cameIn());
 }
 
 const char* Ledger::unshotBasis() const {
   return lightOutside > 0.0 ? "the power that came in" : "the emitted power";
 }
 
+double Ledger::cameIn() const { return input() - lightOutside; }
+
 double Ledger::unshotFraction() const {
-  const double cameIn = input() - lightOutside;
-  return cameIn > 0.0 ? unshot / cameIn : 0.0;
+  const double in = cameIn();
+  return in > 0.0 ? unshot / in : 0.0;
 }
 
 void checkLedger(const Ledger& l, int iteration) {

@@ -26,6 +26,8 @@ struct Ledger {
   // unshot / (input - lightOutside): what is left to distribute of what came in (0 if nothing did).
   // Not of input: the sun on a building's outside would make 1 % of it more than all its rooms' light.
   double unshotFraction() const;
+  // input - lightOutside: the power that came into the model, of which unshotFraction is a share.
+  double cameIn() const;
   // What unshotFraction is a fraction of, in words: "the emitted power", or "the power that came in"
   // when lights sent some onto the model's outside.
   const char* unshotBasis() const;
