@@ -260,14 +260,19 @@ int runViewer(const ViewerArgs& args) {
       std::fprintf(stderr, "radmesh-view: warning: %s does not apply: %s is a bake, already solved (it applies to scenes)\n",
                    flag.c_str(), args.scene.c_str());
   const std::string title = "radmesh-view: " + file.scene.source;
-  Opened first(std::move(file), args);
+  // A --resume checkpoint is checked before the window, as radmesh solve refuses it; otherwise the
+  // window comes first, so a missing display is said at once, not after the solver thread (which
+  // cannot stop while it meshes) has meshed the scene.
+  std::optional<Opened> first;
+  if (!args.resume.empty()) first.emplace(std::move(file), args);
   WindowContext window(title, args.windowSize);
+  if (!first) first.emplace(std::move(file), args);
   ImGuiLayer imgui(window.window());
   std::optional<std::string> dropped;
   glfwSetWindowUserPointer(window.window(), &dropped);
   glfwSetDropCallback(window.window(), keepDroppedPath);
   const bool smokeTest = args.steps > 0;
-  auto viewing = std::make_unique<Viewing>(std::move(first), args);
+  auto viewing = std::make_unique<Viewing>(std::move(*first), args);
   // Files opened later start from scratch and run until told: the launch's checkpoint and smoke test were its own.
   ViewerArgs later = args;
   later.resume.clear();
