@@ -299,7 +299,7 @@ void addInfoCommand(CLI::App& app) {
       // A count, as "patches" is; a double only past what a count holds exactly (a --min-element of nothing).
       j["elements"] = elements < 9e15 ? nlohmann::json(static_cast<long long>(elements)) : nlohmann::json(elements);
       j["min_element"] = args->minElementM;
-      j["element_limit"] = elementLimit();
+      j["element_limit"] = elementLimit().count;
       j["effects"] = effectsJson(plan);
       j["warnings"] = warnings;
       if (cells) j.update(cellsJson(partition, figures, outside, seconds));
@@ -310,8 +310,8 @@ void addInfoCommand(CLI::App& app) {
       printText(summary, scene, warnings, notes, cell);
       fmt::print("elements        {:.0f} with --subdivide uniform --min-element {:g}{}{}\n", elements, args->minElementM,
                  args->minElementM == 0.0 ? " (every patch cut into four)" : "",
-                 elements > static_cast<double>(elementLimit())
-                     ? fmt::format(", more than this machine's limit of {}: a solve refuses it", elementLimit())
+                 elements > static_cast<double>(elementLimit().count)
+                     ? fmt::format(", more than this machine's limit of {}: a solve refuses it", elementLimit().count)
                      : "");
       printEffects(plan);
       if (cells) printCells(partition, figures, outside, seconds);

@@ -95,34 +95,35 @@ double countElements(const std::vector<Patch>& patches, double minElementM) {
   return count;
 }
 
-void checkElementCount(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements,
+void checkElementCount(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit,
                        const std::string& what) {
   checkMinElement(minElementM);
   const double count = countElements(patches, minElementM);
-  if (count > static_cast<double>(maxElements)) {
+  if (count > static_cast<double>(limit.count)) {
     const std::string fix = minElementM > 0.0
         ? fmt::format("use a larger --min-element (about {:.3g} m or more)",
-                      minElementM * std::sqrt(count / static_cast<double>(maxElements)) * 1.1)
+                      minElementM * std::sqrt(count / static_cast<double>(limit.count)) * 1.1)
         : "give a larger --cell or --subdivide off";
-    const std::string why = maxElements < kMaxElements
-        ? fmt::format(" (half of the {:.1f} GiB of memory this process may use, at about {} bytes an element at a solve's peak)",
-                      static_cast<double>(usableMemoryBytes()) / (1u << 30), kPeakBytesPerElement)
-        : "";
     throw OptionError(fmt::format("--min-element {} m {} the {} patches into {:.3g} elements, more than the "
-                                  "limit of {}{}; {}", minElementM, what, patches.size(), count, maxElements, why, fix));
+                                  "limit of {}{}; {}", minElementM, what, patches.size(), count, limit.count,
+                                  limit.why, fix));
   }
 }
 
-std::size_t elementLimit(std::size_t memoryBytes) {
-  return memoryBytes == 0 ? kMaxElements : std::min(kMaxElements, memoryBytes / 2 / kPeakBytesPerElement);
+ElementLimit elementLimit(std::size_t memoryBytes) {
+  const std::size_t byMemory = memoryBytes / 2 / kPeakBytesPerElement;
+  if (memoryBytes == 0 || byMemory >= kMaxElements) return {};
+  return {byMemory, fmt::format(" (half of the {:.1f} GiB of memory this process may use, at about {} bytes an "
+                                "element at a solve's peak)", static_cast<double>(memoryBytes) / (1u << 30),
+                                kPeakBytesPerElement)};
 }
 
 void checkElementBudget(const std::vector<Patch>& patches, bool adaptive, double minElementM) {
   checkElementCount(patches, minElementM, elementLimit(), adaptive ? "could let adaptive subdivision split" : "would cut");
 }
 
-Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements) {
-  checkElementCount(patches, minElementM, maxElements, "would cut");
+Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit) {
+  checkElementCount(patches, minElementM, limit, "would cut");
   const double count = countElements(patches, minElementM);
   Elements out;
   out.elements.reserve(static_cast<std::size_t>(count));

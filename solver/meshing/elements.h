@@ -42,15 +42,19 @@ inline constexpr std::size_t kMaxElements = 20'000'000;
 // What an element takes at a solve's peak, writing its bake (measured: 2.37 M uniform elements of
 // the Cornell box peaked at 2.3 GB with --out).
 inline constexpr std::size_t kPeakBytesPerElement = 1024;
-// kMaxElements, or fewer where they would take more than half of the memory (usableMemoryBytes;
-// 0: unknown) at their peak: a solve is refused up front rather than killed by the
-// system midway.
-std::size_t elementLimit(std::size_t memoryBytes = usableMemoryBytes());
+// How many elements may be made, and what set that number, for the refusal to say.
+struct ElementLimit {
+  std::size_t count = kMaxElements;
+  std::string why;  // "" for a limit given as it is
+};
+// kMaxElements, or fewer where they would take more than half of `memoryBytes` (usableMemoryBytes;
+// 0: unknown) at their peak: a solve is refused up front rather than killed by the system midway.
+ElementLimit elementLimit(std::size_t memoryBytes = usableMemoryBytes());
 
 // Throws OptionError for a minElementM that is not finite and at least 0, or for which
-// countElements exceeds maxElements; `what` says what the elements come from in the message ("would
+// countElements exceeds limit.count; `what` says what the elements come from in the message ("would
 // cut", "could let adaptive subdivision split").
-void checkElementCount(const std::vector<Patch>& patches, double minElementM, std::size_t maxElements,
+void checkElementCount(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit,
                        const std::string& what);
 
 // checkElementCount for a solve's subdivision: uniform's elements, or with `adaptive` every element
@@ -64,9 +68,9 @@ void checkElementBudget(const std::vector<Patch>& patches, bool adaptive, double
 // bilinear parameterisation (straight lines joining points evenly spaced on opposite edges), a
 // triangle into n^2 triangles (n = 2: the four-way split). Elements keep their patch's
 // orientation and are listed patch by patch. Throws OptionError for a minElementM that is not
-// finite and at least 0, or that would make more than maxElements elements.
+// finite and at least 0, or that would make more than limit.count elements.
 Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM,
-                          std::size_t maxElements = elementLimit());
+                          const ElementLimit& limit = elementLimit());
 
 // Every patch its own single element, level 0: where adaptive subdivision starts.
 Elements patchesAsElements(const std::vector<Patch>& patches);

@@ -65,28 +65,36 @@ TEST(Elements, RefusesAMinElementThatIsNegativeNaNOrMakesTooMany) {
   } catch (const OptionError& e) {
     EXPECT_NE(std::string(e.what()).find("larger --min-element"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(subdivideUniform(patches, 0.1, 99), OptionError);  // 100 elements, limit 99
-  EXPECT_EQ(subdivideUniform(patches, 0.1, 100).elements.size(), 100u);
+  EXPECT_THROW(subdivideUniform(patches, 0.1, {99, ""}), OptionError);  // 100 elements, limit 99
+  EXPECT_EQ(subdivideUniform(patches, 0.1, {100, ""}).elements.size(), 100u);
 }
 
 // Elements at their measured peak take at most half the machine's memory: 8 GiB holds 4 Mi of them;
 // a large or unknown memory keeps the fixed limit.
 TEST(Elements, TheLimitFollowsTheMachinesMemory) {
   constexpr std::size_t kGiB = std::size_t{1} << 30;
-  EXPECT_EQ(elementLimit(8 * kGiB), 4u << 20);
-  EXPECT_EQ(elementLimit(64 * kGiB), kMaxElements);
-  EXPECT_EQ(elementLimit(0), kMaxElements);
-  EXPECT_LE(elementLimit(), kMaxElements);
+  EXPECT_EQ(elementLimit(8 * kGiB).count, 4u << 20);
+  EXPECT_EQ(elementLimit(64 * kGiB).count, kMaxElements);
+  EXPECT_EQ(elementLimit(0).count, kMaxElements);
+  EXPECT_EQ(elementLimit(64 * kGiB).why, "");
+  EXPECT_LE(elementLimit().count, kMaxElements);
   if (usableMemoryBytes() > 0) {
-    EXPECT_LE(elementLimit() * kPeakBytesPerElement, usableMemoryBytes() / 2);
+    EXPECT_LE(elementLimit().count * kPeakBytesPerElement, usableMemoryBytes() / 2);
   }
-  // A count over a limit the memory set says so, beside the fix.
-  try {
-    subdivideUniform({unitSquare()}, 0.1, 99);
-    FAIL() << "100 elements were not refused at a limit of 99";
-  } catch (const OptionError& e) {
-    EXPECT_NE(std::string(e.what()).find("limit of 99 (half of the "), std::string::npos) << e.what();
-  }
+  // A count over a limit the memory set says so, with the memory it was given, beside the fix;
+  // a limit given as a number says nothing of memory.
+  auto refusal = [](const ElementLimit& limit) -> std::string {
+    try {
+      subdivideUniform({unitSquare()}, 0.001, limit);  // a million elements
+    } catch (const OptionError& e) {
+      return e.what();
+    }
+    return "not refused";
+  };
+  EXPECT_NE(refusal(elementLimit(kGiB)).find("limit of 524288 (half of the 1.0 GiB of memory this process may use"),
+            std::string::npos);
+  const std::string given = refusal({99, ""});
+  EXPECT_NE(given.find("more than the limit of 99; use a larger --min-element"), std::string::npos) << given;
 }
 
 TEST(Elements, SplitReplacesAnElementInPlaceByFourChildren) {

@@ -127,7 +127,7 @@ TEST(CellSolver, TheElementLimitHoldsForTheWholeBuilding) {
   const std::vector<Patch> patches = meshScene(scene, 1.0);
   const CellPartition partition = twoRoomsPartition(patches);
   // The count goes as 1 / min^2: a min at which the building makes about 1.3 times the limit.
-  const double limit = static_cast<double>(elementLimit());
+  const double limit = static_cast<double>(elementLimit().count);
   const double kMin = 0.0025 * std::sqrt(countElements(patches, 0.0025) / (1.3 * limit));
   std::vector<Patch> roomA, roomB;
   for (const Patch& p : patches) (inRoomA(p) ? roomA : roomB).push_back(p);
