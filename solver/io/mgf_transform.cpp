@@ -34,13 +34,13 @@ struct Segment {
 std::vector<Segment> parseSegments(const std::vector<std::string>& args) {
   std::vector<Segment> segments(1);
   size_t repeats = 0;  // every -i applies its transform that many times: bounded as instances are
-  const auto number = [&](size_t& k, const std::string& what) {
-    if (++k >= args.size())
-      throw MgfError(args[k - 1] + " is missing its " + what, "give " + args[k - 1] + " a " + what);
-    return parseMgfNumber(args[k], args[k - 1] + " " + what);
-  };
   for (size_t k = 0; k < args.size(); ++k) {
     const std::string& a = args[k];
+    // The next argument, a number the flag `a` takes (a -t takes three: each is named with -t).
+    const auto number = [&](size_t& next, const std::string& what) {
+      if (++next >= args.size()) throw MgfError(a + " is missing its " + what, "give " + a + " a " + what);
+      return parseMgfNumber(args[next], a + " " + what);
+    };
     MgfAffine step;
     if (a == "-t") {
       const double x = number(k, "dx");

@@ -219,6 +219,10 @@ TEST(MgfBadInput, ContextAndCountErrorsNameTheirLine) {
       {"m x = nosuch\n", "line 1: m", "m 'nosuch' is not defined"},
       {"m x : y\n", "line 1: m", "expected '=' after the name"},
       {"xf -a 0 -t 1 0 0\n", "line 1: xf", "-a count '0' is not a whole number of at least 1"},
+      // A -t's three numbers are each named with -t (they were named by the number before them).
+      {"xf -t 0 0 nan\n", "line 1: xf", "-t dz 'nan' is not"},
+      {"xf -t 1 2\n", "line 1: xf", "-t is missing its dz"},
+      {"xf -rz\n", "line 1: xf", "-rz is missing its angle in degrees"},
   };
   for (const auto& c : cases) {
     try {
