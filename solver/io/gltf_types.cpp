@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -137,17 +138,28 @@ std::string wanted(const Rule& rule) {
   return {};
 }
 
-// The value as the file has it, cut short: a mistyped array may hold thousands of numbers.
+// The value as the file has it, cut short: a mistyped array may hold thousands of numbers. A
+// signed zero is the file's -0 (a plain 0 is read as unsigned), which the JSON library writes as 0.
 std::string shown(const json& value) {
+  if (value.is_number_integer() && !value.is_number_unsigned() && value.get<std::int64_t>() == 0) return "-0";
   constexpr size_t kMaxChars = 60;
   const std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
   return text.size() <= kMaxChars ? text : text.substr(0, kMaxChars) + "...";
 }
 
+// A whole value written as 3.0 or -0 fits no whole-number rule (glTF's and tinygltf's integers are
+// unsigned JSON integers): the fix says how to write it.
+std::string howToWrite(const json& value) {
+  if (!value.is_number() || value.is_number_unsigned()) return "";
+  const double v = value.get<double>();
+  if (!(v >= 0.0 && v <= 9007199254740992.0 && v == std::floor(v))) return "";
+  return fmt::format(": {}, without a decimal point or sign", static_cast<std::uint64_t>(v));
+}
+
 SceneError refusal(const std::string& path, const std::string& element, std::string_view key, const json& value,
                    const std::string& want) {
   return SceneError(path, element, fmt::format("{} is {} ({}), not {}", key, shown(value), value.type_name(), want),
-                    fmt::format("give {} as {}", key, want));
+                    fmt::format("give {} as {}{}", key, want, howToWrite(value)));
 }
 
 // The value of the dotted key in `object`, null when it (or an object on its way) is missing.

@@ -196,7 +196,17 @@ void MgfInterpreter::luminaire(const MgfEntity& e) {
       for (Vec3& v : face) v.z = lum.heightM / 2.0;
     }
     const std::string name = fmt::format("ies {} ({})", target.filename().string(), up ? "up" : "down");
-    scene_.materials.push_back({name, Rgb(0.0), mgfEmittance(lumens / area, kMgfNeutral, nullptr)});
+    const Rgb exitance = mgfEmittance(lumens / area, kMgfNeutral, nullptr);
+    // Refused here, where the fix is known: the scene's check would ask for an emittance this file never gave.
+    const double most = std::max({exitance.r, exitance.g, exitance.b});
+    if (!(most >= kMinEmitted && most <= kMaxEmitted))
+      throw MgfError(fmt::format("{} sends {:g} lm {} from its {:g} m^2 opening: {:g} W/m^2, outside the {:g} to {:g} "
+                                 "W/m^2 radmesh trusts (no real luminaire comes near)",
+                                 target.filename().string(), lumens, up ? "up" : "down", area, most, kMinEmitted,
+                                 kMaxEmitted),
+                     fmt::format("check -m (here {:g}) and the candela multiplier and values in {}", multiplier,
+                                 target.string()));
+    scene_.materials.push_back({name, Rgb(0.0), exitance});
     emit({face}, e, static_cast<int>(scene_.materials.size()) - 1);
   }
   if (transformed) popTransform();

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -108,7 +109,10 @@ TEST(GltfTypes, APropertyOfTheWrongTypeIsRefusedNamingItsElement) {
       {[](json& d) { d["meshes"][0]["primitives"][0]["indices"] = "1"; },
        "mesh 0 'room' primitive 0 | indices is \"1\" (string), not " + whole + " (fix: give indices as " + whole + ")"},
       {[](json& d) { d["meshes"][0]["primitives"][0]["indices"] = 1.0; },
-       "mesh 0 'room' primitive 0 | indices is 1.0 (number), not " + whole},
+       "mesh 0 'room' primitive 0 | indices is 1.0 (number), not " + whole + " (fix: give indices as " + whole +
+           ": 1, without a decimal point or sign)"},
+      {[](json& d) { d["meshes"][0]["primitives"][0]["indices"] = 1.5; },
+       "mesh 0 'room' primitive 0 | indices is 1.5 (number), not " + whole + " (fix: give indices as " + whole + ")"},
       {[](json& d) { d["meshes"][1]["primitives"][0]["material"] = "1"; },
        "mesh 1 'lamp' primitive 0 | material is \"1\" (string), not " + whole},
       {[](json& d) { d["nodes"][0]["mesh"] = -1; }, "node 0 'room' | mesh is -1 (number), not " + whole},
@@ -126,7 +130,7 @@ TEST(GltfTypes, APropertyOfTheWrongTypeIsRefusedNamingItsElement) {
       {[](json& d) { d["accessors"][1]["count"] = "36"; },
        "accessor 1 | count is \"36\" (string), not a whole number >= 0 (fix: give count as a whole number >= 0)"},
       {[](json& d) { d["bufferViews"][0]["byteOffset"] = -4; },
-       "bufferView 0 | byteOffset is -4 (number), not a whole number >= 0"},
+       "bufferView 0 | byteOffset is -4 (number), not a whole number >= 0 (fix: give byteOffset as a whole number >= 0)"},
       // A number array of its length, short, empty (read as absent) or holding a string.
       {[](json& d) { d["nodes"][0]["translation"] = {"a", 0, 0}; },
        "node 0 'room' | translation is [\"a\",0,0] (array), not 3 numbers (fix: give translation as 3 numbers)"},
@@ -174,6 +178,22 @@ TEST(GltfTypes, APropertyOfTheWrongTypeIsRefusedNamingItsElement) {
     const std::string got = typeRefusal(writeDocument(dir, "case" + std::to_string(i) + ".gltf", doc));
     EXPECT_EQ(got.substr(0, cases[i].refusal.size()), cases[i].refusal) << "case " << i;
   }
+}
+
+// A count written -0 is refused as tinygltf would (its integers are unsigned) and shown as the file
+// writes it: it read "count is 0, not a whole number >= 0".
+TEST(GltfTypes, AMinusZeroCountIsShownAsWrittenWithHowToWriteIt) {
+  test::TempDir dir;
+  json doc = roomDocument(dir);
+  doc["accessors"][1]["count"] = 987654321;  // a mark to write -0 over
+  const std::string path = writeDocument(dir, "minus-zero.gltf", doc);
+  std::stringstream text;
+  text << std::ifstream(path).rdbuf();
+  std::string written = text.str();
+  written.replace(written.find("987654321"), 9, "-0");
+  std::ofstream(path) << written;
+  EXPECT_EQ(typeRefusal(path), "accessor 1 | count is -0 (number), not a whole number >= 0 (fix: give count as a whole "
+                               "number >= 0: 0, without a decimal point or sign)");
 }
 
 // A node's light must name its light: tinygltf ignored an extension without one.

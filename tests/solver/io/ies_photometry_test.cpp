@@ -116,6 +116,31 @@ TEST(IesPhotometry, NumbersNoLuminaireHasAreRefusedNamingThem) {
   }
 }
 
+// A multiplier past any real luminaire is refused on the ies line, saying what to check: the
+// scene's emitter check had named a material and asked for an emittance the file never gave.
+TEST(IesPhotometry, AFluxPastWhatRadmeshTrustsIsRefusedOnTheIesLine) {
+  const test::TempDir dir;
+  iesFile(dir, "uniform.ies", "3 1", "0 90 180\n0\n100 100 100");
+  const std::pair<std::string, std::string> multipliers[] = {{"1e308", "1e+308"}, {"1e200", "1e+200"}, {"1e-200", "1e-200"}};
+  for (const auto& [m, shown] : multipliers) {
+    const std::string path = (dir / ("lamp" + m + ".mgf")).string();
+    std::ofstream(path) << "ies uniform.ies -m " << m << " -t 0 0 3\n";
+    try {
+      importMgf(path);
+      ADD_FAILURE() << "-m " << m << " was accepted";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.file(), path);
+      EXPECT_EQ(e.element(), "line 1: ies");
+      const std::string what = e.what();
+      EXPECT_NE(what.find("uniform.ies sends "), std::string::npos) << what;
+      EXPECT_NE(what.find("outside the 1e-30 to 1e+30 W/m^2 radmesh trusts"), std::string::npos) << what;
+      EXPECT_NE(what.find("(fix: check -m (here " + shown + ")"), std::string::npos) << what;
+      EXPECT_NE(what.find("and the candela multiplier and values in " + (dir / "uniform.ies").string()),
+                std::string::npos) << what;
+    }
+  }
+}
+
 // LM-63-2002 marks rounded openings by negative sizes: a length or height below zero is its size,
 // not a luminaire turned inside out (its faces looked at each other).
 TEST(IesPhotometry, NegativeLengthAndHeightAreSizes) {
