@@ -223,6 +223,8 @@ TEST(MgfBadInput, ContextAndCountErrorsNameTheirLine) {
       {"xf -t 0 0 nan\n", "line 1: xf", "-t dz 'nan' is not"},
       {"xf -t 1 2\n", "line 1: xf", "-t is missing its dz"},
       {"xf -rz\n", "line 1: xf", "-rz is missing its angle in degrees"},
+      // A control byte in the word is shown, not printed (it left "x '0.3333' is not a number").
+      {"c x =\n  cxy 0.333\x01" "3 0.3333\n", "line 2: cxy", "x '0.333\\x013' is not a number"},
   };
   for (const auto& c : cases) {
     try {
