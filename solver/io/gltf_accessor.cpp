@@ -55,7 +55,7 @@ ElementSpan locate(const tinygltf::Model& model, int index, int type, const std:
                      "spans bytes " + std::to_string(view.byteOffset) + " to " +
                          std::to_string(view.byteOffset + view.byteLength) + " of buffer " +
                          std::to_string(view.buffer) + ", which holds " + std::to_string(bufferBytes),
-                     "fix byteOffset/byteLength or supply the whole buffer");
+                     "correct byteOffset or byteLength, or supply the whole buffer");
   const int componentBytes = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
   const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
   if (componentBytes <= 0 || components <= 0)
@@ -76,7 +76,7 @@ ElementSpan locate(const tinygltf::Model& model, int index, int type, const std:
     throw SceneError(file, element,
                      "reads " + std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) +
                          " of " + viewElement + ", which holds only " + std::to_string(view.byteLength) + " bytes",
-                     "fix the accessor's count or byteOffset, or the bufferView's byteLength");
+                     "correct the accessor's count or byteOffset, or the bufferView's byteLength");
   const unsigned char* base = model.buffers[view.buffer].data.data();
   return {base + view.byteOffset + a.byteOffset, a.count, stride};
 }

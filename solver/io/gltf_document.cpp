@@ -77,7 +77,9 @@ void checkVersion(const std::string& path, const std::string& bytes, const nlohm
     return;  // tinygltf refuses a missing version
   const std::string version = doc["asset"]["version"].get<std::string>();
   if (version.substr(0, version.find('.')) != "2")
-    throw SceneError(path, "asset", "its version is '" + version + "', not glTF 2.0 (glTF 1.0 is a different format)",
+    throw SceneError(path, "asset",
+                     "its version is '" + version + "', not glTF 2.0" +
+                         (version.starts_with("1.") ? " (glTF 1.0 is a different format)" : ""),
                      fix);
 }
 

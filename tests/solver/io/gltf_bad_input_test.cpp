@@ -337,6 +337,11 @@ TEST(GltfBadInput, GltfOneIsRefusedByItsVersion) {
   const std::string gltf = b.write(dir / "old.gltf").string();
   EXPECT_EQ(gltfRefusalAt(gltf).what, gltf + ": asset: its version is '1.0', not glTF 2.0 (glTF 1.0 is a different "
                                              "format) (fix: re-export the model as glTF 2.0)");
+  // A version that is no glTF's is not told it is glTF 1.0.
+  b.doc()["asset"]["version"] = "null";
+  const std::string odd = b.write(dir / "odd.gltf").string();
+  EXPECT_EQ(gltfRefusalAt(odd).what, odd + ": asset: its version is 'null', not glTF 2.0 (fix: re-export the model as "
+                                           "glTF 2.0)");
   b.doc()["asset"]["version"] = "2.1";
   EXPECT_EQ(importGltf(b.write(dir / "minor.gltf").string()).polygons.size(), 1u);
 }
