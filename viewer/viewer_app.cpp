@@ -220,8 +220,8 @@ void printMessages(const ViewedFile& file) {
   for (const std::string& note : file.notes) std::printf("radmesh-view: %s\n", note.c_str());
 }
 
-// What a file shows and where the walk starts, made before any window: a solve's --resume
-// checkpoint is read and checked by then, and refused as radmesh solve refuses it.
+// What a file shows and where the walk starts. A solve's --resume checkpoint is read and checked
+// here, and refused as radmesh solve refuses it: the launch's is made before the window for that.
 struct Opened {
   Opened(ViewedFile file, const ViewerArgs& args) : camera(sceneFrame(file.scene)), setup(file.setup) {
     if (file.bake)
