@@ -121,6 +121,9 @@ inline auto usageFailure(const std::string& program) {
       const std::string name = what.substr(0, what.find(':'));
       const CLI::Option* option = command->get_option_no_throw(name);
       message = name + " is given no value: give it " + kindOfValue(option).give + ", or leave it out";
+    } else if (const std::string given = between(what, ": At Most 1 required but received ", ""); !given.empty()) {
+      // An option given twice (list options take their values comma-separated, once).
+      message = what.substr(0, what.find(':')) + " is given " + given + " times: give it once (" + help + ")";
     } else if (const std::string extras = between(what, "not expected: ", ""); !extras.empty()) {
       // The words CLI11 could not place, which it lists last first; the first option among them is the slip.
       std::vector<std::string> left = CLI::detail::split(extras, ' ');

@@ -350,6 +350,8 @@ TEST(Cli, UsageErrorsNameTheWordAndWhatToGive) {
        "--projections is not an option of radmesh solve (did you mean --projection?)"},
       {"solve furnace --zzzzzzzz", "--zzzzzzzz is not an option of radmesh solve: radmesh solve --help lists them"},
       {"solve furnace cornell", "'cornell' is one argument too many for radmesh solve"},
+      {"solve furnace --sky 1000 --sky 2000",
+       "radmesh: error: --sky is given 2 times: give it once (radmesh solve --help)"},
   };
   for (const auto& [arguments, message] : cases) {
     const CommandRun run = radmesh(arguments);
