@@ -199,7 +199,7 @@ void MgfInterpreter::luminaire(const MgfEntity& e) {
     const Rgb exitance = mgfEmittance(lumens / area, kMgfNeutral, nullptr);
     // Refused here, where the fix is known: the scene's check would ask for an emittance this file never gave.
     const double most = std::max({exitance.r, exitance.g, exitance.b});
-    if (!(most >= kMinEmitted && most <= kMaxEmitted))
+    if (!(most > 0.0 && trustedEmission(most)))
       throw MgfError(fmt::format("{} sends {:g} lm {} from its {:g} m^2 opening: {:g} W/m^2, outside the {:g} to {:g} "
                                  "W/m^2 radmesh trusts (no real luminaire comes near)",
                                  target.filename().string(), lumens, up ? "up" : "down", area, most, kMinEmitted,

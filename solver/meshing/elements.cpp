@@ -95,8 +95,8 @@ double countElements(const std::vector<Patch>& patches, double minElementM) {
   return count;
 }
 
-void checkElementCount(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit,
-                       const std::string& what) {
+double checkElementCount(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit,
+                         const std::string& what) {
   checkMinElement(minElementM);
   const double count = countElements(patches, minElementM);
   if (count > static_cast<double>(limit.count)) {
@@ -108,6 +108,7 @@ void checkElementCount(const std::vector<Patch>& patches, double minElementM, co
                                   "limit of {}{}; {}", minElementM, what, patches.size(), count, limit.count,
                                   limit.why, fix));
   }
+  return count;
 }
 
 ElementLimit elementLimit(std::size_t memoryBytes) {
@@ -123,8 +124,7 @@ void checkElementBudget(const std::vector<Patch>& patches, bool adaptive, double
 }
 
 Elements subdivideUniform(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit) {
-  checkElementCount(patches, minElementM, limit, "would cut");
-  const double count = countElements(patches, minElementM);
+  const double count = checkElementCount(patches, minElementM, limit, "would cut");
   Elements out;
   out.elements.reserve(static_cast<std::size_t>(count));
   out.first.reserve(patches.size() + 1);

@@ -53,9 +53,9 @@ ElementLimit elementLimit(std::size_t memoryBytes = usableMemoryBytes());
 
 // Throws OptionError for a minElementM that is not finite and at least 0, or for which
 // countElements exceeds limit.count; `what` says what the elements come from in the message ("would
-// cut", "could let adaptive subdivision split").
-void checkElementCount(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit,
-                       const std::string& what);
+// cut", "could let adaptive subdivision split"). Returns that count.
+double checkElementCount(const std::vector<Patch>& patches, double minElementM, const ElementLimit& limit,
+                         const std::string& what);
 
 // checkElementCount for a solve's subdivision: uniform's elements, or with `adaptive` every element
 // adaptive subdivision could make. That count bounds it: an element splits only while half its

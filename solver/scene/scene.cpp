@@ -120,18 +120,18 @@ void requireTrustedEmission(double emitted, const char* unit, const std::string&
                             const char* what) {
   const std::string units = "MGF's ed is in lm/m^2, glTF's emission in W/m^2, a glTF light's intensity in candela "
                             "(lux for a directional light)";
-  if (emitted > kMaxEmitted)
+  if (trustedEmission(emitted)) return;
+  if (!(emitted < kMinEmitted))  // past kMaxEmitted, or not a number
     throw SceneError(file, element,
                      fmt::format("emits {:g} {}, more than the {:g} {} radmesh trusts (no real light comes near; a "
                                  "solve would overflow the bake's radiosities)",
                                  emitted, unit, kMaxEmitted, unit),
                      fmt::format("lower its {} to a real light's: {}", what, units));
-  if (emitted > 0.0 && emitted < kMinEmitted)
-    throw SceneError(file, element,
-                     fmt::format("emits {:g} {}, less than the {:g} {} radmesh trusts (no real light comes near; a "
-                                 "solve's radiosities would fall below what the bake's floats hold: a black picture)",
-                                 emitted, unit, kMinEmitted, unit),
-                     fmt::format("raise its {} to a real light's, or make it 0 if it is no light: {}", what, units));
+  throw SceneError(file, element,
+                   fmt::format("emits {:g} {}, less than the {:g} {} radmesh trusts (no real light comes near; a "
+                               "solve's radiosities would fall below what the bake's floats hold: a black picture)",
+                               emitted, unit, kMinEmitted, unit),
+                   fmt::format("raise its {} to a real light's, or make it 0 if it is no light: {}", what, units));
 }
 
 void validateMaterial(const Scene& scene, const Material& m) {

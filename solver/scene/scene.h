@@ -40,6 +40,10 @@ inline constexpr double kMaxEmitted = 1e30;
 // The least an emitter may send above nothing, in the same units: below it a solve's radiosities
 // fall under what a bake's 32-bit floats hold (1e-38 and less), and its picture comes out black.
 inline constexpr double kMinEmitted = 1e-30;
+// An emitter's figure that radmesh trusts: nothing, or kMinEmitted to kMaxEmitted (false for NaN).
+inline bool trustedEmission(double emitted) {
+  return emitted == 0.0 || (emitted >= kMinEmitted && emitted <= kMaxEmitted);
+}
 
 struct Material {
   std::string name;
