@@ -132,10 +132,14 @@ bool MgfContexts::handle(const MgfEntity& e) {
     requireMgfArguments(e, 1, 1, "rd rho_d");
     const double rd = checkFraction(e, 1, "diffuse reflectance");
     // MGF allows rd 1 and files in the wild write it for white, but rho = 1 would never let light
-    // die out: lowered, as in every reader.
+    // die out: lowered, as in every reader; so is anything above kHighestReflectance, as glTF's is.
     if (rd == 1.0)
       notes_.push_back(fmt::format("rd 1 lowered to {} (a reflectance of 1 never lets light die out)",
                                    kHighestReflectance));
+    else if (rd > kHighestReflectance)
+      notes_.push_back(fmt::format("rd {} lowered to {} (the highest reflectance radmesh solves: the nearer 1, the "
+                                   "longer light takes to die out)",
+                                   e.words[1], kHighestReflectance));
     material.rd = std::min(rd, kHighestReflectance);
     material.rdColor = color;
   } else if (k == "ed") {

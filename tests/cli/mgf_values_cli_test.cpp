@@ -1,6 +1,6 @@
 // MGF material values from the command line: what MGF's reference parser refuses (rd, rs, td
 // outside [0, 1], cxy outside the chromaticity diagram, cct below 1000 K, ir's index up to 1e-6) is
-// refused with exit 2 naming the file, line, entity and fix; rd 1 and cxy's y 0 are repaired with a
+// refused with exit 2 naming the file, line, entity and fix; rd above 0.99 and cxy's y 0 are repaired with a
 // warning; a near-neutral white at rd 0.99 opens even under --strict.
 #include <gtest/gtest.h>
 
@@ -111,6 +111,14 @@ TEST(MgfValuesCli, ReflectanceOfOneIsLoweredWithAWarning) {
       box("rd1.mgf", " c\n  cxy 0.333 0.333\n rd 1.0\n"),
       ": line 4: rd 1 lowered to 0.99 (a reflectance of 1 never lets light die out)", 1);
   EXPECT_EQ(output.find("gamut"), std::string::npos) << output;
+}
+
+// Between 0.99 and 1 it was lowered without a word, and --strict let it through (glTF's warns).
+TEST(MgfValuesCli, AReflectanceAbove099IsLoweredWithAWarning) {
+  expectInfoRepaired(box("rd995.mgf", " rd 0.995\n"),
+                     ": line 2: rd 0.995 lowered to 0.99 (the highest reflectance radmesh solves: the nearer 1, "
+                     "the longer light takes to die out)",
+                     1);
 }
 
 // MGF's white to three digits and D65 at rd 0.99 had warned "outside the Rec. 709 gamut", and
