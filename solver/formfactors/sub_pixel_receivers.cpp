@@ -13,10 +13,11 @@ namespace {
 
 // The analytic form factor of patch j times the fraction of its covered pixel centres showing
 // it. Covering none: hidden where the pixel its centroid falls in shows a surface strictly in front
-// of it; seen where it shows nothing. Otherwise the pixel cannot say: what it shows may be j's own
-// plane further on (the room next door's wall in line with this room's, or one floor under both
-// rooms) beside the wall that hides j, so the segment from the shooter to j's centroid decides,
-// tested exactly against every patch.
+// of it that the segment from the shooter to j's centroid passes through; seen where it shows
+// nothing. Otherwise the pixel cannot say: what it shows may be j's own plane further on (the room
+// next door's wall in line with this room's, or one floor under both rooms) beside the wall that
+// hides j, or a surface whose plane, not itself, lies in front, so that segment decides, tested
+// exactly against every patch.
 double visibleFormFactor(const ProjectedShot& shot, int j) {
   const Patch& shooter = shot.shooter;
   const Patch& patch = shot.patches[j];
@@ -36,8 +37,12 @@ double visibleFormFactor(const ProjectedShot& shot, int j) {
     if (owner == ItemBuffer::kNone || owner == j) return unhidden;
     const double ownerInverseDepth = inverseDepthAlong(toShooterFrame(shooter, shot.patches[owner]), face, ab);
     const double inverseDepth = 1.0 / c.z;
-    if (ownerInverseDepth - inverseDepth > kDepthTieTolerance * std::max(std::abs(ownerInverseDepth), inverseDepth))
-      return 0.0;  // strictly in front
+    // Strictly in front, and where the segment meets it: hidden. In front only by its plane (the top
+    // of a shelf, whose plane passes in front of the shelf's thin edge face beyond their common edge)
+    // proves nothing, and the exact test decides.
+    if (ownerInverseDepth - inverseDepth > kDepthTieTolerance * std::max(std::abs(ownerInverseDepth), inverseDepth) &&
+        segmentCrosses(shooter.centroid, patch.centroid, shot.patches[owner]))
+      return 0.0;
     return shot.occluders.segmentBlocked(shooter.centroid, patch.centroid, patch.polygon, shooter.polygon) ? 0.0
                                                                                                           : unhidden;
   }
