@@ -56,7 +56,8 @@ inline constexpr const char* kRatioHelp =
     "Half-side of the single plane at height 1 (3, the paper's, catches 91.7 % of each shot)";
 inline constexpr const char* kUntilUnshotHelp =
     "Also stop when unshot power is this fraction of the emitted (of what came in, where lights fall on the model's "
-    "outside too), e.g. 0.01 (0: only below 1e-9 of it, what the energy ledger vouches for)";
+    "outside too), e.g. 0.01, once every emitting surface has shot (0: only below 1e-9 of it, what the energy ledger "
+    "vouches for)";
 
 inline constexpr const char* kCacheMbHelp =
     "Form-factor row cache budget in MiB (0: none; default: 1024, or a quarter of the memory where that is less, on "

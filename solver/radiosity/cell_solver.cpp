@@ -45,8 +45,8 @@ int CellSolver::portalDistance(int cell) const { return state_->distance.at(stat
 // The round's budget, exchangeShots a cell (with a focus, halved at each portal of distance from
 // it, so that a round stays short), shared in proportion to each cell's unshot power (halved the
 // same way), so that the cells shoot roughly in the order the whole building's solve would. A
-// cell holding more than its share (1/cells) of the stopping threshold shoots at least once, and
-// so does the strongest: the round that shoots nothing is the one after done(). Until the focus
+// cell holding more than its share (1/cells) of the stopping threshold, or an emitting patch yet
+// to shoot (a dim room's lamp), shoots at least once, and so does the strongest: the round that shoots nothing is the one after done(). Until the focus
 // cell itself is below the stopping rule, cells more than one portal from it wait (no share, no
 // minimum): a hundred rooms shooting once a round each would cost the camera's room most of it.
 std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const {
@@ -67,7 +67,8 @@ std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const
   std::vector<int> shots(n, 0);
   for (int c = 0; c < n; ++c) {
     if (total > 0.0) shots[c] = static_cast<int>(std::min(budget * (weight[c] / total), 1e9));  // no int overflow
-    if ((!waits(c) && cellLedger[c].unshot > thresholdW) || c == strongest) shots[c] = std::max(shots[c], 1);
+    const bool due = cellLedger[c].unshot > thresholdW || (options.untilUnshot > 0.0 && cellEmittersToShoot[c] > 0);
+    if ((!waits(c) && due) || c == strongest) shots[c] = std::max(shots[c], 1);
   }
   return shots;
 }
@@ -91,6 +92,7 @@ void CellSolver::State::refresh() {
   cellIterations.resize(n);
   cellExhausted.resize(n);
   cellElements.resize(n);
+  cellEmittersToShoot.resize(n);
   waitingW.resize(links.size());
   for (int c = 0; c < n; ++c) {
     const std::vector<double>& f = figures[c];
@@ -98,6 +100,7 @@ void CellSolver::State::refresh() {
     cellIterations[c] = static_cast<int>(f[9]);
     cellExhausted[c] = f[10] != 0.0;
     cellElements[c] = static_cast<int>(f[11]);
+    cellEmittersToShoot[c] = static_cast<int>(f[12]);
     std::copy(f.begin() + kFigures, f.end(), waitingW.begin() + static_cast<std::ptrdiff_t>(firstLink[c]));
   }
 }
@@ -190,7 +193,10 @@ bool CellSolver::done() const {
   // 0), the rounds would otherwise go on shooting rounding until --max-iterations (C, which ends
   // a whole solve there, is not defined across cells).
   const double unshot = ledger().unshotFraction();
-  return exhausted() || unshot <= std::max(o.untilUnshot, kLedgerTolerance) || iterations() >= o.maxIterations;
+  const auto& waiting = state_->cellEmittersToShoot;
+  const bool emittersShot = o.untilUnshot == 0.0 || std::all_of(waiting.begin(), waiting.end(), [](int e) { return e == 0; });
+  return exhausted() || (unshot <= std::max(o.untilUnshot, kLedgerTolerance) && emittersShot) ||
+         iterations() >= o.maxIterations;
 }
 
 void CellSolver::setUntilUnshot(double untilUnshot) {

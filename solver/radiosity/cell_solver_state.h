@@ -42,15 +42,16 @@ inline int elementCount(const ProgressiveSolver& solver, int patches) {
 }
 
 // A cell's figures as the schedule, the building's ledger and the stats read them, in doubles for
-// CellRanks: its ledger, iterations, whether it is exhausted, its own patches' elements, then what
-// waits on each of its links.
-constexpr size_t kFigures = 12;
+// CellRanks: its ledger, iterations, whether it is exhausted, its own patches' elements, its
+// emitting patches yet to shoot, then what waits on each of its links.
+constexpr size_t kFigures = 13;
 
 inline std::vector<double> packFigures(const ProgressiveSolver& solver, int ownPatches, std::vector<double> waitingW) {
   const Ledger& l = solver.ledger();
   std::vector<double> out{l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces,
                           l.portalOut, l.portalIn, l.lightOutside, static_cast<double>(solver.history().size()),
-                          solver.exhausted() ? 1.0 : 0.0, static_cast<double>(elementCount(solver, ownPatches))};
+                          solver.exhausted() ? 1.0 : 0.0, static_cast<double>(elementCount(solver, ownPatches)),
+                          static_cast<double>(solver.emittersToShoot())};
   out.insert(out.end(), waitingW.begin(), waitingW.end());
   return out;
 }
@@ -85,6 +86,7 @@ struct CellSolver::State {
   std::vector<int> cellIterations;
   std::vector<char> cellExhausted;
   std::vector<int> cellElements;
+  std::vector<int> cellEmittersToShoot;
   std::vector<double> waitingW;  // per link: what waits on its portal patch, W
 
   State(const Scene& b, std::vector<Patch> p, const SolveOptions& o, const CellSolveSettings& s, CellRanks* r)

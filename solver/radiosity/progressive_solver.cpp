@@ -69,6 +69,7 @@ ProgressiveSolver::ProgressiveSolver(const Scene& scene, std::vector<Patch> patc
     s.radiosity[j] = s.unshotRadiosity[j] = m.emittance;
     s.unshotPowerW[j] = channelSum(m.emittance) * s.patches[j].areaM2;
     s.ledger.emitted += s.unshotPowerW[j];
+    if (m.emits()) s.emitters.push_back(static_cast<int>(j));
   }
   for (const Light& light : s.scene.lights) {
     s.lightPower.push_back(lightPower(s.scene, light));
@@ -98,7 +99,30 @@ ProgressiveSolver::~ProgressiveSolver() = default;
 // state is the whole solution.
 std::vector<int> ProgressiveSolver::State::pickShooters() {
   const int k = plan.interreflection ? options.shooters : static_cast<int>(patches.size());
+  if (options.untilUnshot > 0.0 && littleLeft()) {
+    std::vector<int> waiting = unshotEmitters();
+    if (!waiting.empty()) {
+      if (waiting.size() > static_cast<size_t>(k)) waiting.resize(static_cast<size_t>(k));
+      return waiting;
+    }
+  }
   return backend->selectShooters(unshotPowerW, tieRank, k);
+}
+
+bool ProgressiveSolver::State::littleLeft() const {
+  // Below kLedgerTolerance the unshot power is rounding the ledger cannot vouch for: shooting it
+  // would only wait for C to round to 1.
+  return ledger.unshotFraction() <= std::max(options.untilUnshot, kLedgerTolerance);
+}
+
+std::vector<int> ProgressiveSolver::State::unshotEmitters() const {
+  std::vector<int> waiting;
+  for (int i : emitters)
+    if (timesShot[i] == 0 && unshotPowerW[i] > 0.0) waiting.push_back(i);
+  std::sort(waiting.begin(), waiting.end(), [&](int a, int b) {
+    return unshotPowerW[a] != unshotPowerW[b] ? unshotPowerW[a] > unshotPowerW[b] : tieRank[a] < tieRank[b];
+  });
+  return waiting;
 }
 
 void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, IterationRecord& record) {
@@ -262,14 +286,14 @@ const IterationRecord& ProgressiveSolver::step() {
 
 bool ProgressiveSolver::done() const {
   const State& s = *state_;
-  // Below kLedgerTolerance the unshot power is rounding the ledger cannot vouch for: shooting it
-  // would only wait for C to round to 1.
-  const bool littleLeft = s.ledger.unshotFraction() <= std::max(s.options.untilUnshot, kLedgerTolerance);
+  const bool littleLeft = s.littleLeft() && (s.options.untilUnshot == 0.0 || emittersToShoot() == 0);
   return s.exhausted || s.convergence >= s.options.until || littleLeft ||
          static_cast<int>(s.history.size()) >= s.options.maxIterations;
 }
 
 bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
+
+int ProgressiveSolver::emittersToShoot() const { return static_cast<int>(state_->unshotEmitters().size()); }
 
 double ProgressiveSolver::receiveLight(FormFactorRow row, const Rgb& power) {
   State& s = *state_;

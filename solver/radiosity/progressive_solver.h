@@ -84,10 +84,12 @@ class ProgressiveSolver {
   // One iteration: shoot k patches. It steps past the stopping rule (done()) when asked; once
   // nothing is left to shoot (exhausted()), it returns the last record.
   const IterationRecord& step();
-  // Convergence >= until, unshot at most untilUnshot (or kLedgerTolerance) of the emitted, max
-  // iterations, or nothing left to shoot.
+  // Convergence >= until, unshot at most untilUnshot (or kLedgerTolerance) of the emitted with
+  // every emitting patch shot (when untilUnshot > 0; those left shoot first once the rest is
+  // under it), max iterations, or nothing left to shoot.
   bool done() const;
   bool exhausted() const;         // no patch has unshot power: the solution is exact
+  int emittersToShoot() const;    // emitting patches with power that have not shot yet
   // Portal patches (a cell of a cells solve): light reaching their front is neither reflected nor
   // absorbed but waits on them (ledger portalOut) until takePortalPower() moves it to the
   // neighbour cell, whose solve receives it with addPortalPower() (ledger portalIn) as unshot

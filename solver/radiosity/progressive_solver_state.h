@@ -37,6 +37,7 @@ struct ProgressiveSolver::State {
   std::vector<Rgb> unshotRadiosity;    // dB: received, not yet shot
   std::vector<double> unshotPowerW;    // dB * A summed over RGB, what shooter selection compares
   std::vector<int> timesShot;
+  std::vector<int> emitters;           // the patches whose material emits
   std::vector<int> tieRank;            // shooters of equal power go in geometric order
   std::vector<Rgb> lightPower;         // per scene light, W per channel: all shot in iteration 1
   // Lights a cells solve shot over its building (splitAfterLights): their power, and their rows
@@ -83,6 +84,12 @@ struct ProgressiveSolver::State {
       : scene(s), patches(std::move(p)), options(o), cache(o.formFactorCacheBytes) {}
 
   std::vector<int> pickShooters();
+  // What is left unshot is under --until-unshot (or under what the ledger can vouch for).
+  bool littleLeft() const;
+  // Emitting patches that have not shot, strongest first. The unshot stop waits for them: a dim
+  // room's lamp, under --until-unshot of the building's power, would otherwise never shoot, and
+  // its room stay black.
+  std::vector<int> unshotEmitters() const;
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   void shootLights(IterationRecord& record);

@@ -10,6 +10,7 @@
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/io/gltf_import.h"
 #include "solver/meshing/meshing.h"
+#include "solver/radiosity/cell_solver.h"
 #include "solver/projection/projection.h"
 #include "tests/solver/closed_forms.h"
 #include "tests/solver/io/gltf_test_file.h"
@@ -282,6 +283,44 @@ TEST(HardCases, NoLightReachesARoomSealedBehindAWallOfNoThickness) {
     }
     EXPECT_GT(lit, 0.1);
   }
+}
+
+// Two closed rooms side by side, 0.2 m apart, each lit by its whole ceiling, one a thousand times
+// dimmer: a tenth of a percent of the power, in 64 patches. The unshot stop (1 %) was met while
+// the bright room's patches still outshone each of the dim ceiling's, which never shot: its room
+// stayed black in a whole solve (and in cells, in a numerical audit's scene, lit only a little).
+TEST(HardCases, ADimRoomsLampShootsBeforeTheUnshotStop) {
+  const std::vector<Material> materials = {test::grey(0.7), test::grey(0.0, 30.0, "light"),
+                                           test::grey(0.0, 0.03, "dim light")};
+  TestScene rooms = test::closedBox({4, 3, 2.5}, 8, materials, {0, 1, 0, 0, 0, 0});
+  const TestScene dim = test::closedBox({4, 3, 2.5}, 8, materials, {0, 2, 0, 0, 0, 0}, Vec3(4.2, 0, 0));
+  const int polygons = static_cast<int>(rooms.scene.polygons.size());
+  const size_t litPatches = rooms.patches.size();
+  rooms.scene.polygons.insert(rooms.scene.polygons.end(), dim.scene.polygons.begin(), dim.scene.polygons.end());
+  for (Patch p : dim.patches) {
+    p.polygon += polygons;
+    rooms.patches.push_back(p);
+  }
+  SolveOptions o = optionsFor(Projection::Hemicube, 32);
+  o.until = 1.0;
+  o.untilUnshot = 0.01;
+  // Below the dim room's ceiling, every patch sees it.
+  auto expectDimRoomLit = [&](const std::vector<Rgb>& b, const char* solve) {
+    for (size_t j = litPatches; j < rooms.patches.size(); ++j)
+      if (rooms.patches[j].centroid.z < 2.5 - 1e-9) EXPECT_GT(b[j].r, 0.0) << solve << ", dim room patch " << j;
+  };
+  ProgressiveSolver whole(rooms.scene, rooms.patches, o);
+  ASSERT_TRUE(solveChecked(whole));
+  EXPECT_EQ(whole.emittersToShoot(), 0);
+  expectDimRoomLit(whole.radiosity(), "whole");
+
+  CellPartition partition;
+  partition.cells = {{"lit", {0, 0, 0}, {4, 3, 2.5}}, {"dim", {4.2, 0, 0}, {8.2, 3, 2.5}}};
+  for (size_t j = 0; j < rooms.patches.size(); ++j) partition.cellOfPatch.push_back(j < litPatches ? 0 : 1);
+  CellSolver cells(rooms.scene, rooms.patches, partition, o, {kDefaultCellM, 8});
+  for (int round = 0; !cells.done() && round < 1000; ++round) cells.round();
+  ASSERT_TRUE(cells.done());
+  expectDimRoomLit(cells.radiosity(), "cells");
 }
 
 TEST(HardCases, CoplanarOverlappingPatchesGiveAnOrderIndependentAnswer) {
