@@ -40,6 +40,7 @@ void EnvironmentProjection::patchesChanged() {
   coveredPixels_.assign(n, 0);
   shownPixels_.assign(n, 0);
   seenFromFront_.assign(n, 0);
+  shotRank_.assign(n, 0);
   facesReached_.assign(n, 0);
   for (Band& band : bands_) band.setups.clear();  // they point into chunkSetups_
   chunkSetups_.assign((n + kSetupChunkPatches - 1) / kSetupChunkPatches,
@@ -75,13 +76,14 @@ void EnvironmentProjection::setUpPatches(const Patch& from, int skip) {
       if (!local) continue;
       // A parallel beam meets a front that faces against it, wherever the patch lies.
       seenFromFront_[j] = parallel ? local->normal.z < 0.0 : local->seenFromFront();
+      shotRank_[j] = shotTieRank(rank_[j], seenFromFront_[j], n);
       for (size_t f = 0; f < out.size(); ++f) {
         // setUpProjection's two steps apart: most faces refuse the patch in the first, and a set-up
         // (a few hundred bytes, cleared when made, so made in place) is made only for the rest.
         const ProjectionFace& face = surface_->faces[f];
         if (!projectOntoFace(*local, face, nearDepth_, screen)) continue;
         PolygonSetup& setup = out[f].emplace_back();
-        if (setupPolygon(screen, face.width, face.height, j, rank_[j], setup)) {
+        if (setupPolygon(screen, face.width, face.height, j, shotRank_[j], setup)) {
           projectedArea_[j] += setup.areaPixels;
           projectedWidth_[j] = std::max(projectedWidth_[j], setup.widthPixels);
           facesReached_[j] |= 1u << f;
@@ -105,7 +107,7 @@ void EnvironmentProjection::rasteriseBand(Band& band, int worker) {
   buffer.clearRows(band.rowBegin, band.rowEnd);
   band.covered.clear();
   for (const PolygonSetup* setup : band.setups)
-    band.covered.push_back(rasterise(*setup, buffer, band.rowBegin, band.rowEnd, rank_));
+    band.covered.push_back(rasterise(*setup, buffer, band.rowBegin, band.rowEnd, shotRank_));
 
   // Form-factor phase: the delta form factor of every pixel goes to the patch seen there.
   std::vector<int>& slot = slotOfPatch_[worker];

@@ -80,6 +80,7 @@ class EnvironmentProjection {
   double nearDepth_;
   ThreadPool& pool_;
   std::vector<int> rank_;
+  std::vector<int> shotRank_;  // per patch, this shot's (shotTieRank)
   std::vector<ItemBuffer> buffers_;
   std::vector<Band> bands_;
   std::vector<std::vector<std::vector<PolygonSetup>>> chunkSetups_;  // [chunk][face], patch order

@@ -75,6 +75,14 @@ inline bool closer(double inverseDepthA, int rankA, double inverseDepthB, int ra
 // Depth-tie ranks: each patch's position when sorted by geometry (centroid, area, material), so
 // coplanar overlaps resolve the same way whatever order the scene lists its polygons in.
 std::vector<int> depthTieRanks(const std::vector<Patch>& patches);
+// A patch's depth-tie rank in one shot: its depthTieRanks rank, behind every patch seen from the
+// front when the shooter sees its back. Two coincident patches facing opposite ways (a wall of no
+// thickness between two rooms, each room's box with its own side of it) tie at every pixel; the
+// shooter sees the one facing it, where the geometric rank alone gave both rooms the same one and
+// the other stayed black.
+inline int shotTieRank(int rank, bool seenFromFront, int patchCount) {
+  return seenFromFront ? rank : rank + patchCount;
+}
 
 // The pixels [first, second) of `row` whose centres the polygon covers (empty: first == second),
 // by the rule covers() applies pixel by pixel.

@@ -71,7 +71,8 @@ void MeshScanConversion::projectOne(const MeshShot& shot, int j, int q, PatchPro
   const std::optional<LocalPolygon> local = inShooterView(shooters_[shooter], patches_[j]);
   if (!local) return;
   p.seenFromFront = local->seenFromFront();
-  p.projected = setUpProjection(*local, face_, nearDepth_, j, rank_[j], p.setup);
+  p.projected = setUpProjection(*local, face_, nearDepth_, j,
+                                shotTieRank(rank_[j], p.seenFromFront, static_cast<int>(patches_.size())), p.setup);
 }
 
 void MeshScanConversion::listSetups(MeshShot& shot) const {
@@ -219,7 +220,8 @@ int MeshScanConversion::zBuffer(const MeshShot& shot, int pe, const Description&
       if (!covers(s, column, row)) continue;  // inside the bounding box, outside the patch
       const double inverseDepth = inverseDepthAt(s, column, row);
       ZEntry& z = zBuffer_.at(pe, base + static_cast<int>(a) * columnsPerPe_ + static_cast<int>(b));
-      if (z.item == ItemBuffer::kNone || closer(inverseDepth, s.rank, z.inverseDepth, rank_[z.item]))
+      if (z.item == ItemBuffer::kNone ||
+          closer(inverseDepth, s.rank, z.inverseDepth, shot.setupOf({z.item, d.plane, 0}).rank))
         z = {s.id, inverseDepth};
     }
   }
