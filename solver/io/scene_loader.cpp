@@ -4,10 +4,13 @@
 #include <cctype>
 #include <filesystem>
 
+#include <fmt/format.h>
+
 #include "solver/io/builtin_scenes.h"
 #include "solver/io/file_signature.h"
 #include "solver/io/gltf_import.h"
 #include "solver/io/mgf_import.h"
+#include "solver/scene/doubled_polygons.h"
 #include "solver/scene/scene_error.h"
 #include "solver/scene/units.h"
 
@@ -63,6 +66,11 @@ Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warning
                 std::vector<std::string>* notes, UpChoice up, std::vector<std::string>* readNotes,
                 double metresPerUnit) {
   Scene scene = isBuiltinScene(pathOrName) ? builtinScene(pathOrName) : importFile(pathOrName, warnings);
+  if (const DoubledPolygons doubled = dropDoubledPolygons(scene); doubled.dropped > 0 && warnings)
+    warnings->push_back(fmt::format("{}: {} polygon(s) repeat an earlier one exactly (corners, side and material), "
+                                    "the first {}: dropped, as copies would split the light falling there (one lit, "
+                                    "one black)",
+                                    pathOrName, doubled.dropped, doubled.first));
   scene.file = sceneFile(pathOrName);
   if (metresPerUnit > 0.0)
     scaleScene(scene, metresPerUnit);

@@ -121,6 +121,30 @@ TEST(MgfValuesCli, AReflectanceAbove099IsLoweredWithAWarning) {
                      1);
 }
 
+// A floor listed twice split the light between the copies, one lit and one black, and the bake,
+// whose copies share vertices, showed it at about 60 % of its brightness. The copy is dropped, with
+// a warning (--strict refuses it), and the solve is the single floor's.
+TEST(MgfValuesCli, AFaceListedTwiceIsDroppedWithAWarning) {
+  const std::string single = box("single.mgf", " c\n rd 0.5\n");
+  const std::string doubled = tempPath("doubled.mgf");
+  {
+    std::ifstream in(single);
+    std::ofstream(doubled) << in.rdbuf() << "m white\nf p0 p1 p2 p3\n";
+  }
+  expectInfoRepaired(doubled,
+                     ": 1 polygon(s) repeat an earlier one exactly (corners, side and material), the first polygon 7 "
+                     "(line 39: f): dropped, as copies would split the light falling there (one lit, one black)",
+                     1);
+  std::string ledgers[2];
+  for (int k = 0; k < 2; ++k) {
+    const CommandRun run = radmesh("solve " + (k ? doubled : single) + " --resolution 32 --threads 1 --quiet");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    ledgers[k] = run.output.substr(run.output.find("ledger:"));
+    ledgers[k] = ledgers[k].substr(0, ledgers[k].find('\n'));
+  }
+  EXPECT_EQ(ledgers[1], ledgers[0]);
+}
+
 // MGF's white to three digits and D65 at rd 0.99 had warned "outside the Rec. 709 gamut", and
 // --strict refused the reference scenes' own white.
 TEST(MgfValuesCli, NearNeutralWhiteAtTheHighestReflectanceOpensUnderStrict) {
