@@ -70,9 +70,9 @@ void printSummary(const ProgressiveSolver& solver, double seconds, size_t resume
     fmt::print("{}: {:.3f} {} seconds ({:.3f} s per iteration) beside {:.3f} host seconds\n",
                toString(solver.options().backend), machineSeconds, machine, machineSeconds / std::max<size_t>(n, 1),
                seconds);
-  fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
+  fmt::print("ledger: emitted {:.6g} W = {} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
              "  (imbalance {:.1e})\n",
-             l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
+             l.emitted, absorbedTerm(l), l.unshot, l.notCaptured, l.escaped, l.imbalance());
   if (const std::string outside = lightOutsideSentence(l); !outside.empty()) fmt::print("        {}\n", outside);
   if (solver.options().formFactorCacheBytes == 0) return;
   size_t shots = 0, hits = 0;

@@ -1134,6 +1134,57 @@ TEST(Cli, LightLostWhereNoSolveLosesItIsWarnedOf) {
   EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
 }
 
+// A closed black 2 m box at x0, lit by a 0.4 m panel under its ceiling; `insideOut` turns every
+// wall's front outward, so that all the panel's light falls on backs.
+std::string blackBox(double x0, bool insideOut) {
+  std::string mgf;
+  auto v = [&](const std::string& name, double x, double y, double z) {
+    mgf += fmt::format("v {} =\n p {} {} {}\n", name, x0 + x, y, z);
+  };
+  const std::string b = fmt::format("b{}", x0);
+  for (int i = 0; i < 8; ++i) v(b + std::to_string(i), (i == 1 || i == 2 || i == 5 || i == 6) ? 2 : 0, (i % 4) >= 2 ? 2 : 0, i >= 4 ? 2 : 0);
+  const char* faces[] = {"0 1 2 3", "4 7 6 5", "0 4 5 1", "1 5 6 2", "2 6 7 3", "3 7 4 0"};  // fronts inward
+  mgf += "m black\n";
+  for (const char* face : faces) {
+    std::istringstream in(face);
+    std::vector<std::string> corners;
+    for (std::string c; in >> c;) corners.push_back(b + c);
+    if (insideOut) std::reverse(corners.begin(), corners.end());
+    mgf += "f";
+    for (const std::string& c : corners) mgf += " " + c;
+    mgf += "\n";
+  }
+  v(b + "l0", 0.8, 0.8, 1.99), v(b + "l1", 1.2, 0.8, 1.99), v(b + "l2", 1.2, 1.2, 1.99), v(b + "l3", 0.8, 1.2, 1.99);
+  return mgf + fmt::format("m light\nf {0}l0 {0}l3 {0}l2 {0}l1\n", b);
+}
+
+// Light on the backs of one-sided surfaces is part of absorbed, and said as such on the ledger
+// line and in the stats. Two black boxes with equal lights, one inside out: exactly half of the
+// power falls on backs (black walls reflect nothing back onto the lights' own backs), and that is
+// warned of; the box the right way out alone puts none there.
+TEST(Cli, LightOnBackFacesIsSaidInTheLedgerAndWarnedOf) {
+  const std::string materials = "m black =\n c\n rd 0\nm light =\n c\n ed 100\n";
+  const std::string both = tempPath("both.mgf"), one = tempPath("one.mgf"), stats = tempPath("stats.json");
+  std::ofstream(both) << materials << blackBox(0, false) << blackBox(4, true);
+  std::ofstream(one) << materials << blackBox(0, false);
+  CommandRun run = radmesh("solve " + both + " --cell 0.5 --resolution 32 --quiet --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto l = readJson(stats)["ledger"];
+  const double emitted = l["emitted"].get<double>(), back = l["absorbed_by_back_faces"].get<double>();
+  EXPECT_NEAR(back / emitted, 0.5, 1e-6) << l.dump();
+  EXPECT_NEAR(l["absorbed"].get<double>(), emitted, 1e-6 * emitted) << l.dump();
+  EXPECT_NE(run.output.find(fmt::format("= absorbed {:.6g} ({:.6g} on back faces) + unshot", l["absorbed"].get<double>(), back)),
+            std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("warning: 50.0% of the emitted power was absorbed on the backs of one-sided surfaces"),
+            std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("give it thickness, or in glTF make its material doubleSided"), std::string::npos) << run.output;
+  run = radmesh("solve " + one + " --cell 0.5 --resolution 32 --quiet --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(readJson(stats)["ledger"]["absorbed_by_back_faces"].get<double>(), 0.0);
+  EXPECT_NE(run.output.find(" (0 on back faces) + unshot"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
+}
+
 TEST(Cli, SolveByDefaultBakesToAtMostOnePercentUnshot) {
   const std::string stats = tempPath("stats.json");
   const CommandRun run = radmesh("solve cornell --cell 0.1 --quiet --stats " + stats);
