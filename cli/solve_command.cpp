@@ -88,16 +88,9 @@ void writeBake(const std::string& path, const std::vector<Patch>& patches, const
   fmt::print("wrote {}\n", path);
 }
 
-// After Ctrl-C, the checkpoint written above (or the work lost) is said, and nothing else is
-// written: a bake or stats of a solve cut short would pass for finished ones.
+// After Ctrl-C: the checkpoint written above, or the work lost, is said (stopAfterInterrupt).
 [[noreturn]] void stopAfterInterrupt(const SolveArgs& args, const std::string& where) {
-  if (args.checkpointPath.empty())
-    fmt::print(stderr, "radmesh: interrupted after {}: nothing saved (give --checkpoint FILE to keep a solve's work)\n",
-               where);
-  else
-    fmt::print(stderr, "radmesh: interrupted after {}: the checkpoint {} holds the work; go on with --resume {}\n", where,
-               args.checkpointPath, args.checkpointPath);
-  throw Interrupted();
+  cli::stopAfterInterrupt(where, args.checkpointPath, "give --checkpoint FILE to keep a solve's work");
 }
 
 // --cells auto: the rooms solved cell by cell. With `ranks`, this process's part of a distributed
@@ -129,7 +122,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
   }
   if (interrupted()) stopAfterInterrupt(args, fmt::format("round {}", solver->rounds()));
   printCellsSummary(*solver, seconds);
-  if (writes) warnIfFarFromConverged(solver->ledger(), solver->options(), solver->iterations()), warnIfLightLost(solver->ledger(), isClosed(scene));
+  if (writes) warnAfterSolve(solver->ledger(), solver->options(), solver->iterations(), isClosed(scene));
   if (!args.statsPath.empty()) {
     nlohmann::json stats = cellsStats(*solver, scene.source, seconds, resumedAt);
     if (ranks) stats["distributed"] = distributedStats(*solver, ranks->traffic());
@@ -206,7 +199,9 @@ void run(const SolveArgs& args, Processes* processes) {
   }
   if (interrupted()) stopAfterInterrupt(args, fmt::format("iteration {}", solver.history().size()));
   printSummary(solver, seconds, resumedAt);
-  if (writes) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size())), warnIfLightLost(solver.ledger(), solver.effectsPlan().closed);
+  if (writes)
+    warnAfterSolve(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size()),
+                   solver.effectsPlan().closed);
 
   if (!args.statsPath.empty()) {
     nlohmann::json stats = solveStats(solver, scene.source, seconds, resumedAt);

@@ -763,6 +763,34 @@ TEST(Cli, RenderTakesBackTheExposureItChoseForAVeryDimScene) {
   EXPECT_NE(given.output.find(fmt::format("exposure {:+.2f} EV (given", ev)), std::string::npos) << given.output;
 }
 
+// render ends its solve as solve does: Ctrl-C stops it at the end of the iteration (or round)
+// under way, says that nothing was saved and how to keep the work, draws nothing and exits 130;
+// --quiet keeps the warning of a solve stopped far from converged (not with --iterations, asked for).
+TEST(Cli, RenderStopsOnCtrlCAndWarnsAsSolveDoes) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  const std::string out = tempPath("interrupted.png");
+  const std::string radmeshPath = (test::binaryDir() / "cli" / "radmesh").string();
+  for (const auto& [cells, where] : {std::pair{"off", "iteration "}, std::pair{"auto", "round "}}) {
+    const CommandRun run = runCommand("(" + radmeshPath + " render two-rooms --cell 0.1 --cells " + cells +
+                                      " --quiet --out " + out + " & pid=$!; sleep 2; kill -INT $pid; wait $pid; echo exit $?)");
+    EXPECT_NE(run.output.find("exit 130"), std::string::npos) << cells << ": " << run.output;
+    EXPECT_NE(run.output.find(std::string("radmesh: interrupted after ") + where), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(": nothing saved (no picture is drawn of a solve cut short; to keep a long solve's "
+                              "work: radmesh solve SCENE --checkpoint FILE --out BAKE.glb, then render the bake)"),
+              std::string::npos) << cells << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << cells;
+  }
+  const std::string farFrom = "warning: the solve stopped with 80.0% of the emitted power unshot";
+  CommandRun run = radmesh("render office --quiet --max-iterations 10 --size 64x48 --out " + out);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find(farFrom + ", so its reflected light is far from converged (docs/accuracy.md); "
+                                      "--max-iterations 10 stopped it"), std::string::npos) << run.output;
+  run = radmesh("render office --quiet --iterations 10 --size 64x48 --out " + out);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
+}
+
 TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
   const CommandRun probe = radmesh("render --help");
   if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
