@@ -75,10 +75,13 @@ void printSummary(const ProgressiveSolver& solver, double seconds, size_t resume
              l.emitted, absorbedTerm(l), l.unshot, l.notCaptured, l.escaped, l.imbalance());
   if (const std::string outside = lightOutsideSentence(l); !outside.empty()) fmt::print("        {}\n", outside);
   if (solver.options().formFactorCacheBytes == 0) return;
+  // This run's shots alone: a checkpoint's were served (or not) by the cache of the run that shot them.
   size_t shots = 0, hits = 0;
-  for (const IterationRecord& r : solver.history()) shots += r.shooters.size(), hits += static_cast<size_t>(r.cacheHits);
-  fmt::print("form-factor cache: {} of {} shots served without projecting (up to {:.0f} MiB; --cache-mb 0: none)\n", hits,
-             shots, solver.options().formFactorCacheBytes / 1048576.0);
+  for (size_t i = resumedAt; i < n; ++i)
+    shots += solver.history()[i].shooters.size(), hits += static_cast<size_t>(solver.history()[i].cacheHits);
+  if (shots == 0) return;
+  fmt::print("form-factor cache: {} of {}{} shots served without projecting (up to {:.0f} MiB; --cache-mb 0: none)\n",
+             hits, resumedAt == 0 ? "" : "this run's ", shots, solver.options().formFactorCacheBytes / 1048576.0);
 }
 
 void writeBake(const std::string& path, const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity,
