@@ -1064,6 +1064,27 @@ TEST(Cli, PlotPaperChecksTheStatsAgainstTheirNames) {
   EXPECT_NE(run.output.find("warning: cut-and-stack at 128x128 stopped at C = 0.500"), std::string::npos) << run.output;
 }
 
+// `plot accuracy --out-dir DIR` draws a doc's figures into DIR (made if missing), leaving the
+// committed ones beside the CSV as they were; a missing table leaves no folder behind.
+TEST(Cli, PlotAccuracyDrawsIntoOutDirNotBesideTheCsv) {
+  SKIP_WITHOUT_GNUPLOT();
+  const std::filesystem::path docs = test::sourceDir() / "docs" / "data" / "accuracy";
+  const auto committed = std::filesystem::last_write_time(docs / "cornell-error-vs-time.png");
+  const std::string dir = tempPath("out/figures");
+  CommandRun run = radmesh("plot accuracy " + (docs / "cornell.csv").string() + " --out-dir " + dir);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  for (const char* png : {"cornell-error-vs-time.png", "cornell-image-error-vs-time.png", "cornell-error-vs-convergence.png"}) {
+    EXPECT_NE(run.output.find("drew " + dir + "/" + png + "\n"), std::string::npos) << run.output;
+    EXPECT_GT(std::filesystem::file_size(dir + "/" + png), 1000u) << png;
+  }
+  EXPECT_EQ(run.output.find("drew " + docs.string()), std::string::npos) << run.output;
+  EXPECT_EQ(std::filesystem::last_write_time(docs / "cornell-error-vs-time.png"), committed);
+  const std::string never = tempPath("never");
+  run = radmesh("plot accuracy " + tempPath("nothing") + " --out-dir " + never);
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(never));
+}
+
 // Drawing is all `plot` does: without gnuplot it fails, and a bench says it drew no plots; a PNG
 // stem in a missing folder gets the folder (gnuplot used to write the PNG to standard output).
 TEST(Cli, PlotFailsWithoutGnuplotAndMakesTheFolderOfItsPngs) {
