@@ -360,6 +360,30 @@ TEST(Cli, UsageErrorsNameTheWordAndWhatToGive) {
   }
 }
 
+// An option left without its value before the next option is named with what it takes: CLI11
+// took the next option as the value, and then refused what followed as one argument too many.
+TEST(Cli, AnOptionWithoutItsValueBeforeAnotherIsNamedWithItsValues) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"solve two-rooms --cells --threads 1",
+       "radmesh: error: --cells is given no value (--threads, after it, is an option): give it auto or off, or "
+       "leave it out\n"},
+      {"solve two-rooms --cells --quiet", "--cells is given no value (--quiet, after it, is an option): give it auto or off"},
+      {"render cornell --projection --quiet --out x.png", "--projection is given no value (--quiet, after it, is an "
+                                                          "option): give it plane, hemicube or analytic"},
+      {"solve cornell --resolution --threads 1", "--resolution is given no value (--threads, after it, is an option): "
+                                                 "give it a whole number"},
+      {"bench solve cornell --backend --cells auto", "--backend is given no value (--cells, after it, is an option): "
+                                                     "give it native or mesh"},
+      {"solve two-rooms --threads 1 --cells", "--cells is given no value: give it auto or off, or leave it out"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
+  }
+  EXPECT_NE(radmesh("solve --help").output.find("--cells auto|off=off"), std::string::npos);
+}
+
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve furnace --resolution 8");
   EXPECT_EQ(run.exitCode, 2);
