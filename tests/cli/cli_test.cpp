@@ -1474,6 +1474,32 @@ TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
   }
 }
 
+// An output path whose file name is its extension alone ("--out .glb") would write a hidden file
+// with no name: every option that writes a file refuses it, naming the option and a path to give,
+// before any work and without writing anything.
+TEST(Cli, AnOutputNamedOnlyByItsExtensionIsRefused) {
+  const std::string dir = std::filesystem::path(tempPath("x")).parent_path().string();
+  const std::string binary = (test::binaryDir() / "cli" / "radmesh").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"solve office --out .glb", "--out '.glb': the file name is only the extension, which would write a hidden file "
+                                  "named .glb: give a name before it (e.g. NAME.glb)"},
+      {"solve office --stats out/.JSON", "--stats 'out/.JSON': the file name is only the extension, which would write "
+                                         "a hidden file named .JSON: give a name before it (e.g. out/NAME.json)"},
+      {"info office --plan .png", "--plan '.png': the file name is only the extension"},
+      {"bench solve furnace --resolutions 16 --json .json", "--json '.json': the file name is only the extension"},
+      {"bench accuracy furnace --quick --json .json", "--json '.json': the file name is only the extension"},
+      {"render office --out .png", "--out '.png': the file name is only the extension"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    if (arguments.starts_with("render") && radmesh("render --help").output.find("not built") != std::string::npos) continue;
+    const CommandRun run = runCommand("cd " + dir + " && " + binary + " " + arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find("radmesh: error: " + message), std::string::npos) << arguments << ": " << run.output;
+    EXPECT_EQ(run.output.find("solving"), std::string::npos) << arguments << ": " << run.output;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir)) << "a file was written in " << dir;
+}
+
 // Two outputs on one file, or an output on the scene, would lose one of them without a word.
 TEST(Cli, OutputsThatWouldReplaceTheSceneOrEachOtherAreRefused) {
   const std::string scene = tempPath("room.gltf");
