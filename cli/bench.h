@@ -80,8 +80,9 @@ struct AccuracyArgs {
 AccuracyArgs quickAccuracyArgs(AccuracyArgs args);
 // With an outDir, writes NAME.csv (a row per point) and NAME-traces.csv (error against iteration), then draws them.
 nlohmann::json benchAccuracy(const AccuracyArgs& args);
-// The plots of docs/accuracy.md, STEM-*.png, drawn from STEM.csv and STEM-traces.csv.
-std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std::string& sceneName);  // the PNGs drawn
+// The plots of docs/accuracy.md, PNGSTEM-*.png, drawn from STEM.csv and STEM-traces.csv; returns the PNGs drawn.
+std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std::string& sceneName,
+                                             const std::string& pngStem);
 struct BenchCellsArgs {
   std::vector<std::string> scenes{"two-rooms", "building:3x3"};
   double cellM = 0.381;

@@ -351,7 +351,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& args) {
     const std::string stem = (std::filesystem::path(args.outDir) / args.name).string();
     writeCsv(stem + ".csv", pointsTable(points, pictureCell));
     writeCsv(stem + "-traces.csv", tracesTable(traces));
-    const std::vector<std::string> drawn = drawAccuracyFigures(stem, args.name);  // none without gnuplot
+    const std::vector<std::string> drawn = drawAccuracyFigures(stem, args.name, stem);  // none without gnuplot
     fmt::print("wrote {0}.csv, {0}-traces.csv{1}\n", stem, drawn.empty() ? "" : fmt::format(" and the plots {}-*.png", stem));
   }
   return result;

@@ -10,10 +10,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <numeric>
 
 #include "cli/bench.h"
 #include "cli/plot.h"
+#include "solver/io/output_path.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
@@ -273,20 +275,23 @@ std::string settingLabel(const std::string& projection, double ratio) {
   return projection == "plane" ? fmt::format("plane r{}", ratio) : projection;
 }
 
-std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std::string& sceneName) {
+std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std::string& sceneName,
+                                             const std::string& pngStem) {
   std::vector<std::string> drawn;
   const std::string writer = "bench accuracy --out-dir DIR --name NAME";
   const CsvTable points = readCsv(stem + ".csv", writer), traces = readCsv(stem + "-traces.csv", writer);
   // A header alone drew one plot and skipped the rest (the traces may be empty: a sweep of elements alone).
   if (points.rows.empty())
     throw OptionError(points.path + ": a header and no rows: nothing to draw (" + writer + " writes rows)");
+  // The inputs first: one missing or empty leaves no folder behind.
+  makeOutputFolder("--out-dir", std::filesystem::path(pngStem).parent_path().string());
   drawUnlessEmpty(errorVersusTime("Error against time to C=0.99, same mesh: " + sceneName,
                                   "relative RMS error of B - E", points, "error_at_99"),
-                  stem + "-error-vs-time.png", drawn);
+                  pngStem + "-error-vs-time.png", drawn);
   // Not without the viewer, which the pictures need.
   drawUnlessEmpty(errorVersusTime("Picture error against time to C=0.99, across meshes: " + sceneName,
                                   "RMSE of the pictures, 8-bit levels", points, "image_rmse_at_99"),
-                  stem + "-image-error-vs-time.png", drawn);
+                  pngStem + "-image-error-vs-time.png", drawn);
   // Each setting's true error and unshot power; 1 - C of the first, which is what C promises.
   Plot conv{.title = "What convergence C says against the true error: " + sceneName, .xLabel = "iteration",
             .yLabel = "fraction", .logY = true};
@@ -308,8 +313,8 @@ std::vector<std::string> drawAccuracyFigures(const std::string& stem, const std:
       remaining.points.emplace_back(iteration, std::max(1.0 - traces.number(row, "convergence"), 1e-9));
   }
   if (!remaining.points.empty()) conv.series.push_back(remaining);
-  drawUnlessEmpty(conv, stem + "-error-vs-convergence.png", drawn);  // traces follow off rows only
-  if (hasSubdivide(points)) drawUnlessEmpty(subdivisionPlot(sceneName, points), stem + "-subdivide.png", drawn);
+  drawUnlessEmpty(conv, pngStem + "-error-vs-convergence.png", drawn);  // traces follow off rows only
+  if (hasSubdivide(points)) drawUnlessEmpty(subdivisionPlot(sceneName, points), pngStem + "-subdivide.png", drawn);
   return drawn;
 }
 

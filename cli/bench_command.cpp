@@ -53,12 +53,15 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--projections", args->projections, "Projections to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N to time")->delimiter(',')->capture_default_str();
   cmd->add_option("--shooters", args->shooters, "Shooters k per iteration to time")->delimiter(',')->capture_default_str();
-  cmd->add_option("--backend", args->backend, "native or mesh (emulated MP-1)")->capture_default_str();
+  cmd->add_option("--backend", args->backend, "native or mesh (emulated MP-1)")
+      ->type_name("native|mesh")
+      ->capture_default_str();
   addMachineFlags(cmd, args->machine);
   cmd->add_option("--until", args->until, "Convergence to time to")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Or the unshot fraction to time to (0: none)")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per run")->capture_default_str();
   cmd->add_option("--cells", args->cellsMode, "auto: time the cells solve (with --until 1 --until-unshot F); off")
+      ->type_name("auto|off")
       ->capture_default_str();
   cmd->add_option("--exchange-shots", args->exchangeShots, "With --cells auto: shots per cell per round, on average")
       ->check(kPositive)
@@ -179,7 +182,9 @@ void addBenchCells(CLI::App* bench) {
   CLI::App* cmd = bench->add_subcommand("cells", "The cells solve beside the whole building's: time and error per room");
   cmd->add_option("scenes", args->scenes, "Scenes (names or files)")->capture_default_str();
   cmd->add_option("--cell", args->cellM, "Grid cell size, metres")->capture_default_str();
-  cmd->add_option("--projection", args->projection, "plane, hemicube or analytic")->capture_default_str();
+  cmd->add_option("--projection", args->projection, "plane, hemicube or analytic")
+      ->type_name("plane|hemicube|analytic")
+      ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "N of the projection")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Both solves stop at this unshot fraction")->capture_default_str();
   cmd->add_option("--exchange-shots", args->exchangeShots, "Shots a cell a round between portal exchanges, on average")
@@ -190,6 +195,7 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_option("--focus-unshot", args->focusUnshot, "The focus cell's unshot fraction to time to")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per solve")->capture_default_str();
   cmd->add_option("--subdivide", args->subdivide, "Both solves' receivers: off (patches), uniform or adaptive elements")
+      ->type_name("off|uniform|adaptive")
       ->capture_default_str();
   cmd->add_option("--min-element", args->minElementM, "With --subdivide: the longest element edge, metres")
       ->capture_default_str();

@@ -62,9 +62,9 @@ void printCellsSummary(const CellSolver& solver, double seconds) {
              solver.patches().size(), elementsText, counted(solver.cellCount(), "cell"),
              counted(solver.portalCount(), "portal"), solver.iterations(), solver.rounds(), past,
              100.0 * l.unshotFraction(), seconds);
-  fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} (with what waits on portals) + not captured "
+  fmt::print("ledger: emitted {:.6g} W = {} + unshot {:.6g} (with what waits on portals) + not captured "
              "{:.6g} + escaped {:.6g}  (imbalance {:.1e}); {:.6g} W crossed portals\n",
-             l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance(), portalTransfers);
+             l.emitted, absorbedTerm(l), l.unshot, l.notCaptured, l.escaped, l.imbalance(), portalTransfers);
   if (const std::string outside = lightOutsideSentence(l); !outside.empty()) fmt::print("        {}\n", outside);
 }
 

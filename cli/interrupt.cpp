@@ -1,5 +1,7 @@
 #include "cli/interrupt.h"
 
+#include <fmt/core.h>
+
 #include <atomic>
 #include <csignal>
 
@@ -23,5 +25,14 @@ void stopSolvesOnInterrupt() {
 }
 
 bool interrupted() { return stopAsked.load(); }
+
+void stopAfterInterrupt(const std::string& where, const std::string& checkpointPath, const std::string& keepHint) {
+  if (checkpointPath.empty())
+    fmt::print(stderr, "radmesh: interrupted after {}: nothing saved ({})\n", where, keepHint);
+  else
+    fmt::print(stderr, "radmesh: interrupted after {}: the checkpoint {} holds the work; go on with --resume {}\n",
+               where, checkpointPath, checkpointPath);
+  throw Interrupted();
+}
 
 }  // namespace radmesh::cli

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli/usage_failure.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
@@ -93,6 +94,9 @@ inline std::string optionWithEmptyValue(int argc, char** argv) {
 // numbers with strtoll's base 0, so "--resolution 064" gave 52 (octal) and "0x10" 16; a leading
 // zero is dropped here, and another base is refused (OptionError) naming the option. The options
 // are those of `app` and of the subcommands the arguments name; values may be comma lists.
+// An option that takes a value followed by another option ("--cells --threads 1") is refused here
+// naming it and what it takes: CLI11 always eats a value, so it took "--threads" as the value and
+// then refused the "1" left over as one argument too many.
 // Returned in the reversed order app.parse(std::vector<std::string>&) takes.
 inline std::vector<std::string> decimalArguments(const CLI::App& app, int argc, char** argv) {
   std::set<std::string> whole;
@@ -131,6 +135,13 @@ inline std::vector<std::string> decimalArguments(const CLI::App& app, int argc, 
     }
     const size_t equals = arg.find('=');
     const std::string name = arg.substr(0, equals);
+    if (equals == std::string::npos && i + 1 < args.size() && args[i + 1].rfind("--", 0) == 0 && args[i + 1].size() > 2) {
+      const CLI::Option* option = nullptr;
+      for (const CLI::App* a = current; a && !option; a = a->get_parent()) option = a->get_option_no_throw(name);
+      if (option && option->get_expected_min() > 0 && option->get_type_size_min() > 0)
+        throw OptionError(name + " is given no value (" + args[i + 1] + ", after it, is an option): give it " +
+                          usage_detail::kindOfValue(option).give + ", or leave it out");
+    }
     if (!whole.count(name)) continue;
     if (equals != std::string::npos)
       arg = name + "=" + decimal(name, arg.substr(equals + 1));

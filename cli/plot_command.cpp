@@ -222,13 +222,17 @@ void addPlotCommand(CLI::App& app) {
       plot->add_subcommand("accuracy", "Draw the figures of docs/accuracy.md from STEM.csv and STEM-traces.csv");
   accuracy->add_option("stem", *stem, "DIR/NAME of `radmesh bench accuracy --out-dir DIR --name NAME` (or DIR/NAME.csv)")
       ->required();
-  accuracy->callback([stem] {
+  auto outDir = std::make_shared<std::string>();
+  accuracy->add_option("--out-dir", *outDir,
+                       "Folder of the PNGs (default: beside the CSV, where a doc's committed figures are replaced)");
+  accuracy->callback([stem, outDir] {
     requireGnuplot();
     // The table's own path is what a user has at hand: its stem is meant.
     const std::filesystem::path given(*stem);
     const std::string s = given.extension() == ".csv" ? (given.parent_path() / given.stem()).string() : *stem;
-    for (const std::string& png : drawAccuracyFigures(s, std::filesystem::path(s).filename().string()))
-      fmt::print("drew {}\n", png);
+    const std::string name = std::filesystem::path(s).filename().string();
+    const std::string pngStem = outDir->empty() ? s : (std::filesystem::path(*outDir) / name).string();
+    for (const std::string& png : drawAccuracyFigures(s, name, pngStem)) fmt::print("drew {}\n", png);
   });
   auto model = std::make_shared<std::string>();
   auto scaling = std::make_shared<std::vector<std::string>>();

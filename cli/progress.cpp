@@ -123,25 +123,23 @@ double solveWithProgress(ProgressiveSolver& solver, bool quiet, const std::funct
   return elapsed();
 }
 
-void warnIfLightLost(const Ledger& ledger, bool sceneClosed) {
+void warnAfterSolve(const Ledger& ledger, const SolveOptions& options, long long iterations, bool sceneClosed,
+                    bool exactIterations) {
+  if (const double unshot = ledger.unshotFraction(); unshot > kFarFromConvergedUnshot && !exactIterations) {
+    // Said as what stopped it: the cap the user set is the one thing to change then.
+    const std::string fix =
+        iterations >= options.maxIterations
+            ? fmt::format("--max-iterations {} stopped it: raise it, or leave it out to stop on what is left "
+                          "(--until-unshot 0.01, the default)",
+                          options.maxIterations)
+            : "stop on what is left instead: --until 1 --until-unshot 0.01 (the default)";
+    fmt::print(stderr,
+               "radmesh: warning: the solve stopped with {:.1f}% of {} unshot, so its reflected light is far from "
+               "converged (docs/accuracy.md); {}\n",
+               100.0 * unshot, ledger.unshotBasis(), fix);
+  }
   for (const std::string& warning : lostLightWarnings(ledger, sceneClosed))
     fmt::print(stderr, "radmesh: warning: {}\n", warning);
-}
-
-void warnIfFarFromConverged(const Ledger& ledger, const SolveOptions& options, long long iterations) {
-  const double unshot = ledger.unshotFraction();
-  if (unshot <= kFarFromConvergedUnshot) return;
-  // Said as what stopped it: the cap the user set is the one thing to change then.
-  const std::string fix =
-      iterations >= options.maxIterations
-          ? fmt::format("--max-iterations {} stopped it: raise it, or leave it out to stop on what is left "
-                        "(--until-unshot 0.01, the default)",
-                        options.maxIterations)
-          : "stop on what is left instead: --until 1 --until-unshot 0.01 (the default)";
-  fmt::print(stderr,
-             "radmesh: warning: the solve stopped with {:.1f}% of {} unshot, so its reflected light is far from "
-             "converged (docs/accuracy.md); {}\n",
-             100.0 * unshot, ledger.unshotBasis(), fix);
 }
 
 }  // namespace radmesh::cli

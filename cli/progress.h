@@ -48,10 +48,12 @@ class Progress {
 double solveWithProgress(ProgressiveSolver& solver, bool quiet,
                          const std::function<void(double seconds)>& afterStep = {});
 
-// On stderr, when the solve stopped with more than kFarFromConvergedUnshot of the power unshot,
-// saying what to change: --max-iterations where `iterations` reached it, else the stop.
-void warnIfFarFromConverged(const Ledger& ledger, const SolveOptions& options, long long iterations);
-// On stderr, each of lostLightWarnings (`sceneClosed`: isClosed of the scene).
-void warnIfLightLost(const Ledger& ledger, bool sceneClosed);
+// On stderr, what a finished solve's ledger says is wrong with it: more than
+// kFarFromConvergedUnshot of the power left unshot, saying what to change (--max-iterations where
+// `iterations` reached it, else the stop; not said when `exactIterations`, render's --iterations,
+// asked for that count), and each of lostLightWarnings (`sceneClosed`: isClosed of the scene).
+// solve and render both end with it.
+void warnAfterSolve(const Ledger& ledger, const SolveOptions& options, long long iterations, bool sceneClosed,
+                    bool exactIterations = false);
 
 }  // namespace radmesh::cli

@@ -18,6 +18,7 @@
 #if RADMESH_HAS_VIEWER
 #include "cli/cell_solve.h"
 #include "cli/effects_text.h"
+#include "cli/interrupt.h"
 #include "solver/io/output_path.h"
 #include "cli/progress.h"
 #include "cli/solve_flags.h"
@@ -121,7 +122,13 @@ struct Solved {
   RenderView view;
 };
 
+// What an interrupted render says was lost: it keeps no checkpoint of its own.
+constexpr const char* kRenderKeepsNothing =
+    "no picture is drawn of a solve cut short; to keep a long solve's work: radmesh solve SCENE --checkpoint FILE "
+    "--out BAKE.glb, then render the bake";
+
 Solved solveScene(const RenderArgs& args) {
+  stopSolvesOnInterrupt();  // Ctrl-C stops the solve as solve's does, and says so (not a bake's drawing)
   SolveOptions options = args.flags.resolved();
   if (args.iterations > 0) {
     options.until = 1.0;  // C never passes 1 and the unshot rule is off: only the count stops the solve
@@ -141,19 +148,21 @@ Solved solveScene(const RenderArgs& args) {
   if (args.flags.cellsOn()) {
     std::unique_ptr<CellSolver> solver =
         makeCellSolver(scene, meshScene(scene, cell.cellM), options, {cell.cellM, args.flags.exchangeShots, args.flags.portalBins});
-    printCellsSummary(*solver, solveCellsWithProgress(*solver, args.quiet));
-    if (args.iterations == 0) warnIfFarFromConverged(solver->ledger(), solver->options(), solver->iterations());
-    warnIfLightLost(solver->ledger(), isClosed(scene));
+    const double seconds = solveCellsWithProgress(*solver, args.quiet);
+    if (interrupted()) stopAfterInterrupt(fmt::format("round {}", solver->rounds()), "", kRenderKeepsNothing);
+    printCellsSummary(*solver, seconds);
+    warnAfterSolve(solver->ledger(), solver->options(), solver->iterations(), isClosed(scene), args.iterations > 0);
     return solvedFrom(solver->elements().elements, solver->displayElementRadiosity());
   }
   ProgressiveSolver solver(scene, meshScene(scene, cell.cellM), options);
   printEffects(solver.effectsPlan());
   solveWithProgress(solver, args.quiet);
+  if (interrupted()) stopAfterInterrupt(fmt::format("iteration {}", solver.history().size()), "", kRenderKeepsNothing);
   fmt::print("solved {}: {} patches, {} iterations, C = {:.4f}, unshot {:.2f}%\n", scene.source,
              solver.patches().size(), solver.history().size(), solver.convergence(),
              100.0 * solver.ledger().unshotFraction());
-  if (args.iterations == 0) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size()));
-  warnIfLightLost(solver.ledger(), solver.effectsPlan().closed);
+  warnAfterSolve(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size()),
+                 solver.effectsPlan().closed, args.iterations > 0);
   return solvedFrom(solver.elements(), solver.displayElementRadiosity());
 }
 

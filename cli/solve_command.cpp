@@ -70,15 +70,18 @@ void printSummary(const ProgressiveSolver& solver, double seconds, size_t resume
     fmt::print("{}: {:.3f} {} seconds ({:.3f} s per iteration) beside {:.3f} host seconds\n",
                toString(solver.options().backend), machineSeconds, machine, machineSeconds / std::max<size_t>(n, 1),
                seconds);
-  fmt::print("ledger: emitted {:.6g} W = absorbed {:.6g} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
+  fmt::print("ledger: emitted {:.6g} W = {} + unshot {:.6g} + not captured {:.6g} + escaped {:.6g}"
              "  (imbalance {:.1e})\n",
-             l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.imbalance());
+             l.emitted, absorbedTerm(l), l.unshot, l.notCaptured, l.escaped, l.imbalance());
   if (const std::string outside = lightOutsideSentence(l); !outside.empty()) fmt::print("        {}\n", outside);
   if (solver.options().formFactorCacheBytes == 0) return;
+  // This run's shots alone: a checkpoint's were served (or not) by the cache of the run that shot them.
   size_t shots = 0, hits = 0;
-  for (const IterationRecord& r : solver.history()) shots += r.shooters.size(), hits += static_cast<size_t>(r.cacheHits);
-  fmt::print("form-factor cache: {} of {} shots served without projecting (up to {:.0f} MiB; --cache-mb 0: none)\n", hits,
-             shots, solver.options().formFactorCacheBytes / 1048576.0);
+  for (size_t i = resumedAt; i < n; ++i)
+    shots += solver.history()[i].shooters.size(), hits += static_cast<size_t>(solver.history()[i].cacheHits);
+  if (shots == 0) return;
+  fmt::print("form-factor cache: {} of {}{} shots served without projecting (up to {:.0f} MiB; --cache-mb 0: none)\n",
+             hits, resumedAt == 0 ? "" : "this run's ", shots, solver.options().formFactorCacheBytes / 1048576.0);
 }
 
 void writeBake(const std::string& path, const std::vector<Patch>& patches, const std::vector<Rgb>& displayRadiosity,
@@ -88,16 +91,9 @@ void writeBake(const std::string& path, const std::vector<Patch>& patches, const
   fmt::print("wrote {}\n", path);
 }
 
-// After Ctrl-C, the checkpoint written above (or the work lost) is said, and nothing else is
-// written: a bake or stats of a solve cut short would pass for finished ones.
+// After Ctrl-C: the checkpoint written above, or the work lost, is said (stopAfterInterrupt).
 [[noreturn]] void stopAfterInterrupt(const SolveArgs& args, const std::string& where) {
-  if (args.checkpointPath.empty())
-    fmt::print(stderr, "radmesh: interrupted after {}: nothing saved (give --checkpoint FILE to keep a solve's work)\n",
-               where);
-  else
-    fmt::print(stderr, "radmesh: interrupted after {}: the checkpoint {} holds the work; go on with --resume {}\n", where,
-               args.checkpointPath, args.checkpointPath);
-  throw Interrupted();
+  cli::stopAfterInterrupt(where, args.checkpointPath, "give --checkpoint FILE to keep a solve's work");
 }
 
 // --cells auto: the rooms solved cell by cell. With `ranks`, this process's part of a distributed
@@ -129,7 +125,7 @@ void runCells(const SolveArgs& args, const Scene& scene, double cellM, const Sol
   }
   if (interrupted()) stopAfterInterrupt(args, fmt::format("round {}", solver->rounds()));
   printCellsSummary(*solver, seconds);
-  if (writes) warnIfFarFromConverged(solver->ledger(), solver->options(), solver->iterations()), warnIfLightLost(solver->ledger(), isClosed(scene));
+  if (writes) warnAfterSolve(solver->ledger(), solver->options(), solver->iterations(), isClosed(scene));
   if (!args.statsPath.empty()) {
     nlohmann::json stats = cellsStats(*solver, scene.source, seconds, resumedAt);
     if (ranks) stats["distributed"] = distributedStats(*solver, ranks->traffic());
@@ -206,7 +202,9 @@ void run(const SolveArgs& args, Processes* processes) {
   }
   if (interrupted()) stopAfterInterrupt(args, fmt::format("iteration {}", solver.history().size()));
   printSummary(solver, seconds, resumedAt);
-  if (writes) warnIfFarFromConverged(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size())), warnIfLightLost(solver.ledger(), solver.effectsPlan().closed);
+  if (writes)
+    warnAfterSolve(solver.ledger(), solver.options(), static_cast<long long>(solver.history().size()),
+                   solver.effectsPlan().closed);
 
   if (!args.statsPath.empty()) {
     nlohmann::json stats = solveStats(solver, scene.source, seconds, resumedAt);

@@ -70,6 +70,7 @@ void addDaylightFlags(CLI::App* cmd, Daylight& daylight) {
   cmd->add_option_function<std::string>(
          "--sky-model", [&daylight](const std::string& name) { daylight.sky = parseSkyModel(name); },
          "The sky's luminance: uniform (the default) or cie-overcast (three times brighter at the zenith)")
+      ->type_name("uniform|cie-overcast")
       ->needs(sky);  // without a sky it would shape nothing, without a word
   cmd->add_option_function<std::string>(
       "--sun", [&daylight](const std::string& text) { daylight.sun = {parseSun(text)}; },
@@ -123,14 +124,22 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
          "bake (the default: hemicube 256, until 1 % of the power is unshot), paper (Varshney & Prins: single "
          "plane 128, ratio 3, until C = 0.95) or elements (the bake, a better picture in a third of its time or "
          "less: patches 2.625 x the cell shoot, elements a quarter of theirs receive); flags given beside it win")
+      ->type_name("bake|paper|elements")
       ->trigger_on_parse();
   cmd->add_option("--effects", f.effects, "auto: simulate only what the scene calls for; all: everything")
+      ->type_name("auto|all")
       ->capture_default_str();
-  cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")->capture_default_str();
+  cmd->add_option("--backend", f.backend, "native (host CPU) or mesh (emulated MasPar MP-1)")
+      ->type_name("native|mesh")
+      ->capture_default_str();
   cmd->add_option("--cell", f.cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size; the paper: 0.381)");
-  cmd->add_option("--mapping", f.mapping, "Mesh backend: hierarchical, cut-and-stack or adaptive")->capture_default_str();
+  cmd->add_option("--mapping", f.mapping, "Mesh backend: hierarchical, cut-and-stack or adaptive")
+      ->type_name("hierarchical|cut-and-stack|adaptive")
+      ->capture_default_str();
   addMachineFlags(cmd, f.options.machine);
-  cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")->capture_default_str();
+  cmd->add_option("--projection", f.projection, "plane (single plane), hemicube or analytic")
+      ->type_name("plane|hemicube|analytic")
+      ->capture_default_str();
   cmd->add_option("--resolution", f.options.resolution, "N for an N x N projection plane, 16..2048")->capture_default_str();
   cmd->add_option("--ratio", f.options.ratio, kRatioHelp)->capture_default_str();
   cmd->add_option("--shooters", f.options.shooters, "k patches shot per iteration")->capture_default_str();
@@ -146,6 +155,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--subdivide", f.subdivide,
                   "off (patches shoot and receive), uniform (patches shoot, their elements receive) or adaptive "
                   "(elements split where the light changes): docs/accuracy.md")
+      ->type_name("off|uniform|adaptive")
       ->capture_default_str();
   cmd->add_option("--min-element", f.options.minElementM,
                   "With --subdivide uniform: longest element edge, metres (0: every patch cut into four); with "
@@ -156,7 +166,8 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
          "With --subdivide: share (native default: patches on the item buffer, each one's form factor shared "
          "among its elements by their analytic form factors and visible pixels) or rasterise (every element "
          "on the item buffer: the mesh back end's way), or auto (the back end's own: share on the host, "
-         "rasterise on the mesh)");
+         "rasterise on the mesh)")
+      ->type_name("share|rasterise|auto");
   cmd->add_option("--split-contrast", f.options.splitContrast,
                   "With --subdivide adaptive: split neighbouring elements whose reflected radiosities differ by "
                   "more than this fraction of the brightest element's")
@@ -169,7 +180,8 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
                                text + "'");
            f.options.splitShadows = text == "on";
          },
-         "With --subdivide adaptive: on splits elements a shadow edge crosses (default), off only by contrast");
+         "With --subdivide adaptive: on splits elements a shadow edge crosses (default), off only by contrast")
+      ->type_name("on|off");
   cmd->add_option_function<std::string>(
          "--split-regather",
          [&f](const std::string& text) {
@@ -179,9 +191,11 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
                                text + "'");
            f.options.splitRegatherAll = text == "all";
          },
-         "With --subdivide adaptive: last (default) or all: the shots a split element's children receive anew");
+         "With --subdivide adaptive: last (default) or all: the shots a split element's children receive anew")
+      ->type_name("last|all");
   cmd->add_option("--cells", f.cells,
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
+      ->type_name("auto|off")
       ->capture_default_str();
   cmd->add_option("--exchange-shots", f.exchangeShots, "With --cells auto: shots a cell a round between portal exchanges, on average (shared by unshot power)")
       ->check(kPositive)

@@ -28,7 +28,8 @@ nlohmann::json iterationJson(const IterationRecord& r) {
 }  // namespace
 
 nlohmann::json ledgerJson(const Ledger& l) {
-  nlohmann::json j = {{"emitted", l.emitted},       {"absorbed", l.absorbed}, {"unshot", l.unshot},
+  nlohmann::json j = {{"emitted", l.emitted},       {"absorbed", l.absorbed},
+                      {"absorbed_by_back_faces", l.absorbedByBackFaces}, {"unshot", l.unshot},
                       {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"light_outside", l.lightOutside}, {"imbalance", l.imbalance()}};
   if (l.portalIn > 0.0 || l.portalOut > 0.0) j.update({{"portal_in", l.portalIn}, {"portal_out", l.portalOut}});
   return j;

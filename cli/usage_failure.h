@@ -57,6 +57,13 @@ struct ValueKind {
 
 inline ValueKind kindOfValue(const CLI::Option* option) {
   const std::string type = option ? option->get_type_name() : "";
+  // The words an option takes, as its type name lists them ("auto|off"): "auto or off".
+  if (const std::size_t bar = type.rfind('|'); bar != std::string::npos) {
+    std::string words = type.substr(0, bar);
+    std::replace(words.begin(), words.end(), '|', ',');
+    words = CLI::detail::join(CLI::detail::split(words, ','), ", ") + " or " + type.substr(bar + 1);
+    return {"one of " + words, words};
+  }
   const bool list = option && option->get_expected_max() > 1;
   const bool whole = type.find("INT") != std::string::npos;
   const bool number = whole || type.find("FLOAT") != std::string::npos || type.find("NUMBER") != std::string::npos;

@@ -45,13 +45,19 @@ int main(int argc, char** argv) {
   CLI::Option* backendGiven =
       app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here; native with --cells auto) or "
                      "native (host CPU)")
+          ->type_name("mesh|native")
           ->capture_default_str();
-  app.add_option("--projection", projection, "plane, hemicube or analytic")->capture_default_str();
+  app.add_option("--projection", projection, "plane, hemicube or analytic")
+      ->type_name("plane|hemicube|analytic")
+      ->capture_default_str();
   app.add_option("--mapping", mapping, "Single plane over the PEs (mesh back end): hierarchical, cut-and-stack, adaptive")
+      ->type_name("hierarchical|cut-and-stack|adaptive")
       ->capture_default_str();
   app.add_option("--effects", effects, "auto: simulate only what the scene calls for; all: everything")
+      ->type_name("auto|all")
       ->capture_default_str();
   app.add_option("--subdivide", subdivide, "off; uniform: patches shoot, their elements receive and are shown; adaptive: elements split where the light changes (docs/accuracy.md)")
+      ->type_name("off|uniform|adaptive")
       ->capture_default_str();
   CLI::Option* minElement = app.add_option("--min-element", o.minElementM, "With --subdivide uniform: longest element edge, metres (0: four a patch); with adaptive: the smallest split (0: a quarter of the cell)")
       ->capture_default_str();
@@ -96,6 +102,7 @@ int main(int argc, char** argv) {
   std::string cells = "off";
   app.add_option("--cells", cells, "auto: find the rooms and solve them cell by cell, the camera's first (docs/cells.md); "
                  "off: the whole scene at once")
+      ->type_name("auto|off")
       ->capture_default_str();
   app.add_option("--exchange-shots", args.setup.exchangeShots,
                  "With --cells auto: the camera's cell's iterations between portal exchanges (a neighbour at portal "

@@ -37,6 +37,12 @@ void checkOutputPath(const std::string& option, const std::string& path, const s
   if (path.empty()) return;
   if (!hasExtension(path, extension))
     throw OptionError(fmt::format("{} '{}': {}: give a path ending in {}", option, path, what, extension));
+  // "--out .glb" ends in .glb but names no file: it would write a hidden one.
+  const std::filesystem::path file(path);
+  if (!extension.empty() && file.filename().string().size() == extension.size())
+    throw OptionError(fmt::format("{} '{}': the file name is only the extension, which would write a hidden file "
+                                  "named {}: give a name before it (e.g. {})",
+                                  option, path, file.filename().string(), (file.parent_path() / ("NAME" + extension)).string()));
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw OptionError(fmt::format("{} '{}' is a folder: give the path of a file in it", option, path));

@@ -11,7 +11,8 @@ namespace radmesh {
 bool hasExtension(const std::string& path, const std::string& extension);
 
 // Throws OptionError naming `option` and the fix when `path` does not end in `extension` (`what`
-// says what the file is, e.g. "a bake is glTF binary"), its folder does not exist, or no file can
+// says what the file is, e.g. "a bake is glTF binary") or its file name is that extension alone
+// ("--out .glb" would write a hidden file), its folder does not exist, or no file can
 // be written there (a folder without write permission, a file system that takes none: found by
 // making and removing a file beside it), before the work whose output it is, not after. Empty: no
 // file. `makeFolder`: a missing folder is made now (bench accuracy's outputs) rather than refused.

@@ -42,6 +42,16 @@ std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
         "the single plane missed {:.1f}% of the power (each shot's grazing light, compounded by interreflection), so "
         "the scene is darker than it should be: --projection hemicube catches all of it",
         100.0 * l.notCaptured / l.input()));
+  // The lights' power on the model's outside (the sun on walls facing in) is booked there too, and
+  // is no loss: only the rest is weighed (lightOutside does not say how much of it was on backs).
+  const double onBacks = entered > 0.0 ? std::max(0.0, l.absorbedByBackFaces - l.lightOutside) / entered : 0.0;
+  if (onBacks > kBackFacesAbsorbed)
+    warnings.push_back(fmt::format(
+        "{:.1f}% of {} was absorbed on the backs of one-sided surfaces (radmesh reads every surface one-sided, as "
+        "RenderPark does by default: its back is black), so the scene is darker than it should be: model a surface "
+        "lit from both sides (a partition, a table top) as two faces back to back or give it thickness, or in glTF "
+        "make its material doubleSided",
+        100.0 * onBacks, l.unshotBasis()));
   return warnings;
 }
 
@@ -50,6 +60,10 @@ std::string lightOutsideSentence(const Ledger& l) {
   return fmt::format("of it, {:.6g} W ({:.1f}%) is the lights' that fell on the model's outside or past it and never "
                      "came in; the unshot fraction is of the {:.6g} W that did",
                      l.lightOutside, 100.0 * l.lightOutside / l.input(), l.cameIn());
+}
+
+std::string absorbedTerm(const Ledger& l) {
+  return fmt::format("absorbed {:.6g} ({:.6g} on back faces)", l.absorbed, l.absorbedByBackFaces);
 }
 
 const char* Ledger::unshotBasis() const {

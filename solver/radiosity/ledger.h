@@ -44,15 +44,20 @@ inline constexpr double kLedgerTolerance = 1e-9;
 // Light a balanced ledger lost where a solve should not lose it, each a sentence for a warning:
 // more than kLostInClosedScene of the power left a closed scene or never entered it (a light outside
 // the model), more than kLostInOpenScene of what entered an open one left it (an emitter nearer a
-// surface than the projection resolves sends all its light past it), or the single plane missed
-// more than kPlaneMissed of it (its 8.3 % a shot, compounded by interreflection). Empty: none.
+// surface than the projection resolves sends all its light past it), the single plane missed
+// more than kPlaneMissed of it (its 8.3 % a shot, compounded by interreflection), or more than
+// kBackFacesAbsorbed of what came in fell on the unlit backs of one-sided surfaces (a partition
+// modelled as one face, lit from both sides). Empty: none.
 std::vector<std::string> lostLightWarnings(const Ledger& ledger, bool sceneClosed);
 // The sentence a solve prints under its ledger when lights sent power onto the model's outside or
 // past it (the sun on a roof): that power is in `emitted` but never came in, and the unshot fraction
 // is of the rest. Empty when none did.
 std::string lightOutsideSentence(const Ledger& ledger);
+// The ledger line's absorbed term with its part on back faces: "absorbed 265.822 (29.4 on back faces)".
+std::string absorbedTerm(const Ledger& ledger);
 inline constexpr double kLostInClosedScene = 0.01;
 inline constexpr double kLostInOpenScene = 0.9;
 inline constexpr double kPlaneMissed = 0.10;
+inline constexpr double kBackFacesAbsorbed = 0.05;
 
 }  // namespace radmesh

@@ -39,6 +39,27 @@ TEST(CliCache, TheHostCachesEveryRowShotAgainByDefaultAndTheAnswerIsTheUncachedO
   EXPECT_EQ(readBytes(cachedBake), readBytes(plainBake));  // bitwise the same bake
 }
 
+// After --resume the cache line counts this run's shots, not the checkpoint's: the cache starts
+// empty, so the resumed run's hits are the per-iteration cache_hits after the checkpoint. A resume
+// that shoots nothing prints no cache line.
+TEST(CliCache, AResumedSolveCountsOnlyItsOwnShots) {
+  const std::string solve = "solve cornell --cell 0.2 --resolution 64 --threads 1 --quiet ";
+  const std::string checkpoint = tempPath("first.ckpt"), stats = tempPath("resumed.json");
+  ASSERT_EQ(radmesh(solve + "--max-iterations 120 --checkpoint " + checkpoint).exitCode, 0);
+  CommandRun run = radmesh(solve + "--resume " + checkpoint + " --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const nlohmann::json j = readJson(stats);
+  ASSERT_EQ(j["iterations"], 195);  // as the straight solve above
+  int hits = 0;
+  for (size_t i = 120; i < j["per_iteration"].size(); ++i) hits += j["per_iteration"][i]["cache_hits"].get<int>();
+  EXPECT_GT(hits, 0);
+  EXPECT_NE(run.output.find("form-factor cache: " + std::to_string(hits) + " of this run's 75 shots served without projecting"),
+            std::string::npos) << run.output;
+  run = radmesh(solve + "--max-iterations 100 --resume " + checkpoint);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("form-factor cache"), std::string::npos) << run.output;
+}
+
 // The mesh back end's rows are its PEs' to hold, and there a row computed beside other shooters
 // differs in its last bits: it caches only when told.
 TEST(CliCache, TheMeshBackEndCachesOnlyWhenTold) {

@@ -360,6 +360,30 @@ TEST(Cli, UsageErrorsNameTheWordAndWhatToGive) {
   }
 }
 
+// An option left without its value before the next option is named with what it takes: CLI11
+// took the next option as the value, and then refused what followed as one argument too many.
+TEST(Cli, AnOptionWithoutItsValueBeforeAnotherIsNamedWithItsValues) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"solve two-rooms --cells --threads 1",
+       "radmesh: error: --cells is given no value (--threads, after it, is an option): give it auto or off, or "
+       "leave it out\n"},
+      {"solve two-rooms --cells --quiet", "--cells is given no value (--quiet, after it, is an option): give it auto or off"},
+      {"render cornell --projection --quiet --out x.png", "--projection is given no value (--quiet, after it, is an "
+                                                          "option): give it plane, hemicube or analytic"},
+      {"solve cornell --resolution --threads 1", "--resolution is given no value (--threads, after it, is an option): "
+                                                 "give it a whole number"},
+      {"bench solve cornell --backend --cells auto", "--backend is given no value (--cells, after it, is an option): "
+                                                     "give it native or mesh"},
+      {"solve two-rooms --threads 1 --cells", "--cells is given no value: give it auto or off, or leave it out"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const CommandRun run = radmesh(arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
+  }
+  EXPECT_NE(radmesh("solve --help").output.find("--cells auto|off=off"), std::string::npos);
+}
+
 TEST(Cli, ImpossibleOptionsAreRefusedNamingTheFlag) {
   CommandRun run = radmesh("solve furnace --resolution 8");
   EXPECT_EQ(run.exitCode, 2);
@@ -763,6 +787,34 @@ TEST(Cli, RenderTakesBackTheExposureItChoseForAVeryDimScene) {
   EXPECT_NE(given.output.find(fmt::format("exposure {:+.2f} EV (given", ev)), std::string::npos) << given.output;
 }
 
+// render ends its solve as solve does: Ctrl-C stops it at the end of the iteration (or round)
+// under way, says that nothing was saved and how to keep the work, draws nothing and exits 130;
+// --quiet keeps the warning of a solve stopped far from converged (not with --iterations, asked for).
+TEST(Cli, RenderStopsOnCtrlCAndWarnsAsSolveDoes) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  const std::string out = tempPath("interrupted.png");
+  const std::string radmeshPath = (test::binaryDir() / "cli" / "radmesh").string();
+  for (const auto& [cells, where] : {std::pair{"off", "iteration "}, std::pair{"auto", "round "}}) {
+    const CommandRun run = runCommand("(" + radmeshPath + " render two-rooms --cell 0.1 --cells " + cells +
+                                      " --quiet --out " + out + " & pid=$!; sleep 2; kill -INT $pid; wait $pid; echo exit $?)");
+    EXPECT_NE(run.output.find("exit 130"), std::string::npos) << cells << ": " << run.output;
+    EXPECT_NE(run.output.find(std::string("radmesh: interrupted after ") + where), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(": nothing saved (no picture is drawn of a solve cut short; to keep a long solve's "
+                              "work: radmesh solve SCENE --checkpoint FILE --out BAKE.glb, then render the bake)"),
+              std::string::npos) << cells << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << cells;
+  }
+  const std::string farFrom = "warning: the solve stopped with 80.0% of the emitted power unshot";
+  CommandRun run = radmesh("render office --quiet --max-iterations 10 --size 64x48 --out " + out);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find(farFrom + ", so its reflected light is far from converged (docs/accuracy.md); "
+                                      "--max-iterations 10 stopped it"), std::string::npos) << run.output;
+  run = radmesh("render office --quiet --iterations 10 --size 64x48 --out " + out);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
+}
+
 TEST(Cli, RenderRefusesImpossibleViewsNamingTheOption) {
   const CommandRun probe = radmesh("render --help");
   if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
@@ -1036,6 +1088,27 @@ TEST(Cli, PlotPaperChecksTheStatsAgainstTheirNames) {
   EXPECT_NE(run.output.find("warning: cut-and-stack at 128x128 stopped at C = 0.500"), std::string::npos) << run.output;
 }
 
+// `plot accuracy --out-dir DIR` draws a doc's figures into DIR (made if missing), leaving the
+// committed ones beside the CSV as they were; a missing table leaves no folder behind.
+TEST(Cli, PlotAccuracyDrawsIntoOutDirNotBesideTheCsv) {
+  SKIP_WITHOUT_GNUPLOT();
+  const std::filesystem::path docs = test::sourceDir() / "docs" / "data" / "accuracy";
+  const auto committed = std::filesystem::last_write_time(docs / "cornell-error-vs-time.png");
+  const std::string dir = tempPath("out/figures");
+  CommandRun run = radmesh("plot accuracy " + (docs / "cornell.csv").string() + " --out-dir " + dir);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  for (const char* png : {"cornell-error-vs-time.png", "cornell-image-error-vs-time.png", "cornell-error-vs-convergence.png"}) {
+    EXPECT_NE(run.output.find("drew " + dir + "/" + png + "\n"), std::string::npos) << run.output;
+    EXPECT_GT(std::filesystem::file_size(dir + "/" + png), 1000u) << png;
+  }
+  EXPECT_EQ(run.output.find("drew " + docs.string()), std::string::npos) << run.output;
+  EXPECT_EQ(std::filesystem::last_write_time(docs / "cornell-error-vs-time.png"), committed);
+  const std::string never = tempPath("never");
+  run = radmesh("plot accuracy " + tempPath("nothing") + " --out-dir " + never);
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(never));
+}
+
 // Drawing is all `plot` does: without gnuplot it fails, and a bench says it drew no plots; a PNG
 // stem in a missing folder gets the folder (gnuplot used to write the PNG to standard output).
 TEST(Cli, PlotFailsWithoutGnuplotAndMakesTheFolderOfItsPngs) {
@@ -1131,6 +1204,57 @@ TEST(Cli, LightLostWhereNoSolveLosesItIsWarnedOf) {
   EXPECT_NE(run.output.find("warning: the single plane missed 14."), std::string::npos) << run.output;
   run = radmesh("solve cornell --cell 0.1 --quiet");
   ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
+}
+
+// A closed black 2 m box at x0, lit by a 0.4 m panel under its ceiling; `insideOut` turns every
+// wall's front outward, so that all the panel's light falls on backs.
+std::string blackBox(double x0, bool insideOut) {
+  std::string mgf;
+  auto v = [&](const std::string& name, double x, double y, double z) {
+    mgf += fmt::format("v {} =\n p {} {} {}\n", name, x0 + x, y, z);
+  };
+  const std::string b = fmt::format("b{}", x0);
+  for (int i = 0; i < 8; ++i) v(b + std::to_string(i), (i == 1 || i == 2 || i == 5 || i == 6) ? 2 : 0, (i % 4) >= 2 ? 2 : 0, i >= 4 ? 2 : 0);
+  const char* faces[] = {"0 1 2 3", "4 7 6 5", "0 4 5 1", "1 5 6 2", "2 6 7 3", "3 7 4 0"};  // fronts inward
+  mgf += "m black\n";
+  for (const char* face : faces) {
+    std::istringstream in(face);
+    std::vector<std::string> corners;
+    for (std::string c; in >> c;) corners.push_back(b + c);
+    if (insideOut) std::reverse(corners.begin(), corners.end());
+    mgf += "f";
+    for (const std::string& c : corners) mgf += " " + c;
+    mgf += "\n";
+  }
+  v(b + "l0", 0.8, 0.8, 1.99), v(b + "l1", 1.2, 0.8, 1.99), v(b + "l2", 1.2, 1.2, 1.99), v(b + "l3", 0.8, 1.2, 1.99);
+  return mgf + fmt::format("m light\nf {0}l0 {0}l3 {0}l2 {0}l1\n", b);
+}
+
+// Light on the backs of one-sided surfaces is part of absorbed, and said as such on the ledger
+// line and in the stats. Two black boxes with equal lights, one inside out: exactly half of the
+// power falls on backs (black walls reflect nothing back onto the lights' own backs), and that is
+// warned of; the box the right way out alone puts none there.
+TEST(Cli, LightOnBackFacesIsSaidInTheLedgerAndWarnedOf) {
+  const std::string materials = "m black =\n c\n rd 0\nm light =\n c\n ed 100\n";
+  const std::string both = tempPath("both.mgf"), one = tempPath("one.mgf"), stats = tempPath("stats.json");
+  std::ofstream(both) << materials << blackBox(0, false) << blackBox(4, true);
+  std::ofstream(one) << materials << blackBox(0, false);
+  CommandRun run = radmesh("solve " + both + " --cell 0.5 --resolution 32 --quiet --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto l = readJson(stats)["ledger"];
+  const double emitted = l["emitted"].get<double>(), back = l["absorbed_by_back_faces"].get<double>();
+  EXPECT_NEAR(back / emitted, 0.5, 1e-6) << l.dump();
+  EXPECT_NEAR(l["absorbed"].get<double>(), emitted, 1e-6 * emitted) << l.dump();
+  EXPECT_NE(run.output.find(fmt::format("= absorbed {:.6g} ({:.6g} on back faces) + unshot", l["absorbed"].get<double>(), back)),
+            std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("warning: 50.0% of the emitted power was absorbed on the backs of one-sided surfaces"),
+            std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("give it thickness, or in glTF make its material doubleSided"), std::string::npos) << run.output;
+  run = radmesh("solve " + one + " --cell 0.5 --resolution 32 --quiet --stats " + stats);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(readJson(stats)["ledger"]["absorbed_by_back_faces"].get<double>(), 0.0);
+  EXPECT_NE(run.output.find(" (0 on back faces) + unshot"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
 }
 
@@ -1348,6 +1472,32 @@ TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
     EXPECT_NE(run.output.find("--out '" + out + "'"), std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("solved"), std::string::npos) << run.output;
   }
+}
+
+// An output path whose file name is its extension alone ("--out .glb") would write a hidden file
+// with no name: every option that writes a file refuses it, naming the option and a path to give,
+// before any work and without writing anything.
+TEST(Cli, AnOutputNamedOnlyByItsExtensionIsRefused) {
+  const std::string dir = std::filesystem::path(tempPath("x")).parent_path().string();
+  const std::string binary = (test::binaryDir() / "cli" / "radmesh").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"solve office --out .glb", "--out '.glb': the file name is only the extension, which would write a hidden file "
+                                  "named .glb: give a name before it (e.g. NAME.glb)"},
+      {"solve office --stats out/.JSON", "--stats 'out/.JSON': the file name is only the extension, which would write "
+                                         "a hidden file named .JSON: give a name before it (e.g. out/NAME.json)"},
+      {"info office --plan .png", "--plan '.png': the file name is only the extension"},
+      {"bench solve furnace --resolutions 16 --json .json", "--json '.json': the file name is only the extension"},
+      {"bench accuracy furnace --quick --json .json", "--json '.json': the file name is only the extension"},
+      {"render office --out .png", "--out '.png': the file name is only the extension"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    if (arguments.starts_with("render") && radmesh("render --help").output.find("not built") != std::string::npos) continue;
+    const CommandRun run = runCommand("cd " + dir + " && " + binary + " " + arguments);
+    EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
+    EXPECT_NE(run.output.find("radmesh: error: " + message), std::string::npos) << arguments << ": " << run.output;
+    EXPECT_EQ(run.output.find("solving"), std::string::npos) << arguments << ": " << run.output;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir)) << "a file was written in " << dir;
 }
 
 // Two outputs on one file, or an output on the scene, would lose one of them without a word.

@@ -44,5 +44,20 @@ TEST(Ledger, LightLostWhereNoSolveLosesItIsNamed) {
   EXPECT_TRUE(says(lostLightWarnings(ledgerOf(100.0, 100.0, 0.0), false), "none of the lights' power entered the model"));
 }
 
+// More than 5 % of what came in absorbed on the backs of one-sided surfaces is named, with the fix;
+// the sun on a building's outside (walls facing in) is booked there too, but never came in.
+TEST(Ledger, LightOnBackFacesIsNamedAboveATwentiethOfTheLight) {
+  Ledger l = ledgerOf(0.0, 0.0, 0.0);
+  l.absorbedByBackFaces = 4.0;
+  EXPECT_TRUE(lostLightWarnings(l, true).empty());
+  l.absorbedByBackFaces = 6.0;
+  EXPECT_TRUE(says(lostLightWarnings(l, true), "6.0% of the emitted power was absorbed on the backs of one-sided surfaces"));
+  EXPECT_TRUE(says(lostLightWarnings(l, true), "as two faces back to back or give it thickness, or in glTF make its material doubleSided"));
+  l.lightOutside = l.absorbedByBackFaces = 90.0;  // the sun on the outside: no loss
+  EXPECT_TRUE(lostLightWarnings(l, false).empty());
+  l.absorbedByBackFaces = 91.0;  // and 1 W of the 10 that came in
+  EXPECT_TRUE(says(lostLightWarnings(l, false), "10.0% of the power that came in was absorbed on the backs"));
+}
+
 }  // namespace
 }  // namespace radmesh
