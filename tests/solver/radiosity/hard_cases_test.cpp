@@ -342,7 +342,9 @@ TEST(HardCases, ADimRoomsLampShootsBeforeTheUnshotStop) {
   // Below the dim room's ceiling, every patch sees it.
   auto expectDimRoomLit = [&](const std::vector<Rgb>& b, const char* solve) {
     for (size_t j = litPatches; j < rooms.patches.size(); ++j)
-      if (rooms.patches[j].centroid.z < 2.5 - 1e-9) EXPECT_GT(b[j].r, 0.0) << solve << ", dim room patch " << j;
+      if (rooms.patches[j].centroid.z < 2.5 - 1e-9) {
+        EXPECT_GT(b[j].r, 0.0) << solve << ", dim room patch " << j;
+      }
   };
   ProgressiveSolver whole(rooms.scene, rooms.patches, o);
   ASSERT_TRUE(solveChecked(whole));
