@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <tuple>
@@ -254,21 +255,31 @@ TEST(HardCases, ARoomMovedBy1e12MetresGivesItsBlockTheSameRadiosity) {
   EXPECT_GT(blockPatches, 20);
 }
 
+// Two closed 4 x 3 x 2.5 m rooms of 8 x 8 patches a face, the second `gap` metres beyond the first
+// along x (0: each with its own side of the wall between them, in one plane); their faces'
+// materials as closedBox takes them. The first room's patches come first: kRoomPatches of them.
+constexpr int kRoomPatches = 6 * 64;
+TestScene twoRooms(const std::vector<Material>& materials, double gap, std::array<int, 6> first = {},
+                   std::array<int, 6> second = {}) {
+  TestScene rooms = test::closedBox({4, 3, 2.5}, 8, materials, first);
+  const TestScene other = test::closedBox({4, 3, 2.5}, 8, materials, second, Vec3(4 + gap, 0, 0));
+  const int polygons = static_cast<int>(rooms.scene.polygons.size());
+  rooms.scene.polygons.insert(rooms.scene.polygons.end(), other.scene.polygons.begin(), other.scene.polygons.end());
+  for (Patch p : other.patches) {
+    p.polygon += polygons;
+    rooms.patches.push_back(p);
+  }
+  return rooms;
+}
+
 // Two closed rooms side by side, one lit, parted by a wall of no thickness, their outer walls in
 // line. A patch in the dark room too small to cover a pixel centre was seen past the dividing wall
 // where its centroid's pixel showed the lit room's wall in the same plane, which hid nothing:
 // 3.5 % of the lit room's light in the dark one at 16², less at higher resolutions.
 TEST(HardCases, NoLightReachesARoomSealedBehindAWallOfNoThickness) {
   const std::vector<Material> materials = {test::grey(0.7), test::grey(0.0, 30.0, "light")};
-  TestScene rooms = test::closedBox({4, 3, 2.5}, 8, materials);
-  const TestScene dark = test::closedBox({4, 3, 2.5}, 8, materials, {0, 0, 0, 0, 0, 0}, Vec3(4, 0, 0));
-  const int polygons = static_cast<int>(rooms.scene.polygons.size());
-  const size_t litPatches = rooms.patches.size();
-  rooms.scene.polygons.insert(rooms.scene.polygons.end(), dark.scene.polygons.begin(), dark.scene.polygons.end());
-  for (Patch p : dark.patches) {
-    p.polygon += polygons;
-    rooms.patches.push_back(p);
-  }
+  TestScene rooms = twoRooms(materials, 0.0);
+  const size_t litPatches = kRoomPatches;
   rooms.patches[64 + 27].material = 1;  // a lamp in the lit room's ceiling
   for (const auto& [projection, n] : {std::pair{Projection::Hemicube, 16}, {Projection::Hemicube, 32}, {Projection::Plane, 32}}) {
     SolveOptions o = optionsFor(projection, n);
@@ -290,15 +301,8 @@ TEST(HardCases, NoLightReachesARoomSealedBehindAWallOfNoThickness) {
 // both lamps the same side, so one room's side of the wall stayed black.
 TEST(HardCases, BothSidesOfAWallOfNoThicknessAreLit) {
   const std::vector<Material> materials = {test::grey(0.7), test::grey(0.0, 30.0, "light")};
-  TestScene rooms = test::closedBox({4, 3, 2.5}, 8, materials);
-  const TestScene right = test::closedBox({4, 3, 2.5}, 8, materials, {0, 0, 0, 0, 0, 0}, Vec3(4, 0, 0));
-  const int polygons = static_cast<int>(rooms.scene.polygons.size());
-  const int perRoom = static_cast<int>(rooms.patches.size());
-  rooms.scene.polygons.insert(rooms.scene.polygons.end(), right.scene.polygons.begin(), right.scene.polygons.end());
-  for (Patch p : right.patches) {
-    p.polygon += polygons;
-    rooms.patches.push_back(p);
-  }
+  TestScene rooms = twoRooms(materials, 0.0);
+  const int perRoom = kRoomPatches;
   rooms.patches[64 + 27].material = 1;
   rooms.patches[perRoom + 64 + 27].material = 1;
   const int leftSide = 3 * 64, rightSide = perRoom + 2 * 64;  // x = 4 facing -x, and facing +x
@@ -327,15 +331,8 @@ TEST(HardCases, BothSidesOfAWallOfNoThicknessAreLit) {
 TEST(HardCases, ADimRoomsLampShootsBeforeTheUnshotStop) {
   const std::vector<Material> materials = {test::grey(0.7), test::grey(0.0, 30.0, "light"),
                                            test::grey(0.0, 0.03, "dim light")};
-  TestScene rooms = test::closedBox({4, 3, 2.5}, 8, materials, {0, 1, 0, 0, 0, 0});
-  const TestScene dim = test::closedBox({4, 3, 2.5}, 8, materials, {0, 2, 0, 0, 0, 0}, Vec3(4.2, 0, 0));
-  const int polygons = static_cast<int>(rooms.scene.polygons.size());
-  const size_t litPatches = rooms.patches.size();
-  rooms.scene.polygons.insert(rooms.scene.polygons.end(), dim.scene.polygons.begin(), dim.scene.polygons.end());
-  for (Patch p : dim.patches) {
-    p.polygon += polygons;
-    rooms.patches.push_back(p);
-  }
+  const TestScene rooms = twoRooms(materials, 0.2, {0, 1, 0, 0, 0, 0}, {0, 2, 0, 0, 0, 0});
+  const size_t litPatches = kRoomPatches;
   SolveOptions o = optionsFor(Projection::Hemicube, 32);
   o.until = 1.0;
   o.untilUnshot = 0.01;
