@@ -51,7 +51,10 @@ struct AccuracyArgs {
   std::string name = "office";   // file stem of the outputs
   std::string outDir;            // CSV and plots go here; empty: table only
   Daylight daylight;
+  // A room's cells, the paper's 15 inches and one on either side; unless cellsGiven, scaled to the
+  // cell the scene's own solve would choose (a 0.55 m box would otherwise be 40 patches at each).
   std::vector<double> cells{0.5, 0.381, 0.25};
+  bool cellsGiven = false;
   std::vector<int> resolutions{32, 64, 128, 256, 512, 1024};
   int referenceResolution = 1024;
   // > 0: the pictures' reference is a patch mesh at this cell, finer than any of `cells` and not

@@ -230,8 +230,11 @@ std::vector<double> checkedSubdividedCells(const AccuracyArgs& args, const std::
 
 }  // namespace
 
-nlohmann::json benchAccuracy(const AccuracyArgs& args) {
+nlohmann::json benchAccuracy(const AccuracyArgs& given) {
+  AccuracyArgs args = given;
   const Scene scene = loadCommandScene(args.scene, /*strict=*/false, args.daylight, args.up, args.metresPerUnit);
+  if (!args.cellsGiven)
+    for (double& cell : args.cells) cell *= chooseCell(scene).cellM / kDefaultCellM;
   if (args.cells.empty() || args.resolutions.empty())
     throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
   checkResolution(args.referenceResolution, "--reference-resolution");

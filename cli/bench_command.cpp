@@ -111,7 +111,11 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--out-dir", args->outDir, "Write the CSV (NAME.csv, NAME-traces.csv) and the PNG plots here");
   cmd->add_option("--json", *json, "Also write every figure, with the traces of every iteration, as JSON");
   addDaylightFlags(cmd, args->daylight);
-  cmd->add_option("--cells", args->cells, "Cell sizes, metres")->delimiter(',')->capture_default_str();
+  cmd->add_option("--cells", args->cells,
+                  "Cell sizes, metres (default: these for a room-sized model, scaled to the cell the scene's solve "
+                  "chooses)")
+      ->delimiter(',')
+      ->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
   cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();
   cmd->add_option("--reference-cell", args->referenceCellM,
@@ -157,6 +161,7 @@ void addBenchAccuracy(CLI::App* bench) {
     if (*quick && args->cells.size() > 2 && cmd->count("--cells") > 0)
       throw OptionError("bench accuracy --quick sweeps at most two --cells: give two, or drop --quick");
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
+    a.cellsGiven = cmd->count("--cells") > 0;
     dropRepeats(a.cells), dropRepeats(a.resolutions), dropRepeats(a.projections), dropRepeats(a.subdivide);
     dropRepeats(a.minElements), dropRepeats(a.adaptiveMinElements), dropRepeats(a.subdivideCells);
     dropRepeats(a.elementRows);

@@ -14,6 +14,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -512,6 +513,24 @@ std::vector<std::vector<std::string>> readCsv(const std::string& path) {
     for (std::string field; std::getline(fields, field, ',');) rows.back().push_back(field);
   }
   return rows;
+}
+
+// The default cells were a room's (0.5, 0.381, 0.25 m) whatever the scene: the 0.55 m Cornell box
+// was 40 patches at each, its own reference. They follow the cell its solve chooses, 0.0343 m.
+TEST(Cli, BenchAccuracysDefaultCellsFollowTheScenesSize) {
+  const std::string json = tempPath("cornell-cells.json");
+  const CommandRun run = radmesh("bench accuracy cornell --projections hemicube --resolutions 16 "
+                                 "--reference-resolution 16 --reference-until 0.5 --reference-unshot 0.5 --threads 2 --json " + json);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(json);
+  const auto j = nlohmann::json::parse(in);
+  std::set<double> cells;
+  for (const auto& point : j["points"]) cells.insert(point["cell"].get<double>());
+  ASSERT_EQ(cells.size(), 3u);
+  const double chosen = 0.549 / 16;  // a sixteenth of the box's smallest extent, to 3 figures
+  const double expected[] = {chosen * 0.25 / 0.381, chosen, chosen * 0.5 / 0.381};
+  int k = 0;
+  for (double cell : cells) EXPECT_NEAR(cell, expected[k++], 2e-3 * chosen);
 }
 
 TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
