@@ -50,7 +50,8 @@ constexpr IgnoredEntity kIgnoredEntities[] = {
     {"td", 1, "td tau_d", "diffuse transmittance", "diffuse transmittance, radmesh surfaces are opaque"},
     {"ir", 2, "ir n_real n_imag", nullptr, "index of refraction, radmesh surfaces are opaque"},
     {"sides", 1, "sides {1|2}", nullptr,
-     "radmesh surfaces are one-sided: they emit and receive on their right-hand-rule front"},
+     "radmesh surfaces are one-sided, as RenderPark reads MGF by default: they emit and receive on their "
+     "right-hand-rule front"},
 };
 
 }  // namespace
@@ -182,7 +183,9 @@ bool MgfContexts::ignore(const MgfEntity& e) {
     for (size_t i = ignored.fraction ? 2 : 1; i < e.words.size(); ++i)
       if (const double value = parseMgfNumber(e.words[i], k + " value"); value < 0.0 && k != "ir")
         throw MgfError(fmt::format("{} value {} is negative", k, e.words[i]), fmt::format("give {} values >= 0", k));
-    notes_.push_back(k + " ignored: " + ignored.why);
+    // sides 1 asks for what radmesh does: only sides 2 is not honoured.
+    if (k != "sides") notes_.push_back(k + " ignored: " + ignored.why);
+    else if (e.words[1] == "2") notes_.push_back("sides 2 ignored: " + std::string(ignored.why));
     return true;
   }
   return false;

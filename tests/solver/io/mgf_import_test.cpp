@@ -224,11 +224,19 @@ TEST(MgfImport, MaterialChangedAfterUseBecomesASecondMaterial) {
 TEST(MgfImport, IgnoredTermsAreWarnedAboutOnceWithTheirCount) {
   std::vector<std::string> warnings;
   const Scene s = importMgfText(
-      kUnitSquare + "  rs 0.1 0.05\n  sides 1\nm other =\n  rs 0.2 0\nf a b c\n", &warnings);
+      kUnitSquare + "  rs 0.1 0.05\n  sides 2\nm other =\n  rs 0.2 0\nf a b c\n", &warnings);
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_NE(warnings[0].find("line 11: rs ignored: specular reflectance"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("(2 times)"), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[1].find("line 12: sides ignored"), std::string::npos) << warnings[1];
+  EXPECT_NE(warnings[1].find("line 12: sides 2 ignored: radmesh surfaces are one-sided"), std::string::npos)
+      << warnings[1];
+}
+
+// sides 1 asks for the one side radmesh gives every surface: nothing to warn of (it was "ignored").
+TEST(MgfImport, SidesOneIsWhatRadmeshDoes) {
+  std::vector<std::string> warnings;
+  importMgfText(kUnitSquare + "  sides 1\nf a b c\n", &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
 }
 
 // A byte-order mark (some Windows editors write one) is not part of the first entity: it read as
