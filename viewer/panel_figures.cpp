@@ -29,13 +29,21 @@ void figureHistogram(const std::string& key, const nlohmann::json& counts) {
 }
 
 void figureTable(const std::string& key, const nlohmann::json& rows) {
+  // Words and numbers only: a column of objects (a stage's op counts) would show blank.
   std::vector<std::string> columns;
-  for (const auto& [column, value] : rows.front().items()) columns.push_back(column);
+  for (const auto& [column, value] : rows.front().items())
+    if (value.is_string() || value.is_number()) columns.push_back(column);
   std::stable_partition(columns.begin(), columns.end(),
                         [&](const std::string& c) { return rows.front()[c].is_string(); });
-  if (!ImGui::BeginTable(key.c_str(), int(columns.size()), ImGuiTableFlags_SizingFixedFit)) return;
-  for (const std::string& c : columns)
-    ImGui::TableSetupColumn(c.c_str(), c == columns.front() ? ImGuiTableColumnFlags_WidthStretch : 0);
+  // Each column as wide as its longest entry, scrolled sideways where the panel is narrower: a
+  // first column stretched into what the others left was cut to "shooter se".
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float height = ImGui::GetTextLineHeightWithSpacing() * float(rows.size() + 1) + style.ScrollbarSize +
+                       2.0f * style.CellPadding.y;
+  if (!ImGui::BeginTable(key.c_str(), int(columns.size()), ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX,
+                         ImVec2(0.0f, height)))
+    return;
+  for (const std::string& c : columns) ImGui::TableSetupColumn(c.c_str());
   ImGui::TableHeadersRow();
   for (const nlohmann::json& r : rows) {
     ImGui::TableNextRow();

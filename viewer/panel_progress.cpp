@@ -123,7 +123,8 @@ void Panel::drawItemBuffer(const SolverSnapshot& snapshot) {
   }
   const ItemBuffer& buffer = *snapshot.itemBuffer;
   const size_t seen = buffer.items.size() - std::count(buffer.items.begin(), buffer.items.end(), ItemBuffer::kNone);
-  ImGui::TextWrapped("the single plane (%dx%d) above patch %d: %.1f%% of its pixels see a patch", buffer.width,
+  // The figure starts its own line: wrapping breaks after a '.', and cut "100.0%" in two.
+  ImGui::TextWrapped("the single plane (%dx%d) above patch %d:\n%.1f%% of its pixels see a patch", buffer.width,
                      buffer.height, snapshot.itemBufferShooter,
                      100.0 * double(seen) / double(std::max<size_t>(1, buffer.items.size())));
   const float side = std::min(ImGui::GetContentRegionAvail().x, 250.0f);
