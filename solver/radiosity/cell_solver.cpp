@@ -46,9 +46,10 @@ int CellSolver::portalDistance(int cell) const { return state_->distance.at(stat
 // it, so that a round stays short), shared in proportion to each cell's unshot power (halved the
 // same way), so that the cells shoot roughly in the order the whole building's solve would. A
 // cell holding more than its share (1/cells) of the stopping threshold, or an emitting patch yet
-// to shoot (a dim room's lamp), shoots at least once, and so does the strongest: the round that shoots nothing is the one after done(). Until the focus
-// cell itself is below the stopping rule, cells more than one portal from it wait (no share, no
-// minimum): a hundred rooms shooting once a round each would cost the camera's room most of it.
+// to shoot (a dim room's lamp), shoots at least once, and so does the strongest: the round that
+// shoots nothing is the one after done(). Until the focus cell itself is below the stopping rule,
+// cells more than one portal from it wait (no share, no minimum): a hundred rooms shooting once a
+// round each would cost the camera's room most of it.
 std::vector<int> CellSolver::State::shotsThisRound(const Ledger& building) const {
   const int n = static_cast<int>(cells.size());
   std::vector<double> weight(n);
