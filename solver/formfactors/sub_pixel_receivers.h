@@ -33,7 +33,6 @@ struct ProjectedShot {  // what one environment projection left behind
   const Patch& shooter;
   const ProjectionSurface& surface;
   std::span<const ItemBuffer> itemBuffers;        // one per face
-  std::span<const int> depthTieRank;              // per patch
   std::span<const double> projectedAreaPixels;    // per patch, over all faces; 0: not projected
   std::span<const double> projectedWidthPixels;   // per patch, the widest face's; 0: not projected
   std::span<const long long> coveredPixels;       // per patch: pixel centres its projection covers

@@ -40,7 +40,6 @@ class EnvironmentProjection {
 
   const ProjectionSurface& surface() const { return *surface_; }
   const std::vector<ItemBuffer>& itemBuffers() const { return buffers_; }
-  const std::vector<int>& depthTieRank() const { return rank_; }
   // After project(), per patch: the summed delta form factors of the pixels showing it,
   // its projected area in pixels over all faces, and whether the shooter sees its front.
   const std::vector<double>& pixelFormFactors() const { return pixelFormFactors_; }

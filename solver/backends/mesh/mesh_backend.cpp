@@ -210,7 +210,7 @@ FormFactorRow MeshBackend::assembleRow(const MeshShot& shot, int plane, std::vec
     for (int id : buffer.items) if (id != ItemBuffer::kNone) ++shownPixels[id];
     if (!occluders_) occluders_.emplace(patches_);
     const ProjectedShot projected{receivers_, patches_[shot.shooters[plane]], surface_, {&buffer, 1},
-                                  scan_->depthTieRank(), projectedAreaPixels, projectedWidthPixels, coveredPixels,
+                                  projectedAreaPixels, projectedWidthPixels, coveredPixels,
                                   shownPixels, *occluders_};
     refineSubPixelReceivers(projected, hostPool_, formFactors);
   }

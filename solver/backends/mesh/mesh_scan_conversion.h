@@ -147,7 +147,6 @@ class MeshScanConversion {
   // q * pixelsPerPlane() + a * columnsPerPe() + b. Unowned slots stay empty.
   const emu::PeArray<ZEntry>& itemBuffers() const { return zBuffer_; }
   int pixelsPerPlane() const { return rowsPerPe_ * columnsPerPe_; }
-  const std::vector<int>& depthTieRank() const { return rank_; }
   int columnsPerPe() const { return columnsPerPe_; }
 
  private:

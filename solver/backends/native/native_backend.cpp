@@ -147,7 +147,7 @@ FormFactorRow NativeBackend::projectedRow(EnvironmentProjection& projection, int
 ProjectedShot NativeBackend::shotOf(const EnvironmentProjection& projection, int shooter,
                                     const std::vector<Patch>& receivers) {
   if (!occluders_) occluders_.emplace(patches_);
-  return {receivers, patches_[shooter], projection.surface(), projection.itemBuffers(), projection.depthTieRank(),
+  return {receivers, patches_[shooter], projection.surface(), projection.itemBuffers(),
           projection.projectedAreaPixels(), projection.projectedWidthPixels(), projection.coveredPixels(),
           projection.shownPixels(), *occluders_};
 }

@@ -212,7 +212,7 @@ TEST(ElementShares, AWholePatchSharesInProportionToItsElementsClosedForms) {
   projection.project(0);
   const Occluders occluders(t.patches);
   const ProjectedShot shot{t.patches, t.patches[0], projection.surface(), projection.itemBuffers(),
-                           projection.depthTieRank(), projection.projectedAreaPixels(),
+                           projection.projectedAreaPixels(),
                            projection.projectedWidthPixels(), projection.coveredPixels(), projection.shownPixels(),
                            occluders};
   const PatchShot patchShot{projection.pixelFormFactors(), projection.seenFromFront(), projection.coveredPixels(),
