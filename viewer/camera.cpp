@@ -53,11 +53,25 @@ WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
     // A bake, turned from one frame onto another, starts where its scene does.
     eyeHeightM = std::min(1.6, 0.6 * frame.heightM());
     standIn(frame.boundsMin, frame.boundsMax, cornerFacingFurniture(frame));
-    stepIntoFreeSpace();
+    if (!stepIntoFreeSpace()) lookFromOutside();
   }
 }
 
-void WalkCamera::stepIntoFreeSpace() {
+void WalkCamera::lookFromOutside() {
+  const UpFrame axes = upFrame(frame_.upAxis);
+  const glm::dvec3 centre = 0.5 * (frame_.boundsMin + frame_.boundsMax);
+  // From over the least corner, 30 degrees up, far enough that the bounds' sphere fills the view.
+  const double elevation = std::numbers::pi / 6.0;
+  const glm::dvec3 towardEye = std::cos(elevation) * glm::normalize(-axes.across - axes.along) + std::sin(elevation) * up_;
+  const double distanceM = 1.05 * 0.5 * sizeM() / std::sin(glm::radians(0.5 * fovYDeg));
+  const glm::dvec3 eye = centre + distanceM * towardEye;
+  eyeHeightM = glm::dot(eye, up_) - frame_.floorLevel();
+  ground_ = horizontal(eye, up_) + up_ * frame_.floorLevel();
+  forward_ = -towardEye;
+  outside_ = true;
+}
+
+bool WalkCamera::stepIntoFreeSpace() {
   constexpr double kStepM = 0.25, kReachM = 4.0;
   const UpFrame axes = upFrame(frame_.upAxis);
   // 0.3 m from any wall, or a tenth of a model smaller than 3 m across (the 1 m furnace's corner).
@@ -83,7 +97,7 @@ void WalkCamera::stepIntoFreeSpace() {
   // plan, in at most 16 rings (as many points as within 4 m).
   const double plan = std::max(std::abs(glm::dot(extent, axes.across)), std::abs(glm::dot(extent, axes.along)));
   searchRings(std::max(kStepM, plan / 16.0), plan);
-  if (!free) return;
+  if (!free) return false;
   // Looking the longest way clear to a face: towards the centre (standIn's), or every 45 degrees;
   // down a corridor, across a room, not out through a window. Towards the centre a corner of
   // building:1x1 stood a metre from the spine's wall.
@@ -102,6 +116,7 @@ void WalkCamera::stepIntoFreeSpace() {
     const double clear = clearAlong(direction);
     if (std::isfinite(clear) && clear > longest) longest = clear, forward_ = direction;
   }
+  return true;
 }
 
 glm::dvec2 WalkCamera::cornerFacingFurniture(const SceneFrame& frame) {

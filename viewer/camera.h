@@ -25,7 +25,8 @@ class WalkCamera {
   // (lower in a room under 2.7 m), looking level the longest way clear (stepIntoFreeSpace): the
   // corner of least across and along (upFrame's), unless the furniture stands on that side
   // (cornerFacingFurniture). A scene open on one side (a Cornell box) is looked into through that
-  // side from outside instead. A building drawn at an angle to the axes (frame.planTurn) starts as
+  // side from outside instead, and so is a model with no free space to stand in (a luminaire, a
+  // chair: lookFromOutside). A building drawn at an angle to the axes (frame.planTurn) starts as
   // it would drawn along them.
   explicit WalkCamera(const SceneFrame& frame);
 
@@ -41,7 +42,7 @@ class WalkCamera {
   // A cell's bounds are its free space's voxels', up to a voxel past its walls on every side: 0.35
   // of them from the centre stood in the spine's outer wall on building:2x2.
   static constexpr double kCellReach = 0.25;
-  // Whether it started outside, looking in through an open side.
+  // Whether it started outside, looking in through an open side or at a model with no room in it.
   bool looksInFromOutside() const { return outside_; }
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
@@ -65,8 +66,10 @@ class WalkCamera {
   // Where the start stands in no room (in a wall between a building's rooms, in its courtyard): to
   // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m, else on a grid of
   // 16 steps over the plan (an L-shaped building's missing corner). In free space, looks the
-  // longest way clear to a face.
-  void stepIntoFreeSpace();
+  // longest way clear to a face. False where it found no free space: the start stays.
+  bool stepIntoFreeSpace();
+  // Outside the bounds over their least corner, looking down at their centre, all of them in view.
+  void lookFromOutside();
 
   SceneFrame frame_;
   bool outside_ = false;

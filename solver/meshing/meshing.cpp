@@ -284,6 +284,34 @@ CellChoice elementsPresetChoice(const CellChoice& sceneCell) {
                              kElementsCellScale, sceneCell.why)};
 }
 
+namespace {
+
+// The cell that makes at most about `budget` patches of the scene's area, no finer than `finest`.
+// Polygons narrower than the cell make partial patches, many more than area / cell^2 (a
+// building's walls: three times as many): the cell grows until the count itself fits. The
+// estimate is from above: "about" allows it a quarter over. Where the polygons alone are most of
+// the count, a larger cell stops helping: the cell stays where it did.
+CellChoice cellWithinBudget(const Scene& scene, double areaM2, double budget, double finest) {
+  double cellM = std::max(finest, std::sqrt(areaM2 / budget));
+  const Grids grids = gridsOf(scene);
+  double estimate = patchEstimate(scene, cellM, grids);
+  for (int step = 0; step < 20 && estimate > 1.25 * budget; ++step) {
+    const double grown = cellM * std::min(2.0, estimate / budget);
+    const double fewer = patchEstimate(scene, grown, grids);
+    if (fewer > 0.9 * estimate) break;
+    cellM = grown;
+    estimate = fewer;
+  }
+  if (estimate > 1.25 * budget)
+    return {cellM, fmt::format("cell {:.4g} m: its {} polygons alone make more than {:.0f} patches (about {:.3g} "
+                               "here; a larger cell hardly lowers that)",
+                               cellM, scene.polygons.size(), budget, estimate)};
+  return {cellM, fmt::format("cell {:.4g} m, so that its {:.4g} m^2 make at most about {:.0f} patches", cellM,
+                             areaM2, budget)};
+}
+
+}  // namespace
+
 CellChoice chooseCell(const Scene& scene) {
   Vec3 low(DBL_MAX), high(-DBL_MAX);
   double area = 0.0;
@@ -301,34 +329,23 @@ CellChoice chooseCell(const Scene& scene) {
   double smallest = largest;
   for (int a = 0; a < 3; ++a)
     if (extent[a] > 1e-9 * largest) smallest = std::min(smallest, extent[a]);
-  double budgetCell = std::sqrt(area / kCellPatchBudget);
+  const double budgetCell = std::sqrt(area / kCellPatchBudget);
   // A model narrower than a room is cut finer, but a long one (a 1000 m corridor 1 m wide) within
-  // the budget all the same.
+  // the budget all the same; an object smaller than a room in every direction (a luminaire
+  // 1.2 x 0.26 x 0.09 m) within a room's count of patches, or its thinnest side would make it
+  // ten times a room's and minutes of solving.
   const bool narrow = smallest < kRoomSizedM;
-  if (narrow && smallest / 16.0 >= budgetCell)
-    return {smallest / 16.0, fmt::format("cell {:.4g} m, a sixteenth of the model's smallest extent ({:.3g} m, "
-                                         "smaller than a room)", smallest / 16.0, smallest)};
-  if (narrow || budgetCell > kDefaultCellM) {
-    // Polygons narrower than the cell make partial patches, many more than area / cell^2 (a
-    // building's walls: three times as many): grow the cell until the count itself fits.
-    // The estimate is from above: "about" allows it a quarter over. Where the polygons alone are
-    // most of the count, a larger cell stops helping: the cell stays where it did.
-    const Grids grids = gridsOf(scene);
-    double estimate = patchEstimate(scene, budgetCell, grids);
-    for (int step = 0; step < 20 && estimate > 1.25 * kCellPatchBudget; ++step) {
-      const double grown = budgetCell * std::min(2.0, estimate / kCellPatchBudget);
-      const double fewer = patchEstimate(scene, grown, grids);
-      if (fewer > 0.9 * estimate) break;
-      budgetCell = grown;
-      estimate = fewer;
-    }
-    if (estimate > 1.25 * kCellPatchBudget)
-      return {budgetCell, fmt::format("cell {:.4g} m: its {} polygons alone make more than {:.0f} patches (about "
-                                      "{:.3g} here; a larger cell hardly lowers that)",
-                                      budgetCell, scene.polygons.size(), kCellPatchBudget, estimate)};
-    return {budgetCell, fmt::format("cell {:.4g} m, so that its {:.4g} m^2 make at most about {:.0f} patches",
-                                    budgetCell, area, kCellPatchBudget)};
+  const double sixteenth = smallest / 16.0;
+  if (narrow && largest < kRoomSizedM) {
+    const CellChoice object = cellWithinBudget(scene, area, kObjectPatchBudget, sixteenth);
+    if (object.cellM > sixteenth)
+      return {object.cellM, fmt::format("{} (an object smaller than a room: a sixteenth of its smallest extent, "
+                                        "{:.3g} m, would make more)", object.why, smallest)};
   }
+  if (narrow && sixteenth >= budgetCell)
+    return {sixteenth, fmt::format("cell {:.4g} m, a sixteenth of the model's smallest extent ({:.3g} m, "
+                                   "smaller than a room)", sixteenth, smallest)};
+  if (narrow || budgetCell > kDefaultCellM) return cellWithinBudget(scene, area, kCellPatchBudget, 0.0);
   return {kDefaultCellM, fmt::format("cell {} m, the paper's 15 inches (a room-sized model)", kDefaultCellM)};
 }
 

@@ -13,6 +13,8 @@ inline constexpr double kDefaultCellM = 0.381;  // 15 inches, the paper's grid
 inline constexpr double kRoomSizedM = 1.5;
 // The cell chosen for a model when none is given: at most about this many patches.
 inline constexpr double kCellPatchBudget = 200'000;
+// ... and for an object smaller than a room in every direction, about a room's (the office: 3932).
+inline constexpr double kObjectPatchBudget = 4'000;
 
 struct CellChoice {
   double cellM = kDefaultCellM;
@@ -21,7 +23,8 @@ struct CellChoice {
 
 // The cell for a model when the user gives none: the paper's 15 inches for room-sized models and
 // buildings; a sixteenth of the smallest extent for a model smaller than a room (a 0.55 m box
-// would be 42 patches at 15 inches); and for a model so large that 15 inches would make more than
+// would be 42 patches at 15 inches), coarser where an object that small would make more than
+// about kObjectPatchBudget patches; and for a model so large that 15 inches would make more than
 // about kCellPatchBudget patches, the cell of that many.
 CellChoice chooseCell(const Scene& scene);
 // --preset elements' patch cell from the scene's choice: elementsPresetCell of it, and why.

@@ -175,6 +175,35 @@ TEST(WalkCamera, LooksIntoAnOpenSideFromOutsideSeeingAllOfIt) {
   EXPECT_GT(view.look.z, view.eye.z);
 }
 
+// A model with no free space to stand in (examp1.mgf's luminaire, a trough 1.2 x 0.26 x 0.09 m open
+// at the top) is looked at from outside, all of it in view; the closed 1 m furnace is still
+// entered.
+TEST(WalkCamera, AModelWithNoRoomToStandInIsLookedAtFromOutside) {
+  const double x = 1.2, y = 0.26, z = 0.09;
+  std::vector<FrameFace> trough = {
+      {{{0, 0, 0}, {x, 0, 0}, {x, y, 0}, {0, y, 0}}},  // the bottom, facing up
+      {{{0, 0, 0}, {0, 0, z}, {x, 0, z}, {x, 0, 0}}},  // four sides facing in
+      {{{0, y, 0}, {x, y, 0}, {x, y, z}, {0, y, z}}},
+      {{{0, 0, 0}, {0, y, 0}, {0, y, z}, {0, 0, z}}},
+      {{{x, 0, 0}, {x, 0, z}, {x, y, z}, {x, y, 0}}}};
+  const SceneFrame frame = frameOf(trough, 2);
+  WalkCamera camera(frame);
+  EXPECT_TRUE(camera.looksInFromOutside());
+  const RenderView view = camera.view();
+  EXPECT_FALSE(inside(view.eye, frame));
+  EXPECT_GT(view.eye.z, z);  // from above, where it is open
+  EXPECT_NO_THROW(validateView(view));
+  const Vec3 forward = glm::normalize(view.look - view.eye);
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p((corner & 1) ? x : 0.0, (corner & 2) ? y : 0.0, (corner & 4) ? z : 0.0);
+    const double angle = std::acos(glm::dot(forward, glm::normalize(p - view.eye)));
+    EXPECT_LT(angle, glm::radians(0.5 * camera.fovYDeg)) << "corner " << corner;
+  }
+  WalkCamera furnace(sceneFrame(loadScene("furnace")));
+  EXPECT_FALSE(furnace.looksInFromOutside());
+  EXPECT_TRUE(inside(furnace.view().eye, sceneFrame(loadScene("furnace"))));
+}
+
 TEST(WalkCamera, WalksAtItsSpeedOnTheFloorPlane) {
   WalkCamera camera(room({10.0, 10.0, 3.0}));
   camera.speedMps = 2.0;

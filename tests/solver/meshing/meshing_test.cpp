@@ -97,8 +97,19 @@ TEST(Meshing, TheDefaultCellFollowsTheModelsSize) {
   const CellChoice cornell = chooseCell(box({0.556, 0.559, 0.548}));
   EXPECT_DOUBLE_EQ(cornell.cellM, 0.548 / 16.0);
   EXPECT_NE(cornell.why.find("smaller than a room"), std::string::npos) << cornell.why;
-  const CellChoice wall = chooseCell(box({1.0, 0.0, 1.2}));  // flat: sized by its shorter side
+  Scene wallAlone = box({1.0, 0.0, 1.2});
+  wallAlone.polygons.erase(wallAlone.polygons.begin());  // the floor is flat: no area
+  const CellChoice wall = chooseCell(wallAlone);  // flat: sized by its shorter side
   EXPECT_DOUBLE_EQ(wall.cellM, 1.0 / 16.0);
+  // An object smaller than a room but thin (a luminaire, 1.2 x 0.26 x 0.09 m): a sixteenth of its
+  // 0.09 m would make 13 000 patches; it gets about a room's.
+  const Scene luminaire = box({1.2, 0.26, 0.09});
+  const CellChoice object = chooseCell(luminaire);
+  EXPECT_GT(object.cellM, 0.09 / 16.0) << object.why;
+  const double objectPatches = static_cast<double>(meshScene(luminaire, object.cellM).size());
+  EXPECT_LE(objectPatches, 1.25 * kObjectPatchBudget) << object.why;
+  EXPECT_GE(objectPatches, 0.5 * kObjectPatchBudget) << object.why;
+  EXPECT_NE(object.why.find("an object smaller than a room"), std::string::npos) << object.why;
   const CellChoice campus = chooseCell(box({400.0, 300.0, 20.0}));  // 400*300 + 400*20 m^2
   EXPECT_DOUBLE_EQ(campus.cellM, std::sqrt((400.0 * 300.0 + 400.0 * 20.0) / kCellPatchBudget));
   EXPECT_NEAR(static_cast<double>(meshScene(box({400.0, 300.0, 20.0}), campus.cellM).size()), kCellPatchBudget,
