@@ -96,15 +96,16 @@ ProgressiveSolver::~ProgressiveSolver() = default;
 
 // The k patches with the most unshot power, on the back end (the mesh's reduceMax). Without
 // interreflection, every emitter at once: nothing comes back, so one shot each from the first
-// state is the whole solution.
+// state is the whole solution. Once the rest is under the unshot stop, the emitters that have not
+// shot yet, strongest first: the same selection over their power alone, charged to the machine.
 std::vector<int> ProgressiveSolver::State::pickShooters() {
   const int k = plan.interreflection ? options.shooters : static_cast<int>(patches.size());
   if (options.untilUnshot > 0.0 && littleLeft()) {
-    std::vector<int> waiting = unshotEmitters();
-    if (!waiting.empty()) {
-      if (waiting.size() > static_cast<size_t>(k)) waiting.resize(static_cast<size_t>(k));
-      return waiting;
-    }
+    std::vector<double> waitingW(unshotPowerW.size(), 0.0);
+    bool waiting = false;
+    for (int i : emitters)
+      if (waitsToShoot(i)) waitingW[i] = unshotPowerW[i], waiting = true;
+    if (waiting) return backend->selectShooters(waitingW, tieRank, k);
   }
   return backend->selectShooters(unshotPowerW, tieRank, k);
 }
@@ -115,14 +116,8 @@ bool ProgressiveSolver::State::littleLeft() const {
   return ledger.unshotFraction() <= std::max(options.untilUnshot, kLedgerTolerance);
 }
 
-std::vector<int> ProgressiveSolver::State::unshotEmitters() const {
-  std::vector<int> waiting;
-  for (int i : emitters)
-    if (timesShot[i] == 0 && unshotPowerW[i] > 0.0) waiting.push_back(i);
-  std::sort(waiting.begin(), waiting.end(), [&](int a, int b) {
-    return unshotPowerW[a] != unshotPowerW[b] ? unshotPowerW[a] > unshotPowerW[b] : tieRank[a] < tieRank[b];
-  });
-  return waiting;
+bool ProgressiveSolver::State::waitsToShoot(int emitter) const {
+  return timesShot[emitter] == 0 && unshotPowerW[emitter] > 0.0;
 }
 
 void ProgressiveSolver::State::fetchRows(const std::vector<int>& shooters, IterationRecord& record) {
@@ -295,8 +290,7 @@ bool ProgressiveSolver::exhausted() const { return state_->exhausted; }
 
 int ProgressiveSolver::emittersToShoot() const {
   const State& s = *state_;  // a count, asked every round of a cells solve: no list, no sort
-  return static_cast<int>(std::count_if(s.emitters.begin(), s.emitters.end(),
-                                        [&](int i) { return s.timesShot[i] == 0 && s.unshotPowerW[i] > 0.0; }));
+  return static_cast<int>(std::count_if(s.emitters.begin(), s.emitters.end(), [&](int i) { return s.waitsToShoot(i); }));
 }
 
 double ProgressiveSolver::receiveLight(FormFactorRow row, const Rgb& power) {

@@ -86,10 +86,10 @@ struct ProgressiveSolver::State {
   std::vector<int> pickShooters();
   // What is left unshot is under --until-unshot (or under what the ledger can vouch for).
   bool littleLeft() const;
-  // Emitting patches that have not shot, strongest first. The unshot stop waits for them: a dim
+  // Whether an emitting patch has power and has not shot. The unshot stop waits for those: a dim
   // room's lamp, under --until-unshot of the building's power, would otherwise never shoot, and
   // its room stay black.
-  std::vector<int> unshotEmitters() const;
+  bool waitsToShoot(int emitter) const;
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   void shootLights(IterationRecord& record);

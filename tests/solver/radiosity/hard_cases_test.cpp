@@ -8,6 +8,7 @@
 #include <numbers>
 #include <tuple>
 
+#include "solver/backends/mesh/mesh_backend.h"
 #include "solver/formfactors/analytic_form_factor.h"
 #include "solver/io/gltf_import.h"
 #include "solver/meshing/meshing.h"
@@ -347,6 +348,22 @@ TEST(HardCases, ADimRoomsLampShootsBeforeTheUnshotStop) {
   ASSERT_TRUE(solveChecked(whole));
   EXPECT_EQ(whole.emittersToShoot(), 0);
   expectDimRoomLit(whole.radiosity(), "whole");
+
+  // On the mesh back end the machine picks those shots too, by its reduceMax over their power: every
+  // iteration is charged for its shooter selection (the host had picked them uncharged).
+  SolveOptions onMesh = o;
+  onMesh.backend = Backend::Mesh;
+  onMesh.projection = Projection::Plane;
+  onMesh.resolution = 64;
+  onMesh.shooters = 4;  // a quarter of the iterations
+  ProgressiveSolver mesh(rooms.scene, rooms.patches, onMesh);
+  while (!mesh.done()) {
+    const IterationRecord& record = mesh.step();
+    const std::vector<MeshPhaseCost>& phases = dynamic_cast<MeshBackend&>(mesh.backend()).lastShot().phases;
+    ASSERT_FALSE(phases.empty()) << "iteration " << record.iteration;
+    EXPECT_EQ(phases.front().name, "shooter selection") << "iteration " << record.iteration;
+  }
+  EXPECT_EQ(mesh.emittersToShoot(), 0);
 
   CellPartition partition;
   partition.cells = {{"lit", {0, 0, 0}, {4, 3, 2.5}}, {"dim", {4.2, 0, 0}, {8.2, 3, 2.5}}};
