@@ -35,6 +35,20 @@ bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
 
 }  // namespace
 
+bool inNearField(const Patch& shooter, double size, const Patch& receiver) {
+  const Vec3 d = receiver.centroid - shooter.centroid;
+  const double r2 = glm::dot(d, d);
+  if (r2 < size * size) return true;
+  const double facing = -glm::dot(shooter.normal, receiver.normal), h = -glm::dot(d, receiver.normal);
+  if (!(facing > 0.0) || !(h > 0.0 && h < size)) return false;
+  return facing * shooter.areaM2 / 3.0 * h * h * (r2 - h * h) / (r2 * r2 * r2) > kGapTailLimit;
+}
+
+// The gap's term is at most (A / 3) size^2 / r^4 (h < size, facing <= 1).
+double nearFieldReach(const Patch& shooter, double size) {
+  return std::max(size, std::pow(shooter.areaM2 * size * size / (3.0 * kGapTailLimit), 0.25));
+}
+
 std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& patches) {
   return findNearFieldReceivers(patches, patches);
 }
@@ -76,21 +90,22 @@ NearFieldFinder::Spread NearFieldFinder::spreadOf(const Patch& patch) {
 }
 
 // A receiver near the shooter has a vertex in front of the shooter's plane, and the shooter one in
-// front of its plane, each by more than the rounding tolerance: their sum exceeds twice that. Yet
-// were both normals `normal`, the sum would be at most the two bulges; their differences from it
-// add at most that difference times the distances involved (centroids within reach, vertices
-// within radius of theirs), and 1e-12 of those distances covers rounding. Where that bound stays
-// under twice the tolerance, no receiver of the stack faces the shooter: parallel, flat copies never do.
-bool NearFieldFinder::neverNear(const Patch& shooter, const Spread& spread, double reach, const Stack& stack,
-                                const Vec3& normal) {
+// front of its plane, each by more than the rounding tolerance (at the shooter's size): their sum
+// exceeds twice that. Yet were both normals `normal`, the sum would be at most the two bulges;
+// their differences from it add at most that difference times the distances involved (centroids
+// within reach, vertices within radius of theirs), and 1e-12 of those distances covers rounding.
+// Where that bound stays under twice the tolerance, no receiver of the stack faces the shooter:
+// parallel, flat copies never do.
+bool NearFieldFinder::neverNear(const Patch& shooter, const Spread& spread, double size, double reach,
+                                const Stack& stack, const Vec3& normal) {
   const double tilt = glm::length(shooter.normal - normal) + stack.tilt + 1e-12;
   const double distances = reach + spread.radius + stack.spread.radius;
-  return spread.bulge + stack.spread.bulge + tilt * distances <= 2.0 * kRounding * reach;
+  return spread.bulge + stack.spread.bulge + tilt * distances <= 2.0 * kRounding * size;
 }
 
 // Shooters in classes by diameter, halving from the largest; a class's grid has cells half as wide
-// as its largest diameter, so a shooter searches only the cells its reach (its diameter) overlaps,
-// at most 5 x 5 x 5 of them, and never cells much wider than itself.
+// as its largest diameter, so a shooter searches only the cells its reach (nearFieldReach, at most 3.1
+// diameters) overlaps, and never cells much wider than itself.
 const NearFieldFinder::Grid& NearFieldFinder::gridFor(double size) {
   size_t k = 0;
   double top = largest_;
@@ -155,13 +170,14 @@ void NearFieldFinder::receiversSplit(const std::vector<int>& origin, const std::
 
 const std::vector<int>& NearFieldFinder::receiversNear(int i) {
   std::vector<int>& near = near_[i];
-  const double reach = size_[i];
-  if (found_[i] || !(reach > 0.0)) return near;  // a shooter of no extent has no near receivers
+  const double size = size_[i];
+  if (found_[i] || !(size > 0.0)) return near;  // a shooter of no extent has no near receivers
   found_[i] = 1;
   const bool selfReceives = &shooters_ == &receivers_;
   const Patch& shooter = shooters_[i];
   const Spread spread = spreadOf(shooter);
-  const Grid& grid = gridFor(reach);
+  const double reach = nearFieldReach(shooter, size);
+  const Grid& grid = gridFor(size);
   const Cell low = grid.cellOf(shooter.centroid - Vec3(reach)), high = grid.cellOf(shooter.centroid + Vec3(reach));
   constexpr long long kLeast = std::numeric_limits<long long>::min();
   for (long long x = low[0]; x <= high[0]; ++x)
@@ -172,13 +188,14 @@ const std::vector<int>& NearFieldFinder::receiversNear(int i) {
         const size_t k = it - grid.sorted.begin();
         const int j = it->second;
         if (const int s = grid.stackAt[k];
-            s >= 0 && neverNear(shooter, spread, reach, grid.stacks[s], receivers_[j].normal)) {
+            s >= 0 && neverNear(shooter, spread, size, reach, grid.stacks[s], receivers_[j].normal)) {
           it = grid.sorted.begin() + grid.stacks[s].end - 1;  // on to the stack's last
           continue;
         }
         ++examined_;
         if ((selfReceives && j == i) || !(glm::length(grid.centroids[k] - shooter.centroid) < reach)) continue;
-        if (partlyInFront(receivers_[j], shooter, reach) && partlyInFront(shooter, receivers_[j], reach))
+        if (inNearField(shooter, size, receivers_[j]) && partlyInFront(receivers_[j], shooter, size) &&
+            partlyInFront(shooter, receivers_[j], size))
           near.push_back(j);
       }
     }

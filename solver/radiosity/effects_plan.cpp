@@ -119,9 +119,10 @@ EffectsPlan planEffects(const Scene& scene, const std::vector<Patch>& patches, E
   plan.nearField = pairs > 0;
   const std::string nearWhy =
       pairs > 0 ? fmt::format("{} shooter-receiver pairs, from {} of the {} patches, are closer than the shooter's "
-                              "size: area-to-area form factors for those pairs only",
+                              "size or face it across a narrow gap: area-to-area form factors for those pairs only",
                               pairs, shooters, patches.size())
-                : "no receiver is closer to a shooter than the shooter's size: point-source form factors hold";
+                : "no receiver is closer to a shooter than the shooter's size, nor faces it across a narrow gap: "
+                  "point-source form factors hold";
 
   if (forceAll) plan.occlusion = plan.colour = plan.interreflection = plan.escape = plan.nearField = true;
   auto reason = [&](bool skippable, const std::string& why) {

@@ -99,8 +99,7 @@ TEST(NearField, ReceiversFoundInGroupsBySizeAreThoseOfTheDefinition) {
     };
     std::vector<int> expected;
     for (size_t j = 0; j < t.patches.size(); ++j)
-      if (j != i && glm::length(t.patches[j].centroid - s.centroid) < size && partlyInFront(t.patches[j], s) &&
-          partlyInFront(s, t.patches[j]))
+      if (j != i && inNearField(s, size, t.patches[j]) && partlyInFront(t.patches[j], s) && partlyInFront(s, t.patches[j]))
         expected.push_back(static_cast<int>(j));
     EXPECT_EQ(near[i], expected) << "shooter " << i;
     pairs += expected.size();

@@ -208,6 +208,27 @@ TEST(EffectsSkip, NearFieldGivesTheParallelSquaresTheirAreaToAreaFormFactor) {
   EXPECT_LE(s.ledger.imbalance(), 1e-9);
 }
 
+// A 1 m black plate lit by another 5 cm above it, facing it, both meshed in cells wider than the
+// gap. Only the receivers within a cell's diameter were near: the point estimates of those just
+// beyond, all too low, stayed, and the plate received 3.7 % and 3.2 % too little at 0.1 and
+// 0.0625 m, where 0.5 m was right: the finer mesh was worse.
+TEST(EffectsSkip, NearFieldGivesPlatesAcrossANarrowGapTheirFormFactorWhateverTheCell) {
+  const double gap = 0.05;
+  Scene scene;
+  scene.source = "plates across a gap";
+  scene.materials = {grey(0.0), grey(0.0, 1.0, "light")};
+  scene.polygons = {{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, 0, "receiver"},
+                    {{{0, 0, gap}, {0, 1, gap}, {1, 1, gap}, {1, 0, gap}}, 1, "light"}};
+  const double exact = test::parallelRectanglesFormFactor(1, 1, gap);
+  ASSERT_NEAR(exact, 0.907853, 1e-6);
+  for (double cell : {0.1, 0.0625}) {
+    ProgressiveSolver solver(scene, meshScene(scene, cell), test::optionsFor(Projection::Hemicube, 64));
+    ASSERT_TRUE(test::solveChecked(solver));
+    EXPECT_TRUE(solver.effectsPlan().nearField);
+    EXPECT_NEAR(solver.ledger().absorbed / solver.ledger().emitted, exact, 0.01 * exact) << "cell " << cell;
+  }
+}
+
 TEST(EffectsSkip, NearFieldPairsAreCloseFacingPatchesOnly) {
   std::vector<Patch> patches;
   test::addGrid(patches, Vec3(0), Vec3(2, 0, 0), Vec3(0, 2, 0), 2, 2);  // a floor of four unit cells
