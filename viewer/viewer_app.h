@@ -21,6 +21,7 @@ struct ViewerArgs {
   std::string scene = "office";  // or a bake (solver/bake/bake_reader.h), walked with no solve
   UpChoice up = UpChoice::Format;
   double metresPerUnit = 0.0;  // --units; 0: not given
+  bool strict = false;         // --strict: a scene that needed any repair is refused, as radmesh solve's
   SolveSetup setup = viewerSetup();
   bool cellGiven = false;  // --cell; else setup.cellM is chosen from the scene's size
   // --preset elements without --min-element: each scene's patches are elementsPresetCell of its

@@ -278,5 +278,25 @@ TEST(ViewerCli, AFailedSolveIsSaidInTheTerminal) {
   EXPECT_EQ(run.output.find(said, first + 1), std::string::npos) << "said more than once: " << run.output;
 }
 
+// --strict refuses a scene that needed repairs, by radmesh solve's check and words, before a
+// window opens; without it the file is read repaired (here, on to the missing display).
+TEST(ViewerCli, StrictRefusesAFileThatNeededRepairsAsSolveDoes) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  const std::string file = (test::sourceDir() / "tests" / "data" / "repaired" / "mgf_unknown_entity.mgf").string();
+  const std::string noDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY " + viewerPath() + " " + file;
+  const CommandRun strict = runCommand(noDisplay + " --strict");
+  EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  EXPECT_NE(strict.output.find("radmesh-view: error: " + file + ": --strict: needed 2 kind(s) of repair"),
+            std::string::npos)
+      << strict.output;
+  EXPECT_NE(strict.output.find("(fix: fix the file, or drop --strict to open it repaired)"), std::string::npos)
+      << strict.output;
+  const CommandRun repaired = runCommand(noDisplay);
+  EXPECT_NE(repaired.output.find("radmesh-view: warning: " + file + ": line 14: unknown entity 'glow' skipped"),
+            std::string::npos)
+      << repaired.output;
+  EXPECT_EQ(repaired.output.find("--strict"), std::string::npos) << repaired.output;
+}
+
 }  // namespace
 }  // namespace radmesh
