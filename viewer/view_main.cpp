@@ -13,6 +13,7 @@
 #include "cli/usage_failure.h"
 #include "cli/scene_input.h"
 #include "cli/solve_flags.h"
+#include "cli/view_flags.h"
 #include "solver/io/output_path.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/cell_solver.h"
@@ -122,6 +123,7 @@ int main(int argc, char** argv) {
   CLI::Option* checkpointGiven =
       app.add_option("--checkpoint", args.checkpoint, "Where the panel's Save checkpoint (F5) writes")
           ->capture_default_str();
+  radmesh::cli::addViewFlags(&app, args.start, args.exposureEv);
   app.add_option("--size", size, "Window size WxH")->capture_default_str();
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")
       ->capture_default_str();
@@ -188,7 +190,8 @@ int main(int argc, char** argv) {
     radmesh::refuseFlagsThatShapeNothing(given, o, args.setup.cells);
     for (const std::string& flag : given)  // what walking a bake takes, and the bake itself; the rest shapes a solve
       if (flag != "scene" && flag != "--up" && flag != "--size" && flag != "--panel" && flag != "--steps" &&
-          flag != "--frames" && flag != "--min-frames" && flag != "--screenshot")
+          flag != "--frames" && flag != "--min-frames" && flag != "--screenshot" && flag != "--camera" &&
+          flag != "--look" && flag != "--exposure")
         args.solveFlags.push_back(flag);
     if (args.minFrames > 0 && args.steps <= 0)
       throw radmesh::OptionError("--min-frames times a --steps run: add --steps N, or leave --min-frames out");

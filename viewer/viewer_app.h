@@ -2,11 +2,13 @@
 // `radmesh-view`: the walkthrough window while the solver converges on its own thread.
 #include <glm/vec2.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "solver/io/daylight.h"
 #include "solver/scene/up_axis.h"
+#include "viewer/camera.h"
 #include "viewer/panel.h"
 #include "viewer/solver_snapshot.h"
 
@@ -29,6 +31,10 @@ struct ViewerArgs {
   bool elementsPreset = false;
   Daylight daylight;       // --sky, --sky-model
   glm::ivec2 windowSize{1280, 720};
+  // The launch's file is first seen from here (--camera, --look) at this exposure (--exposure;
+  // none: automatic); a file opened later starts at its own walkthrough start, exposed automatically.
+  ViewStart start;
+  std::optional<double> exposureEv;
   PanelTab firstTab = PanelTab::Progress;
   std::string resume;                       // a checkpoint to go on from (empty: from scratch)
   std::string checkpoint = "radmesh-view.ckpt";  // where the panel's Save checkpoint writes
