@@ -135,6 +135,7 @@ int main(int argc, char** argv) {
                  "print the lowest and median frame rates, save --screenshot, exit")
       ->check(radmesh::cli::kPositive);
   app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps or --frames)");
+  app.add_flag("--quiet", args.quiet, "No frame statistics on exit (it prints no progress lines while it runs)");
   try {
     try {
       std::vector<std::string> arguments = radmesh::cli::decimalArguments(app, argc, argv);
@@ -191,7 +192,7 @@ int main(int argc, char** argv) {
     for (const std::string& flag : given)  // what walking a bake takes, and the bake itself; the rest shapes a solve
       if (flag != "scene" && flag != "--up" && flag != "--size" && flag != "--panel" && flag != "--steps" &&
           flag != "--frames" && flag != "--min-frames" && flag != "--screenshot" && flag != "--camera" &&
-          flag != "--look" && flag != "--exposure")
+          flag != "--look" && flag != "--exposure" && flag != "--quiet")
         args.solveFlags.push_back(flag);
     if (args.minFrames > 0 && args.steps <= 0)
       throw radmesh::OptionError("--min-frames times a --steps run: add --steps N, or leave --min-frames out");

@@ -366,7 +366,7 @@ int runViewer(const ViewerArgs& args) {
     window.swapBuffers();
   }
 
-  stats.print(window.framebufferSize(), viewing->shown->state());
+  if (!args.quiet) stats.print(window.framebufferSize(), viewing->shown->state());
   if (const std::string summary = report.summary(); !summary.empty()) std::printf("radmesh-view: %s\n", summary.c_str());
   return exitCode;
 }

@@ -35,6 +35,7 @@ struct ViewerArgs {
   // none: automatic); a file opened later starts at its own walkthrough start, exposed automatically.
   ViewStart start;
   std::optional<double> exposureEv;
+  bool quiet = false;  // --quiet: no frame statistics on exit
   PanelTab firstTab = PanelTab::Progress;
   std::string resume;                       // a checkpoint to go on from (empty: from scratch)
   std::string checkpoint = "radmesh-view.ckpt";  // where the panel's Save checkpoint writes

@@ -358,5 +358,20 @@ TEST(ViewerCli, StrictRefusesAFileThatNeededRepairsAsSolveDoes) {
   EXPECT_EQ(repaired.output.find("--strict"), std::string::npos) << repaired.output;
 }
 
+// --quiet leaves out the frame statistics printed on exit (the viewer prints no progress lines
+// while it runs, so that is what solve's --quiet would leave out); the screenshot asked for is still said.
+TEST(ViewerCli, QuietLeavesOutTheFrameStatistics) {
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string png = tempPath("quiet.png");
+  const CommandRun loud = runCommand(viewer + "cornell --cell 0.2 --steps 1 --screenshot " + png);
+  ASSERT_EQ(loud.exitCode, 0) << loud.output;
+  EXPECT_NE(loud.output.find("radmesh-view: 1280x720; solver at iteration 1"), std::string::npos) << loud.output;
+  EXPECT_NE(loud.output.find(" frames in "), std::string::npos) << loud.output;
+  const CommandRun quiet = runCommand(viewer + "cornell --cell 0.2 --steps 1 --quiet --screenshot " + png);
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+  EXPECT_EQ(quiet.output, "wrote " + png + "\n");
+}
+
 }  // namespace
 }  // namespace radmesh
