@@ -102,10 +102,11 @@ struct BenchCellsArgs {
   std::string subdivide = "off";  // both solves' elements (docs/accuracy.md): off, uniform or adaptive
   double minElementM = 0.0;
   double cacheMb = 0.0;  // --cache-mb: both solves' form-factor cache
+  int threads = 2;       // --threads: the second cells solve's, beside the first on one (0: every core)
 };
 
 // The cells solve beside the whole building's (docs/cells.md): time, iterations, the error of the
-// reflected light per room; on one thread and on two; and the focus cell's time to focusUnshot.
+// reflected light per room; on one thread and on `threads`; and the focus cell's time to focusUnshot.
 nlohmann::json benchCells(const BenchCellsArgs& args);
 
 // --cache-mb of the benches: none by default, so that a setting's time is its own shots.

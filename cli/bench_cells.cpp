@@ -8,6 +8,7 @@
 #include "cli/counted.h"
 #include "cli/bench.h"
 #include "cli/bench_timing.h"
+#include "parallel/thread_pool.h"
 #include "solver/cells/find_cells.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
@@ -217,14 +218,15 @@ nlohmann::json benchScene(const Scene& scene, const SolveOptions& o, const Bench
   if (!cellsReached || !wholeReached)
     fmt::print(stderr, "radmesh: warning: --max-iterations stopped a solve short of {:g}% unshot (+): its times "
                "and errors are not of the same light\n", 100.0 * o.untilUnshot);
-  SolveOptions two = o;
-  two.threads = 2;
-  const CellsRun parallel = runCells(scene, patches, partition, two, args);
+  SolveOptions more = o;
+  more.threads = ThreadPool::sizeFor(args.threads);
+  const CellsRun parallel = runCells(scene, patches, partition, more, args);
   const bool identical = parallel.radiosity == one.radiosity;
-  fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%   {:.2f}x on 2 threads (wall against wall), {}\n",
-             "cells, 2 threads", parallel.seconds, parallel.wallSeconds,
+  const std::string threads = counted(more.threads, "thread");
+  fmt::print("{:<28} {:>10.3f} {:>10.3f} {:>11} {:>7.2f}%   {:.2f}x on {} (wall against wall), {}\n",
+             "cells, " + threads, parallel.seconds, parallel.wallSeconds,
              iterationsText(parallel.iterations, parallel.unshotFraction <= o.untilUnshot),
-             100.0 * parallel.unshotFraction, one.wallSeconds / parallel.wallSeconds,
+             100.0 * parallel.unshotFraction, one.wallSeconds / parallel.wallSeconds, threads,
              identical ? "bitwise identical" : "DIFFERENT RESULTS");
   const FocusRun focus = printFocus(focusRun(scene, patches, partition, o, args), args);
   result.update({{"cells_seconds", one.seconds},
@@ -253,13 +255,15 @@ nlohmann::json benchCells(const BenchCellsArgs& args) {
   // Every scene read before the first is solved: a misspelt last one is found now, not after the rest.
   std::vector<Scene> loaded;
   for (const std::string& name : args.scenes) loaded.push_back(loadScene(name));
-  fmt::print("seconds: one thread, the solving thread's CPU time; two threads, wall time; the speed-up on two "
-             "threads is wall time against wall time\n");
+  fmt::print("seconds: on one thread, the solving thread's CPU time; on more, wall time; the speed-up on {} is wall "
+             "time against wall time\n",
+             counted(ThreadPool::sizeFor(args.threads), "thread"));
   nlohmann::json scenes = nlohmann::json::array();
   for (const Scene& scene : loaded) scenes.push_back(benchScene(scene, o, args));
   return {{"projection", args.projection}, {"resolution", args.resolution}, {"until_unshot", args.untilUnshot},
           {"subdivide", args.subdivide}, {"min_element", args.minElementM}, {"cache_mb", args.cacheMb},
-          {"exchange_shots", args.exchangeShots}, {"portal_bins", args.portalBins}, {"scenes", scenes}};
+          {"exchange_shots", args.exchangeShots}, {"portal_bins", args.portalBins},
+          {"threads", ThreadPool::sizeFor(args.threads)}, {"scenes", scenes}};
 }
 
 }  // namespace radmesh::cli

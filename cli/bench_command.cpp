@@ -205,11 +205,20 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_option("--min-element", args->minElementM, "With --subdivide: the longest element edge, metres")
       ->capture_default_str();
   addCacheOption(cmd, args->cacheMb);
+  CLI::Option* threads =
+      cmd->add_option("--threads", args->threads,
+                      "Host threads of the second cells solve (0: every core), beside the first on one; the whole "
+                      "building's and the focus run are on one")
+          ->transform(threadCount("radmesh"))
+          ->capture_default_str();
   cmd->add_flag("--skip-whole", args->skipWhole, "No whole-building solve (for buildings where it takes too long)");
   cmd->add_flag("--focus-only", args->focusOnly, "Only the focus cell's time to --focus-unshot (no solve to --until-unshot)");
   cmd->add_option("--json", *json, "Also write the figures as JSON");
-  cmd->callback([args, json] {
+  cmd->callback([args, json, threads] {
     checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);  // as bench accuracy
+    if (args->focusOnly && threads->count() > 0)
+      throw OptionError("bench cells --threads sets the second cells solve's threads, and --focus-only runs the focus "
+                        "cell alone, on one: leave --threads out, or drop --focus-only");
     writeJsonIfAsked(*json, benchCells(*args));
   });
 }

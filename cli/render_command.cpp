@@ -29,6 +29,7 @@
 #include "viewer/camera.h"
 #include "viewer/exposure.h"
 #include "viewer/offscreen_render.h"
+#include "cli/view_flags.h"
 #endif
 
 namespace radmesh::cli {
@@ -39,8 +40,7 @@ namespace {
 
 struct RenderArgs {
   SolveFlags flags;
-  std::optional<glm::dvec3> camera;  // none: the walkthrough's start view
-  std::optional<glm::dvec3> look;    // none: the start view's, or the scene centre with --camera
+  ViewStart start;  // --camera, --look
   double fovDeg = 60.0;
   std::string size = "1024x768";
   int iterations = 0;  // 0: until --until
@@ -49,15 +49,6 @@ struct RenderArgs {
   bool quiet = false;
   std::string outPath;
 };
-
-glm::dvec3 parsePoint(const std::string& text, const char* option) {
-  glm::dvec3 p;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &p.x, &p.y, &p.z, &tail) != 3 || !std::isfinite(p.x) ||
-      !std::isfinite(p.y) || !std::isfinite(p.z))
-    throw OptionError(fmt::format("{} '{}' is not a point: give three numbers in metres as X,Y,Z", option, text));
-  return p;
-}
 
 // Drawing takes about this much a pixel at its peak (OSMesa's colour and depth, the captured
 // picture, the PNG's rows; measured with /usr/bin/time at 4096x4096: 20.3 bytes).
@@ -83,37 +74,11 @@ constexpr double kMaxFovDeg = 170.0;
 
 // The start view of the walkthrough, moved by --camera / --look / --fov: chosen (or refused) from
 // the scene's frame before a solve, not after it.
-
 RenderView chooseView(const RenderArgs& args, const SceneFrame& frame) {
   WalkCamera walk(frame);
   walk.fovYDeg = args.fovDeg;
-  RenderView view = walk.view();
-  if (args.camera) {
-    view.eye = *args.camera;
-    view.look = 0.5 * (frame.boundsMin + frame.boundsMax);
-  }
-  if (args.look) view.look = *args.look;
-  if (!std::isfinite(glm::length(view.look - view.eye)))
-    throw OptionError("--camera/--look: too far apart to aim the camera; give points near the scene");
-  // A camera placed outside the walk's reach still sees the whole scene: the far plane lies
-  // beyond the scene's farthest corner from it.
-  const glm::dvec3 centre = 0.5 * (frame.boundsMin + frame.boundsMax);
-  view.farM = std::max(view.farM, 1.5 * (glm::length(view.eye - centre) + 0.5 * glm::length(frame.boundsMax - frame.boundsMin)));
-  try {
-    validateView(view);
-  } catch (const std::invalid_argument& e) {
-    // Without --look the camera looks at the scene's centre: say where that is.
-    const std::string centreText = args.camera && !args.look
-                                       ? fmt::format(" (without --look, the scene's centre {:.4g},{:.4g},{:.4g})",
-                                                     view.look.x, view.look.y, view.look.z)
-                                       : "";
-    // Named as given: the view's own flags, or the walkthrough's start where none is.
-    std::string given = std::string(args.camera ? "/--camera" : "") + (args.look ? "/--look" : "") +
-                        (args.fovDeg != RenderArgs{}.fovDeg ? "/--fov" : "");
-    given = given.empty() ? "the walkthrough's start" : given.substr(1);
-    throw OptionError(fmt::format("{}: {}{}", given, e.what(), centreText));
-  }
-  return view;
+  walk.startFrom(args.start, args.fovDeg != RenderArgs{}.fovDeg);
+  return walk.view();
 }
 
 struct Solved {
@@ -225,12 +190,7 @@ void addRenderCommand(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Solve a scene (or read a bake) and render a view offscreen to PNG");
   addSolveFlags(cmd, args->flags);
-  cmd->add_option_function<std::string>(
-      "--camera", [args](const std::string& text) { args->camera = parsePoint(text, "--camera"); },
-      "Eye position X,Y,Z in metres (default: the walkthrough's start)");
-  cmd->add_option_function<std::string>(
-      "--look", [args](const std::string& text) { args->look = parsePoint(text, "--look"); },
-      "Point looked at X,Y,Z (default: the scene centre with --camera)");
+  addViewFlags(cmd, args->start, args->exposureEv);
   cmd->add_option("--fov", args->fovDeg, "Vertical field of view, degrees")->capture_default_str();
   cmd->add_option("--size", args->size, "Image size WxH in pixels")->capture_default_str();
   CLI::Option* iterations =
@@ -238,16 +198,6 @@ void addRenderCommand(CLI::App& app) {
           ->check(kPositive);
   cmd->get_option("--until")->excludes(iterations);
   cmd->get_option("--until-unshot")->excludes(iterations);
-  cmd->add_option_function<double>(
-      "--exposure",
-      [args](double ev) {
-        // As far as any automatic exposure it reports goes, so that it can be given back; beyond, a typo.
-        if (!(std::abs(ev) <= kMaxExposureStops))
-          throw OptionError(fmt::format("--exposure {} is out of range: give stops from {} to {}, e.g. -2 "
-                                        "(or leave it out: automatic)", ev, -kMaxExposureStops, kMaxExposureStops));
-        args->exposureEv = ev;
-      },
-      "Exposure in stops: shown value = B x 2^EV, white at 1 (default: automatic)");
   cmd->add_option("--frames", args->frames, "Draw this many frames and report ms per frame (timing)")
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("--quiet", args->quiet, "No progress lines");

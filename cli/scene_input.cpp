@@ -20,13 +20,7 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, const Dayligh
     throw;
   }
   for (const std::string& n : readNotes) fmt::print(stderr, "radmesh: {}\n", n);
-  if (strict && !warnings.empty()) {
-    std::string list;
-    for (const std::string& w : warnings) list += "\n  " + w;
-    throw SceneError(pathOrName, "--strict",
-                     fmt::format("needed {} kind(s) of repair, each an error under --strict:{}", warnings.size(), list),
-                     "fix the file, or drop --strict to open it repaired");
-  }
+  if (strict) refuseRepairs(pathOrName, warnings);
   return scene;
 }
 

@@ -61,9 +61,12 @@ ThreadPool::ThreadPool(int threads) : impl_(std::make_unique<Impl>()) {
   if (threads < 0)
     throw std::invalid_argument("ThreadPool: " + std::to_string(threads) +
                                 " threads is impossible; use 0 (one per hardware thread) or more");
-  const int total = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-  for (int worker = 1; worker < total; ++worker)
+  for (int worker = 1; worker < sizeFor(threads); ++worker)
     impl_->helpers.emplace_back([this, worker] { impl_->helperLoop(worker); });
+}
+
+int ThreadPool::sizeFor(int threads) {
+  return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 ThreadPool::~ThreadPool() {

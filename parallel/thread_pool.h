@@ -11,6 +11,8 @@ namespace radmesh {
 class ThreadPool {
  public:
   explicit ThreadPool(int threads);  // 0: one per hardware thread; 1: everything on the caller
+  // The workers a pool of `threads` has: `threads`, or for 0 the hardware threads (at least one).
+  static int sizeFor(int threads);
   ~ThreadPool();
   ThreadPool(const ThreadPool&) = delete;
   ThreadPool& operator=(const ThreadPool&) = delete;

@@ -1,9 +1,14 @@
 #include "viewer/camera.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
+#include "solver/scene/scene_error.h"
 #include "solver/scene/up_axis.h"
 
 namespace radmesh {
@@ -156,18 +161,53 @@ void WalkCamera::lookAt(const glm::dvec3& target) {
   forward_ = glm::length(forward_) > 1e-9 ? glm::normalize(forward_) : glm::dvec3(up_.z, up_.x, up_.y);
 }
 
+void WalkCamera::startFrom(const ViewStart& start, bool fovGiven) {
+  RenderView view = this->view();
+  const glm::dvec3 centre = 0.5 * (frame_.boundsMin + frame_.boundsMax);
+  if (start.eye) view.eye = *start.eye, view.look = centre;
+  if (start.look) view.look = *start.look;
+  if (!std::isfinite(glm::length(view.look - view.eye)))
+    throw OptionError("--camera/--look: too far apart to aim the camera; give points near the scene");
+  view.farM = farM(view.eye);
+  try {
+    validateView(view);
+  } catch (const std::invalid_argument& e) {
+    // Without --look the camera looks at the scene's centre: say where that is.
+    const std::string centreText =
+        start.eye && !start.look
+            ? fmt::format(" (without --look, the scene's centre {:.4g},{:.4g},{:.4g})", centre.x, centre.y, centre.z)
+            : "";
+    // Named as given: the view's own flags, or the walkthrough's start where none is.
+    std::string given = std::string(start.eye ? "/--camera" : "") + (start.look ? "/--look" : "") +
+                        (fovGiven ? "/--fov" : "");
+    given = given.empty() ? "the walkthrough's start" : given.substr(1);
+    throw OptionError(fmt::format("{}: {}{}", given, e.what(), centreText));
+  }
+  if (!start.eye && !start.look) return;
+  // Stood on the floor plane below the eye, at the eye's height above the floor: view() gives the
+  // eye back exactly ((floor - e) + (e - floor) is 0 in floating point).
+  ground_ = view.eye;
+  eyeHeightM = glm::dot(view.eye, up_) - frame_.floorLevel();
+  forward_ = glm::normalize(view.look - view.eye);
+  startGiven_ = true;
+}
+
 void WalkCamera::update(const WalkInput& input, double dtSeconds) {
   const glm::dvec3 right = glm::cross(forward_, up_);
   forward_ = rotate(forward_, up_, input.yawRad);
   const double pitch = std::asin(std::clamp(glm::dot(forward_, up_), -1.0, 1.0));
-  const double newPitch = std::clamp(pitch + input.pitchRad, -kMaxPitchRad, kMaxPitchRad);
+  // A start steeper than the mouse may turn (--look) is kept until turned from, not snapped back.
+  const double newPitch =
+      std::clamp(pitch + input.pitchRad, std::min(-kMaxPitchRad, pitch), std::max(kMaxPitchRad, pitch));
   forward_ = glm::normalize(rotate(forward_, glm::normalize(right), newPitch - pitch));
 
   const glm::dvec3 walkForward = glm::normalize(horizontal(forward_, up_));
   const glm::dvec3 walkRight = glm::cross(walkForward, up_);
   const double step = speedMps * dtSeconds;
   ground_ += step * (input.forward * walkForward + input.right * walkRight);
-  eyeHeightM = std::max(2.0 * nearM(), eyeHeightM + step * input.rise);  // the floor stays in front of the near plane
+  // The floor stays in front of the near plane; an eye started lower (--camera under the floor)
+  // is kept there until raised, not snapped up.
+  eyeHeightM = std::max(std::min(2.0 * nearM(), eyeHeightM), eyeHeightM + step * input.rise);
 }
 
 RenderView WalkCamera::view() const {
@@ -177,8 +217,16 @@ RenderView WalkCamera::view() const {
   view.up = up_;
   view.fovYDeg = fovYDeg;
   view.nearM = nearM();
-  view.farM = 4.0 * sizeM();
+  view.farM = farM(view.eye);
   return view;
+}
+
+// Four times the model's size, or, from an eye outside the walk's reach (--camera far off), beyond
+// the scene's farthest corner from it: the whole scene is seen from anywhere.
+double WalkCamera::farM(const glm::dvec3& eye) const {
+  const glm::dvec3 centre = 0.5 * (frame_.boundsMin + frame_.boundsMax);
+  return std::max(4.0 * sizeM(),
+                  1.5 * (glm::length(eye - centre) + 0.5 * glm::length(frame_.boundsMax - frame_.boundsMin)));
 }
 
 double WalkCamera::sizeM() const {

@@ -2,6 +2,7 @@
 // The walkthrough camera: walks on the scene's floor at an eye height, turns with the mouse.
 // Knows nothing of GLFW; the window turns keys and mouse motion into a WalkInput.
 #include <algorithm>
+#include <optional>
 
 #include <glm/vec2.hpp>
 
@@ -17,6 +18,14 @@ struct WalkInput {
   double rise = 0.0;     // lowers / raises the eye height
   double yawRad = 0.0;   // turn left (positive) about the up axis
   double pitchRad = 0.0; // look up (positive)
+};
+
+// --camera and --look (radmesh render's and radmesh-view's), in the coordinates of the file shown:
+// a scene's as read (metres after --units; --up does not turn them), a bake's y-up ones as it was
+// written, which are not those of the scene it was baked from (docs/scene-formats.md#bakes).
+struct ViewStart {
+  std::optional<glm::dvec3> eye{};   // none: the walkthrough's own start
+  std::optional<glm::dvec3> look{};  // none: the start's own direction; with an eye, the bounds' centre
 };
 
 class WalkCamera {
@@ -42,8 +51,14 @@ class WalkCamera {
   // A cell's bounds are its free space's voxels', up to a voxel past its walls on every side: 0.35
   // of them from the centre stood in the spine's outer wall on building:2x2.
   static constexpr double kCellReach = 0.25;
+  // Moves the start to `start`, keeping fovYDeg. Throws OptionError naming the flags given
+  // (--fov too when `fovGiven`), or the walkthrough's start when none is, if they make no view
+  // (validateView): an eye on the look point, a look straight along the up axis.
+  void startFrom(const ViewStart& start, bool fovGiven = false);
   // Whether it started outside, looking in through an open side or at a model with no room in it.
   bool looksInFromOutside() const { return outside_; }
+  // Whether it started where it was told (startFrom an eye or a look): a cells solve leaves it there.
+  bool startGiven() const { return startGiven_; }
   void update(const WalkInput& input, double dtSeconds);
   RenderView view() const;
 
@@ -63,6 +78,7 @@ class WalkCamera {
   void lookAt(const glm::dvec3& target);  // level, from where it stands
   double sizeM() const;  // the bounds' diagonal
   double nearM() const;  // the near plane's distance, scaled to the model
+  double farM(const glm::dvec3& eye) const;
   // Where the start stands in no room (in a wall between a building's rooms, in its courtyard): to
   // the nearest point of free space (freeSpaceAt) on a 0.25 m grid within 4 m, else on a grid of
   // 16 steps over the plan (an L-shaped building's missing corner). In free space, looks the
@@ -73,6 +89,7 @@ class WalkCamera {
 
   SceneFrame frame_;
   bool outside_ = false;
+  bool startGiven_ = false;
   glm::dvec3 up_{0.0};
   glm::dvec3 ground_{0.0};   // the point on the floor plane below the eye
   glm::dvec3 forward_{0.0};  // unit view direction

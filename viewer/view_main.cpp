@@ -13,6 +13,7 @@
 #include "cli/usage_failure.h"
 #include "cli/scene_input.h"
 #include "cli/solve_flags.h"
+#include "cli/view_flags.h"
 #include "solver/io/output_path.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/cell_solver.h"
@@ -42,6 +43,8 @@ int main(int argc, char** argv) {
   app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
                  "(glTF y, the built-in rooms z; MGF, which does not say, auto)");
   app.add_option("--units", units, radmesh::cli::kUnitsHelp);
+  app.add_flag("--strict", args.strict, "Refuse a scene that needed any repair (each warning an error), as radmesh "
+               "solve's; files opened later too");
   CLI::Option* backendGiven =
       app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here; native with --cells auto) or "
                      "native (host CPU)")
@@ -120,6 +123,7 @@ int main(int argc, char** argv) {
   CLI::Option* checkpointGiven =
       app.add_option("--checkpoint", args.checkpoint, "Where the panel's Save checkpoint (F5) writes")
           ->capture_default_str();
+  radmesh::cli::addViewFlags(&app, args.start, args.exposureEv);
   app.add_option("--size", size, "Window size WxH")->capture_default_str();
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")
       ->capture_default_str();
@@ -131,6 +135,7 @@ int main(int argc, char** argv) {
                  "print the lowest and median frame rates, save --screenshot, exit")
       ->check(radmesh::cli::kPositive);
   app.add_option("--screenshot", args.screenshot, "PNG of the whole window (with --steps or --frames)");
+  app.add_flag("--quiet", args.quiet, "No frame statistics on exit (it prints no progress lines while it runs)");
   try {
     try {
       std::vector<std::string> arguments = radmesh::cli::decimalArguments(app, argc, argv);
@@ -186,7 +191,8 @@ int main(int argc, char** argv) {
     radmesh::refuseFlagsThatShapeNothing(given, o, args.setup.cells);
     for (const std::string& flag : given)  // what walking a bake takes, and the bake itself; the rest shapes a solve
       if (flag != "scene" && flag != "--up" && flag != "--size" && flag != "--panel" && flag != "--steps" &&
-          flag != "--frames" && flag != "--min-frames" && flag != "--screenshot")
+          flag != "--frames" && flag != "--min-frames" && flag != "--screenshot" && flag != "--camera" &&
+          flag != "--look" && flag != "--exposure" && flag != "--quiet")
         args.solveFlags.push_back(flag);
     if (args.minFrames > 0 && args.steps <= 0)
       throw radmesh::OptionError("--min-frames times a --steps run: add --steps N, or leave --min-frames out");

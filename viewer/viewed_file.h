@@ -20,7 +20,8 @@ struct ViewedFile {
   std::vector<std::string> notes;     // what it chose (the up axis, the cell) and why
 };
 
-// Throws SceneError naming the file (missing, truncated, not a scene) and OptionError, changing nothing.
+// Throws SceneError naming the file (missing, truncated, not a scene; under --strict, one that needed
+// repairs) and OptionError, changing nothing.
 ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args);
 
 // "could not open PATH: why", the path said once: readViewedFile's errors mostly begin with it.

@@ -121,9 +121,11 @@ class ShownSolve : public Shown {
     }
     // A camera outside every room (the scene's corner is outside a building) goes into the room
     // solved first, once a solve; not one looking into an open-sided model from outside (a Cornell
-    // box's start view went inside it, into the void behind its open side).
+    // box's start view went inside it, into the void behind its open side), nor one put where it
+    // is by --camera or --look.
     const SolverSnapshot& s = feed_.shown();
-    if (s.cells && s.cells->focus >= 0 && s.generation != placedGeneration_ && !camera.looksInFromOutside()) {
+    if (s.cells && s.cells->focus >= 0 && s.generation != placedGeneration_ && !camera.looksInFromOutside() &&
+        !camera.startGiven()) {
       placedGeneration_ = s.generation;
       const std::vector<Cell>& cells = s.cells->partition->cells;
       if (!s.cells->eyeInFocus && s.cells->focus < static_cast<int>(cells.size()))
@@ -220,10 +222,10 @@ void printMessages(const ViewedFile& file) {
   for (const std::string& note : file.notes) std::printf("radmesh-view: %s\n", note.c_str());
 }
 
-// What a file shows and where the walk starts. A solve's --resume checkpoint is read and checked
-// here, and refused as radmesh solve refuses it: the launch's is made before the window for that.
+// What a file shows, walked from `start`. A solve's --resume checkpoint is read and checked here,
+// and refused as radmesh solve refuses it: the launch's is made before the window for that.
 struct Opened {
-  Opened(ViewedFile file, const ViewerArgs& args) : camera(sceneFrame(file.scene)), setup(file.setup) {
+  Opened(ViewedFile file, const WalkCamera& start, const ViewerArgs& args) : camera(start), setup(file.setup) {
     if (file.bake)
       shown = std::make_unique<ShownBake>(file.path, std::move(*file.bake));
     else
@@ -260,24 +262,29 @@ int runViewer(const ViewerArgs& args) {
       std::fprintf(stderr, "radmesh-view: warning: %s does not apply: %s is a bake, already solved (it applies to scenes)\n",
                    flag.c_str(), args.scene.c_str());
   const std::string title = "radmesh-view: " + file.scene.source;
+  // Refused, if it must be, before the window opens, as radmesh render refuses it before its solve.
+  WalkCamera start(sceneFrame(file.scene));
+  start.startFrom(args.start);
   // A --resume checkpoint is checked before the window, as radmesh solve refuses it; otherwise the
   // window comes first, so a missing display is said at once, not after the solver thread (which
   // cannot stop while it meshes) has meshed the scene.
   std::optional<Opened> first;
-  if (!args.resume.empty()) first.emplace(std::move(file), args);
+  if (!args.resume.empty()) first.emplace(std::move(file), start, args);
   WindowContext window(title, args.windowSize);
-  if (!first) first.emplace(std::move(file), args);
+  if (!first) first.emplace(std::move(file), start, args);
   ImGuiLayer imgui(window.window());
   std::optional<std::string> dropped;
   glfwSetWindowUserPointer(window.window(), &dropped);
   glfwSetDropCallback(window.window(), keepDroppedPath);
   const bool smokeTest = args.steps > 0;
   auto viewing = std::make_unique<Viewing>(std::move(*first), args);
-  // Files opened later start from scratch and run until told: the launch's checkpoint and smoke test were its own.
+  // Files opened later start from scratch and run until told: the launch's checkpoint and smoke test
+  // were its own, as were its camera and exposure.
   ViewerArgs later = args;
   later.resume.clear();
   later.steps = 0;
   ViewSettings view;
+  if (args.exposureEv) view.exposureStops = *args.exposureEv, view.autoExposure = false;
   WalkInputReader input;
 
   auto lastFrame = Clock::now();
@@ -294,12 +301,13 @@ int runViewer(const ViewerArgs& args) {
   auto open = [&](const std::string& path) {
     try {
       ViewedFile opened = readViewedFile(path, later);
+      const WalkCamera camera(sceneFrame(opened.scene));
       printMessages(opened);
       glfwSetWindowTitle(window.window(), ("radmesh-view: " + opened.scene.source).c_str());
       const std::string message = fmt::format("opened {}{}", opened.scene.source,
                                               opened.warnings.empty() ? "" : fmt::format(" ({} warnings: see the terminal)", opened.warnings.size()));
       viewing.reset();  // its solver thread stops before the next one starts
-      viewing = std::make_unique<Viewing>(Opened(std::move(opened), later), later);
+      viewing = std::make_unique<Viewing>(Opened(std::move(opened), camera, later), later);
       viewing->panel.setOpenMessage(path, message, false);
       view.autoExposure = true;
     } catch (const std::exception& e) {
@@ -358,7 +366,7 @@ int runViewer(const ViewerArgs& args) {
     window.swapBuffers();
   }
 
-  stats.print(window.framebufferSize(), viewing->shown->state());
+  if (!args.quiet) stats.print(window.framebufferSize(), viewing->shown->state());
   if (const std::string summary = report.summary(); !summary.empty()) std::printf("radmesh-view: %s\n", summary.c_str());
   return exitCode;
 }

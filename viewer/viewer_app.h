@@ -2,11 +2,13 @@
 // `radmesh-view`: the walkthrough window while the solver converges on its own thread.
 #include <glm/vec2.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "solver/io/daylight.h"
 #include "solver/scene/up_axis.h"
+#include "viewer/camera.h"
 #include "viewer/panel.h"
 #include "viewer/solver_snapshot.h"
 
@@ -21,6 +23,7 @@ struct ViewerArgs {
   std::string scene = "office";  // or a bake (solver/bake/bake_reader.h), walked with no solve
   UpChoice up = UpChoice::Format;
   double metresPerUnit = 0.0;  // --units; 0: not given
+  bool strict = false;         // --strict: a scene that needed any repair is refused, as radmesh solve's
   SolveSetup setup = viewerSetup();
   bool cellGiven = false;  // --cell; else setup.cellM is chosen from the scene's size
   // --preset elements without --min-element: each scene's patches are elementsPresetCell of its
@@ -28,6 +31,11 @@ struct ViewerArgs {
   bool elementsPreset = false;
   Daylight daylight;       // --sky, --sky-model
   glm::ivec2 windowSize{1280, 720};
+  // The launch's file is first seen from here (--camera, --look) at this exposure (--exposure;
+  // none: automatic); a file opened later starts at its own walkthrough start, exposed automatically.
+  ViewStart start;
+  std::optional<double> exposureEv;
+  bool quiet = false;  // --quiet: no frame statistics on exit
   PanelTab firstTab = PanelTab::Progress;
   std::string resume;                       // a checkpoint to go on from (empty: from scratch)
   std::string checkpoint = "radmesh-view.ckpt";  // where the panel's Save checkpoint writes

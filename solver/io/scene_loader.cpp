@@ -100,4 +100,13 @@ Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warning
   return scene;
 }
 
+void refuseRepairs(const std::string& pathOrName, const std::vector<std::string>& warnings) {
+  if (warnings.empty()) return;
+  std::string list;
+  for (const std::string& w : warnings) list += "\n  " + w;
+  throw SceneError(pathOrName, "--strict",
+                   fmt::format("needed {} kind(s) of repair, each an error under --strict:{}", warnings.size(), list),
+                   "fix the file, or drop --strict to open it repaired");
+}
+
 }  // namespace radmesh

@@ -167,6 +167,23 @@ TEST(Cli, BenchCellsSolvesTheFocusToItsTargetAndMarksWhatStoppedShort) {
       << capped.output;
 }
 
+// --threads sets the threads of the second cells solve, by solve's rule (0: every core); it ran on
+// two whatever the machine.
+TEST(Cli, BenchCellsRunsItsSecondCellsSolveOnTheThreadsGiven) {
+  const std::string bench = "cells two-rooms --cell 0.75 --resolution 16 --until-unshot 0.1 --skip-whole --threads ";
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  for (const int threads : {0, 1, 2}) {
+    const int runs = threads == 0 ? hardware : std::min(threads, hardware);
+    const BenchRun run = runBench(bench + std::to_string(threads));
+    EXPECT_EQ(run.json["threads"], runs) << threads;
+    const std::string row = runs == 1 ? "cells, 1 thread " : "cells, " + std::to_string(runs) + " threads ";
+    const size_t first = run.output.find("cells, 1 thread ");
+    ASSERT_NE(first, std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(row, first + 1), std::string::npos) << threads << ": " << run.output;
+    EXPECT_TRUE(run.json["scenes"][0]["two_threads_identical"].get<bool>()) << threads;
+  }
+}
+
 // --subdivide and --min-element reach both solves: the cells cut their patches into the elements
 // `radmesh info` counts for the building; an unknown mode is refused naming the fix.
 TEST(Cli, BenchCellsSolvesWithElementsWhenAsked) {
@@ -247,6 +264,9 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench cells two-rooms --focus-unshot nan", "--focus-unshot must be a fraction in [0, 1), e.g. 0.05; got nan"},
       {"bench cells two-rooms --portal-bins 99", "--portal-bins 99 is out of range"},
       {"bench cells two-rooms --min-element 0.1", "--min-element shapes the elements, and --subdivide is off"},
+      {"bench cells two-rooms --threads -1", "-1 is not a thread count: give 0 (every core) or a positive count"},
+      {"bench cells two-rooms --focus-only --threads 2",
+       "bench cells --threads sets the second cells solve's threads, and --focus-only runs the focus cell alone"},
       {"bench solve furnace --scaling-cells 0", "--scaling-cells 0: give cell sizes in metres greater than 0"},
       {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
       // bench accuracy names its own lists (it named --cell, --subdivide-cells and an analytic it refuses)

@@ -278,5 +278,100 @@ TEST(ViewerCli, AFailedSolveIsSaidInTheTerminal) {
   EXPECT_EQ(run.output.find(said, first + 1), std::string::npos) << "said more than once: " << run.output;
 }
 
+// --camera, --look and --exposure are radmesh render's, read by the same code: refused in the same
+// words, before a window opens (here there is no display to open one on).
+TEST(ViewerCli, CameraLookAndExposureAreRefusedAsRendersAre) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--camera 1,2", "--camera '1,2' is not a point: give three numbers in metres as X,Y,Z"},
+      {"--look nan,0,0", "--look 'nan,0,0' is not a point"},
+      {"--exposure 161", "--exposure 161 is out of range: give stops from -160 to 160, e.g. -2 (or leave it out: "
+                         "automatic)"},
+      {"--exposure nan", "--exposure nan is out of range"},
+      {"--camera 0.2,0.2,0.2 --look 0.2,0.2,0.2",
+       "--camera/--look: the camera position equals the look point; move one of them"},
+  };
+  for (const auto& [flags, message] : cases) {
+    CommandRun run = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " + viewerPath() + " cornell " + flags);
+    EXPECT_EQ(run.exitCode, 2) << flags << ": " << run.output;
+    EXPECT_NE(run.output.find("radmesh-view: error: " + message), std::string::npos) << flags << ": " << run.output;
+    run = radmesh("render cornell --cell 0.2 --iterations 1 " + flags + " --out " + tempPath("never.png"));
+    EXPECT_EQ(run.exitCode, 2) << flags << ": " << run.output;
+    EXPECT_NE(run.output.find("radmesh: error: " + message), std::string::npos) << flags << ": " << run.output;
+  }
+}
+
+// Mean difference, in levels a channel, of `picture`'s left `reference.width` columns (the view
+// beside the panel) from `reference`.
+double viewDifference(const Image& picture, const Image& reference) {
+  EXPECT_EQ(picture.height, reference.height);
+  double sum = 0.0;
+  for (int y = 0; y < reference.height; ++y)
+    for (int x = 0; x < reference.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        sum += std::abs(int(picture.rgba[4 * (size_t(y) * picture.width + x) + c]) -
+                        int(reference.rgba[4 * (size_t(y) * reference.width + x) + c]));
+  return sum / (3.0 * reference.width * reference.height);
+}
+
+// The viewer starts where radmesh render looks from, given the same flags for the same file, at
+// the exposure given: a bake's coordinates are its own, y up (the office's scene is z up: this eye
+// is (6.5, 5, 1.6) there). Its view beside the panel is render's picture of that size.
+TEST(ViewerCli, ABakeIsWalkedFromWhereRenderLooksAtTheExposureGiven) {
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string bake = tempPath("office.glb"), rendered = tempPath("render.png"), shot = tempPath("shot.png"),
+                    automatic = tempPath("automatic.png"), start = tempPath("start.png");
+  ASSERT_EQ(radmesh("solve office --cell 1 --resolution 32 --until-unshot 0.2 --quiet --out " + bake).exitCode, 0);
+  const std::string view = " --camera 6.5,1.6,-5 --look 1,0.8,-1";
+  const CommandRun render = radmesh("render " + bake + view + " --exposure -1 --size 900x720 --out " + rendered);
+  ASSERT_EQ(render.exitCode, 0) << render.output;
+  for (const auto& [flags, png] : {std::pair{view + " --exposure -1", shot}, std::pair{view, automatic},
+                                   std::pair{std::string(), start}}) {
+    const CommandRun run = runCommand(viewer + bake + flags + " --steps 1 --screenshot " + png);
+    ASSERT_EQ(run.exitCode, 0) << flags << ": " << run.output;
+  }
+  const Image reference = readPng(rendered);
+  EXPECT_LT(viewDifference(readPng(shot), reference), 1.0);
+  // Without --exposure, the automatic one (+1.3 EV); without the flags, the walkthrough's start.
+  EXPECT_GT(viewDifference(readPng(automatic), reference), 20.0);
+  EXPECT_GT(viewDifference(readPng(start), reference), 20.0);
+}
+
+// --strict refuses a scene that needed repairs, by radmesh solve's check and words, before a
+// window opens; without it the file is read repaired (here, on to the missing display).
+TEST(ViewerCli, StrictRefusesAFileThatNeededRepairsAsSolveDoes) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  const std::string file = (test::sourceDir() / "tests" / "data" / "repaired" / "mgf_unknown_entity.mgf").string();
+  const std::string noDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY " + viewerPath() + " " + file;
+  const CommandRun strict = runCommand(noDisplay + " --strict");
+  EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  EXPECT_NE(strict.output.find("radmesh-view: error: " + file + ": --strict: needed 2 kind(s) of repair"),
+            std::string::npos)
+      << strict.output;
+  EXPECT_NE(strict.output.find("(fix: fix the file, or drop --strict to open it repaired)"), std::string::npos)
+      << strict.output;
+  const CommandRun repaired = runCommand(noDisplay);
+  EXPECT_NE(repaired.output.find("radmesh-view: warning: " + file + ": line 14: unknown entity 'glow' skipped"),
+            std::string::npos)
+      << repaired.output;
+  EXPECT_EQ(repaired.output.find("--strict"), std::string::npos) << repaired.output;
+}
+
+// --quiet leaves out the frame statistics printed on exit (the viewer prints no progress lines
+// while it runs, so that is what solve's --quiet would leave out); the screenshot asked for is still said.
+TEST(ViewerCli, QuietLeavesOutTheFrameStatistics) {
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "radmesh-view or xvfb-run is missing";
+  const std::string png = tempPath("quiet.png");
+  const CommandRun loud = runCommand(viewer + "cornell --cell 0.2 --steps 1 --screenshot " + png);
+  ASSERT_EQ(loud.exitCode, 0) << loud.output;
+  EXPECT_NE(loud.output.find("radmesh-view: 1280x720; solver at iteration 1"), std::string::npos) << loud.output;
+  EXPECT_NE(loud.output.find(" frames in "), std::string::npos) << loud.output;
+  const CommandRun quiet = runCommand(viewer + "cornell --cell 0.2 --steps 1 --quiet --screenshot " + png);
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.output;
+  EXPECT_EQ(quiet.output, "wrote " + png + "\n");
+}
+
 }  // namespace
 }  // namespace radmesh

@@ -9,6 +9,7 @@
 #include "solver/cells/find_cells.h"
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/meshing.h"
+#include "solver/scene/scene_error.h"
 #include "solver/scene/up_axis.h"
 #include "tests/solver/turned_scene.h"
 #include "tests/test_paths.h"
@@ -228,6 +229,94 @@ TEST(WalkCamera, RisingChangesTheEyeHeightAboveTheFloor) {
   EXPECT_NEAR(camera.view().eye.z, 1.8, 1e-12);
   camera.update(WalkInput{.rise = -1.0}, 100.0);  // never under the floor
   EXPECT_GT(camera.view().eye.z, 0.0);
+}
+
+// --camera and --look (radmesh render's and radmesh-view's) put the start where they say: the eye
+// exactly, looking at the point; without --look at the bounds' centre; --look alone turns the
+// walkthrough's own start towards the point.
+TEST(WalkCamera, StartsFromTheGivenEyeLookingAtTheGivenPoint) {
+  const SceneFrame office = room({7.0, 5.0, 2.7});
+  const auto direction = [](const RenderView& v) { return glm::normalize(v.look - v.eye); };
+  WalkCamera camera(office);
+  EXPECT_FALSE(camera.startGiven());
+  camera.startFrom({.eye = Vec3(6.0, 4.0, 2.0), .look = Vec3(1.0, 1.0, 0.5)});
+  EXPECT_TRUE(camera.startGiven());  // a cells solve leaves it there
+  EXPECT_EQ(camera.view().eye, Vec3(6.0, 4.0, 2.0));
+  EXPECT_DOUBLE_EQ(camera.eyeHeightM, 2.0);
+  EXPECT_NEAR(glm::dot(direction(camera.view()), glm::normalize(Vec3(-5.0, -3.0, -1.5))), 1.0, 1e-15);
+
+  WalkCamera centred(office);
+  centred.startFrom({.eye = Vec3(6.0, 4.0, 2.0)});
+  EXPECT_NEAR(glm::dot(direction(centred.view()), glm::normalize(Vec3(3.5, 2.5, 1.35) - Vec3(6.0, 4.0, 2.0))), 1.0,
+              1e-15);
+
+  WalkCamera turned(office);
+  const Vec3 eye = turned.view().eye;
+  turned.startFrom({.look = Vec3(6.0, 4.0, 0.0)});
+  EXPECT_TRUE(turned.startGiven());
+  EXPECT_EQ(turned.view().eye, eye);
+  EXPECT_NEAR(glm::dot(direction(turned.view()), glm::normalize(Vec3(6.0, 4.0, 0.0) - eye)), 1.0, 1e-15);
+
+  WalkCamera unmoved(office);
+  unmoved.startFrom({});
+  EXPECT_FALSE(unmoved.startGiven());
+  EXPECT_EQ(unmoved.view().eye, WalkCamera(office).view().eye);
+}
+
+// A start under the floor, or steeper than the mouse may turn (a model seen from below, looking
+// up), is kept until moved: the first frame's update snapped the eye up onto the floor and the
+// pitch down to 85 degrees, away from the view radmesh render draws from the same flags.
+TEST(WalkCamera, AGivenStartBeyondTheWalksLimitsIsKeptUntilMoved) {
+  WalkCamera camera(room({7.0, 5.0, 2.7}));
+  camera.startFrom({.eye = Vec3(3.5, 2.5, -1.0), .look = Vec3(3.5, 2.6, 2.7)});
+  const RenderView given = camera.view();
+  const double pitch = std::asin(glm::normalize(given.look - given.eye).z);
+  ASSERT_GT(pitch, 1.5);
+  camera.update(WalkInput{}, 0.02);
+  EXPECT_EQ(camera.view().eye, given.eye);
+  EXPECT_NEAR(std::asin(glm::normalize(camera.view().look - camera.view().eye).z), pitch, 1e-12);
+  // Turned down, it goes the way it was turned; rising raises it.
+  camera.update(WalkInput{.pitchRad = -0.5}, 0.0);
+  EXPECT_NEAR(std::asin(glm::normalize(camera.view().look - camera.view().eye).z), pitch - 0.5, 1e-12);
+  camera.speedMps = 1.0;
+  camera.update(WalkInput{.rise = 1.0}, 0.5);
+  EXPECT_NEAR(camera.view().eye.z, -0.5, 1e-12);
+}
+
+// A camera far off still sees the whole scene: the far plane lies past the scene's farthest corner.
+TEST(WalkCamera, AGivenEyeFarOffSeesTheWholeScene) {
+  const SceneFrame box = room({1.0, 1.0, 1.0});
+  WalkCamera camera(box);
+  camera.startFrom({.eye = Vec3(0.5, -100.0, 0.5)});
+  const RenderView view = camera.view();
+  EXPECT_GT(view.farM, glm::length(Vec3(1.0, 1.0, 1.0) - view.eye));
+  EXPECT_DOUBLE_EQ(view.farM, 1.5 * (100.5 + 0.5 * std::sqrt(3.0)));
+  EXPECT_DOUBLE_EQ(WalkCamera(box).view().farM, 4.0 * std::sqrt(3.0));  // inside, as it was
+}
+
+// What makes no view is refused naming the flags given, as radmesh render and radmesh-view say it.
+TEST(WalkCamera, AStartThatMakesNoViewIsRefusedNamingItsFlags) {
+  const SceneFrame office = room({7.0, 5.0, 2.7});
+  const auto refusal = [&](const ViewStart& start, bool fovGiven) {
+    WalkCamera camera(office);
+    try {
+      camera.startFrom(start, fovGiven);
+    } catch (const OptionError& e) {
+      EXPECT_FALSE(camera.startGiven());
+      return std::string(e.what());
+    }
+    return std::string("not refused");
+  };
+  EXPECT_EQ(refusal({.eye = Vec3(1.0, 1.0, 1.0), .look = Vec3(1.0, 1.0, 1.0)}, false),
+            "--camera/--look: the camera position equals the look point; move one of them");
+  EXPECT_EQ(refusal({.eye = Vec3(3.5, 2.5, 1.35)}, true),
+            "--camera/--fov: the camera position equals the look point; move one of them (without --look, the "
+            "scene's centre 3.5,2.5,1.35)");
+  const Vec3 eye = WalkCamera(office).view().eye;
+  EXPECT_EQ(refusal({.look = eye + Vec3(0.0, 0.0, 1.0)}, false),
+            "--look: the camera looks straight along the up axis; tilt the look point");
+  EXPECT_EQ(refusal({.eye = Vec3(1e308, 0.0, 0.0)}, false),
+            "--camera/--look: too far apart to aim the camera; give points near the scene");
 }
 
 TEST(WalkCamera, YawTurnsLeftAndPitchStopsShortOfStraightUp) {
