@@ -305,6 +305,7 @@ void addInfoCommand(CLI::App& app) {
       if (cells) j.update(cellsJson(partition, figures, outside, seconds));
       j["daylight"] = notes;
       j["metres_per_unit"] = args->metresPerUnit > 0.0 ? args->metresPerUnit : 1.0;
+      if (!args->planPath.empty()) j["plan"] = args->planPath;  // what the text says as "wrote"
       fmt::print("{}\n", j.dump(2));
     } else {
       printText(summary, scene, warnings, notes, cell);
@@ -315,6 +316,7 @@ void addInfoCommand(CLI::App& app) {
                      : "");
       printEffects(plan);
       if (cells) printCells(partition, figures, outside, seconds);
+      if (!args->planPath.empty()) fmt::print("wrote {}\n", args->planPath);  // as every command that writes
     }
   });
 }

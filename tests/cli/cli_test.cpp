@@ -1450,6 +1450,11 @@ TEST(Cli, InfoPlanDrawsThePlanOrSaysWhatIsWrong) {
   const double dy = j["bounds_max"][1].get<double>() - j["bounds_min"][1].get<double>();
   const double scale = 1000.0 / std::max(dx, dy);
   EXPECT_EQ(pngSize(plan), std::make_pair(int(std::lround(dx * scale)) + 40, int(std::lround(dy * scale)) + 40));
+  // It says what it wrote, as every command that writes does: last in the text, in the JSON as "plan".
+  EXPECT_EQ(j["plan"], plan);
+  const CommandRun text = radmesh("info building:1x1 --plan " + plan);
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_TRUE(text.output.ends_with("\nwrote " + plan + "\n")) << text.output;
   const CommandRun bad = radmesh("info two-rooms --plan " + tempPath("plan.jpg"));
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("--plan"), std::string::npos) << bad.output;
