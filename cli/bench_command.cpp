@@ -21,6 +21,9 @@ namespace radmesh::cli {
 
 namespace {
 
+// Before the run, as every output: its folder must exist (solver/io/output_path.h).
+void checkJsonOutput(const std::string& path) { checkOutputPath("--json", path, ".json", "the figures are JSON"); }
+
 void writeJsonIfAsked(const std::string& path, const nlohmann::json& result) {
   if (!path.empty()) writeJson(path, result), fmt::print("wrote {}\n", path);
 }
@@ -77,7 +80,8 @@ void addBenchSolve(CLI::App* bench) {
                 "messages, bytes and MPI wait and the model on more ranks (docs/scaling.md); rank 0 prints and writes");
   cmd->add_option("--csv", args->csvStem, "With --distributed: write STEM-ranks.csv and STEM-model.csv");
   cmd->callback([args, json, cmd] {
-    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);  // as bench accuracy
+    checkJsonOutput(*json);
+    checkOutputPath("--csv", args->csvStem, "", "");  // STEM-ranks.csv and STEM-model.csv go beside it
     args->cellGiven = cmd->count("--cell") > 0;
     args->projectionsGiven = cmd->count("--projections") > 0;
     // Flags for what this run does not time would be dropped without a word.
@@ -152,7 +156,7 @@ void addBenchAccuracy(CLI::App* bench) {
   addCacheOption(cmd, args->cacheMb);
   cmd->add_flag("--quick", *quick, "A sweep that finishes in under a minute (for CI)");
   cmd->callback([args, quick, json, cmd] {
-    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);
+    checkJsonOutput(*json);
     // What --quick sets would replace what was given without a word.
     for (const char* flag : {"--resolutions", "--reference-resolution", "--reference-until", "--reference-unshot"})
       if (*quick && cmd->count(flag) > 0)
@@ -215,7 +219,7 @@ void addBenchCells(CLI::App* bench) {
   cmd->add_flag("--focus-only", args->focusOnly, "Only the focus cell's time to --focus-unshot (no solve to --until-unshot)");
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->callback([args, json, threads] {
-    checkOutputPath("--json", *json, ".json", "the figures are JSON", /*makeFolder=*/true);  // as bench accuracy
+    checkJsonOutput(*json);
     if (args->focusOnly && threads->count() > 0)
       throw OptionError("bench cells --threads sets the second cells solve's threads, and --focus-only runs the focus "
                         "cell alone, on one: leave --threads out, or drop --focus-only");

@@ -12,6 +12,7 @@
 #include "cli/stats_json.h"
 #include "cli/effects_text.h"
 #include "solver/cells/find_cells.h"
+#include "solver/formfactors/light_rows.h"
 #include "cli/solve_flags.h"
 #include "solver/radiosity/effects_plan.h"
 #include "solver/meshing/elements.h"
@@ -19,6 +20,7 @@
 #include "solver/io/scene_loader.h"
 #include "solver/meshing/scene_summary.h"
 #include "solver/scene/scene_error.h"
+#include "solver/scene/solve_options.h"
 
 #if RADMESH_HAS_VIEWER
 #include "viewer/cell_plan.h"
@@ -169,8 +171,18 @@ void printBounds(const Vec3& low, const Vec3& high) {
              size.y, size.z);
 }
 
+// Of the lights' power, what never enters the model (the sun on its walls and roof, or past it), as
+// a solve at the default (preset bake) resolution books it: emitted power alone overstates the light.
+double lightOutsideW(const Scene& scene, const std::vector<Patch>& patches) {
+  if (scene.lights.empty()) return 0.0;
+  SolveOptions bake;
+  applyPreset(Preset::Bake, bake);
+  ThreadPool pool(0);
+  return lightsPowerOutside(scene, patches, bake.resolution, pool);
+}
+
 void printText(const SceneSummary& s, const Scene& scene, const std::vector<std::string>& warnings,
-               const std::vector<std::string>& notes, const CellChoice& cell) {
+               const std::vector<std::string>& notes, const CellChoice& cell, double lightOutside) {
   for (const std::string& w : warnings) fmt::print(stderr, "radmesh: warning: {}\n", w);
   for (const std::string& n : notes) fmt::print("{}\n", n);
   fmt::print("{}\n", cell.why);
@@ -194,6 +206,10 @@ void printText(const SceneSummary& s, const Scene& scene, const std::vector<std:
   printBounds(s.boundsMin, s.boundsMax);
   fmt::print("total area      {:.6g} m^2\n", s.totalAreaM2);
   fmt::print("emitted power   {:.6g} W (summed over RGB)\n", s.emittedPowerW);
+  if (lightOutside > 0.0)
+    fmt::print("                of it, {:.6g} W ({:.1f}%) is the lights' that falls on the model's outside or past it "
+               "and never comes in, as a solve books it: {:.6g} W comes in\n",
+               lightOutside, 100.0 * lightOutside / s.emittedPowerW, s.emittedPowerW - lightOutside);
 }
 
 // A bake has no materials, emitters or patches to tell of: its triangles, bounds, area and up axis.
@@ -280,6 +296,7 @@ void addInfoCommand(CLI::App& app) {
     const SceneSummary summary = summarizeScene(scene, patches, cell.cellM);
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
     const double elements = countElements(patches, args->minElementM);
+    const double lightOutside = lightOutsideW(scene, patches);
     const bool cells = args->cells || !args->planPath.empty();
     CellPartition partition;
     CellFigures outside;
@@ -305,9 +322,11 @@ void addInfoCommand(CLI::App& app) {
       if (cells) j.update(cellsJson(partition, figures, outside, seconds));
       j["daylight"] = notes;
       j["metres_per_unit"] = args->metresPerUnit > 0.0 ? args->metresPerUnit : 1.0;
+      j["light_outside"] = lightOutside;  // of emitted_power, as --stats' ledger books it
+      if (!args->planPath.empty()) j["plan"] = args->planPath;  // what the text says as "wrote"
       fmt::print("{}\n", j.dump(2));
     } else {
-      printText(summary, scene, warnings, notes, cell);
+      printText(summary, scene, warnings, notes, cell, lightOutside);
       fmt::print("elements        {:.0f} with --subdivide uniform --min-element {:g}{}{}\n", elements, args->minElementM,
                  args->minElementM == 0.0 ? " (every patch cut into four)" : "",
                  elements > static_cast<double>(elementLimit().count)
@@ -315,6 +334,7 @@ void addInfoCommand(CLI::App& app) {
                      : "");
       printEffects(plan);
       if (cells) printCells(partition, figures, outside, seconds);
+      if (!args->planPath.empty()) fmt::print("wrote {}\n", args->planPath);  // as every command that writes
     }
   });
 }

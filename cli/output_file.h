@@ -1,11 +1,12 @@
 #pragma once
-// Every file the commands write is opened here, so that a missing folder is made and a failure names the file.
+// Every file the commands write is opened here, so that a failure names the file.
 #include <fstream>
 #include <string>
 
 namespace radmesh::cli {
 
-// Creates the folder of `path` when missing; throws std::runtime_error naming `path` when it cannot be written.
+// Opens `path` for writing; throws std::runtime_error naming `path` when it cannot be. Its folder is
+// not made: the command checked it before its work (checkOutputPath, solver/io/output_path.h).
 std::ofstream openOutput(const std::string& path);
 
 }  // namespace radmesh::cli

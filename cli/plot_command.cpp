@@ -209,7 +209,7 @@ void addPlotCommand(CLI::App& app) {
     // The inputs first: one missing leaves no folder or file behind.
     if (!paper->statsDir.empty()) {  // --csv is written, not read: never over a stats file
       const CsvTable gathered = gatherStats(*paper);
-      checkOutputPath("--csv", paper->csv, ".csv", "the gathered figures are CSV", true);
+      checkOutputPath("--csv", paper->csv, ".csv", "the gathered figures are CSV");
       writeCsv(paper->csv, gathered), fmt::print("wrote {}\n", paper->csv);
     }
     const CsvTable table = readCsv(paper->csv);
@@ -247,7 +247,7 @@ void addPlotCommand(CLI::App& app) {
     requireGnuplot();
     readCsv(*model);  // the inputs first: one missing leaves no folder
     for (const std::string& csv : *scaling) readCsv(csv);
-    makeOutputFolder("--png", std::filesystem::path(*png).parent_path().string());
+    checkOutputPath("--png", *png, "", "");  // STEM-speedup.png and STEM-bytes.png go beside it
     drawScalingFigures(*model, *scaling, *png);
   });
 }

@@ -5,6 +5,7 @@
 
 #include "solver/projection/environment_projection.h"
 #include "solver/projection/hemicube.h"
+#include "solver/projection/projection.h"
 
 namespace radmesh {
 
@@ -83,6 +84,21 @@ FormFactorRow lightRow(const Scene& scene, const Light& light, const std::vector
   if (!all)
     for (int& receiver : row.receivers) receiver = solid[receiver];  // ascending still
   return row;
+}
+
+double powerOutside(const FormFactorRow& row, const Rgb& power) {
+  return channelSum(power) * (row.escapedFraction() + row.backFaces);
+}
+
+double lightsPowerOutside(const Scene& scene, const std::vector<Patch>& patches, int resolution, ThreadPool& pool) {
+  const double nearDepth = sceneNearDepth(patches);
+  double outside = 0.0;
+  for (const Light& light : scene.lights) {
+    const Rgb power = lightPower(scene, light);
+    if (!(channelSum(power) > 0.0)) continue;  // as a solve: a dark light, or a beam with no window
+    outside += powerOutside(lightRow(scene, light, patches, resolution, nearDepth, pool), power);
+  }
+  return outside;
 }
 
 }  // namespace radmesh

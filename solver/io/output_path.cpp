@@ -30,37 +30,47 @@ void checkWritable(const std::string& option, const std::string& path) {
   }
 }
 
-}  // namespace
-
-void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
-                     const std::string& what, bool makeFolder) {
-  if (path.empty()) return;
-  if (!hasExtension(path, extension))
-    throw OptionError(fmt::format("{} '{}': {}: give a path ending in {}", option, path, what, extension));
-  // "--out .glb" ends in .glb but names no file: it would write a hidden one.
-  const std::filesystem::path file(path);
-  if (!extension.empty() && file.filename().string().size() == extension.size())
-    throw OptionError(fmt::format("{} '{}': the file name is only the extension, which would write a hidden file "
-                                  "named {}: give a name before it (e.g. {})",
-                                  option, path, file.filename().string(), (file.parent_path() / ("NAME" + extension)).string()));
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error))
-    throw OptionError(fmt::format("{} '{}' is a folder: give the path of a file in it", option, path));
+// An output goes into a folder that exists: one is never made on the way, so a mistyped folder is
+// refused with the fix rather than made and filled.
+void checkFolderExists(const std::string& option, const std::string& path) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (makeFolder) {
-    makeOutputFolder(option, folder.string());  // nothing to make for the current folder
-  } else if (!folder.empty() && !std::filesystem::is_directory(folder, error)) {
+  std::error_code error;
+  if (!folder.empty() && !std::filesystem::is_directory(folder, error))
     throw OptionError(fmt::format("{} '{}': the folder '{}' does not exist: create it (mkdir -p {}) or give "
                                   "another path",
                                   option, path, folder.string(), folder.string()));
+}
+
+}  // namespace
+
+void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
+                     const std::string& what) {
+  if (path.empty()) return;
+  if (!hasExtension(path, extension))
+    throw OptionError(fmt::format("{} '{}': {}: give a path ending in {}", option, path, what, extension));
+  // "--out .glb" or "--checkpoint .ckpt" names no file but a hidden one: one dot, leading.
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (name.size() > 1 && name.front() == '.' && name.find('.', 1) == std::string::npos) {
+    const std::filesystem::path example = std::filesystem::path(path).parent_path() /
+                                          ("NAME" + (extension.empty() ? name : extension));
+    throw OptionError(fmt::format("{} '{}': the file name is only the extension, which would write a hidden file "
+                                  "named {}: give a name before it (e.g. {})",
+                                  option, path, name, example.string()));
   }
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw OptionError(fmt::format("{} '{}' is a folder: give the path of a file in it", option, path));
+  checkFolderExists(option, path);
   checkWritable(option, path);  // a folder that takes no file (read-only, full): now, not after the work
 }
 
 void makeOutputFolder(const std::string& option, const std::string& folder) {
   if (folder.empty()) return;  // the working folder
+  std::filesystem::path named(folder);
+  if (!named.has_filename()) named = named.parent_path();  // "out/" names the folder out
+  checkFolderExists(option, named.string());
   std::error_code error;
-  if (std::filesystem::create_directories(folder, error); !std::filesystem::is_directory(folder))
+  if (std::filesystem::create_directory(folder, error); !std::filesystem::is_directory(folder))
     throw OptionError(fmt::format("{} '{}': cannot make that folder ({}): give a folder you can write", option, folder,
                                   error ? error.message() : "a file is in its place"));
 }

@@ -11,16 +11,17 @@ namespace radmesh {
 bool hasExtension(const std::string& path, const std::string& extension);
 
 // Throws OptionError naming `option` and the fix when `path` does not end in `extension` (`what`
-// says what the file is, e.g. "a bake is glTF binary") or its file name is that extension alone
-// ("--out .glb" would write a hidden file), its folder does not exist, or no file can
-// be written there (a folder without write permission, a file system that takes none: found by
-// making and removing a file beside it), before the work whose output it is, not after. Empty: no
-// file. `makeFolder`: a missing folder is made now (bench accuracy's outputs) rather than refused.
+// says what the file is, e.g. "a bake is glTF binary"; "": any name), its file name is an extension
+// alone (".glb", ".ckpt": it would write a hidden file), its folder does not exist (refused, not
+// made: a mistyped folder is found, not filled), or no file can be written there (a folder without
+// write permission, a file system that takes none: found by making and removing a file beside it),
+// before the work whose output it is, not after. Empty: no file.
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
-                     const std::string& what, bool makeFolder = false);
+                     const std::string& what);
 
-// Makes `folder` (and its parents) if missing, or throws OptionError naming `option` and why it
-// cannot be made: before the work whose outputs it holds, not after.
+// For an option that names a folder of outputs (--out-dir): makes `folder` if missing, in a folder
+// that exists (as a file is made in one: checkOutputPath), or throws OptionError naming `option` and
+// why it cannot be: before the work whose outputs it holds, not after. Empty: the working folder.
 void makeOutputFolder(const std::string& option, const std::string& folder);
 
 // Throws OptionError when one of `outputs` (option, path; empty: no file) is the scene's own file

@@ -72,9 +72,12 @@ Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warning
                                     "one black)",
                                     pathOrName, doubled.dropped, doubled.first));
   scene.file = sceneFile(pathOrName);
-  if (metresPerUnit > 0.0)
+  if (metresPerUnit > 0.0) {
     scaleScene(scene, metresPerUnit);
-  else if (const std::string units = unitsNote(scene); readNotes && !units.empty())
+    if (const std::string implausible = implausibleUnitsWarning(scene, metresPerUnit, pathOrName);
+        warnings && !implausible.empty())
+      warnings->push_back(implausible);
+  } else if (const std::string units = unitsNote(scene); readNotes && !units.empty())
     readNotes->push_back(units);
   // MGF does not say which axis is up, and files differ: office3 stands on y, the others on z.
   const bool silent = up == UpChoice::Format && lowerCaseExtension(pathOrName) == ".mgf";

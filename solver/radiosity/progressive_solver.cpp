@@ -199,7 +199,7 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
     const FormFactorRow row = lightRow(scene, scene.lights[k], receivers(), options.resolution, nearDepth, pool);
     deliver(row, lightPower[k]);
     shots.push_back({-1, static_cast<int>(k), lightPower[k]});
-    ledger.lightOutside += channelSum(lightPower[k]) * (row.escapedFraction() + row.backFaces);
+    ledger.lightOutside += powerOutside(row, lightPower[k]);
     record.shotPowerW += channelSum(lightPower[k]);
   }
   lightsShot = true;

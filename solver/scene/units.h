@@ -15,6 +15,14 @@ double parseUnits(const std::string& text);
 // area in metres: the same as wrapping an MGF file in `xf -s metresPerUnit`.
 void scaleScene(Scene& scene, double metresPerUnit);
 
+// For a scene scaled by `metresPerUnit` (--units) to a size no building, room or luminaire has,
+// under kSmallestModelM or over kLargestModelM across (a building drawn in metres, read with --units
+// mm, is millimetres across and solves silently): the warning naming `file`, the size it came to and
+// the --units that gives a plausible size nearest a room's (or leaving it out); else empty.
+std::string implausibleUnitsWarning(const Scene& scene, double metresPerUnit, const std::string& file);
+inline constexpr double kSmallestModelM = 0.05;  // examp1's luminaire is 1.2 m, cube.mgf in cm 0.1 m
+inline constexpr double kLargestModelM = 1e5;    // a site plan of a town, not a continent
+
 // For a scene over a kilometre across, read in metres (a building drawn in millimetres looks like
 // a town), the line saying so and how to read it in another unit; else empty.
 std::string unitsNote(const Scene& scene);

@@ -1,8 +1,11 @@
 // Lights from the command line: --sun alone lights a scene without emitters through its opening,
 // on either back end, and impossible values are refused naming the option.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -35,6 +38,40 @@ TEST(CliLights, SunAloneLightsAnOpenBoxOnEitherBackEnd) {
     EXPECT_NEAR(accounted, l["emitted"].get<double>(), 1e-9 * l["emitted"].get<double>());
     EXPECT_DOUBLE_EQ((*j)["per_iteration"][0]["shot_power"].get<double>(), l["emitted"].get<double>());
   }
+}
+
+nlohmann::json infoJson(const std::string& arguments) {
+  const CommandRun run = radmesh("info " + arguments + " --json");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  return nlohmann::json::parse(run.output, nullptr, false);
+}
+
+// info's emitted power holds the sun over the whole model, most of which may never come in: it says
+// how much falls outside and how much comes in, the watts a solve's ledger books. The open box (2 m,
+// y-up, open to the south) under a sun from the south at 40 degrees takes 3 x 100000 / 179 W/m^2
+// over its 4 m^2 opening's 4 cos 40 m^2 shadow; the rest falls on its roof and walls outside.
+TEST(CliLights, InfoSaysHowMuchOfTheSunComesInAndHowMuchFallsOutside) {
+  const std::string box = test::dataPath("lights/open_box.gltf").string();
+  const nlohmann::json info = infoJson(box + " --sun 180,40");
+  const double emitted = info["emitted_power"].get<double>(), outside = info["light_outside"].get<double>();
+  const double cameIn = 3 * 100000 / 179.0 * 4 * std::cos(40 * std::numbers::pi / 180);  // 5135.5 W
+  EXPECT_NEAR(emitted - outside, cameIn, 2e-3 * cameIn);  // pixel centres at the solve's 256x256
+  const nlohmann::json solved = solveStats(box + " --sun 180,40 --max-iterations 1", "box.json");
+  EXPECT_NEAR(outside, solved["ledger"]["light_outside"].get<double>(), 1e-12 * emitted);
+  const CommandRun text = radmesh("info " + box + " --sun 180,40");
+  EXPECT_NE(text.output.find(fmt::format("emitted power   {:.6g} W (summed over RGB)\n                of it, {:.6g} W "
+                                         "({:.1f}%) is the lights' that falls on the model's outside or past it and "
+                                         "never comes in, as a solve books it: {:.6g} W comes in\n",
+                                         emitted, outside, 100 * outside / emitted, emitted - outside)),
+            std::string::npos)
+      << text.output;
+  // The Cornell box under a zenith sun takes all of it on its ceiling's back: what comes in is the lamp's.
+  const double lamp = infoJson("cornell")["emitted_power"].get<double>();
+  const nlohmann::json zenith = infoJson("cornell --sun 0,90");
+  EXPECT_NEAR(zenith["emitted_power"].get<double>() - zenith["light_outside"].get<double>(), lamp,
+              1e-9 * zenith["emitted_power"].get<double>());
+  EXPECT_EQ(infoJson("cornell")["light_outside"], 0.0);
+  EXPECT_EQ(radmesh("info cornell").output.find("never comes in"), std::string::npos);
 }
 
 // Each cell's ledger, and that they add up to the building's: emitted (the light's power with

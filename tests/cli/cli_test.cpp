@@ -557,9 +557,8 @@ TEST(Cli, BenchAccuracysDefaultCellsFollowTheScenesSize) {
 // 0.0625 m, is finer than a pixel there and moves the plane's error by 2 %).
 TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
   const std::string dir = tempPath("accuracy");
-  const std::string json = tempPath("raw/furnace.json");  // its folder is made
+  const std::string json = tempPath("furnace.json");
   std::filesystem::remove_all(dir);
-  std::filesystem::remove_all(std::filesystem::path(json).parent_path());
   const CommandRun run = radmesh("bench accuracy furnace --quick --cells 0.5,0.381 --out-dir " + dir + " --json " + json);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/furnace.json"));  // the raw JSON goes where --json says only
@@ -693,7 +692,8 @@ TEST(Cli, BenchAccuracyRefusesAnImpossibleReference) {
       {"--reference-until 2", "--reference-until must be a convergence in (0, 1]"},
       {"--out-dir " + file, "--out-dir '" + file + "': cannot make that folder"},
       {"--out-dir /proc/radmesh-nope", "--out-dir '/proc/radmesh-nope': cannot make that folder"},
-      {"--json /proc/radmesh-nope/a.json", "--json '/proc/radmesh-nope': cannot make that folder"},
+      {"--json /proc/radmesh-nope/a.json", "--json '/proc/radmesh-nope/a.json': the folder '/proc/radmesh-nope' does "
+                                           "not exist"},
       {"--subdivide off --element-rows share",
        "--element-rows shapes the elements, and --subdivide does not measure them: add uniform or adaptive"},
       {"--min-element 0.2", "--min-element shapes the elements"},  // off alone is the default
@@ -1129,13 +1129,13 @@ TEST(Cli, PlotPaperChecksTheStatsAgainstTheirNames) {
   EXPECT_NE(run.output.find("warning: cut-and-stack at 128x128 stopped at C = 0.500"), std::string::npos) << run.output;
 }
 
-// `plot accuracy --out-dir DIR` draws a doc's figures into DIR (made if missing), leaving the
+// `plot accuracy --out-dir DIR` draws a doc's figures into DIR (made if missing, in a folder that is not), leaving the
 // committed ones beside the CSV as they were; a missing table leaves no folder behind.
 TEST(Cli, PlotAccuracyDrawsIntoOutDirNotBesideTheCsv) {
   SKIP_WITHOUT_GNUPLOT();
   const std::filesystem::path docs = test::sourceDir() / "docs" / "data" / "accuracy";
   const auto committed = std::filesystem::last_write_time(docs / "cornell-error-vs-time.png");
-  const std::string dir = tempPath("out/figures");
+  const std::string dir = tempPath("figures");
   CommandRun run = radmesh("plot accuracy " + (docs / "cornell.csv").string() + " --out-dir " + dir);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   for (const char* png : {"cornell-error-vs-time.png", "cornell-image-error-vs-time.png", "cornell-error-vs-convergence.png"}) {
@@ -1151,8 +1151,8 @@ TEST(Cli, PlotAccuracyDrawsIntoOutDirNotBesideTheCsv) {
 }
 
 // Drawing is all `plot` does: without gnuplot it fails, and a bench says it drew no plots; a PNG
-// stem in a missing folder gets the folder (gnuplot used to write the PNG to standard output).
-TEST(Cli, PlotFailsWithoutGnuplotAndMakesTheFolderOfItsPngs) {
+// stem in a missing folder is refused before drawing (gnuplot used to write the PNG to standard output).
+TEST(Cli, PlotFailsWithoutGnuplotAndRefusesAMissingFolderForItsPngs) {
   const std::string binary = (test::binaryDir() / "cli" / "radmesh").string();
   CommandRun run = runCommand("PATH=/nonexistent " + binary + " plot accuracy " + tempPath("any"));
   EXPECT_EQ(run.exitCode, 1) << run.output;
@@ -1168,7 +1168,13 @@ TEST(Cli, PlotFailsWithoutGnuplotAndMakesTheFolderOfItsPngs) {
 
   SKIP_WITHOUT_GNUPLOT();
   const std::string data = (test::sourceDir() / "docs" / "data" / "scaling").string();
-  const std::string stem = tempPath("missing/folder/scaling");
+  const std::string missing = tempPath("missing/folder/scaling");
+  run = radmesh("plot scaling " + data + "/np1-model.csv " + data + "/np1-ranks.csv " + data + "/np2-ranks.csv --png " + missing);
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--png '" + missing + "': the folder '" + tempPath("missing/folder") + "' does not exist"),
+            std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(tempPath("missing")));
+  const std::string stem = tempPath("scaling");
   run = radmesh("plot scaling " + data + "/np1-model.csv " + data + "/np1-ranks.csv " + data + "/np2-ranks.csv --png " + stem);
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_TRUE(std::filesystem::exists(stem + "-speedup.png")) << run.output;
@@ -1464,6 +1470,11 @@ TEST(Cli, InfoPlanDrawsThePlanOrSaysWhatIsWrong) {
   const double dy = j["bounds_max"][1].get<double>() - j["bounds_min"][1].get<double>();
   const double scale = 1000.0 / std::max(dx, dy);
   EXPECT_EQ(pngSize(plan), std::make_pair(int(std::lround(dx * scale)) + 40, int(std::lround(dy * scale)) + 40));
+  // It says what it wrote, as every command that writes does: last in the text, in the JSON as "plan".
+  EXPECT_EQ(j["plan"], plan);
+  const CommandRun text = radmesh("info building:1x1 --plan " + plan);
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_TRUE(text.output.ends_with("\nwrote " + plan + "\n")) << text.output;
   const CommandRun bad = radmesh("info two-rooms --plan " + tempPath("plan.jpg"));
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("--plan"), std::string::npos) << bad.output;
@@ -1473,12 +1484,23 @@ TEST(Cli, InfoPlanDrawsThePlanOrSaysWhatIsWrong) {
 }
 
 TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
-  const std::string missing = tempPath("no-such-folder") + "/x";
+  const std::string folder = tempPath("no-such-folder");
+  const std::string missing = folder + "/x";
+  const std::string refused = "': the folder '" + folder + "' does not exist: create it (mkdir -p " + folder + ")";
   const std::map<std::string, std::string> cases = {
-      {"solve office --out " + missing + ".glb", "--out '" + missing + ".glb': the folder"},
+      {"solve office --out " + missing + ".glb", "--out '" + missing + ".glb" + refused},
       {"solve office --out " + tempPath("x.png"), "give a path ending in .glb"},
-      {"solve office --stats " + missing + ".json", "--stats '" + missing + ".json': the folder"},
+      {"solve office --stats " + missing + ".json", "--stats '" + missing + ".json" + refused},
       {"solve office --stats " + tempPath("x.txt"), "give a path ending in .json"},
+      {"solve office --checkpoint " + missing + ".ckpt", "--checkpoint '" + missing + ".ckpt" + refused},
+      {"info building:3x3 --plan " + missing + ".png", "--plan '" + missing + ".png" + refused},
+      // Every output alike: a missing folder is refused, not made (bench's used to be).
+      {"bench solve furnace --json " + missing + ".json", "--json '" + missing + ".json" + refused},
+      {"bench solve furnace --csv " + missing, "--csv '" + missing + refused},
+      {"bench cells two-rooms --json " + missing + ".json", "--json '" + missing + ".json" + refused},
+      {"bench accuracy furnace --quick --json " + missing + ".json", "--json '" + missing + ".json" + refused},
+      // A folder of outputs is made, as a file is, in a folder that exists.
+      {"bench accuracy furnace --quick --out-dir " + missing, "--out-dir '" + missing + refused},
   };
   for (const auto& [arguments, message] : cases) {
     const CommandRun run = radmesh(arguments);
@@ -1486,23 +1508,18 @@ TEST(Cli, OutputPathsAreCheckedBeforeTheSolve) {
     EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
     EXPECT_EQ(run.output.find("solving"), std::string::npos) << arguments << ": " << run.output;
   }
-  EXPECT_NE(radmesh("solve office --out " + missing + ".glb").output.find("mkdir -p"), std::string::npos);
-  // A bench's figures get their folder made, as bench accuracy's always did (docs/performance.md's
-  // commands write into out/data/).
-  const std::string benchJson = tempPath("made/by/bench.json");
-  ASSERT_EQ(radmesh("bench solve furnace --resolutions 16 --projections hemicube --json " + benchJson).exitCode, 0);
-  EXPECT_TRUE(std::filesystem::exists(benchJson));
+  EXPECT_FALSE(std::filesystem::exists(folder));
   // A folder named like the file: refused before, not after, the solve.
-  const std::string folder = tempPath("folder.json");
-  std::filesystem::create_directories(folder);
-  CommandRun run = radmesh("solve furnace --stats " + folder);
+  const std::string named = tempPath("folder.json");
+  std::filesystem::create_directories(named);
+  CommandRun run = radmesh("solve furnace --stats " + named);
   EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("--stats '" + folder + "' is a folder"), std::string::npos) << run.output;
-  run = radmesh("solve furnace --checkpoint " + folder);
+  EXPECT_NE(run.output.find("--stats '" + named + "' is a folder"), std::string::npos) << run.output;
+  run = radmesh("solve furnace --checkpoint " + named);
   EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("--checkpoint '" + folder + "' is a folder"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("--checkpoint '" + named + "' is a folder"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("solving"), std::string::npos) << run.output;
-  run = radmesh("solve furnace --resume " + folder);
+  run = radmesh("solve furnace --resume " + named);
   EXPECT_NE(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("is a folder, not a checkpoint"), std::string::npos) << run.output;
   if (radmesh("render --help").output.find("not built") != std::string::npos) return;
@@ -1530,6 +1547,11 @@ TEST(Cli, AnOutputNamedOnlyByItsExtensionIsRefused) {
       {"bench solve furnace --resolutions 16 --json .json", "--json '.json': the file name is only the extension"},
       {"bench accuracy furnace --quick --json .json", "--json '.json': the file name is only the extension"},
       {"render office --out .png", "--out '.png': the file name is only the extension"},
+      // Options that take any name: one dot, leading, is a hidden file all the same.
+      {"solve office --checkpoint .ckpt", "--checkpoint '.ckpt': the file name is only the extension, which would "
+                                          "write a hidden file named .ckpt: give a name before it (e.g. NAME.ckpt)"},
+      {"solve office --checkpoint out/.ckpt", "--checkpoint 'out/.ckpt': the file name is only the extension"},
+      {"bench solve furnace --csv .scaling", "--csv '.scaling': the file name is only the extension"},
   };
   for (const auto& [arguments, message] : cases) {
     if (arguments.starts_with("render") && radmesh("render --help").output.find("not built") != std::string::npos) continue;

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -74,6 +75,37 @@ TEST(UpAxisCli, UnitsScaleTheSceneOnEveryCommandAndABadOneIsRefused) {
     EXPECT_NE(run.output.find("--units 'furlong' is not a unit: give m, cm, mm, in or ft"), std::string::npos)
         << command << ": " << run.output;
   }
+}
+
+// --units that make a model no building, room or luminaire (the office, 7.35 m in metres, read as
+// millimetres) is a counted warning naming the file, the size and the fix, refused under --strict;
+// the shared scenes that are small, read as they are drawn, are not warned of.
+TEST(UpAxisCli, UnitsThatMakeTheModelImplausiblySizedAreWarnedOf) {
+  const std::string warning = "office: with --units mm the model is 0.00735 m across, too small for a building, a "
+                              "room or a luminaire (under 0.05 m): if its coordinates are metres, leave --units out "
+                              "(it is then 7.35 m across)";
+  const CommandRun run = radmesh("info office --units mm");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("radmesh: warning: " + warning + "\n"), std::string::npos) << run.output;
+  EXPECT_EQ(infoJson("office --units mm")["warnings"], nlohmann::json::array({warning}));
+  const CommandRun strict = radmesh("info office --units mm --strict");
+  EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  EXPECT_NE(strict.output.find("--strict: needed 1 kind(s) of repair, each an error under --strict:\n  " + warning),
+            std::string::npos)
+      << strict.output;
+  EXPECT_EQ(infoJson("office --units ft")["warnings"], nlohmann::json::array());  // 2.24 m across
+  RADMESH_REQUIRE_SHARED(luminaire, "scenes/mgf/examp1.mgf");
+  RADMESH_REQUIRE_SHARED(cube, "scenes/mgf/cube.mgf");
+  const auto warnedOfUnits = [](const std::string& arguments) {  // their other warnings are the MGF's own
+    const nlohmann::json warnings = infoJson(arguments)["warnings"];
+    return std::ranges::any_of(warnings, [](const nlohmann::json& w) {
+      return w.get<std::string>().find("--units") != std::string::npos;
+    });
+  };
+  for (const std::string& units : {"", " --units m"}) EXPECT_FALSE(warnedOfUnits(luminaire.string() + units)) << units;
+  for (const std::string& units : {"", " --units m", " --units cm"})  // 10 units: 0.1 m in cm
+    EXPECT_FALSE(warnedOfUnits(cube.string() + units)) << units;
+  EXPECT_TRUE(warnedOfUnits(luminaire.string() + " --units mm"));  // 1.2 mm
 }
 
 #ifdef RADMESH_HAS_VIEWER

@@ -81,6 +81,31 @@ TEST(Units, ARoomInMillimetresLoadsAsTheSameRoomInMetres) {
   std::filesystem::remove(millimetres);
 }
 
+// A room drawn in metres read as millimetres is 4 mm across, one drawn in units of 1e-5 m read as
+// metres 400 km: each a warning naming the file, the size and the unit that gives a room's size; the room
+// read in the unit it is drawn in is not warned of.
+TEST(Units, AModelScaledToNoBuildingsSizeIsWarnedOfWithTheFix) {
+  const std::string metres = writeUnitsRoom(1.0, "small.mgf"), large = writeUnitsRoom(1e5, "large.mgf");
+  const auto warningsOf = [](const std::string& path, const char* units) {
+    std::vector<std::string> warnings;
+    loadScene(path, &warnings, {}, nullptr, UpChoice::Z, nullptr, parseUnits(units));
+    return warnings;
+  };
+  EXPECT_EQ(warningsOf(metres, "mm"),
+            std::vector<std::string>{metres + ": with --units mm the model is 0.004 m across, too small for a building, "
+                                              "a room or a luminaire (under 0.05 m): if its coordinates are metres, "
+                                              "leave --units out (it is then 4 m across)"});
+  EXPECT_EQ(warningsOf(large, "m"),
+            std::vector<std::string>{large + ": with --units m the model is 400000 m across, too large for a building, a "
+                                            "room or a luminaire (over 100000 m): if its coordinates are in mm, give "
+                                            "--units mm (it is then 400 m across)"});
+  EXPECT_TRUE(warningsOf(metres, "m").empty());
+  EXPECT_TRUE(warningsOf(metres, "ft").empty());  // 1.2 m: a luminaire's size
+  EXPECT_TRUE(warningsOf(large, "mm").empty());
+  std::filesystem::remove(metres);
+  std::filesystem::remove(large);
+}
+
 TEST(Units, LightsMoveWithTheModelAndKeepTheirIntensity) {
   Scene scene;
   scene.polygons.push_back({{{0, 0, 0}, {1000, 0, 0}, {1000, 1000, 0}}, 0, "f"});
