@@ -40,12 +40,6 @@ TEST(CliLights, SunAloneLightsAnOpenBoxOnEitherBackEnd) {
   }
 }
 
-nlohmann::json infoJson(const std::string& arguments) {
-  const CommandRun run = radmesh("info " + arguments + " --json");
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  return nlohmann::json::parse(run.output, nullptr, false);
-}
-
 // info's emitted power holds the sun over the whole model, most of which may never come in: it says
 // how much falls outside and how much comes in, the watts a solve's ledger books. The open box (2 m,
 // y-up, open to the south) under a sun from the south at 40 degrees takes 3 x 100000 / 179 W/m^2

@@ -96,6 +96,19 @@ inline nlohmann::json readJson(const std::string& path) {
   return nlohmann::json::parse(in);
 }
 
+// The JSON a command printed, after what went to stderr (warnings come first).
+inline nlohmann::json jsonOf(const CommandRun& run) {
+  const std::size_t at = run.output.find('{');
+  return nlohmann::json::parse(at == std::string::npos ? std::string() : run.output.substr(at), nullptr, false);
+}
+
+// `radmesh info <arguments> --json`'s figures; the command must succeed.
+inline nlohmann::json infoJson(const std::string& arguments) {
+  const CommandRun run = radmesh("info " + arguments + " --json");
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  return jsonOf(run);
+}
+
 // What `radmesh bench` printed and the JSON it wrote.
 struct BenchRun {
   std::string output;

@@ -17,15 +17,6 @@ namespace {
 
 const std::string kYUpRoom = test::dataPath("yup_room.gltf").string();
 
-// The JSON a command printed, after what went to stderr.
-nlohmann::json jsonOf(const CommandRun& run) { return nlohmann::json::parse(run.output.substr(run.output.find('{'))); }
-
-nlohmann::json infoJson(const std::string& arguments) {
-  const CommandRun run = radmesh("info " + arguments + " --json");
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  return jsonOf(run);
-}
-
 TEST(UpAxisCli, InfoGivesTheUpAxisTheFormatOrTheOptionSets) {
   EXPECT_EQ(infoJson(kYUpRoom)["up"], "y");
   EXPECT_EQ(infoJson(kYUpRoom)["kind"], "scene");
