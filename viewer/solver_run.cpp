@@ -12,6 +12,7 @@
 #include "solver/cells/find_cells.h"
 #include "solver/io/atomic_file.h"
 #include "solver/io/builtin_scenes.h"
+#include "solver/io/output_path.h"
 #include "solver/meshing/meshing.h"
 #include "solver/radiosity/checkpoint.h"
 #include "solver/radiosity/effects_plan.h"
@@ -154,6 +155,12 @@ void SolverThread::save(Run& run, const std::string& path) {
   run.checkpointFailed = true;
   if (path.empty()) {  // an empty box in the panel: said, not ignored
     run.checkpointMessage = fmt::format("no checkpoint saved: type a path {}", kBox);
+    return;
+  }
+  if (namesOnlyAnExtension(path)) {
+    run.checkpointMessage =
+        fmt::format("not saved: {} is an extension alone, which would write a hidden file: type a name before it {}",
+                    path, kBox);
     return;
   }
   if (!scene_.file.empty() && sameFile(path, scene_.file)) {

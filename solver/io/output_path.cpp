@@ -43,14 +43,19 @@ void checkFolderExists(const std::string& option, const std::string& path) {
 
 }  // namespace
 
+bool namesOnlyAnExtension(const std::string& path) {
+  // "--out .glb" or "--checkpoint .ckpt" names no file but a hidden one: one dot, leading.
+  const std::string name = std::filesystem::path(path).filename().string();
+  return name.size() > 1 && name.front() == '.' && name.find('.', 1) == std::string::npos;
+}
+
 void checkOutputPath(const std::string& option, const std::string& path, const std::string& extension,
                      const std::string& what) {
   if (path.empty()) return;
   if (!hasExtension(path, extension))
     throw OptionError(fmt::format("{} '{}': {}: give a path ending in {}", option, path, what, extension));
-  // "--out .glb" or "--checkpoint .ckpt" names no file but a hidden one: one dot, leading.
-  const std::string name = std::filesystem::path(path).filename().string();
-  if (name.size() > 1 && name.front() == '.' && name.find('.', 1) == std::string::npos) {
+  if (namesOnlyAnExtension(path)) {
+    const std::string name = std::filesystem::path(path).filename().string();
     const std::filesystem::path example = std::filesystem::path(path).parent_path() /
                                           ("NAME" + (extension.empty() ? name : extension));
     throw OptionError(fmt::format("{} '{}': the file name is only the extension, which would write a hidden file "

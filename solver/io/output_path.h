@@ -10,6 +10,10 @@ namespace radmesh {
 // Whether `path` ends in `extension` (e.g. ".glb"), in any case.
 bool hasExtension(const std::string& path, const std::string& extension);
 
+// Whether the file name of `path` is an extension alone (".glb", ".ckpt"): it would write a hidden
+// file, where a name was surely meant.
+bool namesOnlyAnExtension(const std::string& path);
+
 // Throws OptionError naming `option` and the fix when `path` does not end in `extension` (`what`
 // says what the file is, e.g. "a bake is glTF binary"; "": any name), its file name is an extension
 // alone (".glb", ".ckpt": it would write a hidden file), its folder does not exist (refused, not

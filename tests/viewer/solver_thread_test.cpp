@@ -248,6 +248,13 @@ TEST(SolverThread, ACheckpointIsNotSavedOverTheScene) {
   const Snapshot empty = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.starts_with("no checkpoint"); });
   EXPECT_EQ(empty->checkpointMessage, "no checkpoint saved: type a path in the box beside Save checkpoint");
   EXPECT_TRUE(empty->checkpointFailed);
+  // A name that is an extension alone would write a hidden file, as --checkpoint's does not.
+  thread.saveCheckpoint((dir / ".ckpt").string());
+  const Snapshot hidden = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.find(".ckpt") != std::string::npos; });
+  EXPECT_EQ(hidden->checkpointMessage, "not saved: " + (dir / ".ckpt").string() + " is an extension alone, which would "
+                                       "write a hidden file: type a name before it in the box beside Save checkpoint");
+  EXPECT_TRUE(hidden->checkpointFailed);
+  EXPECT_FALSE(std::filesystem::exists(dir / ".ckpt"));
   // A folder that is not there: named, and the fix in the panel's words.
   thread.saveCheckpoint((dir / "missing" / "x.ckpt").string());
   const Snapshot missing = waitFor(thread, [](const SolverSnapshot& s) { return s.checkpointMessage.find("missing") != std::string::npos; });
