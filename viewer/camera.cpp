@@ -64,7 +64,7 @@ WalkCamera::WalkCamera(const SceneFrame& frame) : frame_(frame) {
 
 void WalkCamera::lookFromOutside() {
   const UpFrame axes = upFrame(frame_.upAxis);
-  const glm::dvec3 centre = 0.5 * (frame_.boundsMin + frame_.boundsMax);
+  const glm::dvec3 centre = boundsCentre();
   // From over the least corner, 30 degrees up, far enough that the bounds' sphere fills the view.
   const double elevation = std::numbers::pi / 6.0;
   const glm::dvec3 towardEye = std::cos(elevation) * glm::normalize(-axes.across - axes.along) + std::sin(elevation) * up_;
@@ -163,7 +163,7 @@ void WalkCamera::lookAt(const glm::dvec3& target) {
 
 void WalkCamera::startFrom(const ViewStart& start, bool fovGiven) {
   RenderView view = this->view();
-  const glm::dvec3 centre = 0.5 * (frame_.boundsMin + frame_.boundsMax);
+  const glm::dvec3 centre = boundsCentre();
   if (start.eye) view.eye = *start.eye, view.look = centre;
   if (start.look) view.look = *start.look;
   if (!std::isfinite(glm::length(view.look - view.eye)))
@@ -224,7 +224,7 @@ RenderView WalkCamera::view() const {
 // Four times the model's size, or, from an eye outside the walk's reach (--camera far off), beyond
 // the scene's farthest corner from it: the whole scene is seen from anywhere.
 double WalkCamera::farM(const glm::dvec3& eye) const {
-  const glm::dvec3 centre = 0.5 * (frame_.boundsMin + frame_.boundsMax);
+  const glm::dvec3 centre = boundsCentre();
   return std::max(4.0 * sizeM(),
                   1.5 * (glm::length(eye - centre) + 0.5 * glm::length(frame_.boundsMax - frame_.boundsMin)));
 }

@@ -77,6 +77,7 @@ class WalkCamera {
  private:
   void lookAt(const glm::dvec3& target);  // level, from where it stands
   double sizeM() const;  // the bounds' diagonal
+  glm::dvec3 boundsCentre() const { return 0.5 * (frame_.boundsMin + frame_.boundsMax); }
   double nearM() const;  // the near plane's distance, scaled to the model
   double farM(const glm::dvec3& eye) const;
   // Where the start stands in no room (in a wall between a building's rooms, in its courtyard): to
