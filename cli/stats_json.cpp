@@ -30,7 +30,8 @@ nlohmann::json iterationJson(const IterationRecord& r) {
 nlohmann::json ledgerJson(const Ledger& l) {
   nlohmann::json j = {{"emitted", l.emitted},       {"absorbed", l.absorbed},
                       {"absorbed_by_back_faces", l.absorbedByBackFaces}, {"unshot", l.unshot},
-                      {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"light_outside", l.lightOutside}, {"imbalance", l.imbalance()}};
+                      {"not_captured", l.notCaptured}, {"escaped", l.escaped}, {"light_outside", l.lightOutside},
+                      {"light_on_back_faces", l.lightOnBackFaces}, {"imbalance", l.imbalance()}};
   if (l.portalIn > 0.0 || l.portalOut > 0.0) j.update({{"portal_in", l.portalIn}, {"portal_out", l.portalOut}});
   return j;
 }

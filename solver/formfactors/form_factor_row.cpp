@@ -8,6 +8,8 @@ double FormFactorRow::hitFraction() const {
   return sum;
 }
 
+double FormFactorRow::outsideFraction() const { return escapedFraction() + backFaces; }
+
 double FormFactorRow::escapedFraction() const {
   // Sums in another order differ in the last bits: a difference at rounding level is neither light
   // escaping a closed scene nor light created.

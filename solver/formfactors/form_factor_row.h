@@ -28,6 +28,9 @@ struct FormFactorRow {
   double hitFraction() const;       // sum of formFactors, plus backFaces
   // Caught but hitting no patch: light leaving an open scene. Never negative.
   double escapedFraction() const;
+  // Escaped plus backFaces: of a light's shot, what falls past the model or on its outside and never
+  // enters it (Ledger::lightOutside).
+  double outsideFraction() const;
   std::size_t bytes() const;        // memory the row holds
 };
 

@@ -86,17 +86,13 @@ FormFactorRow lightRow(const Scene& scene, const Light& light, const std::vector
   return row;
 }
 
-double powerOutside(const FormFactorRow& row, const Rgb& power) {
-  return channelSum(power) * (row.escapedFraction() + row.backFaces);
-}
-
 double lightsPowerOutside(const Scene& scene, const std::vector<Patch>& patches, int resolution, ThreadPool& pool) {
   const double nearDepth = sceneNearDepth(patches);
   double outside = 0.0;
   for (const Light& light : scene.lights) {
     const Rgb power = lightPower(scene, light);
     if (!(channelSum(power) > 0.0)) continue;  // as a solve: a dark light, or a beam with no window
-    outside += powerOutside(lightRow(scene, light, patches, resolution, nearDepth, pool), power);
+    outside += channelSum(power) * lightRow(scene, light, patches, resolution, nearDepth, pool).outsideFraction();
   }
   return outside;
 }

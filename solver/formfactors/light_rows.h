@@ -29,11 +29,6 @@ Patch lightViewpoint(const Scene& scene, const Light& light, const std::vector<P
 FormFactorRow lightRow(const Scene& scene, const Light& light, const std::vector<Patch>& patches, int resolution,
                        double nearDepth, ThreadPool& pool);
 
-// Of a light's `power` (W per channel), what its row sends past the model or onto the backs of
-// one-sided patches (a closed model's outside): what never enters the model (Ledger::lightOutside),
-// W summed over RGB.
-double powerOutside(const FormFactorRow& row, const Rgb& power);
-
 // Of the scene's lights' power, what never enters the model, as a solve of `patches` at `resolution`
 // books it in its first iteration (the sun on a building's walls and roof), W summed over RGB.
 double lightsPowerOutside(const Scene& scene, const std::vector<Patch>& patches, int resolution, ThreadPool& pool);

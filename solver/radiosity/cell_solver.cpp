@@ -97,11 +97,12 @@ void CellSolver::State::refresh() {
   waitingW.resize(links.size());
   for (int c = 0; c < n; ++c) {
     const std::vector<double>& f = figures[c];
-    cellLedger[c] = Ledger{f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8]};
-    cellIterations[c] = static_cast<int>(f[9]);
-    cellExhausted[c] = f[10] != 0.0;
-    cellElements[c] = static_cast<int>(f[11]);
-    cellEmittersToShoot[c] = static_cast<int>(f[12]);
+    const size_t terms = Ledger::kTerms.size();
+    for (size_t t = 0; t < terms; ++t) cellLedger[c].*Ledger::kTerms[t] = f[t];
+    cellIterations[c] = static_cast<int>(f[terms]);
+    cellExhausted[c] = f[terms + 1] != 0.0;
+    cellElements[c] = static_cast<int>(f[terms + 2]);
+    cellEmittersToShoot[c] = static_cast<int>(f[terms + 3]);
     std::copy(f.begin() + kFigures, f.end(), waitingW.begin() + static_cast<std::ptrdiff_t>(firstLink[c]));
   }
 }
@@ -218,15 +219,10 @@ Ledger CellSolver::ledger() const {
   std::vector<const Ledger*> parts{&s.lights};
   for (const Ledger& cell : s.cellLedger) parts.push_back(&cell);
   for (const Ledger* part : parts) {
-    const Ledger& l = *part;
-    total.emitted += l.emitted;
-    total.absorbed += l.absorbed;
-    total.unshot += l.unshot;
-    total.notCaptured += l.notCaptured;
-    total.escaped += l.escaped;
-    total.absorbedByBackFaces += l.absorbedByBackFaces;
-    total.lightOutside += l.lightOutside;
+    for (double Ledger::*term : Ledger::kTerms) total.*term += part->*term;
   }
+  // Within the building, portal light only moves between cells: what waits on a link is unshot.
+  total.portalOut = total.portalIn = 0.0;
   for (double w : s.waitingW) total.unshot += w;
   return total;
 }

@@ -260,11 +260,7 @@ void CellSolver::State::receiveLights(const std::vector<LightShot>& shots) {
       if (owns(static_cast<int>(c))) cells[c].solver->receiveLight(part, shot.power);
       lights.emitted -= powerW * part.hitFraction();  // what the cell received
     }
-    lights.notCaptured += powerW * (1.0 - shot.row.capturedFraction);
-    lights.escaped += powerW * shot.row.escapedFraction();
-    lights.absorbed += powerW * shot.row.backFaces;
-    lights.absorbedByBackFaces += powerW * shot.row.backFaces;
-    lights.lightOutside += powerW * (shot.row.escapedFraction() + shot.row.backFaces);
+    bookShotLosses(lights, shot.row, powerW, true);
   }
   if (options.subdivide != Subdivide::Adaptive || shots.empty()) return;
   std::vector<Rgb> powers;

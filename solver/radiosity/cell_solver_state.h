@@ -44,14 +44,14 @@ inline int elementCount(const ProgressiveSolver& solver, int patches) {
 // A cell's figures as the schedule, the building's ledger and the stats read them, in doubles for
 // CellRanks: its ledger, iterations, whether it is exhausted, its own patches' elements, its
 // emitting patches yet to shoot, then what waits on each of its links.
-constexpr size_t kFigures = 13;
+constexpr size_t kFigures = Ledger::kTerms.size() + 4;
 
 inline std::vector<double> packFigures(const ProgressiveSolver& solver, int ownPatches, std::vector<double> waitingW) {
-  const Ledger& l = solver.ledger();
-  std::vector<double> out{l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces,
-                          l.portalOut, l.portalIn, l.lightOutside, static_cast<double>(solver.history().size()),
-                          solver.exhausted() ? 1.0 : 0.0, static_cast<double>(elementCount(solver, ownPatches)),
-                          static_cast<double>(solver.emittersToShoot())};
+  std::vector<double> out;
+  for (double Ledger::*term : Ledger::kTerms) out.push_back(solver.ledger().*term);
+  out.insert(out.end(), {static_cast<double>(solver.history().size()), solver.exhausted() ? 1.0 : 0.0,
+                         static_cast<double>(elementCount(solver, ownPatches)),
+                         static_cast<double>(solver.emittersToShoot())});
   out.insert(out.end(), waitingW.begin(), waitingW.end());
   return out;
 }

@@ -15,8 +15,9 @@
 
 namespace radmesh {
 
-// 2: the ledger keeps lightOutside; 3: elements (--subdivide), portal patches and cells solves.
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+// 2: the ledger keeps lightOutside; 3: elements (--subdivide), portal patches and cells solves;
+// 4: the ledger keeps lightOnBackFaces.
+inline constexpr std::uint32_t kCheckpointVersion = 4;
 
 // Why a checkpoint could not be written: what() names the file, the reason and the command line's
 // fix (--checkpoint); reason() is the reason alone, for the viewer's panel to give its own fix.

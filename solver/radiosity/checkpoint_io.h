@@ -103,8 +103,7 @@ template <class Io, class T> void transfer(Io& io, std::shared_ptr<const T>& v) 
 }
 template <class Io> void transfer(Io& io, Rgb& c) { fields(io, c.r, c.g, c.b); }
 template <class Io> void transfer(Io& io, Ledger& l) {
-  fields(io, l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, l.lightOutside,
-         l.portalOut, l.portalIn);
+  for (double Ledger::*term : Ledger::kTerms) transfer(io, l.*term);
 }
 // JSON as its text: nlohmann writes the shortest decimal that reads back to the same double.
 template <class Io> void transfer(Io& io, nlohmann::json& j) {

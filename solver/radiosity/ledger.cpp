@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "solver/formfactors/form_factor_row.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh {
@@ -17,6 +18,16 @@ double Ledger::imbalance() const {
   return input() > 0.0 ? std::abs(input() - accounted) / input() : std::abs(accounted);
 }
 
+void bookShotLosses(Ledger& l, const FormFactorRow& row, double powerW, bool fromLight) {
+  l.notCaptured += powerW * (1.0 - row.capturedFraction);
+  l.escaped += powerW * row.escapedFraction();
+  l.absorbed += powerW * row.backFaces;
+  l.absorbedByBackFaces += powerW * row.backFaces;
+  if (!fromLight) return;
+  l.lightOutside += powerW * row.outsideFraction();
+  l.lightOnBackFaces += powerW * row.backFaces;
+}
+
 std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
   std::vector<std::string> warnings;
   if (!(l.input() > 0.0)) return warnings;
@@ -24,7 +35,8 @@ std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
   // an open scene: only what entered is weighed there.
   const double neverEntered = l.lightOutside / l.input();
   const double entered = l.cameIn();
-  const double leftAfterEntering = entered > 0.0 ? std::max(0.0, l.escaped - l.lightOutside) / entered : 0.0;
+  const double lightPast = l.lightOutside - l.lightOnBackFaces;  // the lights' part of escaped
+  const double leftAfterEntering = entered > 0.0 ? std::max(0.0, l.escaped - lightPast) / entered : 0.0;
   // Nothing at all came in: every radiosity is zero, whatever the scene.
   if (!sceneClosed && neverEntered > 1.0 - 1e-9) {
     warnings.push_back("none of the lights' power entered the model, so every radiosity is zero: is the sun along a "
@@ -43,8 +55,8 @@ std::vector<std::string> lostLightWarnings(const Ledger& l, bool sceneClosed) {
         "the scene is darker than it should be: --projection hemicube catches all of it",
         100.0 * l.notCaptured / l.input()));
   // The lights' power on the model's outside (the sun on walls facing in) is booked there too, and
-  // is no loss: only the rest is weighed (lightOutside does not say how much of it was on backs).
-  const double onBacks = entered > 0.0 ? std::max(0.0, l.absorbedByBackFaces - l.lightOutside) / entered : 0.0;
+  // is no loss: only the rest is weighed.
+  const double onBacks = entered > 0.0 ? std::max(0.0, l.absorbedByBackFaces - l.lightOnBackFaces) / entered : 0.0;
   if (onBacks > kBackFacesAbsorbed)
     warnings.push_back(fmt::format(
         "{:.1f}% of {} was absorbed on the backs of one-sided surfaces (radmesh reads every surface one-sided, as "

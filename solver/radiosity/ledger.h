@@ -1,9 +1,12 @@
 #pragma once
 // The energy ledger: where every watt a solve was given went, checked after every iteration.
+#include <array>
 #include <string>
 #include <vector>
 
 namespace radmesh {
+
+struct FormFactorRow;
 
 // Where the emitted power went, in watts summed over RGB. Balances:
 // emitted + portalIn = absorbed + unshot + notCaptured + escaped + portalOut
@@ -21,6 +24,12 @@ struct Ledger {
   // Part of escaped and absorbedByBackFaces: what a light's shot sent past the model or onto its
   // outside (most of the sun on a building), which never entered it.
   double lightOutside = 0.0;
+  double lightOnBackFaces = 0.0;  // part of lightOutside: the lights' on the backs of one-sided patches
+  // Every term, for what handles them all alike (sums, checks, checkpoints, messages between ranks).
+  static constexpr std::array kTerms{&Ledger::emitted,     &Ledger::absorbed,         &Ledger::unshot,
+                                     &Ledger::notCaptured, &Ledger::escaped,          &Ledger::absorbedByBackFaces,
+                                     &Ledger::portalOut,   &Ledger::portalIn,         &Ledger::lightOutside,
+                                     &Ledger::lightOnBackFaces};
   double input() const;      // emitted + portalIn: all the power the solve has had to distribute
   double imbalance() const;  // |input - (absorbed + unshot + notCaptured + escaped + portalOut)| / input
   // unshot / (input - lightOutside): what is left to distribute of what came in (0 if nothing did).
@@ -32,6 +41,11 @@ struct Ledger {
   // when lights sent some onto the model's outside.
   const char* unshotBasis() const;
 };
+
+// Books where a shot of powerW along `row` went other than onto its receivers' fronts: not captured,
+// escaped, or absorbed on the backs of one-sided patches. A light's shot (`fromLight`) books its
+// escape and backs as lightOutside too: that light never came into the model.
+void bookShotLosses(Ledger& ledger, const FormFactorRow& row, double powerW, bool fromLight);
 
 // Throws SolveError when the ledger does not balance to kLedgerTolerance of its input, naming
 // `iteration` and every term. Every iteration, in every build: numbers that do not balance are never

@@ -197,9 +197,8 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
     const FormFactorRow row = lightRow(scene, scene.lights[k], receivers(), options.resolution, nearDepth, pool);
-    deliver(row, lightPower[k]);
+    deliver(row, lightPower[k], true);
     shots.push_back({-1, static_cast<int>(k), lightPower[k]});
-    ledger.lightOutside += powerOutside(row, lightPower[k]);
     record.shotPowerW += channelSum(lightPower[k]);
   }
   lightsShot = true;
@@ -211,12 +210,8 @@ void ProgressiveSolver::State::shootLights(IterationRecord& record) {
 // receivers (eq. 1.2, or absorbed outright when nothing reflects). Escape is booked in a closed
 // scene too: pixel centres on a seam where patch edges meet in a T-junction may fall outside
 // both sides by rounding, and that light hits nothing (EffectsPlan::escape).
-void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& power) {
-  const double powerW = channelSum(power);
-  ledger.notCaptured += powerW * (1.0 - row.capturedFraction);
-  ledger.escaped += powerW * row.escapedFraction();
-  ledger.absorbed += powerW * row.backFaces;
-  ledger.absorbedByBackFaces += powerW * row.backFaces;
+void ProgressiveSolver::State::deliver(const FormFactorRow& row, const Rgb& power, bool fromLight) {
+  bookShotLosses(ledger, row, channelSum(power), fromLight);
   deliverToReceivers(row, power);
 }
 

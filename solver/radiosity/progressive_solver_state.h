@@ -93,7 +93,7 @@ struct ProgressiveSolver::State {
   void fetchRows(const std::vector<int>& shooters, IterationRecord& record);
   void shoot(const std::vector<int>& shooters, IterationRecord& record);
   void shootLights(IterationRecord& record);
-  void deliver(const FormFactorRow& row, const Rgb& power);
+  void deliver(const FormFactorRow& row, const Rgb& power, bool fromLight = false);
   void deliverToReceivers(const FormFactorRow& row, const Rgb& power);
   void deliverByBins(const FormFactorRow& row, const std::vector<Rgb>& bins);
   void updateUnshot();

@@ -58,9 +58,8 @@ void checkFigures(const SolverProgress& p) {
   for (const auto& [name, ok] : figures)
     if (!ok) throw std::invalid_argument(fmt::format("its {} holds a value no solve makes", name));
   const Ledger& l = p.ledger;
-  for (double term : {l.emitted, l.absorbed, l.unshot, l.notCaptured, l.escaped, l.absorbedByBackFaces, l.portalOut,
-                      l.portalIn, l.lightOutside})
-    if (!physical(term)) throw std::invalid_argument(fmt::format("its energy ledger holds {} W", term));
+  for (double Ledger::*term : Ledger::kTerms)
+    if (!physical(l.*term)) throw std::invalid_argument(fmt::format("its energy ledger holds {} W", l.*term));
   if (!(l.imbalance() <= kLedgerTolerance))
     throw std::invalid_argument(fmt::format("its energy ledger does not balance (imbalance {:.3g} of the power)",
                                             l.imbalance()));

@@ -214,10 +214,10 @@ TEST(CliCheckpoint, RefusesACheckpointThatDoesNotFit) {
   std::ofstream(checkpoint, std::ios::binary) << flipped;
   expectRefused(kSolve, checkpoint, "is corrupted");
   expectRefused(kSolve, tempPath("missing.ckpt"), "cannot be read");
-  std::string older = good;  // before elements, portals and cells were kept
-  older[8] = 2;
+  std::string older = good;  // before the ledger kept the lights' part on back faces
+  older[8] = 3;
   std::ofstream(checkpoint, std::ios::binary) << older;
-  expectRefused(kSolve, checkpoint, "is a version 2 checkpoint (or its header is damaged); this radmesh reads version 3");
+  expectRefused(kSolve, checkpoint, "is a version 3 checkpoint (or its header is damaged); this radmesh reads version 4");
 }
 
 // Two rooms, each a cell, the light through the door kept by direction bin; about 30 rounds.

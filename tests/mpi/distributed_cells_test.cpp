@@ -30,15 +30,8 @@ void solve(CellSolver& solver) {
 }
 
 void expectSameLedger(const Ledger& a, const Ledger& b) {
-  EXPECT_EQ(a.emitted, b.emitted);
-  EXPECT_EQ(a.absorbed, b.absorbed);
-  EXPECT_EQ(a.unshot, b.unshot);
-  EXPECT_EQ(a.notCaptured, b.notCaptured);
-  EXPECT_EQ(a.escaped, b.escaped);
-  EXPECT_EQ(a.absorbedByBackFaces, b.absorbedByBackFaces);
-  EXPECT_EQ(a.portalIn, b.portalIn);
-  EXPECT_EQ(a.portalOut, b.portalOut);
-  EXPECT_EQ(a.lightOutside, b.lightOutside);
+  for (size_t t = 0; t < Ledger::kTerms.size(); ++t)
+    EXPECT_EQ(a.*Ledger::kTerms[t], b.*Ledger::kTerms[t]) << "ledger term " << t;
 }
 
 // Solves `name` in this process alone and over the run's processes, and compares every figure;

@@ -53,10 +53,29 @@ TEST(Ledger, LightOnBackFacesIsNamedAboveATwentiethOfTheLight) {
   l.absorbedByBackFaces = 6.0;
   EXPECT_TRUE(says(lostLightWarnings(l, true), "6.0% of the emitted power was absorbed on the backs of one-sided surfaces"));
   EXPECT_TRUE(says(lostLightWarnings(l, true), "as two faces back to back or give it thickness, or in glTF make its material doubleSided"));
-  l.lightOutside = l.absorbedByBackFaces = 90.0;  // the sun on the outside: no loss
+  l.lightOutside = l.lightOnBackFaces = l.absorbedByBackFaces = 90.0;  // the sun on the outside: no loss
   EXPECT_TRUE(lostLightWarnings(l, false).empty());
   l.absorbedByBackFaces = 91.0;  // and 1 W of the 10 that came in
   EXPECT_TRUE(says(lostLightWarnings(l, false), "10.0% of the power that came in was absorbed on the backs"));
+}
+
+// The sun's power that never came in is partly past the model (escaped) and partly on its outside
+// (back faces): each is weighed against its own kind of loss, not against the whole. Weighing all of
+// it against the backs hid 6 of the 10 W that came in falling on backs indoors; against escape, all
+// of the 10 W leaving again.
+TEST(Ledger, TheSunPastTheModelHidesNoLossInsideIt) {
+  Ledger l;
+  l.emitted = 100.0;
+  l.lightOutside = 90.0;  // 60 W past the building, 30 W on its outside walls
+  l.lightOnBackFaces = 30.0;
+  l.escaped = 60.0;
+  l.absorbedByBackFaces = 36.0;
+  l.absorbed = 40.0;
+  EXPECT_TRUE(says(lostLightWarnings(l, false), "60.0% of the power that came in was absorbed on the backs"));
+  l.escaped = 70.0;  // and the 10 W that came in all left again
+  l.absorbedByBackFaces = 30.0;
+  l.absorbed = 30.0;
+  EXPECT_TRUE(says(lostLightWarnings(l, false), "100.0% of the power that entered the scene left"));
 }
 
 }  // namespace

@@ -105,6 +105,11 @@ TEST(LightShot, SunOnTheOutsideDoesNotCountTowardsTheUnshotFraction) {
   const double sunW = sun.r + sun.g + sun.b;
   EXPECT_GT(first.ledger.lightOutside, 0.99 * sunW);  // all but what slips in at edges
   EXPECT_LE(first.ledger.lightOutside, sunW * (1 + 1e-12));
+  // Of it, what fell on the walls' backs is kept apart from what went past: nothing else has escaped
+  // or reached a back yet.
+  EXPECT_GT(first.ledger.lightOnBackFaces, 0.0);
+  EXPECT_EQ(first.ledger.lightOnBackFaces, first.ledger.absorbedByBackFaces);
+  EXPECT_NEAR(first.ledger.lightOnBackFaces + first.ledger.escaped, first.ledger.lightOutside, 1e-12 * sunW);
   EXPECT_GT(first.ledger.unshotFraction(), 0.5);  // the ceiling's light, not yet shot
   EXPECT_FALSE(solver.done());
   int iterations = 1;
