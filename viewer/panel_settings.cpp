@@ -1,6 +1,8 @@
 // The panel's Parameters and View tabs: what the user sets (the solve's options, the walk's view).
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "solver/scene/scene_error.h"
 #include "viewer/panel.h"
 #include "viewer/panel_widgets.h"
@@ -71,7 +73,12 @@ void Panel::drawParameters(SolverThread& solver) {
 
 void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
   ImGui::PushItemWidth(200.0f);
-  if (sliderDouble("exposure EV", &view.exposureStops, -20.0, 20.0, "%.2f")) view.autoExposure = false;
+  exposureSpan_ = exposureSliderSpan(view.exposureStops, exposureSpan_);
+  if (sliderDouble("exposure EV", &view.exposureStops, exposureSpan_.low, exposureSpan_.high, "%.2f")) {
+    // Ctrl+click types a value past the span: as far as --exposure takes.
+    view.exposureStops = std::clamp(view.exposureStops, -kMaxExposureStops, kMaxExposureStops);
+    view.autoExposure = false;
+  }
   ImGui::SameLine();
   if (ImGui::Button("Auto")) view.autoExposure = true;
   ImGui::Checkbox("follow auto exposure", &view.autoExposure);
