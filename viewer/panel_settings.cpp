@@ -86,7 +86,9 @@ void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
   if (solving) ImGui::Checkbox("draw only the rooms in sight through doors", &view.cullCells);
   const WalkCamera::Range speed = camera.speedRange(), eye = camera.eyeHeightRange();
   sliderDouble("speed m/s", &camera.speedMps, speed.low, speed.high, "%.3g", ImGuiSliderFlags_Logarithmic);
-  sliderDouble("eye height m", &camera.eyeHeightM, eye.low, eye.high, "%.3g");
+  // A value typed with Ctrl+click may pass the ends: no lower than the walk goes, higher as it does.
+  if (sliderDouble("eye height m", &camera.eyeHeightM, eye.low, eye.high, "%.3g"))
+    camera.eyeHeightM = std::max(camera.eyeHeightM, eye.low);
   sliderDouble("field of view", &camera.fovYDeg, 20.0, 110.0, "%.0f deg");
   ImGui::PopItemWidth();
   note("WASD/arrows walk, Q/E lower/raise, Shift runs");
