@@ -46,7 +46,7 @@ void Panel::drawParameters(SolverThread& solver) {
   changed |= released();
   sliderDouble("cell m", &edited_.cellM, 0.02, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic);
   changed |= released();
-  ImGui::SliderInt("host threads", &o.threads, 0, 64);
+  ImGui::SliderInt("host threads", &o.threads, 0, 64, o.threads == 0 ? "0: every core but one" : "%d");
   changed |= released();
   changed |= ImGui::Checkbox("ambient term (display only)", &o.ambient);
   // The stopping rule applies to the solve under way: no restart.

@@ -1,12 +1,10 @@
 // radmesh-view [SCENE]: walk through a scene while its radiosity converges.
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli/option_checks.h"
@@ -113,7 +111,8 @@ int main(int argc, char** argv) {
       ->check(radmesh::cli::kPositive)
       ->capture_default_str();
   app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
-  app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")
+  app.add_option("--threads", o.threads, "Host threads of the solve (0: every core but one, left to drawing, which "
+                 "llvmpipe does on the CPU too)")
       ->transform(radmesh::cli::threadCount("radmesh-view"))
       ->capture_default_str();
   std::optional<double> cacheMb;
@@ -183,8 +182,6 @@ int main(int argc, char** argv) {
     o.subdivide = radmesh::parseSubdivide(subdivide);
     // Each start sizes the cache for the back end it runs on (viewer/solver_run.cpp).
     if (cacheMb) args.setup.cacheMb = radmesh::checkedCacheMb(*cacheMb);
-    // Drawing needs a core too (llvmpipe renders on the CPU).
-    if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     std::vector<std::string> given;
     for (const CLI::Option* option : app.get_options())
       if (option->count() > 0) given.push_back(option->get_name());
