@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   radmesh::ViewerArgs args;
-  std::string up, units;
+  std::string units;
   std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress",
               subdivide = "off";
   radmesh::SolveOptions& o = args.setup.options;
@@ -38,8 +38,7 @@ int main(int argc, char** argv) {
   app.failure_message(radmesh::cli::usageFailure("radmesh-view"));
   app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS), a .gltf/.glb/.mgf file, or a bake to walk")
       ->capture_default_str();
-  app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
-                 "(glTF y, the built-in rooms z; MGF, which does not say, auto)");
+  radmesh::cli::addUpOption(&app, args.up);
   app.add_option("--units", units, radmesh::cli::kUnitsHelp);
   app.add_flag("--strict", args.strict, "Refuse a scene that needed any repair (each warning an error), as radmesh "
                "solve's; files opened later too");
@@ -173,7 +172,6 @@ int main(int argc, char** argv) {
                                  " beside the view) and a height of 64 to 16384, e.g. 1280x720");
     args.windowSize = {(*window)[0], (*window)[1]};
     args.firstTab = radmesh::parsePanelTab(panel);
-    if (!up.empty()) args.up = radmesh::parseUpChoice(up);
     if (!units.empty()) args.metresPerUnit = radmesh::parseUnits(units);
     o.backend = radmesh::parseBackend(backend);
     o.projection = radmesh::parseProjection(projection);
