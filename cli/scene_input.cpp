@@ -47,13 +47,6 @@ std::optional<Bake> readCommandBake(const std::string& path, UpChoice up, const 
   return bake;
 }
 
-void addUpOption(CLI::App* cmd, UpChoice& up) {
-  cmd->add_option_function<std::string>(
-      "--up", [&up](const std::string& v) { up = parseUpChoice(v); },
-      "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's (glTF y, the "
-      "built-in rooms z; MGF, which does not say, auto)");
-}
-
 void addUnitsOption(CLI::App* cmd, double& metresPerUnit) {
   cmd->add_option_function<std::string>(
       "--units", [&metresPerUnit](const std::string& v) { metresPerUnit = parseUnits(v); }, kUnitsHelp);

@@ -27,8 +27,14 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, const Dayligh
 // (solver/bake/bake_reader.h). Each of the `given` scene flags but --up is warned of as not applying.
 std::optional<Bake> readCommandBake(const std::string& path, UpChoice up, const std::vector<std::string>& given);
 
-// Adds --up to a subcommand.
-void addUpOption(CLI::App* cmd, UpChoice& up);
+// Adds --up to a subcommand, or to radmesh-view (which compiles this header without the radmesh
+// command's sources).
+inline void addUpOption(CLI::App* cmd, UpChoice& up) {
+  cmd->add_option_function<std::string>(
+      "--up", [&up](const std::string& v) { up = parseUpChoice(v); },
+      "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's (glTF y, the "
+      "built-in rooms z; MGF, which does not say, auto)");
+}
 // Adds --units (metres per unit; 0 when not given).
 void addUnitsOption(CLI::App* cmd, double& metresPerUnit);
 inline constexpr const char* kUnitsHelp =

@@ -205,9 +205,9 @@ void WalkCamera::update(const WalkInput& input, double dtSeconds) {
   const glm::dvec3 walkRight = glm::cross(walkForward, up_);
   const double step = speedMps * dtSeconds;
   ground_ += step * (input.forward * walkForward + input.right * walkRight);
-  // The floor stays in front of the near plane; an eye started lower (--camera under the floor)
-  // is kept there until raised, not snapped up.
-  eyeHeightM = std::max(std::min(2.0 * nearM(), eyeHeightM), eyeHeightM + step * input.rise);
+  // No lower than lowestEyeM; an eye started lower (--camera under the floor) is kept there until
+  // raised, not snapped up.
+  eyeHeightM = std::max(std::min(lowestEyeM(), eyeHeightM), eyeHeightM + step * input.rise);
 }
 
 RenderView WalkCamera::view() const {

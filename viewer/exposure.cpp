@@ -45,4 +45,13 @@ double autoExposure(const DisplayMesh& mesh, const std::vector<Rgb>& vertexB) {
   return std::clamp(kShownAs / reference, std::exp2(-kMaxExposureStops), std::exp2(kMaxExposureStops));
 }
 
+StopsSpan exposureSliderSpan(double stops, StopsSpan shown) {
+  if (shown.low <= stops && stops <= shown.high) return shown;
+  const StopsSpan first;
+  if (first.low <= stops && stops <= first.high) return first;
+  const double half = 0.5 * (first.high - first.low);
+  const double centre = std::clamp(std::round(stops), -kMaxExposureStops + half, kMaxExposureStops - half);
+  return {centre - half, centre + half};
+}
+
 }  // namespace radmesh

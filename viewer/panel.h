@@ -9,6 +9,7 @@
 #include <string>
 
 #include "viewer/camera.h"
+#include "viewer/exposure.h"
 #include "viewer/gl_texture.h"
 #include "viewer/solver_snapshot.h"
 #include "viewer/solver_thread.h"
@@ -69,6 +70,7 @@ class Panel {
   std::string openMessage_;
   bool openFailed_ = false;
   bool itemBufferWanted_ = false;
+  StopsSpan exposureSpan_;
   GlTexture itemBufferTexture_;
   std::shared_ptr<const ItemBuffer> uploadedItemBuffer_;
 };

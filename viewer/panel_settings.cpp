@@ -1,6 +1,8 @@
 // The panel's Parameters and View tabs: what the user sets (the solve's options, the walk's view).
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "solver/scene/scene_error.h"
 #include "viewer/panel.h"
 #include "viewer/panel_widgets.h"
@@ -44,7 +46,7 @@ void Panel::drawParameters(SolverThread& solver) {
   changed |= released();
   sliderDouble("cell m", &edited_.cellM, 0.02, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic);
   changed |= released();
-  ImGui::SliderInt("host threads", &o.threads, 0, 64);
+  ImGui::SliderInt("host threads", &o.threads, 0, 64, o.threads == 0 ? "0: every core but one" : "%d");
   changed |= released();
   changed |= ImGui::Checkbox("ambient term (display only)", &o.ambient);
   // The stopping rule applies to the solve under way: no restart.
@@ -71,7 +73,12 @@ void Panel::drawParameters(SolverThread& solver) {
 
 void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
   ImGui::PushItemWidth(200.0f);
-  if (sliderDouble("exposure EV", &view.exposureStops, -20.0, 20.0, "%.2f")) view.autoExposure = false;
+  exposureSpan_ = exposureSliderSpan(view.exposureStops, exposureSpan_);
+  if (sliderDouble("exposure EV", &view.exposureStops, exposureSpan_.low, exposureSpan_.high, "%.2f")) {
+    // Ctrl+click types a value past the span: as far as --exposure takes.
+    view.exposureStops = std::clamp(view.exposureStops, -kMaxExposureStops, kMaxExposureStops);
+    view.autoExposure = false;
+  }
   ImGui::SameLine();
   if (ImGui::Button("Auto")) view.autoExposure = true;
   ImGui::Checkbox("follow auto exposure", &view.autoExposure);
@@ -79,7 +86,9 @@ void Panel::drawView(WalkCamera& camera, ViewSettings& view, bool solving) {
   if (solving) ImGui::Checkbox("draw only the rooms in sight through doors", &view.cullCells);
   const WalkCamera::Range speed = camera.speedRange(), eye = camera.eyeHeightRange();
   sliderDouble("speed m/s", &camera.speedMps, speed.low, speed.high, "%.3g", ImGuiSliderFlags_Logarithmic);
-  sliderDouble("eye height m", &camera.eyeHeightM, eye.low, eye.high, "%.3g");
+  // A value typed with Ctrl+click may pass the ends: no lower than the walk goes, higher as it does.
+  if (sliderDouble("eye height m", &camera.eyeHeightM, eye.low, eye.high, "%.3g"))
+    camera.eyeHeightM = std::max(camera.eyeHeightM, eye.low);
   sliderDouble("field of view", &camera.fovYDeg, 20.0, 110.0, "%.0f deg");
   ImGui::PopItemWidth();
   note("WASD/arrows walk, Q/E lower/raise, Shift runs");

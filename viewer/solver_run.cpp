@@ -4,10 +4,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <utility>
 
+#include "parallel/thread_pool.h"
 #include "solver/cells/cell_at.h"
 #include "solver/cells/find_cells.h"
 #include "solver/io/atomic_file.h"
@@ -109,6 +111,9 @@ std::unique_ptr<SolverThread::Run> SolverThread::makeRun(const SolveSetup& setup
   auto run = std::make_unique<Run>();
   run->setup = setup;
   run->setup.options.formFactorCacheBytes = formFactorCacheBytes(setup.options.backend, setup.cacheMb);
+  // --threads 0, or the panel's: every hardware thread but one (at least one), left to the window's
+  // drawing, which llvmpipe does on the CPU too.
+  if (setup.options.threads == 0) run->setup.options.threads = std::max(1, ThreadPool::sizeFor(0) - 1);
   defaultMinElement(run->setup.options, setup.cellM);
   run->generation = generation;
   std::vector<Patch> patches = meshScene(scene_, setup.cellM);

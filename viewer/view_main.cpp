@@ -1,12 +1,10 @@
 // radmesh-view [SCENE]: walk through a scene while its radiosity converges.
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli/option_checks.h"
@@ -32,7 +30,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   radmesh::ViewerArgs args;
-  std::string up, units;
+  std::string units;
   std::string backend = "mesh", projection = "plane", mapping = "hierarchical", effects = "auto", size = "1280x720", panel = "progress",
               subdivide = "off";
   radmesh::SolveOptions& o = args.setup.options;
@@ -40,8 +38,7 @@ int main(int argc, char** argv) {
   app.failure_message(radmesh::cli::usageFailure("radmesh-view"));
   app.add_option("scene", args.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS), a .gltf/.glb/.mgf file, or a bake to walk")
       ->capture_default_str();
-  app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
-                 "(glTF y, the built-in rooms z; MGF, which does not say, auto)");
+  radmesh::cli::addUpOption(&app, args.up);
   app.add_option("--units", units, radmesh::cli::kUnitsHelp);
   app.add_flag("--strict", args.strict, "Refuse a scene that needed any repair (each warning an error), as radmesh "
                "solve's; files opened later too");
@@ -113,7 +110,8 @@ int main(int argc, char** argv) {
       ->check(radmesh::cli::kPositive)
       ->capture_default_str();
   app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
-  app.add_option("--threads", o.threads, "Solver threads; 0 leaves one core to drawing")
+  app.add_option("--threads", o.threads, "Host threads of the solve (0: every core but one, left to drawing, which "
+                 "llvmpipe does on the CPU too)")
       ->transform(radmesh::cli::threadCount("radmesh-view"))
       ->capture_default_str();
   std::optional<double> cacheMb;
@@ -174,7 +172,6 @@ int main(int argc, char** argv) {
                                  " beside the view) and a height of 64 to 16384, e.g. 1280x720");
     args.windowSize = {(*window)[0], (*window)[1]};
     args.firstTab = radmesh::parsePanelTab(panel);
-    if (!up.empty()) args.up = radmesh::parseUpChoice(up);
     if (!units.empty()) args.metresPerUnit = radmesh::parseUnits(units);
     o.backend = radmesh::parseBackend(backend);
     o.projection = radmesh::parseProjection(projection);
@@ -183,8 +180,6 @@ int main(int argc, char** argv) {
     o.subdivide = radmesh::parseSubdivide(subdivide);
     // Each start sizes the cache for the back end it runs on (viewer/solver_run.cpp).
     if (cacheMb) args.setup.cacheMb = radmesh::checkedCacheMb(*cacheMb);
-    // Drawing needs a core too (llvmpipe renders on the CPU).
-    if (o.threads == 0) o.threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
     std::vector<std::string> given;
     for (const CLI::Option* option : app.get_options())
       if (option->count() > 0) given.push_back(option->get_name());

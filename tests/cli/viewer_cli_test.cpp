@@ -102,8 +102,11 @@ TEST(ViewerCli, SizesAndUsageErrorsAreRefusedBeforeAWindowOpens) {
   EXPECT_EQ(cell.exitCode, 2) << cell.output;
   EXPECT_EQ(cell.output, "radmesh-view: error: --cell must be a finite grid size in metres greater than 0, got 0; use "
                          "e.g. --cell 0.381 (15 inches, the paper's grid)\n");
-  EXPECT_EQ(runCommand(viewerPath() + " --help").exitCode, 0);
-  // The viewer's 0 threads leaves a core to drawing, and says so.
+  // The viewer's 0 threads leaves a core to drawing, and says so, in --help as solve's "(0: every core)".
+  const CommandRun help = runCommand(viewerPath() + " --help");
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.output.find("Host threads of the solve (0: every core but one, left to drawing"), std::string::npos)
+      << help.output;
   const CommandRun threads = runCommand(viewerPath() + " cornell --threads -1");
   EXPECT_NE(threads.output.find("give 0 (every core but one, left to drawing)"), std::string::npos) << threads.output;
   const CommandRun render = radmesh("render cornell --size 640x480junk --out " + tempPath("a.png"));

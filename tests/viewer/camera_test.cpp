@@ -145,7 +145,7 @@ TEST(WalkCamera, NearFarAndPaceFollowTheModelsSize) {
   EXPECT_NO_THROW(validateView(view));
   // The panel's sliders span the model's own scale, and a room's metres in a room.
   EXPECT_DOUBLE_EQ(small.speedRange().low, 0.01 * diagonal);
-  EXPECT_DOUBLE_EQ(small.eyeHeightRange().low, 0.01 * diagonal);
+  EXPECT_DOUBLE_EQ(small.eyeHeightRange().low, 2.0 * view.nearM);
   EXPECT_DOUBLE_EQ(small.eyeHeightRange().high, diagonal);
   EXPECT_LT(small.speedRange().low, small.speedMps);
   small.update(WalkInput{.rise = -1.0}, 100.0);  // lowered, the floor stays beyond the near plane
@@ -160,6 +160,21 @@ TEST(WalkCamera, NearFarAndPaceFollowTheModelsSize) {
   EXPECT_DOUBLE_EQ(large.speedMps, 1.4);
   EXPECT_DOUBLE_EQ(large.speedRange().low, 0.05);
   EXPECT_DOUBLE_EQ(large.eyeHeightRange().high, 3.0);
+}
+
+// The eye-height slider stops where lowering the eye stops, twice the near plane: its 2 cm had set
+// the eye of a 7 m room (near plane 1.8 cm) below the walk's 3.6 cm, where the walk then kept it.
+TEST(WalkCamera, TheEyeHeightSliderStopsWhereTheWalkDoes) {
+  WalkCamera camera(room({7.0, 5.0, 2.7}));
+  const double nearM = camera.view().nearM;
+  EXPECT_DOUBLE_EQ(nearM, 0.002 * glm::length(Vec3(7.0, 5.0, 2.7)));
+  EXPECT_DOUBLE_EQ(camera.eyeHeightRange().low, 2.0 * nearM);
+  camera.update(WalkInput{.rise = -1.0}, 100.0);
+  EXPECT_DOUBLE_EQ(camera.eyeHeightM, camera.eyeHeightRange().low);
+  // Set at the slider's end, it stays there when lowered.
+  camera.eyeHeightM = camera.eyeHeightRange().low;
+  camera.update(WalkInput{.rise = -1.0}, 1.0);
+  EXPECT_DOUBLE_EQ(camera.eyeHeightM, 2.0 * nearM);
 }
 
 TEST(WalkCamera, LooksIntoAnOpenSideFromOutsideSeeingAllOfIt) {

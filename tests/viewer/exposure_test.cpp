@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 
 #include "solver/io/mgf_color.h"
 #include "solver/io/scene_loader.h"
@@ -13,6 +14,9 @@
 #include "viewer/offscreen_render.h"
 
 namespace radmesh {
+
+void PrintTo(const StopsSpan& span, std::ostream* os) { *os << span.low << ".." << span.high; }
+
 namespace {
 
 // A right triangle of legs a (area a²/2) in the plane z = 0, its three corners at luminance b.
@@ -65,6 +69,23 @@ TEST(Exposure, StaysWithinTheStopsRenderTakes) {
     addTriangle(mesh, b, 0.0, 1.0, luminance);
     EXPECT_DOUBLE_EQ(std::log2(autoExposure(mesh, b)), stops) << luminance;
   }
+}
+
+// The panel's exposure slider shows any value --exposure takes where it is, not pinned at an end of
+// -20..20 (--exposure 40 was), and keeps its span while dragged, to its ends too.
+TEST(Exposure, TheSliderSpansWhatItShows) {
+  const StopsSpan first;
+  EXPECT_EQ(exposureSliderSpan(-3.5, first), (StopsSpan{-20.0, 20.0}));
+  EXPECT_EQ(exposureSliderSpan(40.0, first), (StopsSpan{20.0, 60.0}));
+  EXPECT_EQ(exposureSliderSpan(-41.3, first), (StopsSpan{-61.0, -21.0}));
+  EXPECT_EQ(exposureSliderSpan(kMaxExposureStops, first), (StopsSpan{120.0, 160.0}));
+  EXPECT_EQ(exposureSliderSpan(-kMaxExposureStops, first), (StopsSpan{-160.0, -120.0}));
+  // Dragged to either end, it stays; a value from elsewhere in -20..20 brings the first span back.
+  const StopsSpan high{20.0, 60.0};
+  EXPECT_EQ(exposureSliderSpan(20.0, high), high);
+  EXPECT_EQ(exposureSliderSpan(60.0, high), high);
+  EXPECT_EQ(exposureSliderSpan(5.0, high), first);
+  EXPECT_EQ(exposureSliderSpan(-20.0, first), first);
 }
 
 // Fraction of the pixels of `image` at the ceiling value in some channel.

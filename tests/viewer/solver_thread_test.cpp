@@ -13,6 +13,7 @@
 #include <thread>
 #include <unistd.h>
 
+#include "parallel/thread_pool.h"
 #include "solver/meshing/meshing.h"
 #include "solver/io/scene_loader.h"
 #include "solver/scene/scene_error.h"
@@ -143,6 +144,17 @@ TEST(SolverThread, EachStartSizesTheFormFactorCacheForItsBackEnd) {
   thread.restart(setup);
   const Snapshot given = waitFor(thread, [&](const SolverSnapshot& s) { return s.generation > onHost->generation && s.mesh; });
   EXPECT_EQ(given->setup.options.formFactorCacheBytes, 4u << 20);
+}
+
+// Threads 0, from --threads or the panel's slider, leave a core to drawing: the panel's 0 had
+// taken every core, --threads 0 one fewer.
+TEST(SolverThread, ThreadsZeroLeavesACoreToDrawing) {
+  SolveSetup setup = cornellSetup();
+  setup.options.threads = 0;
+  SolverThread thread(loadScene("cornell"), setup, false);
+  const Snapshot started = waitFor(thread, [](const SolverSnapshot& s) { return s.mesh != nullptr; });
+  const int hardware = ThreadPool::sizeFor(0);
+  EXPECT_EQ(started->setup.options.threads, hardware > 1 ? hardware - 1 : 1);
 }
 
 TEST(SolverThread, ItemBufferComesOnlyWhenAskedForEvenWhilePaused) {

@@ -6,12 +6,12 @@
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
-#include <thread>
 #include <type_traits>
 
 #include "emulator/front_end.h"
 #include "emulator/memory_ledger.h"
 #include "emulator/reduce.h"
+#include "parallel/thread_pool.h"
 #include "solver/backends/mesh/mesh_adaptive_mapping.h"
 #include "solver/backends/mesh/mesh_contrast.h"
 #include "solver/backends/mesh/mesh_element_split.h"
@@ -33,14 +33,13 @@ const SolveOptions& checked(const SolveOptions& options, const MeshBackendOption
 }
 
 emu::MachineConfig machineConfig(const SolveOptions& options, const MeshBackendOptions& mesh) {
-  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   if (const emu::Transport* t = options.meshTransport.get()) try {
       emu::blockOf({mesh.peRows, mesh.peCols}, t->rankGrid(), t->rankRow(), t->rankCol());
     } catch (const std::invalid_argument& e) {
       throw OptionError(fmt::format("--distributed over {} processes ({} x {}): {}; or give a --pe-grid they divide",
                                     t->rankGrid().size(), t->rankGrid().rows, t->rankGrid().cols, e.what()));
     }
-  return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, options.threads > 0 ? options.threads : hardware,
+  return {mesh.peRows, mesh.peCols, mesh.memoryBudgetBytes, ThreadPool::sizeFor(options.threads),
           options.meshTransport};
 }
 
