@@ -115,7 +115,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   const size_t first = cmd->get_options().size();
-  cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
+  cmd->add_flag("--strict", f.strict, kStrictHelp);
   addUpOption(cmd, f.up);
   addUnitsOption(cmd, f.metresPerUnit);
   addDaylightFlags(cmd, f.daylight);

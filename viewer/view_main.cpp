@@ -43,8 +43,7 @@ int main(int argc, char** argv) {
   app.add_option("--up", up, "Which axis is up: x, y, z, or auto (decided from the geometry); default: the format's "
                  "(glTF y, the built-in rooms z; MGF, which does not say, auto)");
   app.add_option("--units", units, radmesh::cli::kUnitsHelp);
-  app.add_flag("--strict", args.strict, "Refuse a scene that needed any repair (each warning an error), as radmesh "
-               "solve's; files opened later too");
+  app.add_flag("--strict", args.strict, std::string(radmesh::cli::kStrictHelp) + ", as radmesh solve's; files opened later too");
   CLI::Option* backendGiven =
       app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here; native with --cells auto) or "
                      "native (host CPU)")

@@ -1416,8 +1416,12 @@ TEST(Cli, StrictRefusesAFileThatNeededRepairs) {
                                      "render " + file + " --strict --quiet --out " + tempPath("strict.png")}) {
     run = radmesh(command);
     EXPECT_EQ(run.exitCode, 2) << command << run.output;
-    EXPECT_NE(run.output.find("--strict: needed 2 kind(s) of repair"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("drop --strict"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(file + ": refused under --strict (each warning an error), for its 2 warnings:\n  line "),
+              std::string::npos)
+        << run.output;
+    EXPECT_NE(run.output.find("(fix: correct what the warnings name, or leave --strict out to open it as warned)"),
+              std::string::npos)
+        << run.output;
   }
 }
 

@@ -346,10 +346,12 @@ TEST(ViewerCli, StrictRefusesAFileThatNeededRepairsAsSolveDoes) {
   const std::string noDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY " + viewerPath() + " " + file;
   const CommandRun strict = runCommand(noDisplay + " --strict");
   EXPECT_EQ(strict.exitCode, 2) << strict.output;
-  EXPECT_NE(strict.output.find("radmesh-view: error: " + file + ": --strict: needed 2 kind(s) of repair"),
+  EXPECT_NE(strict.output.find("radmesh-view: error: " + file + ": refused under --strict (each warning an error), "
+                               "for its 2 warnings:"),
             std::string::npos)
       << strict.output;
-  EXPECT_NE(strict.output.find("(fix: fix the file, or drop --strict to open it repaired)"), std::string::npos)
+  EXPECT_NE(strict.output.find("(fix: correct what the warnings name, or leave --strict out to open it as warned)"),
+            std::string::npos)
       << strict.output;
   const CommandRun repaired = runCommand(noDisplay);
   EXPECT_NE(repaired.output.find("radmesh-view: warning: " + file + ": line 14: unknown entity 'glow' skipped"),
