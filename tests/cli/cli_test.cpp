@@ -271,12 +271,14 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
       // bench accuracy names its own lists (it named --cell, --subdivide-cells and an analytic it refuses)
       // and refuses what --quick would replace without a word.
-      {"bench accuracy furnace --cells 1,0", "bench accuracy --cells 0: give cell sizes in metres greater than 0"},
-      {"bench accuracy furnace --cells nan", "bench accuracy --cells nan: give cell sizes in metres greater than 0"},
+      // Its list of grid cell sizes is --cell-sizes (--cells, an alias, is auto|off on the solving commands).
+      {"bench accuracy furnace --cells 1,0", "bench accuracy --cell-sizes 0: give cell sizes in metres greater than 0"},
+      {"bench accuracy furnace --cell-sizes nan", "bench accuracy --cell-sizes nan: give cell sizes in metres greater than 0"},
       {"bench accuracy furnace --projections foo", "--projections 'foo': give plane (ratios 3 and 5) or hemicube"},
       {"bench accuracy furnace --quick --resolutions 48", "--quick sets --resolutions itself"},
       {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-unshot itself"},
-      {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cells"},
+      {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
+      {"bench accuracy furnace --quick --cell-sizes 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
       // Flags for what the run does not time were dropped without a word; the cells' own refusal comes first.
       {"bench solve furnace --pe-grid 32x32", "bench solve --pe-grid shapes the emulated machine: add --backend mesh"},
       {"bench solve furnace --scaling-resolution 17", "--scaling-resolution is the resolution of the --scaling-cells sweep"},
@@ -665,11 +667,11 @@ TEST(Cli, BenchAccuracyScoresTheFinestSweptMeshAgainstAFinerReferenceCell) {
 
 TEST(Cli, BenchAccuracyRefusesAnImpossibleReference) {
   for (const std::string value : {"1", "0.5", "-0.1", "nan"}) {
-    const CommandRun run = radmesh("bench accuracy furnace --cells 1,0.5 --reference-cell=" + value);
+    const CommandRun run = radmesh("bench accuracy furnace --cell-sizes 1,0.5 --reference-cell=" + value);
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_NE(run.output.find("--reference-cell " + value +
-                              ": give a cell finer than the finest of --cells (0.5 m), e.g. 0.25, or 0 for the "
-                              "finest of --cells itself"),
+                              ": give a cell finer than the finest of --cell-sizes (0.5 m), e.g. 0.25, or 0 for the "
+                              "finest of --cell-sizes itself"),
               std::string::npos)
         << run.output;
     EXPECT_EQ(run.output.find("reference analytic"), std::string::npos) << "refused before any solve";
