@@ -782,6 +782,24 @@ TEST(Cli, SolveStatsCarryTheEffectsPlanTheSolverApplied) {
 namespace radmesh {
 namespace {
 
+// render --iterations N is --until 1 --until-unshot 0 --max-iterations N: given beside it, a stop was
+// dropped without a word (--max-iterations 3 solved 5 iterations).
+TEST(Cli, RenderIterationsRefusesTheStopsItSets) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  EXPECT_NE(probe.output.find("--until 1 --until-unshot 0 --max-iterations N"), std::string::npos) << probe.output;
+  for (const std::string stop : {"--max-iterations 3", "--until 0.9", "--until-unshot 0.1"}) {
+    const CommandRun run = radmesh("render cornell --cell 0.1 --resolution 64 --iterations 5 " + stop +
+                                   " --quiet --out " + tempPath("capped.png"));
+    EXPECT_EQ(run.exitCode, 2) << stop << ": " << run.output;
+    EXPECT_NE(run.output.find(" and --iterations cannot be given together: give one of them (radmesh render --help "
+                              "says what each does)"),
+              std::string::npos)
+        << stop << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(tempPath("capped.png"))) << stop;
+  }
+}
+
 TEST(Cli, RenderSolvesOrReadsABakeAndWritesThePictureOfTheAskedSize) {
   const CommandRun probe = radmesh("render --help");
   if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
