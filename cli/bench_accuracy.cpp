@@ -215,13 +215,13 @@ std::vector<double> checkedSubdividedCells(const AccuracyArgs& args, const std::
     throw OptionError("bench accuracy --until-unshot must be a fraction in [0, 1), e.g. 0.01 (0: C = 0.99 only)");
   for (double cell : args.cells)  // one message naming the list's own flag, before any is compared
     if (!(cell > 0.0 && std::isfinite(cell)))
-      throw OptionError(fmt::format("bench accuracy --cells {}: give cell sizes in metres greater than 0, e.g. --cells "
-                                    "0.5,0.381", cell));
+      throw OptionError(fmt::format("bench accuracy --cell-sizes {}: give cell sizes in metres greater than 0, e.g. "
+                                    "--cell-sizes 0.5,0.381", cell));
   std::vector<double> subdivided = args.subdivideCells;
   if (subdivided.empty()) subdivided.push_back(*std::ranges::max_element(args.cells));
   for (double cell : subdivided)
     if (std::ranges::find(args.cells, cell) == args.cells.end())
-      throw OptionError(fmt::format("bench accuracy --subdivide-cells {}: not one of --cells; give cells from that list",
+      throw OptionError(fmt::format("bench accuracy --subdivide-cells {}: not one of --cell-sizes; give sizes from that list",
                                     cell));
   for (const Subdivision& s : subdivisionsOf(subdivided.front(), subdivided, args))
     validateOptions(measuredOptions(settings.front(), args.resolutions.front(), s, args));
@@ -236,7 +236,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& given) {
   if (!args.cellsGiven)
     for (double& cell : args.cells) cell *= chooseCell(scene).cellM / kDefaultCellM;
   if (args.cells.empty() || args.resolutions.empty())
-    throw OptionError("bench accuracy needs at least one --cells value and one --resolutions value");
+    throw OptionError("bench accuracy needs at least one --cell-sizes value and one --resolutions value");
   checkResolution(args.referenceResolution, "--reference-resolution");
   for (int n : args.resolutions) checkResolution(n, "--resolutions");
   // A reference coarser than what it judges scores its own error as theirs (an analytic one has none).
@@ -253,8 +253,8 @@ nlohmann::json benchAccuracy(const AccuracyArgs& given) {
   const double finest = *std::ranges::min_element(args.cells);
   if (!(args.referenceCellM == 0.0 || (args.referenceCellM > 0.0 && args.referenceCellM < finest)))
     throw OptionError(fmt::format(
-        "bench accuracy --reference-cell {}: give a cell finer than the finest of --cells ({} m), e.g. {}, or 0 "
-        "for the finest of --cells itself",
+        "bench accuracy --reference-cell {}: give a cell finer than the finest of --cell-sizes ({} m), e.g. {}, or 0 "
+        "for the finest of --cell-sizes itself",
         args.referenceCellM, finest, finest / 2));
   const std::vector<Setting> settings = chosenSettings(args);
   const std::vector<double> subdividedCells = checkedSubdividedCells(args, settings);

@@ -72,7 +72,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->transform(threadCount("radmesh"))->capture_default_str();
   addCacheOption(cmd, args->cacheMb);
-  cmd->add_option("--scaling-cells", args->cells, "Cell sizes for the patch-count sweep")->delimiter(',');
+  cmd->add_option("--scaling-cells", args->cells, "Grid cell sizes, metres, of the patch-count sweep (a list)")->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->add_flag("--distributed", args->distributed,
@@ -115,16 +115,17 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--out-dir", args->outDir, "Write the CSV (NAME.csv, NAME-traces.csv) and the PNG plots here");
   cmd->add_option("--json", *json, "Also write every figure, with the traces of every iteration, as JSON");
   addDaylightFlags(cmd, args->daylight);
-  cmd->add_option("--cells", args->cells,
-                  "Cell sizes, metres (default: these for a room-sized model, scaled to the cell the scene's solve "
-                  "chooses)")
+  // Its first name, --cells, is the visibility cells' auto|off on the solving commands: kept as an alias.
+  cmd->add_option("--cell-sizes,--cells", args->cells,
+                  "Grid cell sizes to sweep, metres: --cell's, a list (default: these for a room-sized model, scaled "
+                  "to the cell the scene's solve chooses)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--resolutions", args->resolutions, "Resolutions N")->delimiter(',')->capture_default_str();
   cmd->add_option("--reference-resolution", args->referenceResolution, "Hemicube N of the reference")->capture_default_str();
   cmd->add_option("--reference-cell", args->referenceCellM,
-                  "Cell, metres, of the pictures' reference: a patch mesh finer than any of --cells, solved but not "
-                  "swept (0: the finest of --cells)")
+                  "Cell, metres, of the pictures' reference: a patch mesh finer than any of --cell-sizes, solved but not "
+                  "swept (0: the finest of --cell-sizes)")
       ->capture_default_str();
   cmd->add_option("--reference-until", args->referenceUntil, "Convergence C of the reference")->capture_default_str();
   cmd->add_option("--reference-unshot", args->referenceUnshot,
@@ -149,7 +150,7 @@ void addBenchAccuracy(CLI::App* bench) {
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--subdivide-cells", args->subdivideCells,
-                  "The cells (of --cells) uniform and adaptive run on (default: the coarsest)")->delimiter(',');
+                  "The cell sizes (of --cell-sizes) uniform and adaptive run on (default: the coarsest)")->delimiter(',');
   cmd->add_option("--until-unshot", args->untilUnshot,
                   "Also solve each point on to this unshot fraction and measure it there (0: C = 0.99 only)")
       ->capture_default_str();
@@ -162,10 +163,10 @@ void addBenchAccuracy(CLI::App* bench) {
       if (*quick && cmd->count(flag) > 0)
         throw OptionError(fmt::format("bench accuracy --quick sets {} itself (docs/accuracy.md): leave {} out, or "
                                       "drop --quick", flag, flag));
-    if (*quick && args->cells.size() > 2 && cmd->count("--cells") > 0)
-      throw OptionError("bench accuracy --quick sweeps at most two --cells: give two, or drop --quick");
+    if (*quick && args->cells.size() > 2 && cmd->count("--cell-sizes") > 0)
+      throw OptionError("bench accuracy --quick sweeps at most two --cell-sizes: give two, or drop --quick");
     AccuracyArgs a = *quick ? quickAccuracyArgs(*args) : *args;
-    a.cellsGiven = cmd->count("--cells") > 0;
+    a.cellsGiven = cmd->count("--cell-sizes") > 0;
     dropRepeats(a.cells), dropRepeats(a.resolutions), dropRepeats(a.projections), dropRepeats(a.subdivide);
     dropRepeats(a.minElements), dropRepeats(a.adaptiveMinElements), dropRepeats(a.subdivideCells);
     dropRepeats(a.elementRows);

@@ -256,7 +256,7 @@ void addInfoCommand(CLI::App& app) {
   cmd->add_option("--cell", args->cellM, "Grid cell size for meshing, metres (default: chosen from the scene's size)");
   addDaylightFlags(cmd, args->daylight);
   cmd->add_flag("--json", args->json, "Print the same figures as JSON");
-  cmd->add_flag("--strict", args->strict, "Refuse a scene that needed any repair (each warning an error)");
+  cmd->add_flag("--strict", args->strict, kStrictHelp);
   addUpOption(cmd, args->up);
   addUnitsOption(cmd, args->metresPerUnit);
   cmd->add_option_function<std::string>(

@@ -194,10 +194,12 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--fov", args->fovDeg, "Vertical field of view, degrees")->capture_default_str();
   cmd->add_option("--size", args->size, "Image size WxH in pixels")->capture_default_str();
   CLI::Option* iterations =
-      cmd->add_option("--iterations", args->iterations, "Solve exactly this many iterations (instead of --until)")
+      cmd->add_option("--iterations", args->iterations,
+                      "Solve this many iterations and no convergence stop: --until 1 --until-unshot 0 "
+                      "--max-iterations N (sooner only once no power is left; with --cells auto, at the end of the "
+                      "round that reaches N)")
           ->check(kPositive);
-  cmd->get_option("--until")->excludes(iterations);
-  cmd->get_option("--until-unshot")->excludes(iterations);
+  for (const char* stop : {"--until", "--until-unshot", "--max-iterations"}) cmd->get_option(stop)->excludes(iterations);
   cmd->add_option("--frames", args->frames, "Draw this many frames and report ms per frame (timing)")
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("--quiet", args->quiet, "No progress lines");

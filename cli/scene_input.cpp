@@ -20,7 +20,7 @@ Scene loadCommandScene(const std::string& pathOrName, bool strict, const Dayligh
     throw;
   }
   for (const std::string& n : readNotes) fmt::print(stderr, "radmesh: {}\n", n);
-  if (strict) refuseRepairs(pathOrName, warnings);
+  if (strict) refuseWarnings(pathOrName, warnings);
   return scene;
 }
 

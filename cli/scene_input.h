@@ -39,5 +39,8 @@ inline void addUpOption(CLI::App* cmd, UpChoice& up) {
 void addUnitsOption(CLI::App* cmd, double& metresPerUnit);
 inline constexpr const char* kUnitsHelp =
     "What the scene's coordinates are in: m, cm, mm, in or ft (default: metres, as glTF defines and MGF assumes)";
+inline constexpr const char* kStrictHelp =
+    "Refuse a scene that gave any warning as it was read (a repair, --units that make it implausibly sized): "
+    "each warning an error";
 
 }  // namespace radmesh::cli

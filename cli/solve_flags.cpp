@@ -115,7 +115,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("scene", f.scene, "Built-in name (office, cornell, furnace, two-rooms, building:COLSxROWS) or a .gltf/.glb/.mgf file")
       ->capture_default_str();
   const size_t first = cmd->get_options().size();
-  cmd->add_flag("--strict", f.strict, "Refuse a scene that needed any repair (each warning an error)");
+  cmd->add_flag("--strict", f.strict, kStrictHelp);
   addUpOption(cmd, f.up);
   addUnitsOption(cmd, f.metresPerUnit);
   addDaylightFlags(cmd, f.daylight);
@@ -146,7 +146,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
   cmd->add_option("--until", f.options.until, "Stop at this convergence C (0..1]; 1: on the unshot power alone")->capture_default_str();
   cmd->add_option("--until-unshot", f.options.untilUnshot, kUntilUnshotHelp)
       ->capture_default_str();
-  cmd->add_option("--max-iterations", f.options.maxIterations, "Stop after this many iterations")->capture_default_str();
+  cmd->add_option("--max-iterations", f.options.maxIterations, kMaxIterationsHelp)->capture_default_str();
   cmd->add_option("--threads", f.options.threads, "Host threads; 0 uses every core")->transform(threadCount("radmesh"))->capture_default_str();
   cmd->add_option_function<double>(
          "--cache-mb",

@@ -52,6 +52,10 @@ inline constexpr const char* kPortalBinsHelp =
     "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
     "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
 
+// --max-iterations, the same on every command that solves.
+inline constexpr const char* kMaxIterationsHelp =
+    "Stop after this many iterations at most, or sooner at --until/--until-unshot (with --cells auto: every "
+    "cell's, checked between rounds)";
 inline constexpr const char* kRatioHelp =
     "Half-side of the single plane at height 1 (3, the paper's, catches 91.7 % of each shot)";
 inline constexpr const char* kUntilUnshotHelp =

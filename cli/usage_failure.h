@@ -131,6 +131,9 @@ inline auto usageFailure(const std::string& program) {
     } else if (const std::string given = between(what, ": At Most 1 required but received ", ""); !given.empty()) {
       // An option given twice (list options take their values comma-separated, once).
       message = what.substr(0, what.find(':')) + " is given " + given + " times: give it once (" + help + ")";
+    } else if (const std::string other = between(what, " excludes ", ""); !other.empty()) {
+      message = what.substr(0, what.find(' ')) + " and " + other + " cannot be given together: give one of them (" +
+                help + " says what each does)";
     } else if (const std::string extras = between(what, "not expected: ", ""); !extras.empty()) {
       // The words CLI11 could not place, which it lists last first; the first option among them is the slip.
       std::vector<std::string> left = CLI::detail::split(extras, ' ');

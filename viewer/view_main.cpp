@@ -40,8 +40,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   radmesh::cli::addUpOption(&app, args.up);
   app.add_option("--units", units, radmesh::cli::kUnitsHelp);
-  app.add_flag("--strict", args.strict, "Refuse a scene that needed any repair (each warning an error), as radmesh "
-               "solve's; files opened later too");
+  app.add_flag("--strict", args.strict, std::string(radmesh::cli::kStrictHelp) + ", as radmesh solve's; files opened later too");
   CLI::Option* backendGiven =
       app.add_option("--backend", backend, "mesh (emulated MasPar MP-1, the default here; native with --cells auto) or "
                      "native (host CPU)")
@@ -99,6 +98,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--until-unshot", o.untilUnshot, radmesh::cli::kUntilUnshotHelp)
       ->capture_default_str();
+  app.add_option("--max-iterations", o.maxIterations,
+                 std::string(radmesh::cli::kMaxIterationsHelp) + "; the panel's Step and --steps go past it")
+      ->capture_default_str();
   std::string cells = "off";
   app.add_option("--cells", cells, "auto: find the rooms and solve them cell by cell, the camera's first (docs/cells.md); "
                  "off: the whole scene at once")
@@ -125,7 +127,9 @@ int main(int argc, char** argv) {
   app.add_option("--size", size, "Window size WxH")->capture_default_str();
   app.add_option("--panel", panel, "Panel tab shown first: progress, item-buffer, parameters, scene, view")
       ->capture_default_str();
-  app.add_option("--steps", args.steps, "Smoke test: run N iterations (none for a bake), save --screenshot, exit")
+  app.add_option("--steps", args.steps, "Smoke test: take N steps, as the panel's Step does (an iteration; with "
+                 "--cells auto a round: every cell's shots and a portal exchange; none for a bake), save "
+                 "--screenshot, exit")
       ->check(radmesh::cli::kPositive);
   app.add_option("--min-frames", args.minFrames, "With --steps: draw at least this many frames (timing)")
       ->check(radmesh::cli::kNonNegative);
@@ -149,7 +153,7 @@ int main(int argc, char** argv) {
     args.daylight.sky = radmesh::parseSkyModel(skyModel);
     if (!sun.empty()) args.daylight.sun = {radmesh::parseSun(sun)};
     if (!args.screenshot.empty() && args.steps <= 0 && args.frames <= 0)
-      throw radmesh::OptionError("--screenshot needs --steps N (the number of iterations to run first) or --frames N");
+      throw radmesh::OptionError("--screenshot needs --steps N (the steps to take first) or --frames N");
     if (args.steps > 0 && args.frames > 0)
       throw radmesh::OptionError("--steps and --frames are two different runs: give one");
     // Before the window opens and the solve runs, not after.

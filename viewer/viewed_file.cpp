@@ -19,7 +19,7 @@ ViewedFile readViewedFile(const std::string& path, const ViewerArgs& args) {
   } else {
     file.scene =
         loadScene(path, &file.warnings, args.daylight, &file.notes, args.up, &readNotes, args.metresPerUnit);
-    if (args.strict) refuseRepairs(path, file.warnings);
+    if (args.strict) refuseWarnings(path, file.warnings);
   }
   file.notes.insert(file.notes.end(), readNotes.begin(), readNotes.end());
   if (file.bake) return file;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "solver/projection/environment_projection.h"
 #include "solver/projection/hemicube.h"
@@ -67,32 +68,42 @@ Patch lightViewpoint(const Scene& scene, const Light& light, const std::vector<P
   return viewpoint;
 }
 
-FormFactorRow lightRow(const Scene& scene, const Light& light, const std::vector<Patch>& patches, int resolution,
-                       double nearDepth, ThreadPool& pool) {
+LightRows::LightRows(const Scene& scene, const std::vector<Patch>& patches, int resolution, double nearDepth,
+                     ThreadPool& pool)
+    : scene_(scene), patches_(patches), resolution_(resolution), nearDepth_(nearDepth), pool_(pool) {
   // The sky in a window is no surface to a light: it shines through onto what lies behind.
-  std::vector<int> solid;
   for (size_t j = 0; j < patches.size(); ++j)
-    if (!scene.materials.at(patches[j].material).skyOpening) solid.push_back(static_cast<int>(j));
-  const bool all = solid.size() == patches.size();
-  std::vector<Patch> solidPatches;
+    if (!scene.materials.at(patches[j].material).skyOpening) solid_.push_back(static_cast<int>(j));
+  if (solid_.size() != patches.size())
+    for (int j : solid_) solidPatches_.push_back(patches[j]);
+}
+
+FormFactorRow LightRows::row(const Light& light) {
+  const bool all = solid_.size() == patches_.size();
+  const std::vector<Patch>& projected = all ? patches_ : solidPatches_;
+  std::optional<EnvironmentProjection> own;
+  const bool point = light.type == LightType::Point;
+  std::optional<EnvironmentProjection>& projection = point ? points_ : own;
+  if (!projection) projection.emplace(projected, lightSurface(scene_, light, resolution_), nearDepth_, pool_);
+  projection->projectFrom(lightViewpoint(scene_, light, patches_), -1);
+  FormFactorRow row = assembleRow(-1, 1.0, projection->pixelFormFactors(), projection->seenFromFront());
   if (!all)
-    for (int j : solid) solidPatches.push_back(patches[j]);
-  const std::vector<Patch>& projected = all ? patches : solidPatches;
-  EnvironmentProjection projection(projected, lightSurface(scene, light, resolution), nearDepth, pool);
-  projection.projectFrom(lightViewpoint(scene, light, patches), -1);
-  FormFactorRow row = assembleRow(-1, 1.0, projection.pixelFormFactors(), projection.seenFromFront());
-  if (!all)
-    for (int& receiver : row.receivers) receiver = solid[receiver];  // ascending still
+    for (int& receiver : row.receivers) receiver = solid_[receiver];  // ascending still
   return row;
 }
 
+FormFactorRow lightRow(const Scene& scene, const Light& light, const std::vector<Patch>& patches, int resolution,
+                       double nearDepth, ThreadPool& pool) {
+  return LightRows(scene, patches, resolution, nearDepth, pool).row(light);
+}
+
 double lightsPowerOutside(const Scene& scene, const std::vector<Patch>& patches, int resolution, ThreadPool& pool) {
-  const double nearDepth = sceneNearDepth(patches);
+  LightRows rows(scene, patches, resolution, sceneNearDepth(patches), pool);
   double outside = 0.0;
   for (const Light& light : scene.lights) {
     const Rgb power = lightPower(scene, light);
     if (!(channelSum(power) > 0.0)) continue;  // as a solve: a dark light, or a beam with no window
-    outside += channelSum(power) * lightRow(scene, light, patches, resolution, nearDepth, pool).outsideFraction();
+    outside += channelSum(power) * rows.row(light).outsideFraction();
   }
   return outside;
 }

@@ -103,13 +103,19 @@ Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warning
   return scene;
 }
 
-void refuseRepairs(const std::string& pathOrName, const std::vector<std::string>& warnings) {
+void refuseWarnings(const std::string& pathOrName, const std::vector<std::string>& warnings) {
   if (warnings.empty()) return;
-  std::string list;
-  for (const std::string& w : warnings) list += "\n  " + w;
-  throw SceneError(pathOrName, "--strict",
-                   fmt::format("needed {} kind(s) of repair, each an error under --strict:{}", warnings.size(), list),
-                   "fix the file, or drop --strict to open it repaired");
+  // Each warning starts with the file's name, which the error names once.
+  const std::string prefix = pathOrName + ": ";
+  const auto withoutFile = [&](const std::string& w) { return w.starts_with(prefix) ? w.substr(prefix.size()) : w; };
+  const bool one = warnings.size() == 1;
+  std::string problem = "refused under --strict (each warning an error)";
+  problem += one ? ": " + withoutFile(warnings[0]) : fmt::format(", for its {} warnings:", warnings.size());
+  if (!one)
+    for (const std::string& w : warnings) problem += "\n  " + withoutFile(w);
+  throw SceneError(pathOrName, "", problem,
+                   fmt::format("correct what the {} name{}, or leave --strict out to open it as warned",
+                               one ? "warning" : "warnings", one ? "s" : ""));
 }
 
 }  // namespace radmesh

@@ -30,8 +30,9 @@ Scene loadScene(const std::string& pathOrName, std::vector<std::string>* warning
                 UpChoice up = UpChoice::Format, std::vector<std::string>* readNotes = nullptr,
                 double metresPerUnit = 0.0);
 
-// --strict (radmesh's commands and radmesh-view): a scene whose reading needed any repair (its
-// loadScene `warnings`) is refused, a SceneError listing them; none, nothing happens.
-void refuseRepairs(const std::string& pathOrName, const std::vector<std::string>& warnings);
+// --strict (radmesh's commands and radmesh-view): a scene that gave any warning as it was read (a
+// repair, implausible --units: its loadScene `warnings`) is refused, a SceneError saying each and
+// the fix; none, nothing happens.
+void refuseWarnings(const std::string& pathOrName, const std::vector<std::string>& warnings);
 
 }  // namespace radmesh

@@ -230,13 +230,13 @@ std::vector<LightShot> CellSolver::State::shootLights(const Scene& scene) {
     cellOfReceiver[e] = cellOf[uniform ? elements.patchOf[e] : e];
     localOf[e] = next[cellOfReceiver[e]]++;
   }
-  const double nearDepth = sceneNearDepth(patches);
+  LightRows rows(scene, receivers, options.resolution, sceneNearDepth(patches), pool);
   for (const Light& light : scene.lights) {
     LightShot& shot = shots.emplace_back();
     shot.power = lightPower(scene, light);
     shot.perCell.resize(cells.size());
     if (!(channelSum(shot.power) > 0.0)) continue;  // a dark light, or a beam with no window
-    shot.row = lightRow(scene, light, receivers, options.resolution, nearDepth, pool);
+    shot.row = rows.row(light);
     for (size_t r = 0; r < shot.row.receivers.size(); ++r) {  // ascending in the building, so in each cell
       FormFactorRow& part = shot.perCell[cellOfReceiver[shot.row.receivers[r]]];
       part.receivers.push_back(localOf[shot.row.receivers[r]]);

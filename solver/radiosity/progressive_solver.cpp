@@ -193,10 +193,10 @@ void ProgressiveSolver::State::shoot(const std::vector<int>& shooters, Iteration
 // past the model or onto its outside never entered it (Ledger::lightOutside).
 void ProgressiveSolver::State::shootLights(IterationRecord& record) {
   ThreadPool pool(options.threads);
-  const double nearDepth = sceneNearDepth(patches);
+  LightRows rows(scene, receivers(), options.resolution, sceneNearDepth(patches), pool);
   for (size_t k = 0; k < scene.lights.size(); ++k) {
     if (!(channelSum(lightPower[k]) > 0.0)) continue;  // a dark light, or a beam with no window
-    const FormFactorRow row = lightRow(scene, scene.lights[k], receivers(), options.resolution, nearDepth, pool);
+    const FormFactorRow row = rows.row(scene.lights[k]);
     deliver(row, lightPower[k], true);
     shots.push_back({-1, static_cast<int>(k), lightPower[k]});
     record.shotPowerW += channelSum(lightPower[k]);

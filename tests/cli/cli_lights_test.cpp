@@ -10,6 +10,7 @@
 #include <string>
 
 #include "tests/cli/cli_run.h"
+#include "tests/solver/io/gltf_test_file.h"
 
 namespace radmesh {
 namespace {
@@ -135,6 +136,73 @@ TEST(CliLights, CellsAutoSolvesLightsAndTheLedgerBalances) {
   expectCellsBalance(sun);
   EXPECT_LE(sun["unshot_fraction"].get<double>(), 0.05);
   EXPECT_GT(sun["ledger"]["light_outside"].get<double>(), 0.0);  // the sun on the roof and past the building
+}
+
+// The i-th of many point lights spread over the inside of the room below, 0.3 m or more from its walls.
+Vec3 spreadLight(int i) {
+  const auto fraction = [i](double step) { return i * step - std::floor(i * step); };
+  return {0.3 + 5.4 * fraction(0.6180339887), 0.3 + 2.4 * fraction(0.7548776662), 0.3 + 3.4 * fraction(0.5698402910)};
+}
+
+// A 6 x 3 x 4 m room (glTF, y up), one-sided grey walls facing in, with a 1 x 1 m window in its
+// x = 6 wall, lit by `count` point lights of 10 cd (spreadLight); written to `path`.
+std::string roomWithPointLights(const std::string& path, int count) {
+  test::GltfBuilder b;
+  std::vector<Vec3> corners;
+  std::vector<uint32_t> indices;
+  // A rectangle from `a` along `u` and `v`, turned to face `inward`.
+  const auto quad = [&](Vec3 a, Vec3 u, Vec3 v, Vec3 inward) {
+    if (glm::dot(glm::cross(u, v), inward) < 0.0) std::swap(u, v);
+    const auto first = static_cast<uint32_t>(corners.size());
+    corners.insert(corners.end(), {a, a + u, a + u + v, a + v});
+    indices.insert(indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+  };
+  const Vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  quad({0, 0, 0}, 6.0 * x, 4.0 * z, y);          // floor
+  quad({0, 3, 0}, 6.0 * x, 4.0 * z, -y);         // ceiling
+  quad({0, 0, 0}, 6.0 * x, 3.0 * y, z);          // z = 0
+  quad({0, 0, 4}, 6.0 * x, 3.0 * y, -z);         // z = 4
+  quad({0, 0, 0}, 4.0 * z, 3.0 * y, x);          // x = 0
+  quad({6, 0, 0}, 1.5 * z, 3.0 * y, -x);         // x = 6 around the window: z in [1.5, 2.5], y in [1, 2]
+  quad({6, 0, 2.5}, 1.5 * z, 3.0 * y, -x);
+  quad({6, 0, 1.5}, 1.0 * z, 1.0 * y, -x);
+  quad({6, 2, 1.5}, 1.0 * z, 1.0 * y, -x);
+  const int grey = b.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, 1}}, {"metallicFactor", 0}}}});
+  b.addTriangles("room", b.addPositions(corners), b.addIndices(indices), grey);
+  b.doc()["extensionsUsed"] = {"KHR_lights_punctual"};
+  b.doc()["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 10}}};
+  for (int i = 0; i < count; ++i) {
+    const Vec3 p = spreadLight(i);
+    b.add("nodes", {{"translation", {p.x, p.y, p.z}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  }
+  return b.write(path).string();
+}
+
+// The solid angle of the rectangle [u0, u1] x [v0, v1] in a plane at distance d, seen from the point
+// over its origin.
+double rectangleSolidAngle(double d, double u0, double u1, double v0, double v1) {
+  const auto corner = [d](double u, double v) { return std::atan(u * v / (d * std::sqrt(d * d + u * u + v * v))); };
+  return corner(u1, v1) - corner(u0, v1) - corner(u1, v0) + corner(u0, v0);
+}
+
+// What info says many point lights send out of a room is what goes through its window (each
+// light's solid angle of it over 4 pi), as a solve books it: their rows share one projection.
+TEST(CliLights, InfoSaysWhatManyPointLightsSendOutOfTheWindow) {
+  constexpr int kLights = 30;
+  const std::string room = roomWithPointLights(tempPath("room.gltf"), kLights);
+  const nlohmann::json info = infoJson(room);
+  ASSERT_EQ(info["lights"], kLights);
+  double through = 0.0;  // of the emitted power
+  for (int i = 0; i < kLights; ++i) {
+    const Vec3 p = spreadLight(i);
+    through += rectangleSolidAngle(6.0 - p.x, 1.5 - p.z, 2.5 - p.z, 1.0 - p.y, 2.0 - p.y) / (4 * std::numbers::pi);
+  }
+  through /= kLights;
+  const double emitted = info["emitted_power"].get<double>(), outside = info["light_outside"].get<double>();
+  EXPECT_NEAR(emitted, kLights * 3 * 4 * std::numbers::pi * 10 / 179.0, 1e-9 * emitted);
+  EXPECT_NEAR(outside / emitted, through, 0.01 * through);  // pixel centres at 256 x 256 a cube face
+  const nlohmann::json solved = solveStats(room + " --max-iterations 1", "room.json");
+  EXPECT_NEAR(outside, solved["ledger"]["light_outside"].get<double>(), 1e-12 * emitted);
 }
 
 TEST(CliLights, InfoCountsTheLights) {

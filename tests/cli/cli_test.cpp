@@ -271,12 +271,14 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
       // bench accuracy names its own lists (it named --cell, --subdivide-cells and an analytic it refuses)
       // and refuses what --quick would replace without a word.
-      {"bench accuracy furnace --cells 1,0", "bench accuracy --cells 0: give cell sizes in metres greater than 0"},
-      {"bench accuracy furnace --cells nan", "bench accuracy --cells nan: give cell sizes in metres greater than 0"},
+      // Its list of grid cell sizes is --cell-sizes (--cells, an alias, is auto|off on the solving commands).
+      {"bench accuracy furnace --cells 1,0", "bench accuracy --cell-sizes 0: give cell sizes in metres greater than 0"},
+      {"bench accuracy furnace --cell-sizes nan", "bench accuracy --cell-sizes nan: give cell sizes in metres greater than 0"},
       {"bench accuracy furnace --projections foo", "--projections 'foo': give plane (ratios 3 and 5) or hemicube"},
       {"bench accuracy furnace --quick --resolutions 48", "--quick sets --resolutions itself"},
       {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-unshot itself"},
-      {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cells"},
+      {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
+      {"bench accuracy furnace --quick --cell-sizes 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
       // Flags for what the run does not time were dropped without a word; the cells' own refusal comes first.
       {"bench solve furnace --pe-grid 32x32", "bench solve --pe-grid shapes the emulated machine: add --backend mesh"},
       {"bench solve furnace --scaling-resolution 17", "--scaling-resolution is the resolution of the --scaling-cells sweep"},
@@ -665,11 +667,11 @@ TEST(Cli, BenchAccuracyScoresTheFinestSweptMeshAgainstAFinerReferenceCell) {
 
 TEST(Cli, BenchAccuracyRefusesAnImpossibleReference) {
   for (const std::string value : {"1", "0.5", "-0.1", "nan"}) {
-    const CommandRun run = radmesh("bench accuracy furnace --cells 1,0.5 --reference-cell=" + value);
+    const CommandRun run = radmesh("bench accuracy furnace --cell-sizes 1,0.5 --reference-cell=" + value);
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_NE(run.output.find("--reference-cell " + value +
-                              ": give a cell finer than the finest of --cells (0.5 m), e.g. 0.25, or 0 for the "
-                              "finest of --cells itself"),
+                              ": give a cell finer than the finest of --cell-sizes (0.5 m), e.g. 0.25, or 0 for the "
+                              "finest of --cell-sizes itself"),
               std::string::npos)
         << run.output;
     EXPECT_EQ(run.output.find("reference analytic"), std::string::npos) << "refused before any solve";
@@ -779,6 +781,24 @@ TEST(Cli, SolveStatsCarryTheEffectsPlanTheSolverApplied) {
 
 namespace radmesh {
 namespace {
+
+// render --iterations N is --until 1 --until-unshot 0 --max-iterations N: given beside it, a stop was
+// dropped without a word (--max-iterations 3 solved 5 iterations).
+TEST(Cli, RenderIterationsRefusesTheStopsItSets) {
+  const CommandRun probe = radmesh("render --help");
+  if (probe.output.find("not built") != std::string::npos) GTEST_SKIP() << "radmesh was built without the viewer";
+  EXPECT_NE(probe.output.find("--until 1 --until-unshot 0 --max-iterations N"), std::string::npos) << probe.output;
+  for (const std::string stop : {"--max-iterations 3", "--until 0.9", "--until-unshot 0.1"}) {
+    const CommandRun run = radmesh("render cornell --cell 0.1 --resolution 64 --iterations 5 " + stop +
+                                   " --quiet --out " + tempPath("capped.png"));
+    EXPECT_EQ(run.exitCode, 2) << stop << ": " << run.output;
+    EXPECT_NE(run.output.find(" and --iterations cannot be given together: give one of them (radmesh render --help "
+                              "says what each does)"),
+              std::string::npos)
+        << stop << ": " << run.output;
+    EXPECT_FALSE(std::filesystem::exists(tempPath("capped.png"))) << stop;
+  }
+}
 
 TEST(Cli, RenderSolvesOrReadsABakeAndWritesThePictureOfTheAskedSize) {
   const CommandRun probe = radmesh("render --help");
@@ -1416,8 +1436,12 @@ TEST(Cli, StrictRefusesAFileThatNeededRepairs) {
                                      "render " + file + " --strict --quiet --out " + tempPath("strict.png")}) {
     run = radmesh(command);
     EXPECT_EQ(run.exitCode, 2) << command << run.output;
-    EXPECT_NE(run.output.find("--strict: needed 2 kind(s) of repair"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("drop --strict"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(file + ": refused under --strict (each warning an error), for its 2 warnings:\n  line "),
+              std::string::npos)
+        << run.output;
+    EXPECT_NE(run.output.find("(fix: correct what the warnings name, or leave --strict out to open it as warned)"),
+              std::string::npos)
+        << run.output;
   }
 }
 

@@ -33,15 +33,17 @@ void expectInfoRefused(const std::string& name, const std::string& material, con
 }
 
 // `radmesh info` of `path` opens it with `warning` (after the path), and refuses it under --strict
-// for `kinds` kinds of repair; returns what the first run printed.
+// for its `kinds` warnings (each a kind of repair); returns what the first run printed.
 std::string expectInfoRepaired(const std::string& path, const std::string& warning, int kinds) {
   const CommandRun run = radmesh("info " + path);
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("radmesh: warning: " + path + warning + "\n"), std::string::npos) << run.output;
   const CommandRun strict = radmesh("info --strict " + path);
   EXPECT_EQ(strict.exitCode, 2) << strict.output;
-  EXPECT_NE(strict.output.find("--strict: needed " + std::to_string(kinds) + " kind(s) of repair"), std::string::npos)
-      << strict.output;
+  const std::string refusal = kinds == 1 ? "refused under --strict (each warning an error): "
+                                         : "refused under --strict (each warning an error), for its " +
+                                               std::to_string(kinds) + " warnings:\n  ";
+  EXPECT_NE(strict.output.find(path + ": " + refusal), std::string::npos) << strict.output;
   return run.output;
 }
 
@@ -157,8 +159,9 @@ TEST(MgfValuesCli, NearNeutralWhiteAtTheHighestReflectanceOpensUnderStrict) {
   const std::string path = box("red.mgf", " c\n  cxy 0.75 0.10\n rd 0.99\n");
   const CommandRun run = radmesh("info --strict " + path);
   EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("  " + path + ": line 21: material 'white': its colour lies outside the Rec. 709 "
-                            "gamut; desaturated toward grey, keeping its luminance (fix: fix the file, or drop --strict"),
+  EXPECT_NE(run.output.find(path + ": refused under --strict (each warning an error): line 21: material 'white': its "
+                            "colour lies outside the Rec. 709 gamut; desaturated toward grey, keeping its luminance "
+                            "(fix: correct what the warning names, or leave --strict out to open it as warned)"),
             std::string::npos)
       << run.output;
 }

@@ -205,6 +205,39 @@ TEST(ViewerCli, StepsCountFromTheResumedIteration) {
   EXPECT_TRUE(std::filesystem::exists(png));
 }
 
+// Under --cells auto a step is a round (every cell's shots and a portal exchange), as the panel's
+// Step is: --steps counts rounds there, and its help says so (it said "run N iterations").
+TEST(ViewerCli, StepsUnderCellsAreRounds) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  const std::string help = runCommand(viewerPath() + " --help").output;
+  EXPECT_NE(help.find("take N steps, as the panel's Step does (an iteration; with --cells auto a round: every "
+                      "cell's shots and a portal exchange"),
+            std::string::npos)
+      << help;
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "xvfb-run is missing";
+  const std::string png = tempPath("rounds.png");
+  const CommandRun run =
+      runCommand(viewer + "two-rooms --cells auto --cell 0.5 --resolution 32 --steps 2 --screenshot " + png);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("cells solve at round 2, "), std::string::npos) << run.output;
+}
+
+// --max-iterations stops the viewer's solve as it stops solve's (the viewer had no cap).
+TEST(ViewerCli, MaxIterationsStopsTheSolveAsSolvesDoes) {
+  if (!std::filesystem::exists(viewerPath())) GTEST_SKIP() << "radmesh-view is not built";
+  const CommandRun zero = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " + viewerPath() + " cornell --max-iterations 0");
+  EXPECT_EQ(zero.exitCode, 2) << zero.output;
+  EXPECT_NE(zero.output.find("--max-iterations 0"), std::string::npos) << zero.output;
+  const std::string viewer = windowed();
+  if (viewer.empty()) GTEST_SKIP() << "xvfb-run is missing";
+  const std::string png = tempPath("capped.png");
+  const CommandRun run = runCommand(viewer + "cornell --backend native --cell 0.2 --resolution 32 --max-iterations 3 "
+                                             "--frames 30 --screenshot " + png);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("solver at iteration 3, "), std::string::npos) << run.output;
+}
+
 // A solve that fails before its mesh shows ends the frame report with the reason; it waited for
 // frames with a mesh for ever.
 TEST(ViewerCli, TheFrameReportEndsWhenTheSolveFails) {
@@ -349,10 +382,12 @@ TEST(ViewerCli, StrictRefusesAFileThatNeededRepairsAsSolveDoes) {
   const std::string noDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY " + viewerPath() + " " + file;
   const CommandRun strict = runCommand(noDisplay + " --strict");
   EXPECT_EQ(strict.exitCode, 2) << strict.output;
-  EXPECT_NE(strict.output.find("radmesh-view: error: " + file + ": --strict: needed 2 kind(s) of repair"),
+  EXPECT_NE(strict.output.find("radmesh-view: error: " + file + ": refused under --strict (each warning an error), "
+                               "for its 2 warnings:"),
             std::string::npos)
       << strict.output;
-  EXPECT_NE(strict.output.find("(fix: fix the file, or drop --strict to open it repaired)"), std::string::npos)
+  EXPECT_NE(strict.output.find("(fix: correct what the warnings name, or leave --strict out to open it as warned)"),
+            std::string::npos)
       << strict.output;
   const CommandRun repaired = runCommand(noDisplay);
   EXPECT_NE(repaired.output.find("radmesh-view: warning: " + file + ": line 14: unknown entity 'glow' skipped"),

@@ -3,6 +3,7 @@
 // shadow; the energy they send; and the two back ends' agreement.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -140,6 +141,37 @@ TEST(LightShot, TheSunDoesNotSlipIntoAClosedRoomThroughItsSeams) {
       EXPECT_GT(row.backFaces, 0.1);  // the walls' and the roof's outsides
       EXPECT_NEAR(row.backFaces + row.escapedFraction(), 1.0, 1e-12);
     }
+}
+
+// Many lights' rows over one set of patches (LightRows: the point lights share one projection) are
+// bitwise each light's own lightRow, a spot and the sun among them, the sky in a window left out.
+TEST(LightShot, ManyLightsRowsAreEachLightsOwnBitForBit) {
+  Daylight daylight;
+  daylight.skyLux = 10000;
+  daylight.sun = {parseSun("180,40")};  // into the box's opening
+  Scene room = loadScene(test::dataPath("lights/open_box.gltf").string(), nullptr, daylight);
+  Light point = pointBox().lights[0], spot = point;
+  spot.type = LightType::Spot;
+  spot.direction = Vec3(0.0, -1.0, 0.0);
+  spot.outerConeRad = 0.6;
+  room.lights.insert(room.lights.begin(), {point, point, spot, point});
+  room.lights[0].position = Vec3(0.4, 1.7, 0.3);
+  room.lights[1].position = Vec3(1.5, 0.5, 1.2);
+  room.lights[2].position = Vec3(1.0, 1.8, 1.0);
+  room.lights[3].position = Vec3(0.7, 1.1, 1.6);
+  const std::vector<Patch> patches = meshScene(room, 0.25);
+  ASSERT_TRUE(std::ranges::any_of(patches, [&](const Patch& p) { return room.materials[p.material].skyOpening; }));
+  ThreadPool pool(2);
+  const double nearDepth = sceneNearDepth(patches);
+  LightRows rows(room, patches, 64, nearDepth, pool);
+  for (size_t k = 0; k < room.lights.size(); ++k) {
+    const FormFactorRow many = rows.row(room.lights[k]);
+    const FormFactorRow own = lightRow(room, room.lights[k], patches, 64, nearDepth, pool);
+    EXPECT_EQ(many.receivers, own.receivers) << "light " << k;
+    EXPECT_EQ(many.formFactors, own.formFactors) << "light " << k;
+    EXPECT_EQ(many.backFaces, own.backFaces) << "light " << k;
+    EXPECT_GT(own.receivers.size(), 10u) << "light " << k;
+  }
 }
 
 TEST(LightShot, TheCubeAndTheSpotsFalloffIntegrateToTheirClosedForms) {
