@@ -24,4 +24,12 @@ double squaredDiameter(std::span<const Vec3> vertices);
 // That differential form alone, for a polygon known to pass smallPolygonFormFactor's test.
 double differentialFormFactor(Vec3 centroid, Vec3 normal, double areaM2);
 
+// Area to area, from the planar polygon `from` to the planar polygon `to`, each wholly in front of
+// the other and apart (no occlusion): Stokes' double contour integral,
+// A_from F = 1/(2 pi) |sum over edge pairs of the integral of ln r dp.dq|, exact however narrow
+// the gap, where sampling points of either polygon fails once the gap is under their spacing
+// (1 m plates 1 cm apart, 8 cuts: 1.5 % high). Either winding of either gives the same.
+// Costs a few thousand logarithms: for the pairs sampling cannot serve.
+double polygonToPolygonFormFactor(std::span<const Vec3> from, std::span<const Vec3> to);
+
 }  // namespace radmesh

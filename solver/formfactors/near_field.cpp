@@ -26,6 +26,14 @@ bool whollyInFront(const Patch& patch, const Patch& of, double scale) {
   return true;
 }
 
+// How far the nearest vertex of `patch` lies in front of the plane of `of` (negative: behind).
+double distanceInFront(const Patch& patch, const Patch& of) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < patch.vertexCount; ++k)
+    nearest = std::min(nearest, glm::dot(patch.vertices[k] - of.centroid, of.normal));
+  return nearest;
+}
+
 // Some vertex of `patch` strictly in front of the plane of `of` (beyond rounding at size `scale`).
 bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
   for (int k = 0; k < patch.vertexCount; ++k)
@@ -252,6 +260,13 @@ double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int sub
   // cell beside a block).
   constexpr double kSizeSlack = 1e-6;
   const double shooterSize = diameter(shooter), ratio = diameter(receiver) / shooterSize;
+  // Apart across a gap narrower than the sample points are spaced, each point sees the other plate
+  // as a spike under it, or misses it: the exact contour integral instead (1 m plates 1 cm apart
+  // read 1.5 % high sampled).
+  if (const double gap = std::min(distanceInFront(receiver, shooter), distanceInFront(shooter, receiver));
+      gap > kRounding * shooterSize && gap < shooterSize / subdivisions)
+    return polygonToPolygonFormFactor({shooter.vertices.data(), static_cast<size_t>(shooter.vertexCount)},
+                                      {receiver.vertices.data(), static_cast<size_t>(receiver.vertexCount)});
   if (ratio < 1.0 + kSizeSlack && whollyInFront(receiver, shooter, shooterSize) && receiver.areaM2 > 0.0 &&
       shooter.areaM2 > 0.0) {
     const int m = std::max(2, static_cast<int>(std::ceil(subdivisions * (ratio - kSizeSlack))));

@@ -107,7 +107,9 @@ class NearFieldFinder {
 // without occlusion: the shooter's triangles cut into subdivisions^2 triangles each, one point at
 // the centroid of each, weighted by its area; a point behind the receiver's plane sends it nothing.
 // A receiver no larger than the shooter (to a slack), wholly in front of it, is sampled instead, by
-// reciprocity, at sub-triangles no larger (at least 2 cuts).
+// reciprocity, at sub-triangles no larger (at least 2 cuts). Two patches apart and wholly in front
+// of each other across a gap narrower than the points' spacing (the shooter's diameter over
+// `subdivisions`) take the exact polygonToPolygonFormFactor instead.
 double areaToAreaFormFactor(const Patch& shooter, const Patch& receiver, int subdivisions = kNearFieldSubdivisions);
 
 // A near pair's unoccluded form factors: from the shooter's centroid (pointToPolygonFormFactor) and

@@ -92,6 +92,43 @@ TEST(AnalyticFormFactor, ReciprocityOfAreaFormFactors) {
   EXPECT_NEAR(ab, ba, 1e-3 * ab);
 }
 
+std::vector<Vec3> rectangle(Vec3 corner, Vec3 side1, Vec3 side2) {
+  return {corner, corner + side1, corner + side1 + side2, corner + side2};
+}
+
+double polygonForm(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
+  return polygonToPolygonFormFactor(from, to);
+}
+
+TEST(AnalyticFormFactor, PolygonToPolygonMatchesTheClosedFormsHoweverNarrowTheGap) {
+  for (double c : {1.0, 0.1, 0.01, 0.001}) {
+    // Directly opposed, a 1 x 1 square and a 2 x 0.5 rectangle, c apart, the upper facing down.
+    const double square = polygonForm(rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), rectangle({0, 0, c}, {0, 1, 0}, {1, 0, 0}));
+    EXPECT_NEAR(square, test::parallelRectanglesFormFactor(1, 1, c), 1e-9) << "c " << c;
+    const double strip = polygonForm(rectangle({0, 0, 0}, {2, 0, 0}, {0, 0.5, 0}), rectangle({0, 0, c}, {0, 0.5, 0}, {2, 0, 0}));
+    EXPECT_NEAR(strip, test::parallelRectanglesFormFactor(2, 0.5, c), 1e-9) << "c " << c;
+    // A floor 1 x 1 and a wall standing c above it on its edge x = 0, 0.5 high: the wall from 0 to
+    // c + 0.5 less the wall from 0 to c (form factors to parts of a plane add).
+    const double wall = polygonForm(rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), rectangle({0, 0, c}, {0, 1, 0}, {0, 0, 0.5}));
+    const double exactWall =
+        test::perpendicularRectanglesFormFactor(1, c + 0.5, 1) - test::perpendicularRectanglesFormFactor(1, c, 1);
+    EXPECT_NEAR(wall, exactWall, 1e-9) << "c " << c;
+  }
+}
+
+TEST(AnalyticFormFactor, PolygonToPolygonIsReciprocalAndBlindToWinding) {
+  const std::vector<Vec3> triangle{{0, 0, 0}, {1.2, 0.1, 0}, {0.3, 0.9, 0}};
+  // A parallelogram above it, tilted, facing down and wholly in front of it.
+  const std::vector<Vec3> tilted = rectangle({-0.2, 0.1, 0.6}, {0.1, 0.7, 0.2}, {0.9, 0.1, -0.1});
+  const double areaTriangle = 0.5 * glm::length(glm::cross(triangle[1] - triangle[0], triangle[2] - triangle[0]));
+  const double areaTilted = glm::length(glm::cross(tilted[1] - tilted[0], tilted[3] - tilted[0]));
+  const double f = polygonForm(triangle, tilted);
+  EXPECT_GT(f, 0.1);
+  EXPECT_NEAR(areaTriangle * f, areaTilted * polygonForm(tilted, triangle), 1e-12);
+  EXPECT_NEAR(polygonForm({triangle.rbegin(), triangle.rend()}, tilted), f, 1e-12);
+  EXPECT_NEAR(polygonForm(triangle, {tilted.rbegin(), tilted.rend()}), f, 1e-12);
+}
+
 TEST(AnalyticFormFactor, RowsOfAClosedBoxSumToOne) {
   const TestScene box = test::closedBox({1.0, 1.3, 0.9}, 3, {test::grey(0.5, 1.0)});
   const SolveOptions analytic = test::optionsFor(Projection::Analytic);
