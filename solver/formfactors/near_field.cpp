@@ -303,26 +303,38 @@ void completeNearFieldPairs(const Patch& shooter, const std::vector<Patch>& rece
 
 void correctNearField(FormFactorRow& row, const std::vector<int>& nearReceivers, std::span<const NearFieldPair> pairs) {
   if (nearReceivers.empty()) return;
-  const double before = row.hitFraction();
-  // A few pixels of background are cracks where polygons meet at T-junctions, not openings: a
-  // closed room's rows counted as open let the correction's shortfall escape, more with the
-  // resolution as more rows had a crack pixel (a room of walls in strips lost 2.4e-3 of its power
-  // at 1024², 0 with its walls whole).
-  const bool enclosed = row.escapedFraction() <= kCrackEscapeFraction;
-  bool changed = false;
+  const double before = row.hitFraction(), escaped = row.escapedFraction();
+  std::vector<char> near(row.receivers.size(), 0);
+  double shortfall = 0.0;  // what the near receivers lose to their area-to-area values (negative: gain)
   forNearEntries(row, nearReceivers, [&](size_t r, size_t k) {
     const NearFieldPair& pair = pairs[k];
     if (!(pair.point > 0.0) || !(pair.area > 0.0)) return;  // edge-on to the centroid: nothing to scale
-    row.formFactors[r] = std::min(1.0, row.formFactors[r] / pair.point) * pair.area;
-    changed = true;
+    const double corrected = std::min(1.0, row.formFactors[r] / pair.point) * pair.area;
+    shortfall += row.formFactors[r] - corrected;
+    row.formFactors[r] = corrected;
+    near[r] = 1;
   });
-  if (!changed) return;
+  // Seen from the rest of the shooter, the near receivers subtend that much less than from its
+  // centroid, and what lies beyond them that much more: the far receivers, the backs and the
+  // background, each in proportion to what the projection saw of it. An open gap seen edge-on
+  // (plates 1 cm apart) passes its share out of the scene; a crack between patches of a closed room
+  // (a T-junction, a pixel here and there) is a thousandth of what lies beyond, and so is its share.
+  double far = row.backFaces;
+  for (size_t r = 0; r < near.size(); ++r)
+    if (!near[r]) far += row.formFactors[r];
+  const double beyond = far + escaped;
+  if (beyond > 0.0 && shortfall > -beyond) {
+    const double scale = 1.0 + shortfall / beyond;
+    for (size_t r = 0; r < near.size(); ++r)
+      if (!near[r]) row.formFactors[r] *= scale;
+    row.backFaces *= scale;
+    return;
+  }
+  // Nothing beyond to take the difference, or too little to give a gain: the row keeps its total.
   const double after = row.hitFraction();
-  const double target = enclosed ? before : std::min(after, row.capturedFraction);
-  if (!(after > 0.0) || after == target) return;
-  const double scale = target / after;
-  for (double& f : row.formFactors) f *= scale;
-  row.backFaces *= scale;
+  if (!(after > 0.0) || after == before) return;
+  for (double& f : row.formFactors) f *= before / after;
+  row.backFaces *= before / after;
 }
 
 }  // namespace radmesh

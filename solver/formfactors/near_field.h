@@ -130,11 +130,10 @@ void completeNearFieldPairs(const Patch& shooter, const std::vector<Patch>& rece
 
 // Replaces row entries of the near receivers by area-to-area estimates scaled by the visible
 // fraction the projection measured (row entry over the unoccluded centroid form factor, at most
-// 1). No power is created: the row then sums to at most what the projection surface caught and,
-// for an enclosed shooter (all it sent out landed on a patch, but for at most
-// kCrackEscapeFraction of it), to what it summed before, so that the correction moves light
-// between receivers but never lets it escape. pairs: completeNearFieldPairs' for this row.
-inline constexpr double kCrackEscapeFraction = 0.01;
+// 1). What they lose or gain in all goes to or comes from what lies beyond them, in proportion to
+// what the projection saw: the far receivers, the backs and the background (escape). No power is
+// created, the row sums to at most what the projection surface caught, and a row that saw no
+// background keeps its total. pairs: completeNearFieldPairs' for this row.
 void correctNearField(FormFactorRow& row, const std::vector<int>& nearReceivers, std::span<const NearFieldPair> pairs);
 
 }  // namespace radmesh

@@ -86,6 +86,10 @@ TEST(ProgressiveSolver, FurnaceErrorShrinksAsPatchesShrink) {
     previous = rms;
   }
   EXPECT_LT(previous, 0.02 * 2.0);
+  // The near receivers' difference from their area-to-area values goes to the receivers beyond
+  // them, which in a closed box is where it belongs: measured 0.0074 at 10 divisions, 0.0094 when
+  // it was shared over the whole row, the near receivers too.
+  EXPECT_LT(previous, 0.0085);
 }
 
 TEST(ProgressiveSolver, LedgerBalancesAndThePlaneReportsItsMiss) {
