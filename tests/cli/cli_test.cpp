@@ -1482,6 +1482,32 @@ TEST(Cli, InfoCellsListsTheRoomsAndThePortalsAsJson) {
   EXPECT_NE(bad.output.find("--cell-groups"), std::string::npos) << bad.output;
 }
 
+// info --cells takes auto|off as the solving commands' --cells does: "--cells auto" was one argument
+// too many. Alone it still means auto, before the scene too.
+TEST(Cli, InfoCellsTakesAutoOrOff) {
+  const auto cellsOf = [](const std::string& arguments) {
+    const CommandRun run = radmesh("info " + arguments + " --json");
+    EXPECT_EQ(run.exitCode, 0) << arguments << ": " << run.output;
+    nlohmann::json j = nlohmann::json::parse(run.output, nullptr, false);
+    return j.is_object() && j.contains("cells") ? nlohmann::json{j["cells"], j["portals"]} : nlohmann::json();
+  };
+  const nlohmann::json alone = cellsOf("two-rooms --cells");
+  ASSERT_EQ(alone[0].size(), 2u) << alone.dump();
+  ASSERT_EQ(alone[1].size(), 1u) << alone.dump();
+  for (const std::string arguments : {"two-rooms --cells auto", "two-rooms --cells=auto", "--cells auto two-rooms",
+                                      "--cells two-rooms"})
+    EXPECT_EQ(cellsOf(arguments), alone) << arguments;
+  EXPECT_EQ(cellsOf("two-rooms --cells off"), nlohmann::json()) << "off lists no cells";
+  EXPECT_EQ(cellsOf("--cells off two-rooms"), nlohmann::json());
+  CommandRun run = radmesh("info two-rooms --cells off --cell-groups join");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--cell-groups requires --cells"), std::string::npos) << run.output;
+  run = radmesh("info two-rooms --cells maybe");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_EQ(run.output, "radmesh: error: --cells 'maybe' is unknown: give auto (list the cells and portals, as "
+                        "--cells alone does) or off\n");
+}
+
 TEST(Cli, InfoPlanDrawsThePlanOrSaysWhatIsWrong) {
   const std::string plan = tempPath("plan.png");
   const CommandRun run = radmesh("info building:1x1 --plan " + plan + " --json");
