@@ -66,7 +66,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--cells", args->cellsMode, "auto: time the cells solve (with --until 1 --until-unshot F); off")
       ->type_name("auto|off")
       ->capture_default_str();
-  cmd->add_option("--exchange-shots", args->exchangeShots, "With --cells auto: shots per cell per round, on average")
+  cmd->add_option("--exchange-shots", args->exchangeShots, kExchangeShotsHelp)
       ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
@@ -197,7 +197,7 @@ void addBenchCells(CLI::App* bench) {
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "N of the projection")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Both solves stop at this unshot fraction")->capture_default_str();
-  cmd->add_option("--exchange-shots", args->exchangeShots, "Shots a cell a round between portal exchanges, on average")
+  cmd->add_option("--exchange-shots", args->exchangeShots, kExchangeShotsHelp)
       ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
