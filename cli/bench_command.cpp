@@ -128,7 +128,8 @@ void addBenchAccuracy(CLI::App* bench) {
                   "swept (0: the finest of --cell-sizes)")
       ->capture_default_str();
   cmd->add_option("--reference-until", args->referenceUntil, "Convergence C of the reference")->capture_default_str();
-  cmd->add_option("--reference-unshot", args->referenceUnshot,
+  // Named as --until-unshot, beside --reference-until; its first name, --reference-unshot, kept as an alias.
+  cmd->add_option("--reference-until-unshot,--reference-unshot", args->referenceUnshot,
                   "And the most unshot power the reference may leave, as a fraction of the emitted")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")
@@ -159,7 +160,7 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->callback([args, quick, json, cmd] {
     checkJsonOutput(*json);
     // What --quick sets would replace what was given without a word.
-    for (const char* flag : {"--resolutions", "--reference-resolution", "--reference-until", "--reference-unshot"})
+    for (const char* flag : {"--resolutions", "--reference-resolution", "--reference-until", "--reference-until-unshot"})
       if (*quick && cmd->count(flag) > 0)
         throw OptionError(fmt::format("bench accuracy --quick sets {} itself (docs/accuracy.md): leave {} out, or "
                                       "drop --quick", flag, flag));

@@ -276,7 +276,8 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench accuracy furnace --cell-sizes nan", "bench accuracy --cell-sizes nan: give cell sizes in metres greater than 0"},
       {"bench accuracy furnace --projections foo", "--projections 'foo': give plane (ratios 3 and 5) or hemicube"},
       {"bench accuracy furnace --quick --resolutions 48", "--quick sets --resolutions itself"},
-      {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-unshot itself"},
+      {"bench accuracy furnace --quick --reference-until-unshot 0.001", "--quick sets --reference-until-unshot itself"},
+      {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-until-unshot itself"},
       {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
       {"bench accuracy furnace --quick --cell-sizes 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
       // Flags for what the run does not time were dropped without a word; the cells' own refusal comes first.
@@ -553,6 +554,27 @@ TEST(Cli, BenchAccuracysDefaultCellsFollowTheScenesSize) {
   const double expected[] = {chosen * 0.25 / 0.381, chosen, chosen * 0.5 / 0.381};
   int k = 0;
   for (double cell : cells) EXPECT_NEAR(cell, expected[k++], 2e-3 * chosen);
+}
+
+// The reference's unshot stop is named as --until-unshot, beside --reference-until; its first
+// name, --reference-unshot, sets the same.
+TEST(Cli, BenchAccuracysReferenceUntilUnshotTakesItsFormerName) {
+  const auto referenceOf = [](const std::string& stop) {
+    const std::string json = tempPath("reference.json");
+    const CommandRun run = radmesh("bench accuracy furnace --projections hemicube --resolutions 16 --cell-sizes 0.5 "
+                                   "--reference-resolution 16 --reference-until 0.5 --json " + json + " " + stop);
+    EXPECT_EQ(run.exitCode, 0) << stop << ": " << run.output;
+    return nlohmann::json::parse(std::ifstream(json))["references"][0]["how"].get<std::string>();
+  };
+  const std::string reached = referenceOf("--reference-until-unshot 0.05");
+  EXPECT_NE(reached.find(" % unshot"), std::string::npos) << reached;
+  EXPECT_EQ(referenceOf("--reference-unshot 0.05"), reached);
+  EXPECT_NE(referenceOf("--reference-until-unshot 0.5"), reached);  // a stop it reaches sooner
+  for (const std::string name : {"--reference-until-unshot", "--reference-unshot"}) {
+    const CommandRun run = radmesh("bench accuracy furnace " + name + " 1.5");
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(run.output, "radmesh: error: --reference-until-unshot must be a fraction in (0, 1), e.g. 0.001\n");
+  }
 }
 
 // The room's cells, given: at 128x128 the pixels resolve their patches (the furnace's own cell,
