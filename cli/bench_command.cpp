@@ -72,7 +72,10 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->transform(threadCount("radmesh"))->capture_default_str();
   addCacheOption(cmd, args->cacheMb);
-  cmd->add_option("--scaling-cells", args->cells, "Grid cell sizes, metres, of the patch-count sweep (a list)")->delimiter(',');
+  // A list of cell sizes, named as bench accuracy's --cell-sizes; its first name, --scaling-cells, kept as an alias.
+  cmd->add_option("--scaling-cell-sizes,--scaling-cells", args->cells,
+                  "Grid cell sizes, metres, of the patch-count sweep (a list)")
+      ->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->add_flag("--distributed", args->distributed,
@@ -90,8 +93,8 @@ void addBenchSolve(CLI::App* bench) {
         throw OptionError(fmt::format("bench solve {} shapes the emulated machine: add --backend mesh, or leave {} out",
                                       flag, flag));
     if (cmd->count("--scaling-resolution") > 0 && args->cells.empty())
-      throw OptionError("bench solve --scaling-resolution is the resolution of the --scaling-cells sweep: give "
-                        "--scaling-cells too, or leave it out");
+      throw OptionError("bench solve --scaling-resolution is the resolution of the --scaling-cell-sizes sweep: give "
+                        "--scaling-cell-sizes too, or leave it out");
     dropRepeats(args->projections), dropRepeats(args->resolutions), dropRepeats(args->shooters), dropRepeats(args->cells);
     if (!args->distributed) return writeJsonIfAsked(*json, benchSolve(*args));
     if (!parseCells(args->cellsMode))

@@ -267,7 +267,8 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench cells two-rooms --threads -1", "-1 is not a thread count: give 0 (every core) or a positive count"},
       {"bench cells two-rooms --focus-only --threads 2",
        "bench cells --threads sets the second cells solve's threads, and --focus-only runs the focus cell alone"},
-      {"bench solve furnace --scaling-cells 0", "--scaling-cells 0: give cell sizes in metres greater than 0"},
+      {"bench solve furnace --scaling-cell-sizes 0", "--scaling-cell-sizes 0: give cell sizes in metres greater than 0"},
+      {"bench solve furnace --scaling-cells 0", "--scaling-cell-sizes 0: give cell sizes in metres greater than 0"},
       {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
       // bench accuracy names its own lists (it named --cell, --subdivide-cells and an analytic it refuses)
       // and refuses what --quick would replace without a word.
@@ -282,7 +283,7 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench accuracy furnace --quick --cell-sizes 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
       // Flags for what the run does not time were dropped without a word; the cells' own refusal comes first.
       {"bench solve furnace --pe-grid 32x32", "bench solve --pe-grid shapes the emulated machine: add --backend mesh"},
-      {"bench solve furnace --scaling-resolution 17", "--scaling-resolution is the resolution of the --scaling-cells sweep"},
+      {"bench solve furnace --scaling-resolution 17", "--scaling-resolution is the resolution of the --scaling-cell-sizes sweep"},
       {"bench solve two-rooms --cells auto --backend mesh --projections hemicube --until 1 --until-unshot 0.1",
        "--cells auto runs on the native back end only"},
   };
@@ -554,6 +555,21 @@ TEST(Cli, BenchAccuracysDefaultCellsFollowTheScenesSize) {
   const double expected[] = {chosen * 0.25 / 0.381, chosen, chosen * 0.5 / 0.381};
   int k = 0;
   for (double cell : cells) EXPECT_NEAR(cell, expected[k++], 2e-3 * chosen);
+}
+
+// bench solve's patch-count sweep is a list of cell sizes, named as bench accuracy's --cell-sizes;
+// its first name, --scaling-cells, sets the same.
+TEST(Cli, BenchSolvesScalingCellSizesTakesItsFormerName) {
+  const std::string bench = "solve furnace --projections plane --resolutions 16 --max-iterations 2 "
+                            "--scaling-resolution 16 ";
+  for (const std::string name : {"--scaling-cell-sizes", "--scaling-cells"}) {
+    const nlohmann::json scaling = runBench(bench + name + " 0.5,0.25").json["scaling"];
+    ASSERT_EQ(scaling.size(), 2u) << name << ": " << scaling.dump();
+    EXPECT_EQ(scaling[0]["cell"], 0.5) << name;
+    EXPECT_EQ(scaling[0]["patches"], 24) << name;
+    EXPECT_EQ(scaling[1]["cell"], 0.25) << name;
+    EXPECT_EQ(scaling[1]["patches"], 96) << name;
+  }
 }
 
 // The reference's unshot stop is named as --until-unshot, beside --reference-until; its first
