@@ -71,7 +71,7 @@ Reference solveReference(const Scene& scene, const std::vector<Patch>& patches, 
   if (!asFarAsTheReference(solver, args))
     throw std::runtime_error(fmt::format(
         "the reference stopped at C = {:.5f} with {:.3f} % unshot after {} iterations, short of C = {} and {} % "
-        "unshot: the errors against it could not be trusted (raise --max-iterations or --reference-unshot)",
+        "unshot: the errors against it could not be trusted (raise --max-iterations or --reference-until-unshot)",
         solver.convergence(), 100.0 * solver.ledger().unshotFraction(), solver.history().size(), args.referenceUntil,
         100.0 * args.referenceUnshot));
   Reference ref;
@@ -246,7 +246,7 @@ nlohmann::json benchAccuracy(const AccuracyArgs& given) {
                                   "a reference at least as fine, e.g. {}",
                                   args.referenceResolution, finestN, 2 * finestN));
   if (!(args.referenceUnshot > 0.0 && args.referenceUnshot < 1.0))
-    throw OptionError("--reference-unshot must be a fraction in (0, 1), e.g. 0.001");
+    throw OptionError("--reference-until-unshot must be a fraction in (0, 1), e.g. 0.001");
   if (!(args.referenceUntil > 0.0 && args.referenceUntil <= 1.0))
     throw OptionError(fmt::format("--reference-until must be a convergence in (0, 1], e.g. 0.999; got {}", args.referenceUntil));
   if (!args.outDir.empty()) makeOutputFolder("--out-dir", args.outDir);

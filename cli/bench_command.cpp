@@ -66,13 +66,16 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--cells", args->cellsMode, "auto: time the cells solve (with --until 1 --until-unshot F); off")
       ->type_name("auto|off")
       ->capture_default_str();
-  cmd->add_option("--exchange-shots", args->exchangeShots, "With --cells auto: shots per cell per round, on average")
+  cmd->add_option("--exchange-shots", args->exchangeShots, kExchangeShotsHelp)
       ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->transform(threadCount("radmesh"))->capture_default_str();
   addCacheOption(cmd, args->cacheMb);
-  cmd->add_option("--scaling-cells", args->cells, "Grid cell sizes, metres, of the patch-count sweep (a list)")->delimiter(',');
+  // A list of cell sizes, named as bench accuracy's --cell-sizes; its first name, --scaling-cells, kept as an alias.
+  cmd->add_option("--scaling-cell-sizes,--scaling-cells", args->cells,
+                  "Grid cell sizes, metres, of the patch-count sweep (a list)")
+      ->delimiter(',');
   cmd->add_option("--scaling-resolution", args->scalingResolution, "Plane resolution of the sweep")->capture_default_str();
   cmd->add_option("--json", *json, "Also write the figures as JSON");
   cmd->add_flag("--distributed", args->distributed,
@@ -90,8 +93,8 @@ void addBenchSolve(CLI::App* bench) {
         throw OptionError(fmt::format("bench solve {} shapes the emulated machine: add --backend mesh, or leave {} out",
                                       flag, flag));
     if (cmd->count("--scaling-resolution") > 0 && args->cells.empty())
-      throw OptionError("bench solve --scaling-resolution is the resolution of the --scaling-cells sweep: give "
-                        "--scaling-cells too, or leave it out");
+      throw OptionError("bench solve --scaling-resolution is the resolution of the --scaling-cell-sizes sweep: give "
+                        "--scaling-cell-sizes too, or leave it out");
     dropRepeats(args->projections), dropRepeats(args->resolutions), dropRepeats(args->shooters), dropRepeats(args->cells);
     if (!args->distributed) return writeJsonIfAsked(*json, benchSolve(*args));
     if (!parseCells(args->cellsMode))
@@ -128,7 +131,8 @@ void addBenchAccuracy(CLI::App* bench) {
                   "swept (0: the finest of --cell-sizes)")
       ->capture_default_str();
   cmd->add_option("--reference-until", args->referenceUntil, "Convergence C of the reference")->capture_default_str();
-  cmd->add_option("--reference-unshot", args->referenceUnshot,
+  // Named as --until-unshot, beside --reference-until; its first name, --reference-unshot, kept as an alias.
+  cmd->add_option("--reference-until-unshot,--reference-unshot", args->referenceUnshot,
                   "And the most unshot power the reference may leave, as a fraction of the emitted")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")
@@ -159,7 +163,7 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->callback([args, quick, json, cmd] {
     checkJsonOutput(*json);
     // What --quick sets would replace what was given without a word.
-    for (const char* flag : {"--resolutions", "--reference-resolution", "--reference-until", "--reference-unshot"})
+    for (const char* flag : {"--resolutions", "--reference-resolution", "--reference-until", "--reference-until-unshot"})
       if (*quick && cmd->count(flag) > 0)
         throw OptionError(fmt::format("bench accuracy --quick sets {} itself (docs/accuracy.md): leave {} out, or "
                                       "drop --quick", flag, flag));
@@ -197,7 +201,7 @@ void addBenchCells(CLI::App* bench) {
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "N of the projection")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Both solves stop at this unshot fraction")->capture_default_str();
-  cmd->add_option("--exchange-shots", args->exchangeShots, "Shots a cell a round between portal exchanges, on average")
+  cmd->add_option("--exchange-shots", args->exchangeShots, kExchangeShotsHelp)
       ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();

@@ -161,7 +161,8 @@ nlohmann::json benchSolve(const BenchSolveArgs& args, CellRanks* ranks) {
   if (!args.cells.empty()) checkResolution(args.scalingResolution, "--scaling-resolution");
   for (double cell : args.cells)
     if (!(std::isfinite(cell) && cell > 0.0))
-      throw OptionError(fmt::format("--scaling-cells {}: give cell sizes in metres greater than 0, e.g. 0.75,0.381", cell));
+      throw OptionError(
+          fmt::format("--scaling-cell-sizes {}: give cell sizes in metres greater than 0, e.g. 0.75,0.381", cell));
   nlohmann::json rows = nlohmann::json::array();
   CsvTable ranksCsv = ranksCsvTable(), modelCsv = modelCsvTable();
   fmt::print("scene {}: {} patches, threads {}, until C={:.2f}{}, {}; times are {}\n", scene.source, patches.size(),

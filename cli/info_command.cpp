@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <ctime>
+#include <utility>
 
 #include "cli/counted.h"
 #include "cli/commands.h"
@@ -39,7 +40,7 @@ struct InfoArgs {
   UpChoice up = UpChoice::Format;
   double metresPerUnit = 0.0;  // --units; 0: not given
   EffectsMode effects = EffectsMode::Auto;
-  bool cells = false;
+  std::string cells;  // --cells: "" (not given, or given alone), auto or off
   CellGroups cellGroups = CellGroups::Name;
   std::string planPath;  // --plan FILE.png
   double minElementM = 0.0;  // --min-element: the elements --subdivide uniform would make
@@ -265,8 +266,11 @@ void addInfoCommand(CLI::App& app) {
   cmd->add_option("--min-element", args->minElementM,
                   "Count the elements --subdivide uniform would cut the patches into, metres (0: four a patch)")
       ->capture_default_str();
-  cmd->add_flag("--cells", args->cells,
-                "Also list the visibility cells (rooms) and the portals (openings) joining them (docs/cells.md)");
+  cmd->add_option("--cells", args->cells,
+                  "auto (or --cells alone): also list the visibility cells (rooms) and the portals (openings) "
+                  "joining them (docs/cells.md); off")
+      ->type_name("auto|off")
+      ->expected(0, 1);
   cmd->add_option("--plan", args->planPath, "Draw the cells' floor plan to this PNG (implies --cells)");
   cmd->add_option_function<std::string>(
          "--cell-groups",
@@ -275,8 +279,16 @@ void addInfoCommand(CLI::App& app) {
          "make the cells of one group one cell)")
       ->check(CLI::IsMember({"name", "join"}));
   cmd->callback([args, cmd] {
+    const bool known = args->cells.empty() || args->cells == "auto" || args->cells == "off";
+    // --cells was a flag: in "info --cells SCENE" CLI11 takes the scene for --cells' value.
+    if (!known && cmd->count("scene") == 0)
+      args->scene = std::exchange(args->cells, "");
+    else if (!known)
+      throw OptionError("--cells '" + args->cells + "' is unknown: give auto (list the cells and portals, as --cells "
+                        "alone does) or off");
+    const bool cells = (cmd->count("--cells") > 0 && args->cells != "off") || !args->planPath.empty();
     // As CLI11's needs() refuses a flag that would shape nothing; --plan finds the cells too.
-    if (cmd->count("--cell-groups") > 0 && !args->cells && args->planPath.empty())
+    if (cmd->count("--cell-groups") > 0 && !cells)
       throw OptionError("--cell-groups requires --cells (or --plan): it shapes the cells they find; add --cells, or "
                         "leave --cell-groups out");
     checkOutputPath("--plan", args->planPath, ".png", "the plan is a PNG picture");
@@ -297,7 +309,6 @@ void addInfoCommand(CLI::App& app) {
     const EffectsPlan plan = planEffects(scene, patches, args->effects);
     const double elements = countElements(patches, args->minElementM);
     const double lightOutside = lightOutsideW(scene, patches);
-    const bool cells = args->cells || !args->planPath.empty();
     CellPartition partition;
     CellFigures outside;
     std::vector<CellFigures> figures;

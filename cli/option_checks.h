@@ -8,10 +8,10 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli/usage_failure.h"
+#include "parallel/thread_pool.h"
 #include "solver/scene/scene_error.h"
 
 namespace radmesh::cli {
@@ -57,9 +57,9 @@ inline const CLI::Validator kFileStem(
 inline const CLI::Validator kPositive = numberAbove(0.0);
 inline const CLI::Validator kNonNegative = numberAbove(0.0, true);
 
-// --threads: 0 (every core) or a count, at most the machine's hardware threads. More only wait
-// for a core, each holding its own scratch (a patch index per patch), so they are cut to that
-// many, with a warning under the program's name.
+// --threads: 0 (every core) or a count, at most ThreadPool::mostUseful(), the machine's hardware
+// threads. More only wait for a core, each holding its own scratch (a patch index per patch), so
+// they are cut to that many, with a warning under the program's name.
 inline CLI::Validator threadCount(const char* program) {
   return CLI::Validator(
     [program](std::string& text) -> std::string {
@@ -68,8 +68,8 @@ inline CLI::Validator threadCount(const char* program) {
         return text + " is not a thread count: give 0 (" +
                (std::string(program) == "radmesh-view" ? "every core but one, left to drawing" : "every core") +
                ") or a positive count";
-      const int hardware = static_cast<int>(std::thread::hardware_concurrency());
-      if (hardware > 0 && value > hardware) {
+      const int hardware = ThreadPool::mostUseful();
+      if (value > hardware) {
         std::fprintf(stderr, "%s: warning: --threads %d is more than the %d this machine runs at once: using %d\n",
                      program, value, hardware, hardware);
         text = std::to_string(hardware);

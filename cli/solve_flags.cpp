@@ -197,7 +197,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
       ->type_name("auto|off")
       ->capture_default_str();
-  cmd->add_option("--exchange-shots", f.exchangeShots, "With --cells auto: shots a cell a round between portal exchanges, on average (shared by unshot power)")
+  cmd->add_option("--exchange-shots", f.exchangeShots, kExchangeShotsHelp)
       ->check(kPositive)
       ->capture_default_str();
   cmd->add_option("--portal-bins", f.portalBins, kPortalBinsHelp)->capture_default_str();

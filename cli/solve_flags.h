@@ -51,6 +51,11 @@ struct SolveFlags {
 inline constexpr const char* kPortalBinsHelp =
     "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
     "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
+// --exchange-shots, the same on every command that runs the cells solve.
+inline constexpr const char* kExchangeShotsHelp =
+    "The cells solve's shots a round between portal exchanges, this many a cell on average, shared by the cells' "
+    "unshot power; a focus cell (the viewer's camera's, bench cells' --focus-cell) shoots them alone until its own "
+    "unshot is below the stopping rule, then each cell's part halves at each portal from it (docs/cells.md)";
 
 // --max-iterations, the same on every command that solves.
 inline constexpr const char* kMaxIterationsHelp =

@@ -65,9 +65,9 @@ ThreadPool::ThreadPool(int threads) : impl_(std::make_unique<Impl>()) {
     impl_->helpers.emplace_back([this, worker] { impl_->helperLoop(worker); });
 }
 
-int ThreadPool::sizeFor(int threads) {
-  return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
+int ThreadPool::sizeFor(int threads) { return threads > 0 ? threads : mostUseful(); }
+
+int ThreadPool::mostUseful() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 ThreadPool::~ThreadPool() {
   {

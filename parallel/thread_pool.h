@@ -11,8 +11,11 @@ namespace radmesh {
 class ThreadPool {
  public:
   explicit ThreadPool(int threads);  // 0: one per hardware thread; 1: everything on the caller
-  // The workers a pool of `threads` has: `threads`, or for 0 the hardware threads (at least one).
+  // The workers a pool of `threads` has: `threads`, or for 0 mostUseful().
   static int sizeFor(int threads);
+  // The most host threads worth asking for: the hardware threads (at least one). More only wait for
+  // a core, each holding its own scratch; --threads and the viewer's slider stop here.
+  static int mostUseful();
   ~ThreadPool();
   ThreadPool(const ThreadPool&) = delete;
   ThreadPool& operator=(const ThreadPool&) = delete;

@@ -205,9 +205,10 @@ void WalkCamera::update(const WalkInput& input, double dtSeconds) {
   const glm::dvec3 walkRight = glm::cross(walkForward, up_);
   const double step = speedMps * dtSeconds;
   ground_ += step * (input.forward * walkForward + input.right * walkRight);
-  // No lower than lowestEyeM; an eye started lower (--camera under the floor) is kept there until
-  // raised, not snapped up.
-  eyeHeightM = std::max(std::min(lowestEyeM(), eyeHeightM), eyeHeightM + step * input.rise);
+  // Between lowestEyeM and highestEyeM, the slider's ends; an eye started beyond them (--camera
+  // under the floor, or above the roof) is kept there until moved towards them, not snapped back.
+  eyeHeightM = std::clamp(eyeHeightM + step * input.rise, std::min(lowestEyeM(), eyeHeightM),
+                          std::max(highestEyeM(), eyeHeightM));
 }
 
 RenderView WalkCamera::view() const {

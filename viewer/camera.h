@@ -68,10 +68,13 @@ class WalkCamera {
     double low = 0.0, high = 0.0;
   };
   Range speedRange() const { return {std::min(0.05, 0.01 * sizeM()), std::max(10.0, sizeM())}; }
-  Range eyeHeightRange() const { return {lowestEyeM(), std::min(3.0, sizeM())}; }
+  Range eyeHeightRange() const { return {lowestEyeM(), highestEyeM()}; }
   // The lowest eye height the walk lowers to and the panel's slider goes to: the floor stays in
   // front of the near plane.
   double lowestEyeM() const { return 2.0 * nearM(); }
+  // The highest eye height the walk raises to and the panel's slider goes to: 3 m, or the model's
+  // size in a smaller one.
+  double highestEyeM() const { return std::min(3.0, sizeM()); }
 
   double speedMps = 1.4;  // a walking pace; in a model under 2.8 m across, half its size a second
   double eyeHeightM = 1.6;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "parallel/thread_pool.h"
 #include "solver/scene/scene_error.h"
 #include "viewer/panel.h"
 #include "viewer/panel_widgets.h"
@@ -46,7 +47,7 @@ void Panel::drawParameters(SolverThread& solver) {
   changed |= released();
   sliderDouble("cell m", &edited_.cellM, 0.02, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic);
   changed |= released();
-  ImGui::SliderInt("host threads", &o.threads, 0, 64, o.threads == 0 ? "0: every core but one" : "%d");
+  ImGui::SliderInt("host threads", &o.threads, 0, ThreadPool::mostUseful(), o.threads == 0 ? "0: every core but one" : "%d");
   changed |= released();
   changed |= ImGui::Checkbox("ambient term (display only)", &o.ambient);
   // The stopping rule applies to the solve under way: no restart.

@@ -106,9 +106,7 @@ int main(int argc, char** argv) {
                  "off: the whole scene at once")
       ->type_name("auto|off")
       ->capture_default_str();
-  app.add_option("--exchange-shots", args.setup.exchangeShots,
-                 "With --cells auto: the camera's cell's iterations between portal exchanges (a neighbour at portal "
-                 "distance d shoots this >> d)")
+  app.add_option("--exchange-shots", args.setup.exchangeShots, radmesh::cli::kExchangeShotsHelp)
       ->check(radmesh::cli::kPositive)
       ->capture_default_str();
   app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();

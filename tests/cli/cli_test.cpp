@@ -267,7 +267,8 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench cells two-rooms --threads -1", "-1 is not a thread count: give 0 (every core) or a positive count"},
       {"bench cells two-rooms --focus-only --threads 2",
        "bench cells --threads sets the second cells solve's threads, and --focus-only runs the focus cell alone"},
-      {"bench solve furnace --scaling-cells 0", "--scaling-cells 0: give cell sizes in metres greater than 0"},
+      {"bench solve furnace --scaling-cell-sizes 0", "--scaling-cell-sizes 0: give cell sizes in metres greater than 0"},
+      {"bench solve furnace --scaling-cells 0", "--scaling-cell-sizes 0: give cell sizes in metres greater than 0"},
       {"bench solve furnace --scaling-cells 0.5 --scaling-resolution 0", "--scaling-resolution 0 is out of range"},
       // bench accuracy names its own lists (it named --cell, --subdivide-cells and an analytic it refuses)
       // and refuses what --quick would replace without a word.
@@ -276,12 +277,13 @@ TEST(Cli, BenchesRefuseEveryImpossibleValueBeforeSolving) {
       {"bench accuracy furnace --cell-sizes nan", "bench accuracy --cell-sizes nan: give cell sizes in metres greater than 0"},
       {"bench accuracy furnace --projections foo", "--projections 'foo': give plane (ratios 3 and 5) or hemicube"},
       {"bench accuracy furnace --quick --resolutions 48", "--quick sets --resolutions itself"},
-      {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-unshot itself"},
+      {"bench accuracy furnace --quick --reference-until-unshot 0.001", "--quick sets --reference-until-unshot itself"},
+      {"bench accuracy furnace --quick --reference-unshot 0.001", "--quick sets --reference-until-unshot itself"},
       {"bench accuracy furnace --quick --cells 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
       {"bench accuracy furnace --quick --cell-sizes 1,0.5,0.25", "--quick sweeps at most two --cell-sizes"},
       // Flags for what the run does not time were dropped without a word; the cells' own refusal comes first.
       {"bench solve furnace --pe-grid 32x32", "bench solve --pe-grid shapes the emulated machine: add --backend mesh"},
-      {"bench solve furnace --scaling-resolution 17", "--scaling-resolution is the resolution of the --scaling-cells sweep"},
+      {"bench solve furnace --scaling-resolution 17", "--scaling-resolution is the resolution of the --scaling-cell-sizes sweep"},
       {"bench solve two-rooms --cells auto --backend mesh --projections hemicube --until 1 --until-unshot 0.1",
        "--cells auto runs on the native back end only"},
   };
@@ -553,6 +555,42 @@ TEST(Cli, BenchAccuracysDefaultCellsFollowTheScenesSize) {
   const double expected[] = {chosen * 0.25 / 0.381, chosen, chosen * 0.5 / 0.381};
   int k = 0;
   for (double cell : cells) EXPECT_NEAR(cell, expected[k++], 2e-3 * chosen);
+}
+
+// bench solve's patch-count sweep is a list of cell sizes, named as bench accuracy's --cell-sizes;
+// its first name, --scaling-cells, sets the same.
+TEST(Cli, BenchSolvesScalingCellSizesTakesItsFormerName) {
+  const std::string bench = "solve furnace --projections plane --resolutions 16 --max-iterations 2 "
+                            "--scaling-resolution 16 ";
+  for (const std::string name : {"--scaling-cell-sizes", "--scaling-cells"}) {
+    const nlohmann::json scaling = runBench(bench + name + " 0.5,0.25").json["scaling"];
+    ASSERT_EQ(scaling.size(), 2u) << name << ": " << scaling.dump();
+    EXPECT_EQ(scaling[0]["cell"], 0.5) << name;
+    EXPECT_EQ(scaling[0]["patches"], 24) << name;
+    EXPECT_EQ(scaling[1]["cell"], 0.25) << name;
+    EXPECT_EQ(scaling[1]["patches"], 96) << name;
+  }
+}
+
+// The reference's unshot stop is named as --until-unshot, beside --reference-until; its first
+// name, --reference-unshot, sets the same.
+TEST(Cli, BenchAccuracysReferenceUntilUnshotTakesItsFormerName) {
+  const auto referenceOf = [](const std::string& stop) {
+    const std::string json = tempPath("reference.json");
+    const CommandRun run = radmesh("bench accuracy furnace --projections hemicube --resolutions 16 --cell-sizes 0.5 "
+                                   "--reference-resolution 16 --reference-until 0.5 --json " + json + " " + stop);
+    EXPECT_EQ(run.exitCode, 0) << stop << ": " << run.output;
+    return nlohmann::json::parse(std::ifstream(json))["references"][0]["how"].get<std::string>();
+  };
+  const std::string reached = referenceOf("--reference-until-unshot 0.05");
+  EXPECT_NE(reached.find(" % unshot"), std::string::npos) << reached;
+  EXPECT_EQ(referenceOf("--reference-unshot 0.05"), reached);
+  EXPECT_NE(referenceOf("--reference-until-unshot 0.5"), reached);  // a stop it reaches sooner
+  for (const std::string name : {"--reference-until-unshot", "--reference-unshot"}) {
+    const CommandRun run = radmesh("bench accuracy furnace " + name + " 1.5");
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(run.output, "radmesh: error: --reference-until-unshot must be a fraction in (0, 1), e.g. 0.001\n");
+  }
 }
 
 // The room's cells, given: at 128x128 the pixels resolve their patches (the furnace's own cell,
@@ -1480,6 +1518,32 @@ TEST(Cli, InfoCellsListsTheRoomsAndThePortalsAsJson) {
   const CommandRun bad = radmesh("info two-rooms --cells --cell-groups merge");
   EXPECT_NE(bad.exitCode, 0);
   EXPECT_NE(bad.output.find("--cell-groups"), std::string::npos) << bad.output;
+}
+
+// info --cells takes auto|off as the solving commands' --cells does: "--cells auto" was one argument
+// too many. Alone it still means auto, before the scene too.
+TEST(Cli, InfoCellsTakesAutoOrOff) {
+  const auto cellsOf = [](const std::string& arguments) {
+    const CommandRun run = radmesh("info " + arguments + " --json");
+    EXPECT_EQ(run.exitCode, 0) << arguments << ": " << run.output;
+    nlohmann::json j = nlohmann::json::parse(run.output, nullptr, false);
+    return j.is_object() && j.contains("cells") ? nlohmann::json{j["cells"], j["portals"]} : nlohmann::json();
+  };
+  const nlohmann::json alone = cellsOf("two-rooms --cells");
+  ASSERT_EQ(alone[0].size(), 2u) << alone.dump();
+  ASSERT_EQ(alone[1].size(), 1u) << alone.dump();
+  for (const std::string arguments : {"two-rooms --cells auto", "two-rooms --cells=auto", "--cells auto two-rooms",
+                                      "--cells two-rooms"})
+    EXPECT_EQ(cellsOf(arguments), alone) << arguments;
+  EXPECT_EQ(cellsOf("two-rooms --cells off"), nlohmann::json()) << "off lists no cells";
+  EXPECT_EQ(cellsOf("--cells off two-rooms"), nlohmann::json());
+  CommandRun run = radmesh("info two-rooms --cells off --cell-groups join");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("--cell-groups requires --cells"), std::string::npos) << run.output;
+  run = radmesh("info two-rooms --cells maybe");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_EQ(run.output, "radmesh: error: --cells 'maybe' is unknown: give auto (list the cells and portals, as "
+                        "--cells alone does) or off\n");
 }
 
 TEST(Cli, InfoPlanDrawsThePlanOrSaysWhatIsWrong) {

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
+#include "cli/solve_flags.h"
 #include "tests/cli/cli_run.h"
 #include "viewer/image.h"
 
@@ -22,6 +24,22 @@ std::string xvfb() { return std::filesystem::exists(viewerPath()) ? virtualDispl
 std::string windowed() {
   const std::string display = xvfb();
   return display.empty() ? "" : "timeout 120 " + display + viewerPath() + " ";
+}
+
+// --exchange-shots is one option wherever the cells solve runs: one help (four had told it four ways,
+// "per cell per round" and "the camera's cell's iterations" among them).
+TEST(ViewerCli, ExchangeShotsHasOneHelpOnEveryCommand) {
+  std::vector<CommandRun> helps = {radmesh("solve --help"), radmesh("bench solve --help"),
+                                   radmesh("bench cells --help")};
+  if (std::filesystem::exists(viewerPath())) helps.push_back(runCommand(viewerPath() + " --help"));
+  for (const CommandRun& help : helps) {
+    EXPECT_EQ(help.exitCode, 0) << help.output;
+    const std::string option = "--exchange-shots INT:POSITIVE=16";
+    const size_t at = help.output.find(option);
+    ASSERT_NE(at, std::string::npos) << help.output;
+    const size_t text = help.output.find_first_not_of(" \n", at + option.size());
+    EXPECT_EQ(help.output.substr(text, help.output.find('\n', text) - text), cli::kExchangeShotsHelp) << help.output;
+  }
 }
 
 // The viewer's usage errors are worded as radmesh's (Cli.UsageErrorsNameTheWordAndWhatToGive).

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,15 @@ TEST(ThreadPool, SizeCountsTheCaller) {
   EXPECT_EQ(ThreadPool(3).size(), 3);
   EXPECT_GE(ThreadPool(0).size(), 1);
   EXPECT_THROW(ThreadPool(-1), std::invalid_argument);
+}
+
+// The most threads worth asking for is what 0 asks for: the hardware threads, at least one.
+TEST(ThreadPool, MostUsefulIsTheHardwareThreadsThatZeroGives) {
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  EXPECT_EQ(ThreadPool::mostUseful(), hardware);
+  EXPECT_EQ(ThreadPool::sizeFor(0), hardware);
+  EXPECT_EQ(ThreadPool(0).size(), hardware);
+  EXPECT_EQ(ThreadPool::sizeFor(hardware + 1), hardware + 1);  // a pool takes what it is given; the options cap
 }
 
 TEST(ThreadPool, ParallelForRunsEveryIndexOnceOnAKnownWorker) {

@@ -244,6 +244,14 @@ TEST(WalkCamera, RisingChangesTheEyeHeightAboveTheFloor) {
   EXPECT_NEAR(camera.view().eye.z, 1.8, 1e-12);
   camera.update(WalkInput{.rise = -1.0}, 100.0);  // never under the floor
   EXPECT_GT(camera.view().eye.z, 0.0);
+  // Nor above the eye-height slider's top (E had raised it without limit).
+  camera.update(WalkInput{.rise = 1.0}, 100.0);
+  EXPECT_DOUBLE_EQ(camera.eyeHeightM, 3.0);
+  EXPECT_DOUBLE_EQ(camera.eyeHeightRange().high, 3.0);
+  WalkCamera small(room({1.0, 1.0, 0.5}));  // the model's size, under 3 m
+  small.update(WalkInput{.rise = 1.0}, 100.0);
+  EXPECT_DOUBLE_EQ(small.eyeHeightM, 1.5);
+  EXPECT_DOUBLE_EQ(small.eyeHeightRange().high, 1.5);
 }
 
 // --camera and --look (radmesh render's and radmesh-view's) put the start where they say: the eye
@@ -296,6 +304,12 @@ TEST(WalkCamera, AGivenStartBeyondTheWalksLimitsIsKeptUntilMoved) {
   camera.speedMps = 1.0;
   camera.update(WalkInput{.rise = 1.0}, 0.5);
   EXPECT_NEAR(camera.view().eye.z, -0.5, 1e-12);
+  // Above the walk's top (over the roof), it is kept there when raised, and lowers from there.
+  camera.startFrom({.eye = Vec3(3.5, 2.5, 5.0), .look = Vec3(3.5, 2.6, 0.0)});
+  camera.update(WalkInput{.rise = 1.0}, 0.5);
+  EXPECT_DOUBLE_EQ(camera.eyeHeightM, 5.0);
+  camera.update(WalkInput{.rise = -1.0}, 0.5);
+  EXPECT_DOUBLE_EQ(camera.eyeHeightM, 4.5);
 }
 
 // A camera far off still sees the whole scene: the far plane lies past the scene's farthest corner.
