@@ -135,6 +135,9 @@ void addBenchAccuracy(CLI::App* bench) {
   cmd->add_option("--reference-until-unshot,--reference-unshot", args->referenceUnshot,
                   "And the most unshot power the reference may leave, as a fraction of the emitted")
       ->capture_default_str();
+  cmd->add_option("--max-iterations", args->maxIterations, "Cap per timed solve; a reference may take ten times as many")
+      ->check(kPositive)
+      ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Host threads of the reference solves (0: every core); the sweep is timed on one")
       ->transform(threadCount("radmesh"))
       ->capture_default_str();

@@ -49,7 +49,7 @@ struct SolveFlags {
 };
 
 inline constexpr const char* kPortalBinsHelp =
-    "With --cells auto: light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
+    "In the cells solve (--cells auto): light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
     "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
 // --exchange-shots, the same on every command that runs the cells solve.
 inline constexpr const char* kExchangeShotsHelp =

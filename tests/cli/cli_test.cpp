@@ -593,6 +593,17 @@ TEST(Cli, BenchAccuracysReferenceUntilUnshotTakesItsFormerName) {
   }
 }
 
+// A reference cut short by the cap is refused, and the refusal names the options that lift it.
+TEST(Cli, BenchAccuracysReferenceCutShortNamesItsCap) {
+  const std::string common = "bench accuracy furnace --projections hemicube --resolutions 16 --cell-sizes 0.5 "
+                             "--reference-resolution 16 --reference-until 0.5 --reference-until-unshot 0.05 ";
+  const CommandRun capped = radmesh(common + "--max-iterations 1");
+  EXPECT_NE(capped.exitCode, 0);
+  EXPECT_NE(capped.output.find("after 10 iterations"), std::string::npos) << capped.output;
+  EXPECT_NE(capped.output.find("(raise --max-iterations or --reference-until-unshot)"), std::string::npos) << capped.output;
+  EXPECT_EQ(radmesh(common + "--max-iterations 100").exitCode, 0);
+}
+
 // The room's cells, given: at 128x128 the pixels resolve their patches (the furnace's own cell,
 // 0.0625 m, is finer than a pixel there and moves the plane's error by 2 %).
 TEST(Cli, BenchAccuracyQuickWritesTableCsvAndJson) {
@@ -1483,7 +1494,8 @@ TEST(Cli, StrictRefusesAFileThatNeededRepairs) {
   }
 }
 
-// A path that would fail after a long solve is refused before it starts, naming the option and the fix.
+// info --cells: each room with its patches, emitters and power, which add up to the scene's, and the
+// portals between them, as JSON and as text; --cell-groups shapes them.
 TEST(Cli, InfoCellsListsTheRoomsAndThePortalsAsJson) {
   const CommandRun run = radmesh("info two-rooms --cells --json");
   ASSERT_EQ(run.exitCode, 0) << run.output;

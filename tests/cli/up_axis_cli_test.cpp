@@ -95,8 +95,8 @@ TEST(UpAxisCli, UnitsThatMakeTheModelImplausiblySizedAreWarnedOf) {
       return w.get<std::string>().find("--units") != std::string::npos;
     });
   };
-  for (const std::string& units : {"", " --units m"}) EXPECT_FALSE(warnedOfUnits(luminaire.string() + units)) << units;
-  for (const std::string& units : {"", " --units m", " --units cm"})  // 10 units: 0.1 m in cm
+  for (const char* units : {"", " --units m"}) EXPECT_FALSE(warnedOfUnits(luminaire.string() + units)) << units;
+  for (const char* units : {"", " --units m", " --units cm"})  // 10 units: 0.1 m in cm
     EXPECT_FALSE(warnedOfUnits(cube.string() + units)) << units;
   EXPECT_TRUE(warnedOfUnits(luminaire.string() + " --units mm"));  // 1.2 mm
 }
