@@ -43,11 +43,25 @@ bool partlyInFront(const Patch& patch, const Patch& of, double scale) {
 
 }  // namespace
 
+double distanceToPatch(const Vec3& point, const Patch& patch) {
+  bool inside = true;
+  double edges = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < patch.vertexCount; ++k) {
+    const Vec3& a = patch.vertices[k];
+    const Vec3 e = patch.vertices[(k + 1) % patch.vertexCount] - a, w = point - a;
+    if (glm::dot(glm::cross(e, w), patch.normal) < 0.0) inside = false;
+    const double along = glm::dot(e, e) > 0.0 ? std::clamp(glm::dot(w, e) / glm::dot(e, e), 0.0, 1.0) : 0.0;
+    edges = std::min(edges, glm::length(w - along * e));
+  }
+  return inside ? std::abs(glm::dot(point - patch.centroid, patch.normal)) : edges;
+}
+
 bool inNearField(const Patch& shooter, double size, const Patch& receiver) {
-  const Vec3 d = receiver.centroid - shooter.centroid;
-  const double r2 = glm::dot(d, d);
-  if (r2 < size * size) return true;
-  const double facing = -glm::dot(shooter.normal, receiver.normal), h = -glm::dot(d, receiver.normal);
+  const double r = distanceToPatch(shooter.centroid, receiver);
+  if (r < size) return true;
+  const double r2 = r * r;
+  const double facing = -glm::dot(shooter.normal, receiver.normal);
+  const double h = glm::dot(shooter.centroid - receiver.centroid, receiver.normal);
   if (!(facing > 0.0) || !(h > 0.0 && h < size)) return false;
   return facing * shooter.areaM2 / 3.0 * h * h * (r2 - h * h) / (r2 * r2 * r2) > kGapTailLimit;
 }
@@ -72,7 +86,11 @@ std::vector<std::vector<int>> findNearFieldReceivers(const std::vector<Patch>& p
 NearFieldFinder::NearFieldFinder(const std::vector<Patch>& shooters, const std::vector<Patch>& receivers)
     : shooters_(shooters), receivers_(receivers), near_(shooters.size()), found_(shooters.size(), 0) {
   for (const Patch& p : shooters) size_.push_back(diameter(p));
+  for (const Patch& p : receivers) radius_.push_back(spreadOf(p).radius);
   for (double s : size_) largest_ = std::max(largest_, s);
+  // Receivers' diameters too, not only their radii: a part's radius is within its whole's diameter,
+  // so the receivers split from these stay within the classes.
+  for (const Patch& p : receivers) largest_ = std::max(largest_, diameter(p));
 }
 
 NearFieldFinder::Cell NearFieldFinder::Grid::cellOf(const Vec3& c) const {
@@ -101,29 +119,24 @@ NearFieldFinder::Spread NearFieldFinder::spreadOf(const Patch& patch) {
 // front of its plane, each by more than the rounding tolerance (at the shooter's size): their sum
 // exceeds twice that. Yet were both normals `normal`, the sum would be at most the two bulges;
 // their differences from it add at most that difference times the distances involved (centroids
-// within reach, vertices within radius of theirs), and 1e-12 of those distances covers rounding.
-// Where that bound stays under twice the tolerance, no receiver of the stack faces the shooter:
-// parallel, flat copies never do.
+// within reach plus a receiver's radius, vertices within radius of theirs), and 1e-12 of those
+// distances covers rounding. Where that bound stays under twice the tolerance, no receiver of the
+// stack faces the shooter: parallel, flat copies never do.
 bool NearFieldFinder::neverNear(const Patch& shooter, const Spread& spread, double size, double reach,
                                 const Stack& stack, const Vec3& normal) {
   const double tilt = glm::length(shooter.normal - normal) + stack.tilt + 1e-12;
-  const double distances = reach + spread.radius + stack.spread.radius;
+  const double distances = reach + spread.radius + 2.0 * stack.spread.radius;
   return spread.bulge + stack.spread.bulge + tilt * distances <= 2.0 * kRounding * size;
 }
 
-// Shooters in classes by diameter, halving from the largest; a class's grid has cells half as wide
-// as its largest diameter, so a shooter searches only the cells its reach (nearFieldReach, at most 3.1
-// diameters) overlaps, and never cells much wider than itself.
-const NearFieldFinder::Grid& NearFieldFinder::gridFor(double size) {
-  size_t k = 0;
-  double top = largest_;
-  while (size <= 0.5 * top) top *= 0.5, ++k;
-  if (grids_.size() <= k) grids_.resize(k + 1);
-  Grid& grid = grids_[k];
+NearFieldFinder::Grid& NearFieldFinder::gridAt(std::vector<Grid>& grids, size_t k, double cellSize, double smallest) {
+  if (grids.size() <= k) grids.resize(k + 1);
+  Grid& grid = grids[k];
   if (grid.cellSize == 0.0) {
-    grid.cellSize = 0.5 * top;
-    grid.sorted.resize(receivers_.size());
-    for (size_t j = 0; j < receivers_.size(); ++j) grid.sorted[j] = {grid.keyOf(receivers_[j]), static_cast<int>(j)};
+    grid.cellSize = cellSize;
+    grid.smallest = smallest;
+    for (size_t j = 0; j < receivers_.size(); ++j)
+      if (grid.holds(radius_[j])) grid.sorted.push_back({grid.keyOf(receivers_[j]), static_cast<int>(j)});
     std::sort(grid.sorted.begin(), grid.sorted.end());
     indexStacks(grid);
   }
@@ -133,7 +146,11 @@ const NearFieldFinder::Grid& NearFieldFinder::gridFor(double size) {
 void NearFieldFinder::indexStacks(Grid& grid) const {
   const int n = static_cast<int>(grid.sorted.size());
   grid.centroids.clear();
-  for (const auto& [key, j] : grid.sorted) grid.centroids.push_back(receivers_[j].centroid);
+  grid.radii.clear();
+  for (const auto& [key, j] : grid.sorted) {
+    grid.centroids.push_back(receivers_[j].centroid);
+    grid.radii.push_back(radius_[j]);
+  }
   grid.stackAt.assign(n, -1);
   grid.stacks.clear();
   for (int begin = 0, end = 0; begin < n; begin = end) {
@@ -158,35 +175,39 @@ void NearFieldFinder::receiversSplit(const std::vector<int>& origin, const std::
   std::vector<int> children;
   for (size_t e = 0; e < origin.size(); ++e)
     if (split[origin[e]]) children.push_back(static_cast<int>(e));
-  for (Grid& grid : grids_) {
-    if (grid.cellSize == 0.0) continue;
-    // Renumbering keeps the order of the receivers that did not split (it is monotone): so the
-    // merge gives the fresh sort's order exactly.
-    std::vector<std::pair<Key, int>> kept, made;
-    kept.reserve(grid.sorted.size());
-    for (const auto& [key, j] : grid.sorted)
-      if (newIndex[j] >= 0) kept.push_back({key, newIndex[j]});
-    for (int e : children) made.push_back({grid.keyOf(receivers_[e]), e});
-    std::sort(made.begin(), made.end());
-    grid.sorted.resize(kept.size() + made.size());
-    std::merge(kept.begin(), kept.end(), made.begin(), made.end(), grid.sorted.begin());
-    indexStacks(grid);
-  }
+  std::vector<double> radius(receivers_.size());
+  for (size_t j = 0; j < origin.size(); ++j)
+    radius[j] = split[origin[j]] ? spreadOf(receivers_[j]).radius : radius_[origin[j]];
+  radius_ = std::move(radius);
+  for (std::vector<Grid>* grids : {&small_, &large_})
+    for (Grid& grid : *grids) {
+      if (grid.cellSize == 0.0) continue;
+      // Renumbering keeps the order of the receivers that did not split (it is monotone): so the
+      // merge gives the fresh sort's order exactly.
+      std::vector<std::pair<Key, int>> kept, made;
+      kept.reserve(grid.sorted.size());
+      for (const auto& [key, j] : grid.sorted)
+        if (newIndex[j] >= 0) kept.push_back({key, newIndex[j]});
+      for (int e : children)
+        if (grid.holds(radius_[e])) made.push_back({grid.keyOf(receivers_[e]), e});
+      std::sort(made.begin(), made.end());
+      grid.sorted.resize(kept.size() + made.size());
+      std::merge(kept.begin(), kept.end(), made.begin(), made.end(), grid.sorted.begin());
+      indexStacks(grid);
+    }
   for (std::vector<int>& near : near_) near.clear();
   std::fill(found_.begin(), found_.end(), 0);
 }
 
-const std::vector<int>& NearFieldFinder::receiversNear(int i) {
+void NearFieldFinder::search(const Grid& grid, int i, const Spread& spread, double reach) {
+  if (grid.sorted.empty()) return;
   std::vector<int>& near = near_[i];
   const double size = size_[i];
-  if (found_[i] || !(size > 0.0)) return near;  // a shooter of no extent has no near receivers
-  found_[i] = 1;
   const bool selfReceives = &shooters_ == &receivers_;
   const Patch& shooter = shooters_[i];
-  const Spread spread = spreadOf(shooter);
-  const double reach = nearFieldReach(shooter, size);
-  const Grid& grid = gridFor(size);
-  const Cell low = grid.cellOf(shooter.centroid - Vec3(reach)), high = grid.cellOf(shooter.centroid + Vec3(reach));
+  // A receiver's nearest point within reach puts its centroid within reach plus its radius.
+  const double box = reach + grid.cellSize;
+  const Cell low = grid.cellOf(shooter.centroid - Vec3(box)), high = grid.cellOf(shooter.centroid + Vec3(box));
   constexpr long long kLeast = std::numeric_limits<long long>::min();
   for (long long x = low[0]; x <= high[0]; ++x)
     for (long long y = low[1]; y <= high[1]; ++y) {
@@ -201,12 +222,35 @@ const std::vector<int>& NearFieldFinder::receiversNear(int i) {
           continue;
         }
         ++examined_;
-        if ((selfReceives && j == i) || !(glm::length(grid.centroids[k] - shooter.centroid) < reach)) continue;
+        // The slack covers rounding in the nearest point, which the bound must not cut off.
+        if ((selfReceives && j == i) || !(glm::length(grid.centroids[k] - shooter.centroid) < (reach + grid.radii[k]) * (1.0 + 1e-9)))
+          continue;
         if (inNearField(shooter, size, receivers_[j]) && partlyInFront(receivers_[j], shooter, size) &&
             partlyInFront(shooter, receivers_[j], size))
           near.push_back(j);
       }
     }
+}
+
+// Shooters in classes by diameter, halving from the largest; a class's small receivers are in cells
+// half as wide as its largest diameter, so a shooter searches only the cells its reach
+// (nearFieldReach, at most 3.1 diameters) overlaps, and never cells much wider than itself; each
+// larger receiver is in cells about its own size, searched within the reach plus that size.
+const std::vector<int>& NearFieldFinder::receiversNear(int i) {
+  std::vector<int>& near = near_[i];
+  const double size = size_[i];
+  if (found_[i] || !(size > 0.0)) return near;  // a shooter of no extent has no near receivers
+  found_[i] = 1;
+  const Spread spread = spreadOf(shooters_[i]);
+  const double reach = nearFieldReach(shooters_[i], size);
+  size_t k = 0;
+  double top = largest_;
+  while (size <= 0.5 * top) top *= 0.5, ++k;
+  search(gridAt(small_, k, 0.5 * top, -1.0), i, spread, reach);
+  for (size_t b = 0; b <= k; ++b) {
+    const double cell = largest_ / std::pow(2.0, static_cast<double>(b));
+    search(gridAt(large_, b, cell, 0.5 * cell), i, spread, reach);
+  }
   std::sort(near.begin(), near.end());
   return near;
 }

@@ -17,9 +17,9 @@ namespace radmesh {
 
 inline constexpr int kNearFieldSubdivisions = 8;  // per edge of each of the shooter's triangles
 
-// A receiver is in a shooter's near field if its centroid is closer to the shooter's centroid than
-// the shooter's diameter (`size`), or if it lies in a plane facing the shooter across a gap
-// narrower than that and cutting the near field off at it would leave more than kGapTailLimit of
+// A receiver is in a shooter's near field if its nearest point (distanceToPatch) is closer to the
+// shooter's centroid than the shooter's diameter (`size`), or if it lies in a plane facing the
+// shooter across a gap narrower than that and cutting the near field off at it would leave more than kGapTailLimit of
 // the shooter's power misplaced. Across a narrow gap the near receivers are not the whole story:
 // beyond them each point estimate misses the shooter's extent by a fraction ~ (size / distance)^2,
 // all in the same direction (too little), and replacing the near ones by area-to-area values moves
@@ -29,10 +29,14 @@ inline constexpr int kNearFieldSubdivisions = 8;  // per edge of each of the sho
 // the receivers beyond distance r miss at (A / 3) h^2 (r^2 - h^2) / r^6 of the shooter's power; a
 // receiver is kept while that, weighted by how squarely its plane faces the shooter, exceeds the
 // limit. A perpendicular plane's errors change sign across it and cancel: a wall lighting the
-// floor it stands on needs no widening.
+// floor it stands on needs no widening. The nearest point, not the centroid: a receiver much larger
+// than the shooter, only its edge close (a 0.1 m emitter 5 cm above a 1 m patch, 5 cm inside its
+// edge, the centroids 0.45 m apart), receives mostly at that edge, where the point estimate fails.
 inline constexpr double kGapTailLimit = 3e-3;
 bool inNearField(const Patch& shooter, double size, const Patch& receiver);
-// The farthest a receiver's centroid can be from the shooter's and be in its near field.
+// The distance from `point` to the nearest point of `patch`, taken as flat in its plane (convex).
+double distanceToPatch(const Vec3& point, const Patch& patch);
+// The farthest a receiver's nearest point can be from the shooter's centroid and be in its near field.
 double nearFieldReach(const Patch& shooter, double size);
 
 // Per shooter, ascending: the receivers in its near field (inNearField) which face it (each has a
@@ -79,25 +83,37 @@ class NearFieldFinder {
   };
   static bool neverNear(const Patch& shooter, const Spread& spread, double size, double reach, const Stack& stack,
                         const Vec3& normal);
-  // The receivers in cells of one size, sorted by key: a cell's column along z is consecutive,
-  // and the centroids are copied in the same order so the distance tests walk memory in sequence.
+  // The receivers of radii (Spread::radius) more than `smallest` and at most cellSize, in cells of
+  // that size, sorted by key: a cell's column along z is consecutive, and the centroids and radii are
+  // copied in the same order so the distance tests walk memory in sequence.
   struct Grid {
-    double cellSize = 0.0;
+    double cellSize = 0.0, smallest = 0.0;
     std::vector<std::pair<Key, int>> sorted;
     std::vector<Vec3> centroids;
+    std::vector<double> radii;
     std::vector<int> stackAt;  // per sorted receiver, the stack it begins, or -1
     std::vector<Stack> stacks;
+    bool holds(double radius) const { return radius > smallest && radius <= cellSize; }
     Cell cellOf(const Vec3& point) const;
     Key keyOf(const Patch& receiver) const;
   };
-  const Grid& gridFor(double size);
-  void indexStacks(Grid& grid) const;  // centroids and stacks from sorted
+  // Grid k of `grids` made if not yet, with those bounds.
+  Grid& gridAt(std::vector<Grid>& grids, size_t k, double cellSize, double smallest);
+  void indexStacks(Grid& grid) const;  // centroids, radii and stacks from sorted
+  // Adds to near_[i] the receivers of `grid` in the shooter's near field.
+  void search(const Grid& grid, int i, const Spread& spread, double reach);
 
   const std::vector<Patch>& shooters_;
   const std::vector<Patch>& receivers_;
-  std::vector<double> size_;  // per shooter, its diameter
-  double largest_ = 0.0;
-  std::vector<Grid> grids_;   // by size class: shooters no larger than largest_ / 2^k and more than half that
+  std::vector<double> size_;    // per shooter, its diameter
+  std::vector<double> radius_;  // per receiver, its Spread::radius
+  double largest_ = 0.0;        // the largest diameter of a shooter or receiver
+  // Shooter class k holds shooters no larger than largest_ / 2^k and more than half that. Its
+  // receivers are found in small_[k] (radii at most half its largest size: cells of that size) and
+  // in large_[0..k]: large_[b] holds radii from largest_ / 2^(b+1) to largest_ / 2^b, in cells of
+  // the latter, so a shooter searches the cells within its reach plus their largest radius, and
+  // none much smaller than its own size.
+  std::vector<Grid> small_, large_;
   std::vector<std::vector<int>> near_;
   std::vector<char> found_;
   size_t examined_ = 0;

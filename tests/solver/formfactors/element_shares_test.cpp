@@ -91,19 +91,28 @@ TEST(NearField, AShooterPartlyBehindTheReceiversPlaneSendsItNothingFromThere) {
 }
 
 // Near receivers found in groups of shooters by size are those of the definition
-// (near_field.h), checked pair by pair, among patches from 0.02 m to 3 m.
+// (near_field.h), checked pair by pair, among patches from 0.02 m to 3 m; each 3 m patch has 0.02
+// to 0.3 m ones facing it a little above, near its edge, where only its nearest point is near them.
 TEST(NearField, ReceiversFoundInGroupsBySizeAreThoseOfTheDefinition) {
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> position(0.0, 4.0), unit(-1.0, 1.0);
+  std::uniform_real_distribution<double> position(0.0, 4.0), unit(-1.0, 1.0), fraction(0.0, 1.0);
   TestScene t;
   for (int k = 0; k < 400; ++k) {
     const double side = k % 50 == 0 ? 3.0 : 0.02 + 0.3 * (k % 7) / 7.0;
     const Vec3 u = side * glm::normalize(Vec3(unit(random), unit(random), unit(random)));
     const Vec3 v = side * glm::normalize(glm::cross(u, Vec3(unit(random), unit(random), unit(random))));
-    addGrid(t.patches, Vec3(position(random), position(random), position(random)), u, v, 1, 1);
+    const Vec3 corner(position(random), position(random), position(random));
+    addGrid(t.patches, corner, u, v, 1, 1);
+    if (side < 3.0) continue;
+    const Vec3 n = glm::normalize(glm::cross(u, v));
+    for (int m = 0; m < 7; ++m) {
+      const double small = 0.02 + 0.3 * m / 7.0;
+      const Vec3 above = corner + (0.02 + 0.05 * fraction(random)) * u + fraction(random) * v + 0.1 * fraction(random) * n;
+      addGrid(t.patches, above, small / side * v, small / side * u, 1, 1);  // facing the large one
+    }
   }
   const auto near = findNearFieldReceivers(t.patches);
-  size_t pairs = 0;
+  size_t pairs = 0, byNearestPoint = 0;
   for (size_t i = 0; i < t.patches.size(); ++i) {
     const Patch& s = t.patches[i];
     double size = 0.0;
@@ -120,8 +129,10 @@ TEST(NearField, ReceiversFoundInGroupsBySizeAreThoseOfTheDefinition) {
         expected.push_back(static_cast<int>(j));
     EXPECT_EQ(near[i], expected) << "shooter " << i;
     pairs += expected.size();
+    for (int j : expected) byNearestPoint += glm::length(t.patches[j].centroid - s.centroid) >= size;
   }
   EXPECT_GT(pairs, 100u);  // the test sees pairs, and the large patches' among them
+  EXPECT_GT(byNearestPoint, 20u) << pairs;  // receivers whose centroids are beyond the shooter's size
 }
 
 // A shooter's near pairs are computed for the near receivers its rows reach, each once: a receiver
