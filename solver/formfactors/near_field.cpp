@@ -223,8 +223,8 @@ void NearFieldFinder::search(const Grid& grid, int i, const Spread& spread, doub
         }
         ++examined_;
         // The slack covers rounding in the nearest point, which the bound must not cut off.
-        if ((selfReceives && j == i) || !(glm::length(grid.centroids[k] - shooter.centroid) < (reach + grid.radii[k]) * (1.0 + 1e-9)))
-          continue;
+        const double farthest = (reach + grid.radii[k]) * (1.0 + 1e-9);
+        if ((selfReceives && j == i) || !(glm::length(grid.centroids[k] - shooter.centroid) < farthest)) continue;
         if (inNearField(shooter, size, receivers_[j]) && partlyInFront(receivers_[j], shooter, size) &&
             partlyInFront(shooter, receivers_[j], size))
           near.push_back(j);

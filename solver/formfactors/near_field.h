@@ -19,8 +19,8 @@ inline constexpr int kNearFieldSubdivisions = 8;  // per edge of each of the sho
 
 // A receiver is in a shooter's near field if its nearest point (distanceToPatch) is closer to the
 // shooter's centroid than the shooter's diameter (`size`), or if it lies in a plane facing the
-// shooter across a gap narrower than that and cutting the near field off at it would leave more than kGapTailLimit of
-// the shooter's power misplaced. Across a narrow gap the near receivers are not the whole story:
+// shooter across a gap narrower than that and cutting the near field off at it would leave more
+// than kGapTailLimit of the shooter's power misplaced. Across a narrow gap the near receivers are not the whole story:
 // beyond them each point estimate misses the shooter's extent by a fraction ~ (size / distance)^2,
 // all in the same direction (too little), and replacing the near ones by area-to-area values moves
 // their total while the rest keeps its error: a 1 m plate 5 cm above another in 0.1 m cells

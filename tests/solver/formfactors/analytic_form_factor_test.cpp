@@ -103,13 +103,16 @@ double polygonForm(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
 TEST(AnalyticFormFactor, PolygonToPolygonMatchesTheClosedFormsHoweverNarrowTheGap) {
   for (double c : {1.0, 0.1, 0.01, 0.001}) {
     // Directly opposed, a 1 x 1 square and a 2 x 0.5 rectangle, c apart, the upper facing down.
-    const double square = polygonForm(rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), rectangle({0, 0, c}, {0, 1, 0}, {1, 0, 0}));
+    const double square =
+        polygonForm(rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), rectangle({0, 0, c}, {0, 1, 0}, {1, 0, 0}));
     EXPECT_NEAR(square, test::parallelRectanglesFormFactor(1, 1, c), 1e-9) << "c " << c;
-    const double strip = polygonForm(rectangle({0, 0, 0}, {2, 0, 0}, {0, 0.5, 0}), rectangle({0, 0, c}, {0, 0.5, 0}, {2, 0, 0}));
+    const double strip =
+        polygonForm(rectangle({0, 0, 0}, {2, 0, 0}, {0, 0.5, 0}), rectangle({0, 0, c}, {0, 0.5, 0}, {2, 0, 0}));
     EXPECT_NEAR(strip, test::parallelRectanglesFormFactor(2, 0.5, c), 1e-9) << "c " << c;
     // A floor 1 x 1 and a wall standing c above it on its edge x = 0, 0.5 high: the wall from 0 to
     // c + 0.5 less the wall from 0 to c (form factors to parts of a plane add).
-    const double wall = polygonForm(rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), rectangle({0, 0, c}, {0, 1, 0}, {0, 0, 0.5}));
+    const double wall =
+        polygonForm(rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), rectangle({0, 0, c}, {0, 1, 0}, {0, 0, 0.5}));
     const double exactWall =
         test::perpendicularRectanglesFormFactor(1, c + 0.5, 1) - test::perpendicularRectanglesFormFactor(1, c, 1);
     EXPECT_NEAR(wall, exactWall, 1e-9) << "c " << c;
