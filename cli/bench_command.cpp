@@ -66,10 +66,7 @@ void addBenchSolve(CLI::App* bench) {
   cmd->add_option("--cells", args->cellsMode, "auto: time the cells solve (with --until 1 --until-unshot F); off")
       ->type_name("auto|off")
       ->capture_default_str();
-  cmd->add_option("--exchange-shots", args->exchangeShots, kExchangeShotsHelp)
-      ->check(kPositive)
-      ->capture_default_str();
-  cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
+  addPortalExchangeOptions(cmd, args->exchangeShots, args->portalBins);
   cmd->add_option("--threads", args->threads, "Host threads (0: every core)")->transform(threadCount("radmesh"))->capture_default_str();
   addCacheOption(cmd, args->cacheMb);
   // A list of cell sizes, named as bench accuracy's --cell-sizes; its first name, --scaling-cells, kept as an alias.
@@ -204,10 +201,7 @@ void addBenchCells(CLI::App* bench) {
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "N of the projection")->capture_default_str();
   cmd->add_option("--until-unshot", args->untilUnshot, "Both solves stop at this unshot fraction")->capture_default_str();
-  cmd->add_option("--exchange-shots", args->exchangeShots, kExchangeShotsHelp)
-      ->check(kPositive)
-      ->capture_default_str();
-  cmd->add_option("--portal-bins", args->portalBins, kPortalBinsHelp)->capture_default_str();
+  addPortalExchangeOptions(cmd, args->exchangeShots, args->portalBins);
   cmd->add_option("--focus-cell", args->focusCell, "The camera's cell, solved first")->capture_default_str();
   cmd->add_option("--focus-unshot", args->focusUnshot, "The focus cell's unshot fraction to time to")->capture_default_str();
   cmd->add_option("--max-iterations", args->maxIterations, "Cap per solve")->capture_default_str();

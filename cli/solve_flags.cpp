@@ -197,10 +197,7 @@ void addSolveFlags(CLI::App* cmd, SolveFlags& f) {
                   "auto: find the rooms and solve cell by cell, light crossing at portals (docs/cells.md); off")
       ->type_name("auto|off")
       ->capture_default_str();
-  cmd->add_option("--exchange-shots", f.exchangeShots, kExchangeShotsHelp)
-      ->check(kPositive)
-      ->capture_default_str();
-  cmd->add_option("--portal-bins", f.portalBins, kPortalBinsHelp)->capture_default_str();
+  addPortalExchangeOptions(cmd, f.exchangeShots, f.portalBins);
   const std::vector<CLI::Option*> options = cmd->get_options();
   f.solverOptions.assign(options.begin() + static_cast<std::ptrdiff_t>(first), options.end());
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/option_checks.h"
 #include "solver/io/daylight.h"
 #include "solver/meshing/meshing.h"
 #include "solver/scene/solve_options.h"
@@ -49,13 +50,18 @@ struct SolveFlags {
 };
 
 inline constexpr const char* kPortalBinsHelp =
-    "In the cells solve (--cells auto): light crossing a portal keeps its direction in the bins of an N x N hemicube and goes on "
-    "in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
-// --exchange-shots, the same on every command that runs the cells solve.
+    "In the cells solve (--cells auto): light crossing a portal keeps its direction in the bins of an N x N hemicube "
+    "and goes on in it (docs/cells.md); 0 or 1: re-emitted diffusely (the paper's)";
 inline constexpr const char* kExchangeShotsHelp =
     "The cells solve's shots a round between portal exchanges, this many a cell on average, shared by the cells' "
     "unshot power; a focus cell (the viewer's camera's, bench cells' --focus-cell) shoots them alone until its own "
     "unshot is below the stopping rule, then each cell's part halves at each portal from it (docs/cells.md)";
+// --exchange-shots and --portal-bins, the same on every command that runs the cells solve.
+// Inline: radmesh-view takes them too without linking the commands.
+inline void addPortalExchangeOptions(CLI::App* cmd, int& exchangeShots, int& portalBins) {
+  cmd->add_option("--exchange-shots", exchangeShots, kExchangeShotsHelp)->check(kPositive)->capture_default_str();
+  cmd->add_option("--portal-bins", portalBins, kPortalBinsHelp)->capture_default_str();
+}
 
 // --max-iterations, the same on every command that solves.
 inline constexpr const char* kMaxIterationsHelp =

@@ -106,10 +106,7 @@ int main(int argc, char** argv) {
                  "off: the whole scene at once")
       ->type_name("auto|off")
       ->capture_default_str();
-  app.add_option("--exchange-shots", args.setup.exchangeShots, radmesh::cli::kExchangeShotsHelp)
-      ->check(radmesh::cli::kPositive)
-      ->capture_default_str();
-  app.add_option("--portal-bins", args.setup.portalBins, radmesh::cli::kPortalBinsHelp)->capture_default_str();
+  radmesh::cli::addPortalExchangeOptions(&app, args.setup.exchangeShots, args.setup.portalBins);
   app.add_option("--threads", o.threads, "Host threads of the solve (0: every core but one, left to drawing, which "
                  "llvmpipe does on the CPU too)")
       ->transform(radmesh::cli::threadCount("radmesh-view"))
